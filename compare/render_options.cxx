@@ -1,0 +1,168 @@
+#include "render_options.h"
+
+#include "vtkShadowTechnique.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+
+namespace
+{
+// Strict integer parse: the whole string, in range.
+bool ParseInt(const char* text, long low, long high, int& out)
+{
+  if (!text || !*text)
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const long value = std::strtol(text, &end, 10);
+  if (errno != 0 || *end != '\0' || value < low || value > high)
+  {
+    return false;
+  }
+  out = static_cast<int>(value);
+  return true;
+}
+}
+
+const char* RenderUsage()
+{
+  return "usage: vtkshadow-render SCENE --technique T --image OUT.png\n"
+         "         [--visibility V.png] [--mask M.png] [--light K] [--stats S.json]\n"
+         "         [--frames N] [--map-resolution R] [--size WxH] [--quiet]\n"
+         "\n"
+         "Render SCENE (a vtkshadow scene file) with shadow technique T.\n"
+         "  --technique T        one of the known techniques (default none)\n"
+         "  --image OUT.png      colour image with every light (required)\n"
+         "  --visibility V.png   16-bit visibility of light K (65535 lit, 0 blocked)\n"
+         "  --mask M.png         8-bit mask, 255 where light K reaches a visible surface\n"
+         "  --light K            light index for --visibility and --mask (default 0)\n"
+         "  --stats S.json       timings over --frames frames and shadow-map memory\n"
+         "  --frames N           timed frames after warm-up (default 30)\n"
+         "  --map-resolution R   shadow-map size for map techniques (default 2048)\n"
+         "  --size WxH           override the scene's image size\n"
+         "  --quiet              no progress output\n"
+         "Exit status: 0 success, 1 rendering failure, 2 bad input.\n";
+}
+
+int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::string& error)
+{
+  bool techniqueGiven = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&](const char* name) -> const char* {
+      if (i + 1 >= argc)
+      {
+        error = std::string(name) + ": missing value";
+        return nullptr;
+      }
+      return argv[++i];
+    };
+    if (arg == "-h" || arg == "--help")
+    {
+      std::cout << RenderUsage();
+      return -1;
+    }
+    else if (arg == "--technique")
+    {
+      const char* v = value("--technique");
+      if (!v)
+        return 2;
+      options.Technique = v;
+      techniqueGiven = true;
+    }
+    else if (arg == "--image" || arg == "--visibility" || arg == "--mask" || arg == "--stats")
+    {
+      const char* v = value(arg.c_str());
+      if (!v)
+        return 2;
+      if (!*v)
+      {
+        error = arg + ": empty path";
+        return 2;
+      }
+      std::string& target = arg == "--image" ? options.Image
+        : arg == "--visibility"             ? options.Visibility
+        : arg == "--mask"                   ? options.Mask
+                                            : options.Stats;
+      target = v;
+    }
+    else if (arg == "--light" || arg == "--frames" || arg == "--map-resolution")
+    {
+      const char* v = value(arg.c_str());
+      if (!v)
+        return 2;
+      int* target = arg == "--light" ? &options.Light
+        : arg == "--frames"          ? &options.Frames
+                                     : &options.MapResolution;
+      const long low = arg == "--light" ? 0 : arg == "--frames" ? 1 : 16;
+      const long high = arg == "--light" ? 1000000 : arg == "--frames" ? 100000 : 16384;
+      if (!ParseInt(v, low, high, *target))
+      {
+        error = arg + ": expected an integer in [" + std::to_string(low) + ", " +
+          std::to_string(high) + "] (got \"" + v + "\")";
+        return 2;
+      }
+    }
+    else if (arg == "--size")
+    {
+      const char* v = value("--size");
+      if (!v)
+        return 2;
+      const char* x = std::strchr(v, 'x');
+      const std::string w = x ? std::string(v, x) : "";
+      if (!x || !ParseInt(w.c_str(), 1, 16384, options.Width) ||
+        !ParseInt(x + 1, 1, 16384, options.Height))
+      {
+        error = std::string("--size: expected WxH with 1..16384 each (got \"") + v + "\")";
+        return 2;
+      }
+    }
+    else if (arg == "--quiet")
+    {
+      options.Quiet = true;
+    }
+    else if (!arg.empty() && arg[0] == '-')
+    {
+      error = "unknown option \"" + arg + "\"";
+      return 2;
+    }
+    else if (options.Scene.empty())
+    {
+      options.Scene = arg;
+    }
+    else
+    {
+      error = "unexpected argument \"" + arg + "\" (one scene per run)";
+      return 2;
+    }
+  }
+  if (options.Scene.empty())
+  {
+    error = "missing SCENE";
+    return 2;
+  }
+  if (!techniqueGiven)
+  {
+    error = "missing --technique (known: " + std::string(vtkShadowTechnique::GetKnownTechniques()) +
+      ")";
+    return 2;
+  }
+  if (!vtkShadowTechnique::IsKnownTechnique(options.Technique.c_str()))
+  {
+    error = "--technique: unknown technique \"" + options.Technique +
+      "\" (known: " + vtkShadowTechnique::GetKnownTechniques() + ")";
+    return 2;
+  }
+  if (options.Image.empty())
+  {
+    error = "missing --image OUT.png";
+    return 2;
+  }
+  return 0;
+}

@@ -1,0 +1,31 @@
+// render_options.h - the command line of vtkshadow-render, parsed and checked
+// before anything is rendered, so bad input never leaves partial output.
+#ifndef vtkshadow_render_options_h
+#define vtkshadow_render_options_h
+
+#include <string>
+
+struct RenderOptions
+{
+  std::string Scene;
+  std::string Technique = "none";
+  std::string Image;
+  std::string Visibility;
+  std::string Mask;
+  std::string Stats;
+  int Light = 0;
+  int Frames = 30;
+  int MapResolution = 2048;
+  int Width = 0; // 0: the scene's size
+  int Height = 0;
+  bool Quiet = false;
+};
+
+// Parse argv. Returns 0 when the program should go on, 2 on a usage error
+// (message in `error`), and -1 after printing --help.
+int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::string& error);
+
+// The usage text.
+const char* RenderUsage();
+
+#endif

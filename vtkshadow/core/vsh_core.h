@@ -1,0 +1,13 @@
+/* vsh_core.h - everything in vtkshadow_core, the VTK-free, OpenGL-free
+ * double-precision shadow math (conventions: see vsh_mat4.h, vsh_camera.h,
+ * vsh_planar.h). Include the individual headers where only one is needed. */
+#ifndef VSH_CORE_H
+#define VSH_CORE_H
+
+#include "vsh_vec3.h"
+#include "vsh_mat4.h"
+#include "vsh_bounds.h"
+#include "vsh_camera.h"
+#include "vsh_planar.h"
+
+#endif

@@ -1,0 +1,121 @@
+/* vsh_scene.h - the vtkshadow scene file: parse, validate, tessellate.
+ *
+ * One loader for every renderer: the scene file is parsed and validated here
+ * (C11, cJSON), primitives are tessellated here, so VTK, POV-Ray and Cycles
+ * all receive exactly the same triangles. Mesh files (PLY, OBJ, STL, VTP) are
+ * read by VTK's readers in the C++ layer; this layer only resolves and checks
+ * their paths. See docs/scene-format.md for the format.
+ */
+#ifndef VSH_SCENE_H
+#define VSH_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Longest error message the loader produces (including the terminator). */
+#define VSH_SCENE_ERROR_MAX 1024
+
+typedef enum vsh_light_type {
+  VSH_LIGHT_DIRECTIONAL = 0,
+  VSH_LIGHT_POINT = 1,
+  VSH_LIGHT_SPOT = 2
+} vsh_light_type;
+
+typedef struct vsh_light {
+  vsh_light_type type;
+  double direction[3];   /* directional: where the light travels, unit length */
+  double position[3];    /* point and spot */
+  double focal_point[3]; /* spot: the cone axis points from position to here */
+  double cone_angle;     /* spot: VTK's half-angle in degrees, (0, 90] */
+  double color[3];       /* linear RGB, default 1 1 1 */
+  double intensity;      /* default 1 */
+} vsh_light;
+
+typedef enum vsh_object_kind {
+  VSH_OBJECT_SPHERE = 0,
+  VSH_OBJECT_PLANE = 1,
+  VSH_OBJECT_BOX = 2,
+  VSH_OBJECT_CYLINDER = 3,
+  VSH_OBJECT_MESH = 4
+} vsh_object_kind;
+
+typedef struct vsh_object {
+  vsh_object_kind kind;
+  /* sphere */
+  double center[3];
+  double radius;    /* sphere, cylinder */
+  int resolution;   /* sphere, cylinder: segments around the axis */
+  /* plane: the parallelogram origin + s (point1 - origin) + t (point2 - origin) */
+  double origin[3], point1[3], point2[3];
+  /* box: axis-aligned before the transform */
+  double min[3], max[3];
+  /* cylinder: capped, from base centre to top centre */
+  double base[3], top[3];
+  /* mesh: path as written in the file, and resolved against the scene's folder */
+  char *mesh_path;
+  char *mesh_resolved_path;
+  /* every object */
+  double transform[16]; /* row-major 4x4, affine, identity by default */
+  int has_transform;
+  int receiver;         /* planar shadows fall on it (flat objects only) */
+  int casts;            /* default 1 */
+  double color[3];      /* default 1 1 1 */
+  char *name;           /* optional; NULL when absent */
+} vsh_object;
+
+typedef struct vsh_camera {
+  double position[3];
+  double focal_point[3];
+  double view_up[3];
+  double view_angle; /* VTK's vertical angle in degrees, (0, 180) */
+} vsh_camera;
+
+typedef struct vsh_scene {
+  char *path;        /* the file as given */
+  char *description; /* optional one-line description; NULL when absent */
+  int width, height; /* "size" */
+  vsh_camera camera;
+  double background[3];
+  vsh_light *lights;
+  size_t light_count;
+  vsh_object *objects;
+  size_t object_count;
+} vsh_scene;
+
+/* Parse and validate a scene file. Returns 0 and sets *out on success.
+ * On failure returns non-zero, sets *out to NULL and writes into err a message
+ * of the form "FILE: FIELD: problem (got VALUE)", e.g.
+ * "scenes/a.json: objects[1].sphere.radius: must be > 0 (got -0.5)". */
+int vsh_scene_load(const char *path, vsh_scene **out, char *err, size_t err_size);
+/* Same, from text in memory; `path` is used for messages and to resolve mesh paths. */
+int vsh_scene_parse(const char *text, size_t length, const char *path, vsh_scene **out,
+                    char *err, size_t err_size);
+void vsh_scene_free(vsh_scene *scene);
+
+/* A triangle mesh in world coordinates, double precision, per-vertex normals. */
+typedef struct vsh_mesh {
+  double *points;      /* 3 * point_count */
+  double *normals;     /* 3 * point_count, unit length */
+  uint32_t *triangles; /* 3 * triangle_count, counter-clockwise seen from outside */
+  size_t point_count;
+  size_t triangle_count;
+} vsh_mesh;
+
+/* Tessellate a primitive object (not VSH_OBJECT_MESH) with its transform applied.
+ * Returns 0 on success, non-zero on allocation failure or a mesh object. */
+int vsh_object_tessellate(const vsh_object *object, vsh_mesh *out);
+/* Apply a row-major affine transform to points (and inverse-transpose to normals). */
+void vsh_mesh_transform(vsh_mesh *mesh, const double transform[16]);
+void vsh_mesh_free(vsh_mesh *mesh);
+
+const char *vsh_light_type_name(vsh_light_type type);
+const char *vsh_object_kind_name(vsh_object_kind kind);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

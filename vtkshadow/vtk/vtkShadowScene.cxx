@@ -1,0 +1,523 @@
+#include "vtkShadowScene.h"
+
+#include "vtkActor.h"
+#include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include "vsh_scene.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkShadowScene);
+
+struct vtkShadowScene::Internals
+{
+  vsh_scene* Scene = nullptr;
+  std::vector<vtkSmartPointer<vtkPolyData>> Objects;
+  std::string Error;
+  std::string FileName;
+
+  ~Internals() { this->Clear(); }
+  void Clear()
+  {
+    vsh_scene_free(this->Scene);
+    this->Scene = nullptr;
+    this->Objects.clear();
+  }
+};
+
+namespace
+{
+// Copy a vsh_mesh (double precision) into a vtkPolyData with double points.
+vtkSmartPointer<vtkPolyData> PolyDataFromMesh(const vsh_mesh& mesh)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.point_count));
+  vtkNew<vtkDoubleArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(static_cast<vtkIdType>(mesh.point_count));
+  for (size_t i = 0; i < mesh.point_count; ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), mesh.points + 3 * i);
+    normals->SetTypedTuple(static_cast<vtkIdType>(i), mesh.normals + 3 * i);
+  }
+  vtkNew<vtkCellArray> triangles;
+  triangles->AllocateExact(static_cast<vtkIdType>(mesh.triangle_count),
+    static_cast<vtkIdType>(3 * mesh.triangle_count));
+  for (size_t t = 0; t < mesh.triangle_count; ++t)
+  {
+    const vtkIdType ids[3] = { mesh.triangles[3 * t], mesh.triangles[3 * t + 1],
+      mesh.triangles[3 * t + 2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(triangles);
+  poly->GetPointData()->SetNormals(normals);
+  return poly;
+}
+
+std::string LowerExtension(const std::string& path)
+{
+  const auto dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// VTK readers report problems through error events, not return values:
+// collect them so that a broken mesh becomes our error, not console noise.
+void CollectError(vtkObject*, unsigned long, void* clientData, void* callData)
+{
+  auto* text = static_cast<std::string*>(clientData);
+  if (text->empty() && callData)
+  {
+    *text = static_cast<const char*>(callData);
+    while (!text->empty() && std::isspace(static_cast<unsigned char>(text->back())))
+    {
+      text->pop_back();
+    }
+  }
+}
+
+// Read a mesh file with VTK's reader for its extension, triangulate it,
+// apply the object's transform in double precision and compute normals.
+// Returns nullptr and sets `error` when the file cannot be read or is empty.
+vtkSmartPointer<vtkPolyData> ReadMesh(const vsh_object& object, std::string& error)
+{
+  const std::string path = object.mesh_resolved_path;
+  const std::string ext = LowerExtension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".ply")
+  {
+    reader = vtkSmartPointer<vtkPLYReader>::New();
+    vtkPLYReader::SafeDownCast(reader)->SetFileName(path.c_str());
+  }
+  else if (ext == ".obj")
+  {
+    reader = vtkSmartPointer<vtkOBJReader>::New();
+    vtkOBJReader::SafeDownCast(reader)->SetFileName(path.c_str());
+  }
+  else if (ext == ".stl")
+  {
+    reader = vtkSmartPointer<vtkSTLReader>::New();
+    vtkSTLReader::SafeDownCast(reader)->SetFileName(path.c_str());
+  }
+  else if (ext == ".vtp")
+  {
+    reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    vtkXMLPolyDataReader::SafeDownCast(reader)->SetFileName(path.c_str());
+  }
+  else
+  {
+    error = "unsupported mesh format (got \"" + std::string(object.mesh_path) +
+      "\"; expected .ply, .obj, .stl or .vtp)";
+    return nullptr;
+  }
+  std::string readerError;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetCallback(CollectError);
+  onError->SetClientData(&readerError);
+  reader->AddObserver(vtkCommand::ErrorEvent, onError);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
+
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputConnection(reader->GetOutputPort());
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->AddObserver(vtkCommand::ErrorEvent, onError);
+  triangulate->Update();
+  vtkPolyData* read = triangulate->GetOutput();
+  if (!readerError.empty())
+  {
+    error = "unreadable mesh (got \"" + std::string(object.mesh_path) + "\": " + readerError + ")";
+    return nullptr;
+  }
+  if (!read || read->GetNumberOfPoints() == 0 || read->GetNumberOfPolys() == 0)
+  {
+    error = "empty mesh, no triangles (got \"" + std::string(object.mesh_path) + "\")";
+    return nullptr;
+  }
+
+  // Into our own double-precision mesh so the transform is applied exactly
+  // like it is for primitives.
+  vsh_mesh mesh = {};
+  std::vector<double> points(3 * static_cast<size_t>(read->GetNumberOfPoints()));
+  std::vector<double> normals(points.size(), 0.0);
+  for (vtkIdType i = 0; i < read->GetNumberOfPoints(); ++i)
+  {
+    read->GetPoint(i, points.data() + 3 * i);
+  }
+  for (double v : points)
+  {
+    if (!std::isfinite(v))
+    {
+      error = "mesh has a non-finite point coordinate (got \"" + std::string(object.mesh_path) +
+        "\")";
+      return nullptr;
+    }
+  }
+  mesh.points = points.data();
+  mesh.normals = normals.data();
+  mesh.point_count = static_cast<size_t>(read->GetNumberOfPoints());
+  if (object.has_transform)
+  {
+    vsh_mesh_transform(&mesh, object.transform);
+  }
+  vtkNew<vtkPoints> transformed;
+  transformed->SetDataTypeToDouble();
+  transformed->SetNumberOfPoints(read->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < read->GetNumberOfPoints(); ++i)
+  {
+    transformed->SetPoint(i, points.data() + 3 * i);
+  }
+  vtkNew<vtkPolyData> world;
+  world->SetPoints(transformed);
+  world->SetPolys(read->GetPolys());
+
+  // Smooth normals with feature edges split at 30 degrees (VTK's default),
+  // so faceted CAD parts stay faceted and scanned surfaces stay smooth.
+  vtkNew<vtkPolyDataNormals> withNormals;
+  withNormals->SetInputData(world);
+  withNormals->ComputePointNormalsOn();
+  withNormals->ComputeCellNormalsOff();
+  withNormals->SplittingOn();
+  withNormals->ConsistencyOn();
+  withNormals->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  withNormals->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(withNormals->GetOutput());
+  return out;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkShadowScene::vtkShadowScene()
+  : Impl(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkShadowScene::~vtkShadowScene() = default;
+
+//------------------------------------------------------------------------------
+bool vtkShadowScene::Load(const char* path)
+{
+  this->Impl->Clear();
+  this->Impl->Error.clear();
+  this->Impl->FileName = path ? path : "";
+  if (!path || !*path)
+  {
+    this->Impl->Error = "(no file): scene file name is empty";
+    return false;
+  }
+  char err[VSH_SCENE_ERROR_MAX];
+  vsh_scene* scene = nullptr;
+  if (vsh_scene_load(path, &scene, err, sizeof(err)) != 0)
+  {
+    this->Impl->Error = err;
+    return false;
+  }
+  std::vector<vtkSmartPointer<vtkPolyData>> objects;
+  for (size_t i = 0; i < scene->object_count; ++i)
+  {
+    const vsh_object& object = scene->objects[i];
+    if (object.kind == VSH_OBJECT_MESH)
+    {
+      std::string error;
+      auto poly = ReadMesh(object, error);
+      if (!poly)
+      {
+        this->Impl->Error =
+          std::string(path) + ": objects[" + std::to_string(i) + "].mesh: " + error;
+        vsh_scene_free(scene);
+        return false;
+      }
+      objects.push_back(poly);
+      continue;
+    }
+    vsh_mesh mesh = {};
+    if (vsh_object_tessellate(&object, &mesh) != 0)
+    {
+      this->Impl->Error = std::string(path) + ": objects[" + std::to_string(i) + "]." +
+        vsh_object_kind_name(object.kind) + ": tessellation failed";
+      vsh_scene_free(scene);
+      return false;
+    }
+    objects.push_back(PolyDataFromMesh(mesh));
+    vsh_mesh_free(&mesh);
+  }
+  this->Impl->Scene = scene;
+  this->Impl->Objects = std::move(objects);
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkShadowScene::GetErrorMessage() const
+{
+  return this->Impl->Error.c_str();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkShadowScene::GetFileName() const
+{
+  return this->Impl->FileName.c_str();
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowScene::GetWidth() const
+{
+  return this->Impl->Scene ? this->Impl->Scene->width : 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowScene::GetHeight() const
+{
+  return this->Impl->Scene ? this->Impl->Scene->height : 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowScene::GetNumberOfLights() const
+{
+  return this->Impl->Scene ? static_cast<int>(this->Impl->Scene->light_count) : 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowScene::GetNumberOfObjects() const
+{
+  return static_cast<int>(this->Impl->Objects.size());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkShadowScene::GetLightTypeName(int light) const
+{
+  if (light < 0 || light >= this->GetNumberOfLights())
+  {
+    return nullptr;
+  }
+  return vsh_light_type_name(this->Impl->Scene->lights[light].type);
+}
+
+//------------------------------------------------------------------------------
+vtkLight* vtkShadowScene::NewLight(int index) const
+{
+  if (index < 0 || index >= this->GetNumberOfLights())
+  {
+    vtkErrorMacro("NewLight: light " << index << " out of range");
+    return nullptr;
+  }
+  const vsh_light& l = this->Impl->Scene->lights[index];
+  vtkLight* light = vtkLight::New();
+  light->SetLightTypeToSceneLight();
+  light->SetColor(l.color[0], l.color[1], l.color[2]);
+  light->SetIntensity(l.intensity);
+  light->SetAttenuationValues(1.0, 0.0, 0.0);
+  switch (l.type)
+  {
+    case VSH_LIGHT_DIRECTIONAL:
+    {
+      // VTK's directional light shines from Position towards FocalPoint;
+      // put it at the scene centre minus the direction so both stay finite.
+      double b[6];
+      this->GetBounds(b);
+      const double c[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
+      light->SetPositional(false);
+      light->SetFocalPoint(c);
+      light->SetPosition(c[0] - l.direction[0], c[1] - l.direction[1], c[2] - l.direction[2]);
+      break;
+    }
+    case VSH_LIGHT_POINT:
+      light->SetPositional(true);
+      light->SetPosition(l.position[0], l.position[1], l.position[2]);
+      light->SetFocalPoint(l.position[0], l.position[1], l.position[2] - 1.0);
+      light->SetConeAngle(180.0);
+      break;
+    case VSH_LIGHT_SPOT:
+      light->SetPositional(true);
+      light->SetPosition(l.position[0], l.position[1], l.position[2]);
+      light->SetFocalPoint(l.focal_point[0], l.focal_point[1], l.focal_point[2]);
+      light->SetConeAngle(l.cone_angle);
+      // A hard-edged cone, uniform inside, as the ray tracers are configured.
+      light->SetExponent(0.0);
+      break;
+  }
+  return light;
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkShadowScene::GetObjectPolyData(int object) const
+{
+  if (object < 0 || object >= this->GetNumberOfObjects())
+  {
+    return nullptr;
+  }
+  return this->Impl->Objects[object];
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScene::GetObjectIsReceiver(int object) const
+{
+  return object >= 0 && object < this->GetNumberOfObjects() &&
+    this->Impl->Scene->objects[object].receiver;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScene::GetObjectCasts(int object) const
+{
+  return object >= 0 && object < this->GetNumberOfObjects() &&
+    this->Impl->Scene->objects[object].casts;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScene::GetObjectColor(int object, double color[3]) const
+{
+  color[0] = color[1] = color[2] = 1.0;
+  if (object >= 0 && object < this->GetNumberOfObjects())
+  {
+    std::copy_n(this->Impl->Scene->objects[object].color, 3, color);
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkShadowScene::GetObjectKindName(int object) const
+{
+  if (object < 0 || object >= this->GetNumberOfObjects())
+  {
+    return nullptr;
+  }
+  return vsh_object_kind_name(this->Impl->Scene->objects[object].kind);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScene::GetBounds(double bounds[6]) const
+{
+  vtkMath::UninitializeBounds(bounds);
+  bool first = true;
+  for (const auto& poly : this->Impl->Objects)
+  {
+    double b[6];
+    poly->GetBounds(b);
+    for (int a = 0; a < 3; ++a)
+    {
+      bounds[2 * a] = first ? b[2 * a] : std::min(bounds[2 * a], b[2 * a]);
+      bounds[2 * a + 1] = first ? b[2 * a + 1] : std::max(bounds[2 * a + 1], b[2 * a + 1]);
+    }
+    first = false;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScene::ConfigureCamera(vtkCamera* camera) const
+{
+  if (!camera || !this->Impl->Scene)
+  {
+    return;
+  }
+  const vsh_camera& c = this->Impl->Scene->camera;
+  camera->SetPosition(c.position[0], c.position[1], c.position[2]);
+  camera->SetFocalPoint(c.focal_point[0], c.focal_point[1], c.focal_point[2]);
+  camera->SetViewUp(c.view_up[0], c.view_up[1], c.view_up[2]);
+  camera->SetViewAngle(c.view_angle);
+  camera->ParallelProjectionOff();
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScene::Populate(vtkRenderer* renderer, bool lambertian, int onlyLight) const
+{
+  if (!renderer || !this->Impl->Scene)
+  {
+    vtkErrorMacro("Populate: no renderer or no scene loaded");
+    return false;
+  }
+  if (onlyLight >= this->GetNumberOfLights())
+  {
+    vtkErrorMacro("Populate: light " << onlyLight << " out of range");
+    return false;
+  }
+  for (int i = 0; i < this->GetNumberOfObjects(); ++i)
+  {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(this->Impl->Objects[i]);
+    mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    vtkProperty* p = actor->GetProperty();
+    p->SetInterpolationToPhong();
+    if (lambertian)
+    {
+      p->SetColor(1.0, 1.0, 1.0);
+      p->SetAmbient(0.0);
+      p->SetDiffuse(1.0);
+      p->SetSpecular(0.0);
+    }
+    else
+    {
+      double color[3];
+      this->GetObjectColor(i, color);
+      p->SetColor(color);
+      p->SetAmbient(0.05);
+      p->SetDiffuse(0.9);
+      p->SetSpecular(0.1);
+      p->SetSpecularPower(30.0);
+    }
+    renderer->AddActor(actor);
+  }
+  renderer->AutomaticLightCreationOff();
+  renderer->RemoveAllLights();
+  for (int k = 0; k < this->GetNumberOfLights(); ++k)
+  {
+    if (onlyLight >= 0 && k != onlyLight)
+    {
+      continue;
+    }
+    vtkLight* light = this->NewLight(k);
+    renderer->AddLight(light);
+    light->Delete();
+  }
+  const double* bg = this->Impl->Scene->background;
+  renderer->SetBackground(bg[0], bg[1], bg[2]);
+  this->ConfigureCamera(renderer->GetActiveCamera());
+  renderer->ResetCameraClippingRange();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScene::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->Impl->FileName << "\n";
+  os << indent << "ErrorMessage: " << this->Impl->Error << "\n";
+  os << indent << "Size: " << this->GetWidth() << " x " << this->GetHeight() << "\n";
+  os << indent << "NumberOfLights: " << this->GetNumberOfLights() << "\n";
+  os << indent << "NumberOfObjects: " << this->GetNumberOfObjects() << "\n";
+}

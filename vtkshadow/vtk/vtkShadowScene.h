@@ -1,0 +1,119 @@
+/**
+ * @class   vtkShadowScene
+ * @brief   A vtkshadow scene file loaded into VTK data: triangles, lights, camera.
+ *
+ * vtkShadowScene reads a scene file (docs/scene-format.md) through the C
+ * scene library, tessellates its primitives with vtkshadow's own code and
+ * reads its meshes with VTK's readers (PLY, OBJ, STL, VTP), so that every
+ * renderer (VTK, POV-Ray, Cycles) receives exactly the same triangles.
+ * Every field is validated; on failure Load() returns false and
+ * GetErrorMessage() names the file, the field and the value.
+ *
+ * @code{.py}
+ * scene = vtkshadow.vtkShadowScene()
+ * if not scene.Load("scenes/basic/sphere-plane.json"):
+ *     raise SystemExit(scene.GetErrorMessage())
+ * scene.Populate(renderer)
+ * @endcode
+ */
+#ifndef vtkShadowScene_h
+#define vtkShadowScene_h
+
+#include "vtkObject.h"
+#include "vtkshadowModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkActor;
+class vtkCamera;
+class vtkLight;
+class vtkPolyData;
+class vtkRenderer;
+
+class VTKSHADOW_EXPORT vtkShadowScene : public vtkObject
+{
+public:
+  static vtkShadowScene* New();
+  vtkTypeMacro(vtkShadowScene, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Load and validate a scene file. Returns false, keeps no partial scene and
+   * sets the error message on any problem.
+   */
+  bool Load(const char* path);
+
+  /**
+   * The last error ("FILE: FIELD: problem (got VALUE)"), or an empty string.
+   */
+  const char* GetErrorMessage() const;
+
+  /**
+   * The scene file that was loaded, or an empty string.
+   */
+  const char* GetFileName() const;
+
+  /**
+   * The image size the scene asks for ("size").
+   */
+  int GetWidth() const;
+  int GetHeight() const;
+
+  int GetNumberOfLights() const;
+  int GetNumberOfObjects() const;
+
+  /**
+   * "directional", "point" or "spot".
+   */
+  const char* GetLightTypeName(int light) const;
+
+  /**
+   * A new vtkLight configured as scene light `light` (caller owns it).
+   * Directional lights are non-positional scene lights; point lights are
+   * positional with a 180 degree cone; spot lights have a uniform (exponent 0)
+   * cone of the scene's half-angle. No distance attenuation.
+   */
+  vtkLight* NewLight(int light) const;
+
+  /**
+   * Triangles of object `object` in world coordinates (double points, point
+   * normals). The transform is already applied.
+   */
+  vtkPolyData* GetObjectPolyData(int object) const;
+  bool GetObjectIsReceiver(int object) const;
+  bool GetObjectCasts(int object) const;
+  void GetObjectColor(int object, double color[3]) const;
+  const char* GetObjectKindName(int object) const;
+
+  /**
+   * World bounds of all objects.
+   */
+  void GetBounds(double bounds[6]) const;
+
+  /**
+   * Set position, focal point, view-up and view angle of a camera.
+   */
+  void ConfigureCamera(vtkCamera* camera) const;
+
+  /**
+   * Add one actor per object (colour from the scene, or white Lambertian when
+   * `lambertian` is true: diffuse 1, no ambient, no specular), the scene's
+   * lights (all, or only `onlyLight` when it is >= 0), and the camera. The
+   * renderer's automatic headlight is switched off. Returns false when
+   * `onlyLight` is out of range.
+   */
+  bool Populate(vtkRenderer* renderer, bool lambertian = false, int onlyLight = -1) const;
+
+protected:
+  vtkShadowScene();
+  ~vtkShadowScene() override;
+
+private:
+  vtkShadowScene(const vtkShadowScene&) = delete;
+  void operator=(const vtkShadowScene&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif

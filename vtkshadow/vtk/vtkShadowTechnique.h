@@ -1,0 +1,93 @@
+/**
+ * @class   vtkShadowTechnique
+ * @brief   Builds the render-pass pipeline of one shadow technique.
+ *
+ * vtkShadowTechnique turns a technique name into the render pass that a
+ * vtkOpenGLRenderer runs, so that tools, tests and applications switch
+ * techniques without knowing how each is assembled:
+ *
+ * - "none": VTK's standard passes (vtkRenderStepsPass), no shadows.
+ * - "vtk":  VTK 9.1's own vtkShadowMapBakerPass + vtkShadowMapPass under a
+ *           vtkCameraPass, as VTK's TestShadowMapPass sets them up, with the
+ *           map resolution set by SetMapResolution() (default 2048). This is
+ *           the baseline every vtkshadow technique is measured against.
+ *
+ * Later techniques ("planar", "csm", "auto") plug in here.
+ *
+ * @code{.py}
+ * technique = vtkshadow.vtkShadowTechnique()
+ * technique.SetName("vtk")
+ * technique.Install(renderer)
+ * @endcode
+ */
+#ifndef vtkShadowTechnique_h
+#define vtkShadowTechnique_h
+
+#include "vtkObject.h"
+#include "vtkshadowModule.h" // for export macro
+
+class vtkRenderPass;
+class vtkRenderer;
+
+class VTKSHADOW_EXPORT vtkShadowTechnique : public vtkObject
+{
+public:
+  static vtkShadowTechnique* New();
+  vtkTypeMacro(vtkShadowTechnique, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The technique name (default "none"). Unknown names are rejected by
+   * IsValid() and CreatePass().
+   */
+  vtkSetStringMacro(Name);
+  vtkGetStringMacro(Name);
+
+  /**
+   * Shadow map edge length in texels for map-based techniques (default 2048).
+   */
+  vtkSetClampMacro(MapResolution, int, 16, 16384);
+  vtkGetMacro(MapResolution, int);
+
+  /**
+   * True when Name is one of the techniques this build provides.
+   */
+  bool IsValid() const;
+  static bool IsKnownTechnique(const char* name);
+
+  /**
+   * The techniques this build provides, separated by spaces.
+   */
+  static const char* GetKnownTechniques();
+
+  /**
+   * A new pass pipeline for the technique (caller owns it), or nullptr with an
+   * error for an unknown name.
+   */
+  vtkRenderPass* CreatePass();
+
+  /**
+   * Set the technique's pipeline on an OpenGL renderer. Returns false for an
+   * unknown technique or a renderer that is not a vtkOpenGLRenderer.
+   */
+  bool Install(vtkRenderer* renderer);
+
+  /**
+   * Bytes of shadow-map memory the technique uses for the lights of
+   * `renderer` (0 for "none").
+   */
+  long long GetShadowMapMemory(vtkRenderer* renderer) const;
+
+protected:
+  vtkShadowTechnique();
+  ~vtkShadowTechnique() override;
+
+  char* Name;
+  int MapResolution;
+
+private:
+  vtkShadowTechnique(const vtkShadowTechnique&) = delete;
+  void operator=(const vtkShadowTechnique&) = delete;
+};
+
+#endif

@@ -1,0 +1,222 @@
+#include "vtkShadowVisibility.h"
+
+#include "vtkFloatArray.h"
+#include "vtkFramebufferPass.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkPointData.h"
+#include "vtkRenderPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkShadowScene.h"
+#include "vtkShadowTechnique.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnsignedShortArray.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkShadowVisibility);
+vtkCxxSetObjectMacro(vtkShadowVisibility, Scene, vtkShadowScene);
+vtkCxxSetObjectMacro(vtkShadowVisibility, Technique, vtkShadowTechnique);
+
+namespace
+{
+vtkImageData* NewImage(int w, int h, int type)
+{
+  vtkImageData* image = vtkImageData::New();
+  image->SetDimensions(w, h, 1);
+  image->AllocateScalars(type, 1);
+  return image;
+}
+
+// Render the renderer's window through `pass` wrapped in a float framebuffer
+// and return the summed RGB of every pixel (row 0 at the bottom). Float
+// targets keep the dim, grazing-angle pixels as exact as the bright ones.
+bool RenderFloatIntensity(vtkRenderWindow* window, vtkOpenGLRenderer* renderer,
+  vtkRenderPass* pass, int w, int h, std::vector<float>& intensity)
+{
+  vtkNew<vtkFramebufferPass> capture;
+  capture->SetColorFormat(vtkTextureObject::Float32);
+  capture->SetDepthFormat(vtkTextureObject::Fixed32);
+  capture->SetDelegatePass(pass);
+  renderer->SetPass(capture);
+  window->Render();
+
+  vtkTextureObject* color = capture->GetColorTexture();
+  if (!color || !color->GetHandle() || color->GetWidth() != static_cast<unsigned int>(w) ||
+    color->GetHeight() != static_cast<unsigned int>(h))
+  {
+    renderer->SetPass(nullptr);
+    return false;
+  }
+  window->MakeCurrent();
+  std::vector<float> rgba(static_cast<size_t>(w) * h * 4);
+  color->Activate();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, rgba.data());
+  color->Deactivate();
+  const bool ok = glGetError() == GL_NO_ERROR;
+  intensity.resize(static_cast<size_t>(w) * h);
+  for (size_t i = 0; i < intensity.size(); ++i)
+  {
+    intensity[i] = rgba[4 * i] + rgba[4 * i + 1] + rgba[4 * i + 2];
+  }
+  // Release the pass (and its GL resources) while the context is current.
+  capture->ReleaseGraphicsResources(window);
+  renderer->SetPass(nullptr);
+  return ok;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkShadowVisibility::vtkShadowVisibility()
+  : Scene(nullptr)
+  , Technique(nullptr)
+  , Light(0)
+  , Size{ 0, 0 }
+  , Epsilon(1e-3)
+  , ErrorMessage(nullptr)
+  , Visibility(nullptr)
+  , Unshadowed(nullptr)
+  , Shadowed(nullptr)
+  , Mask(nullptr)
+  , Visibility16(nullptr)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkShadowVisibility::~vtkShadowVisibility()
+{
+  this->SetScene(nullptr);
+  this->SetTechnique(nullptr);
+  this->SetErrorMessage(nullptr);
+  for (vtkImageData* image :
+    { this->Visibility, this->Unshadowed, this->Shadowed, this->Mask, this->Visibility16 })
+  {
+    if (image)
+    {
+      image->Delete();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowVisibility::Compute()
+{
+  this->SetErrorMessage(nullptr);
+  if (!this->Scene || this->Scene->GetNumberOfObjects() == 0)
+  {
+    this->SetErrorMessage("no scene loaded");
+    return false;
+  }
+  if (!this->Technique || !this->Technique->IsValid())
+  {
+    this->SetErrorMessage("no valid technique");
+    return false;
+  }
+  if (this->Light < 0 || this->Light >= this->Scene->GetNumberOfLights())
+  {
+    const std::string msg = "light " + std::to_string(this->Light) + " out of range (scene has " +
+      std::to_string(this->Scene->GetNumberOfLights()) + ")";
+    this->SetErrorMessage(msg.c_str());
+    return false;
+  }
+  const int w = this->Size[0] > 0 ? this->Size[0] : this->Scene->GetWidth();
+  const int h = this->Size[1] > 0 ? this->Size[1] : this->Scene->GetHeight();
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(w, h);
+  vtkNew<vtkOpenGLRenderer> renderer;
+  window->AddRenderer(renderer);
+  this->Scene->Populate(renderer, /*lambertian=*/true, this->Light);
+
+  vtkSmartPointer<vtkRenderPass> shadowed;
+  shadowed.TakeReference(this->Technique->CreatePass());
+  vtkNew<vtkShadowTechnique> none;
+  none->SetName("none");
+  vtkSmartPointer<vtkRenderPass> unshadowed;
+  unshadowed.TakeReference(none->CreatePass());
+
+  std::vector<float> on, off;
+  if (!RenderFloatIntensity(window, renderer, unshadowed, w, h, off) ||
+    !RenderFloatIntensity(window, renderer, shadowed, w, h, on))
+  {
+    this->SetErrorMessage("could not read back the float render target");
+    return false;
+  }
+
+  for (vtkImageData** image :
+    { &this->Visibility, &this->Unshadowed, &this->Shadowed, &this->Mask, &this->Visibility16 })
+  {
+    if (*image)
+    {
+      (*image)->Delete();
+    }
+  }
+  this->Visibility = NewImage(w, h, VTK_FLOAT);
+  this->Unshadowed = NewImage(w, h, VTK_FLOAT);
+  this->Shadowed = NewImage(w, h, VTK_FLOAT);
+  this->Mask = NewImage(w, h, VTK_UNSIGNED_CHAR);
+  this->Visibility16 = NewImage(w, h, VTK_UNSIGNED_SHORT);
+  auto* vis = static_cast<float*>(this->Visibility->GetScalarPointer());
+  auto* offOut = static_cast<float*>(this->Unshadowed->GetScalarPointer());
+  auto* onOut = static_cast<float*>(this->Shadowed->GetScalarPointer());
+  auto* mask = static_cast<unsigned char*>(this->Mask->GetScalarPointer());
+  auto* vis16 = static_cast<unsigned short*>(this->Visibility16->GetScalarPointer());
+  for (size_t i = 0; i < off.size(); ++i)
+  {
+    offOut[i] = off[i];
+    onOut[i] = on[i];
+    const bool valid = off[i] > this->Epsilon;
+    const float v = valid ? std::min(1.0f, std::max(0.0f, on[i] / off[i])) : 0.0f;
+    vis[i] = v;
+    mask[i] = valid ? 255 : 0;
+    vis16[i] = static_cast<unsigned short>(std::lround(v * 65535.0f));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkShadowVisibility::GetVisibility()
+{
+  return this->Visibility;
+}
+vtkImageData* vtkShadowVisibility::GetUnshadowed()
+{
+  return this->Unshadowed;
+}
+vtkImageData* vtkShadowVisibility::GetShadowed()
+{
+  return this->Shadowed;
+}
+vtkImageData* vtkShadowVisibility::GetMask()
+{
+  return this->Mask;
+}
+vtkImageData* vtkShadowVisibility::GetVisibility16()
+{
+  return this->Visibility16;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVisibility::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Light: " << this->Light << "\n";
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+  os << indent << "Epsilon: " << this->Epsilon << "\n";
+  os << indent << "Technique: "
+     << (this->Technique && this->Technique->GetName() ? this->Technique->GetName() : "(none)")
+     << "\n";
+  os << indent << "ErrorMessage: " << (this->ErrorMessage ? this->ErrorMessage : "") << "\n";
+}

@@ -1,0 +1,77 @@
+/* vtkshadow.h - the C API of vtkshadow.
+ *
+ * Opaque handles over the VTK classes so that C programs can load scenes,
+ * switch shadows on for a vtkRenderer* and measure per-light visibility.
+ * Every function that can fail returns 0 on success (or a handle) and writes
+ * a message into the caller's `error` buffer otherwise (it may be NULL).
+ *
+ *   char error[1024];
+ *   vtkshadow_scene *scene = vtkshadow_scene_load("scene.json", error, sizeof error);
+ *   if (!scene) { fprintf(stderr, "%s\n", error); return 2; }
+ *   vtkshadow_technique *technique = vtkshadow_technique_new("vtk", error, sizeof error);
+ *   vtkshadow_render_png(scene, technique, "out.png", error, sizeof error);
+ *   vtkshadow_technique_free(technique);
+ *   vtkshadow_scene_free(scene);
+ */
+#ifndef vtkshadow_h
+#define vtkshadow_h
+
+#include "vtkshadowModule.h" /* for export macro */
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct vtkshadow_scene vtkshadow_scene;
+typedef struct vtkshadow_technique vtkshadow_technique;
+
+/* "MAJOR.MINOR.PATCH" of this library. */
+VTKSHADOW_EXPORT const char *vtkshadow_version(void);
+
+/* Load and validate a scene file; NULL on failure with the message in error. */
+VTKSHADOW_EXPORT vtkshadow_scene *vtkshadow_scene_load(const char *path, char *error,
+                                                       size_t error_size);
+VTKSHADOW_EXPORT void vtkshadow_scene_free(vtkshadow_scene *scene);
+VTKSHADOW_EXPORT int vtkshadow_scene_light_count(const vtkshadow_scene *scene);
+VTKSHADOW_EXPORT int vtkshadow_scene_object_count(const vtkshadow_scene *scene);
+VTKSHADOW_EXPORT void vtkshadow_scene_size(const vtkshadow_scene *scene, int *width,
+                                           int *height);
+/* Add the scene's actors, lights and camera to a vtkRenderer (passed as void*). */
+VTKSHADOW_EXPORT int vtkshadow_scene_populate(const vtkshadow_scene *scene,
+                                              void *vtk_renderer, char *error,
+                                              size_t error_size);
+
+/* A technique by name ("none", "vtk", ...); NULL for an unknown name. */
+VTKSHADOW_EXPORT vtkshadow_technique *vtkshadow_technique_new(const char *name, char *error,
+                                                              size_t error_size);
+VTKSHADOW_EXPORT void vtkshadow_technique_free(vtkshadow_technique *technique);
+VTKSHADOW_EXPORT const char *vtkshadow_technique_name(const vtkshadow_technique *technique);
+/* Shadow-map edge length in texels (16..16384) for map-based techniques. */
+VTKSHADOW_EXPORT int vtkshadow_technique_set_map_resolution(vtkshadow_technique *technique,
+                                                            int resolution);
+/* Switch the technique on for a vtkOpenGLRenderer (passed as void*). */
+VTKSHADOW_EXPORT int vtkshadow_technique_install(vtkshadow_technique *technique,
+                                                 void *vtk_renderer, char *error,
+                                                 size_t error_size);
+
+/* Render the scene in colour with the technique to a PNG file (offscreen;
+ * needs an X display with Debian's VTK). */
+VTKSHADOW_EXPORT int vtkshadow_render_png(const vtkshadow_scene *scene,
+                                          vtkshadow_technique *technique, const char *path,
+                                          char *error, size_t error_size);
+
+/* Visibility of one light under the technique (see docs/metrics.md).
+ * Reports the mean visibility and the count of valid pixels; writes the
+ * 16-bit visibility PNG when png_path is not NULL. */
+VTKSHADOW_EXPORT int vtkshadow_visibility(const vtkshadow_scene *scene,
+                                          vtkshadow_technique *technique, int light,
+                                          const char *png_path, double *mean_visibility,
+                                          long *valid_pixels, char *error, size_t error_size);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,219 @@
+// The extern "C" API: opaque handles that own the VTK objects.
+#include "vtkshadow.h"
+
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkShadowPNG.h"
+#include "vtkShadowScene.h"
+#include "vtkShadowTechnique.h"
+#include "vtkShadowVisibility.h"
+#include "vtkSmartPointer.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cstdio>
+#include <string>
+
+struct vtkshadow_scene
+{
+  vtkSmartPointer<vtkShadowScene> Scene;
+};
+
+struct vtkshadow_technique
+{
+  vtkSmartPointer<vtkShadowTechnique> Technique;
+};
+
+namespace
+{
+void SetError(char* error, size_t size, const std::string& message)
+{
+  if (error && size > 0)
+  {
+    std::snprintf(error, size, "%s", message.c_str());
+  }
+}
+}
+
+extern "C"
+{
+  const char* vtkshadow_version(void) { return "0.1.0"; }
+
+  vtkshadow_scene* vtkshadow_scene_load(const char* path, char* error, size_t error_size)
+  {
+    auto scene = vtkSmartPointer<vtkShadowScene>::New();
+    if (!scene->Load(path))
+    {
+      SetError(error, error_size, scene->GetErrorMessage());
+      return nullptr;
+    }
+    auto* handle = new vtkshadow_scene;
+    handle->Scene = scene;
+    return handle;
+  }
+
+  void vtkshadow_scene_free(vtkshadow_scene* scene) { delete scene; }
+
+  int vtkshadow_scene_light_count(const vtkshadow_scene* scene)
+  {
+    return scene ? scene->Scene->GetNumberOfLights() : 0;
+  }
+
+  int vtkshadow_scene_object_count(const vtkshadow_scene* scene)
+  {
+    return scene ? scene->Scene->GetNumberOfObjects() : 0;
+  }
+
+  void vtkshadow_scene_size(const vtkshadow_scene* scene, int* width, int* height)
+  {
+    if (width)
+    {
+      *width = scene ? scene->Scene->GetWidth() : 0;
+    }
+    if (height)
+    {
+      *height = scene ? scene->Scene->GetHeight() : 0;
+    }
+  }
+
+  int vtkshadow_scene_populate(
+    const vtkshadow_scene* scene, void* vtk_renderer, char* error, size_t error_size)
+  {
+    auto* renderer = static_cast<vtkRenderer*>(vtk_renderer);
+    if (!scene || !renderer || !renderer->IsA("vtkRenderer"))
+    {
+      SetError(error, error_size, "vtkshadow_scene_populate: need a scene and a vtkRenderer*");
+      return 1;
+    }
+    return scene->Scene->Populate(renderer) ? 0 : 1;
+  }
+
+  vtkshadow_technique* vtkshadow_technique_new(const char* name, char* error, size_t error_size)
+  {
+    if (!vtkShadowTechnique::IsKnownTechnique(name))
+    {
+      SetError(error, error_size,
+        std::string("unknown technique \"") + (name ? name : "(null)") +
+          "\"; known: " + vtkShadowTechnique::GetKnownTechniques());
+      return nullptr;
+    }
+    auto* handle = new vtkshadow_technique;
+    handle->Technique = vtkSmartPointer<vtkShadowTechnique>::New();
+    handle->Technique->SetName(name);
+    return handle;
+  }
+
+  void vtkshadow_technique_free(vtkshadow_technique* technique) { delete technique; }
+
+  const char* vtkshadow_technique_name(const vtkshadow_technique* technique)
+  {
+    return technique ? technique->Technique->GetName() : nullptr;
+  }
+
+  int vtkshadow_technique_set_map_resolution(vtkshadow_technique* technique, int resolution)
+  {
+    if (!technique || resolution < 16 || resolution > 16384)
+    {
+      return 1;
+    }
+    technique->Technique->SetMapResolution(resolution);
+    return 0;
+  }
+
+  int vtkshadow_technique_install(
+    vtkshadow_technique* technique, void* vtk_renderer, char* error, size_t error_size)
+  {
+    auto* renderer = static_cast<vtkRenderer*>(vtk_renderer);
+    if (!technique || !renderer || !renderer->IsA("vtkOpenGLRenderer") ||
+      !technique->Technique->Install(renderer))
+    {
+      SetError(error, error_size, "vtkshadow_technique_install: need a vtkOpenGLRenderer*");
+      return 1;
+    }
+    return 0;
+  }
+
+  int vtkshadow_render_png(const vtkshadow_scene* scene, vtkshadow_technique* technique,
+    const char* path, char* error, size_t error_size)
+  {
+    if (!scene || !technique || !path)
+    {
+      SetError(error, error_size, "vtkshadow_render_png: need a scene, a technique and a path");
+      return 1;
+    }
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetSize(scene->Scene->GetWidth(), scene->Scene->GetHeight());
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    scene->Scene->Populate(renderer);
+    if (!technique->Technique->Install(renderer))
+    {
+      SetError(error, error_size, "vtkshadow_render_png: cannot install the technique");
+      return 1;
+    }
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    std::string message;
+    if (!vtkshadow::WritePNGAtomically(grab->GetOutput(), path, message))
+    {
+      SetError(error, error_size, message);
+      return 1;
+    }
+    return 0;
+  }
+
+  int vtkshadow_visibility(const vtkshadow_scene* scene, vtkshadow_technique* technique,
+    int light, const char* png_path, double* mean_visibility, long* valid_pixels, char* error,
+    size_t error_size)
+  {
+    if (!scene || !technique)
+    {
+      SetError(error, error_size, "vtkshadow_visibility: need a scene and a technique");
+      return 1;
+    }
+    vtkNew<vtkShadowVisibility> visibility;
+    visibility->SetScene(scene->Scene);
+    visibility->SetTechnique(technique->Technique);
+    visibility->SetLight(light);
+    if (!visibility->Compute())
+    {
+      SetError(error, error_size, visibility->GetErrorMessage());
+      return 1;
+    }
+    const auto* v = static_cast<const float*>(visibility->GetVisibility()->GetScalarPointer());
+    const auto* m = static_cast<const unsigned char*>(visibility->GetMask()->GetScalarPointer());
+    const vtkIdType n = visibility->GetVisibility()->GetNumberOfPoints();
+    double sum = 0.0;
+    long count = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (m[i])
+      {
+        sum += v[i];
+        ++count;
+      }
+    }
+    if (mean_visibility)
+    {
+      *mean_visibility = count ? sum / count : 0.0;
+    }
+    if (valid_pixels)
+    {
+      *valid_pixels = count;
+    }
+    std::string message;
+    if (png_path &&
+      !vtkshadow::WritePNGAtomically(visibility->GetVisibility16(), png_path, message))
+    {
+      SetError(error, error_size, message);
+      return 1;
+    }
+    return 0;
+  }
+}
