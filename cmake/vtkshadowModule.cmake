@@ -1,11 +1,12 @@
 # Build vtkshadow/vtk as an external VTK module with VTK's module system and
 # wrap it with VTK's own Python wrapping (as VTK's Examples/Modules/Wrapping).
-find_package(VTK 9.1 REQUIRED COMPONENTS
+set(VTKSHADOW_VTK_COMPONENTS
   CommonCore CommonDataModel CommonMath CommonSystem CommonTransforms
   FiltersCore IOGeometry IOImage IOPLY IOXML
   RenderingCore RenderingOpenGL2 RenderingUI
-  InteractionStyle RenderingFreeType
-  WrappingPythonCore Python)
+  InteractionStyle RenderingFreeType)
+find_package(VTK 9.1 REQUIRED COMPONENTS ${VTKSHADOW_VTK_COMPONENTS} WrappingPythonCore Python)
+string(REPLACE ";" " " VTKSHADOW_VTK_COMPONENTS "${VTKSHADOW_VTK_COMPONENTS}")
 
 set(BUILD_SHARED_LIBS ON)
 vtk_module_scan(

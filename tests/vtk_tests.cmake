@@ -1,1 +1,56 @@
-# tests that need VTK
+# Tests that need VTK and an X display (Debian's VTK renders through GLX only).
+# Each GL test starts its own Xvfb server with xvfb-run -a, so the tests also
+# run in parallel and from a shell without DISPLAY. A missing xvfb-run is an
+# error, never a silently skipped test.
+find_program(VTKSHADOW_XVFB_RUN xvfb-run)
+if(NOT VTKSHADOW_XVFB_RUN)
+  message(FATAL_ERROR "xvfb-run not found: apt-get install xvfb xauth (the GL tests need it)")
+endif()
+set(VTKSHADOW_GL ${VTKSHADOW_XVFB_RUN} -a -s "-screen 0 1920x1080x24")
+set(VTKSHADOW_BIN "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}")
+set(VTKSHADOW_PY "${VTKSHADOW_BIN}/vtkshadow-python")
+set(VTKSHADOW_TEST_OUT "${CMAKE_BINARY_DIR}/test-output")
+
+# Python: the wrapped classes import and work.
+add_test(NAME python.api
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_python_api.py
+          ${PROJECT_SOURCE_DIR})
+
+# C API from a .c file.
+add_executable(test_capi capi/test_capi.c)
+target_link_libraries(test_capi PRIVATE vtkshadow::vtkshadow)
+vtk_module_autoinit(TARGETS test_capi MODULES VTK::RenderingOpenGL2)
+add_test(NAME capi.c
+  COMMAND ${VTKSHADOW_GL} $<TARGET_FILE:test_capi> ${PROJECT_SOURCE_DIR}/scenes/basic/sphere-plane.json
+          ${VTKSHADOW_TEST_OUT}/capi)
+
+# Install tree + find_package(vtkshadow) from a downstream C project.
+add_test(NAME install.downstream
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/downstream/run.sh ${CMAKE_BINARY_DIR}
+          ${CMAKE_CURRENT_SOURCE_DIR}/downstream ${PROJECT_SOURCE_DIR}/scenes/basic/sphere-plane.json
+          ${VTKSHADOW_XVFB_RUN})
+
+# vtkshadow-render: every bad input gives exit status 2, a message naming the
+# file, field and value, and no output file.
+add_test(NAME cli.bad_input
+  COMMAND ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_bad_input.py
+          --bin ${VTKSHADOW_BIN} --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/cli)
+# ... and a good scene writes image, visibility, mask and stats.
+add_test(NAME cli.outputs
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_outputs.py
+          --bin ${VTKSHADOW_BIN} --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/outputs)
+
+# Visibility against the exact answer by ray casting (tests/render/).
+function(vtkshadow_visibility_test name)
+  add_test(NAME render.${name}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_visibility.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/render ${ARGN})
+  set_tests_properties(render.${name} PROPERTIES LABELS "render")
+endfunction()
+include(${CMAKE_CURRENT_SOURCE_DIR}/render/visibility_tests.cmake)
+
+# The C libraries once more with AddressSanitizer and UBSan, unit tests run there.
+add_test(NAME sanitize.unit
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/sanitize/run.sh ${PROJECT_SOURCE_DIR}
+          ${CMAKE_BINARY_DIR}/sanitize)
+set_tests_properties(sanitize.unit PROPERTIES TIMEOUT 1200 LABELS "sanitize")

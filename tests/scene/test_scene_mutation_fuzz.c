@@ -9,7 +9,7 @@
  *   - success: a scene whose primitives all tessellate, with unit normals.
  * Run under ASan/UBSan (VTKSHADOW_SANITIZE=ON) this also catches memory errors.
  * Same seed, same mutations: a failure reproduces with the printed iteration.
- * Usage: test_scene_mutation_fuzz GOOD.json... (env VSH_FUZZ_ITERATIONS, default 4000)
+ * Usage: test_scene_mutation_fuzz GOOD.json... (env VSH_FUZZ_ITERATIONS, default 20000)
  */
 #include "vsh_check.h"
 #include "vsh_scene.h"
@@ -161,6 +161,10 @@ static char *read_file(const char *path, size_t *len) {
   fseek(f, 0, SEEK_END);
   size = ftell(f);
   fseek(f, 0, SEEK_SET);
+  if (size < 0) {
+    fclose(f);
+    return NULL;
+  }
   data = (char *)malloc((size_t)size + 1);
   if (data && fread(data, 1, (size_t)size, f) != (size_t)size) {
     free(data);
@@ -215,7 +219,7 @@ static void check_scene(const vsh_scene *s, const char *path, long iteration) {
 }
 
 int main(int argc, char **argv) {
-  long iterations = 4000, it;
+  long iterations = 20000, it;
   const char *env = getenv("VSH_FUZZ_ITERATIONS");
   int f;
   clock_t start = clock();

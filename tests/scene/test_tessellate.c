@@ -344,6 +344,44 @@ static void test_transform(void) {
   vsh_mesh_free(&m); /* freeing twice is harmless: free zeroes the struct */
 }
 
+/* Regressions found by the mutation fuzzer: extreme but valid scales must
+ * still give unit normals with the right direction. */
+static void test_extreme_scales(void) {
+  const double aniso[16] = {1e200, 0, 0, 0, 0, 1e-200, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  double lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+  double scales[2] = {1e200, 1e-200};
+  vsh_object o = box(lo, hi);
+  vsh_mesh m;
+  size_t k;
+  int i;
+  set_transform(&o, aniso);
+  CHECK(vsh_object_tessellate(&o, &m) == 0);
+  for (k = 0; k < m.point_count; ++k) {
+    const double *n = m.normals + 3 * k;
+    CHECK_NEAR(len(n), 1, 1e-12);
+    /* Axis-aligned scale: face normals stay on their axis, same sign as before. */
+    CHECK(fabs(n[0]) == 1 || fabs(n[1]) == 1 || fabs(n[2]) == 1);
+  }
+  vsh_mesh_free(&m);
+  o = sphere(1, 16);
+  set_transform(&o, aniso);
+  CHECK(vsh_object_tessellate(&o, &m) == 0);
+  for (k = 0; k < m.point_count; ++k) CHECK_NEAR(len(m.normals + 3 * k), 1, 1e-12);
+  vsh_mesh_free(&m);
+
+  for (i = 0; i < 2; ++i) {
+    vsh_object p = make(VSH_OBJECT_PLANE);
+    p.point1[0] = scales[i];
+    p.point2[1] = scales[i];
+    CHECK(vsh_object_tessellate(&p, &m) == 0);
+    if (m.normals) {
+      CHECK_NEAR(m.normals[2], 1, 0);
+      CHECK_NEAR(m.normals[0], 0, 0);
+    }
+    vsh_mesh_free(&m);
+  }
+}
+
 static void test_refusals(void) {
   vsh_object o = make(VSH_OBJECT_MESH);
   vsh_mesh m;
@@ -364,6 +402,7 @@ int main(void) {
   test_box();
   test_cylinder();
   test_transform();
+  test_extreme_scales();
   test_refusals();
   return vsh_check_report("scene.tessellate");
 }

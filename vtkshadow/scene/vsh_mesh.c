@@ -69,7 +69,7 @@ void vsh_mesh_transform(vsh_mesh *mesh, const double t[16]) {
 
   for (i = 0; i < mesh->point_count; ++i) {
     double *n = mesh->normals + 3 * i, w[3], m[3];
-    int e[3], top = INT_MIN;
+    int e[3] = {0, 0, 0}, top = INT_MIN;
     for (r = 0; r < 3; ++r) {
       w[r] = c[r][0] * n[0] + c[r][1] * n[1] + c[r][2] * n[2];
       /* cofactor = det * inverse-transpose: undo det's sign so normals keep

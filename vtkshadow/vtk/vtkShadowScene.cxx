@@ -26,6 +26,7 @@
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
 
+#include "vsh_ply_check.h"
 #include "vsh_scene.h"
 
 #include <algorithm>
@@ -101,11 +102,23 @@ void CollectError(vtkObject*, unsigned long, void* clientData, void* callData)
   auto* text = static_cast<std::string*>(clientData);
   if (text->empty() && callData)
   {
-    *text = static_cast<const char*>(callData);
-    while (!text->empty() && std::isspace(static_cast<unsigned char>(text->back())))
+    // VTK's text is "ERROR: In FILE, line N\nCLASS (0xADDRESS): message":
+    // keep the message, on one line.
+    std::string message = static_cast<const char*>(callData);
+    const auto address = message.rfind("): ");
+    if (address != std::string::npos)
     {
-      text->pop_back();
+      message = message.substr(address + 3);
     }
+    for (char& c : message)
+    {
+      c = (c == '\n' || c == '\r') ? ' ' : c;
+    }
+    while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
+    {
+      message.pop_back();
+    }
+    *text = message;
   }
 }
 
@@ -119,6 +132,13 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const vsh_object& object, std::string& err
   vtkSmartPointer<vtkAlgorithm> reader;
   if (ext == ".ply")
   {
+    // VTK 9.1's PLY reader crashes on truncated files: check them first.
+    char reason[256];
+    if (vsh_ply_check(path.c_str(), reason, sizeof(reason)) != 0)
+    {
+      error = "unreadable mesh (got \"" + std::string(object.mesh_path) + "\": " + reason + ")";
+      return nullptr;
+    }
     reader = vtkSmartPointer<vtkPLYReader>::New();
     vtkPLYReader::SafeDownCast(reader)->SetFileName(path.c_str());
   }

@@ -1,0 +1,82 @@
+"""vtkshadow-render on bad input: exit status 2, a message naming the file, the
+field and the value, and no output file left behind.
+
+Covers every bad scene in tests/scene/data/bad (the parser's rules, whose exact
+messages tests/scene checks in C), the mesh problems only VTK's readers can
+find (tests/cli/data), and bad command lines."""
+import argparse
+import glob
+import os
+import re
+import subprocess
+import sys
+
+ap = argparse.ArgumentParser()
+ap.add_argument("--bin", required=True)
+ap.add_argument("--source", required=True)
+ap.add_argument("--out", required=True)
+args = ap.parse_args()
+os.makedirs(args.out, exist_ok=True)
+render = os.path.join(args.bin, "vtkshadow-render")
+good = os.path.join(args.source, "scenes/basic/sphere-plane.json")
+failures = []
+count = 0
+
+
+def run_case(argv, expect_in_message, label):
+    global count
+    count += 1
+    outputs = [os.path.join(args.out, f"{label}.{ext}") for ext in
+               ("image.png", "vis.png", "mask.png", "stats.json")]
+    for p in outputs:
+        if os.path.exists(p):
+            os.remove(p)
+    full = [render] + argv + ["--image", outputs[0], "--visibility", outputs[1],
+                              "--mask", outputs[2], "--stats", outputs[3], "--quiet"]
+    env = dict(os.environ)
+    env.pop("DISPLAY", None)  # bad input must be caught before any rendering
+    run = subprocess.run(full, capture_output=True, text=True, env=env, timeout=120)
+    problems = []
+    if run.returncode != 2:
+        problems.append(f"exit status {run.returncode}, expected 2")
+    for needle in expect_in_message:
+        if needle not in run.stderr:
+            problems.append(f"message lacks {needle!r}")
+    left = [p for p in outputs if os.path.exists(p)]
+    left += glob.glob(os.path.join(args.out, f"{label}.*.tmp*"))
+    if left:
+        problems.append(f"left output behind: {left}")
+    if problems:
+        failures.append(label)
+        print(f"FAIL {label}: {'; '.join(problems)}\n  stderr: {run.stderr.strip()}")
+
+
+# Every bad scene file of the parser's test suite.
+bad_dir = os.path.join(args.source, "tests/scene/data/bad")
+for path in sorted(glob.glob(os.path.join(bad_dir, "*.json"))):
+    label = os.path.splitext(os.path.basename(path))[0]
+    # The message starts with the file name, then the field (or the position).
+    run_case([path, "--technique", "vtk"], [f"vtkshadow-render: {path}: "], "scene-" + label)
+    count += 0
+
+# Mesh problems found by VTK's readers: field objects[0].mesh and the path.
+data = os.path.join(args.source, "tests/cli/data")
+for name, needle in [("empty-mesh.json", "empty mesh"), ("corrupt-mesh.json", "unreadable mesh"),
+                     ("no-faces-mesh.json", "empty mesh")]:
+    path = os.path.join(data, name)
+    run_case([path, "--technique", "none"], [f"{path}: objects[0].mesh: ", needle, '(got "meshes/'],
+             "mesh-" + name)
+
+# Bad command lines.
+run_case([good, "--technique", "bogus"], ['unknown technique "bogus"'], "cli-technique")
+run_case([good], ["missing --technique"], "cli-no-technique")
+run_case([good, "--technique", "vtk", "--light", "3"], ["--light", "out of range", "3 lights"],
+         "cli-light-range")
+run_case([good, "--technique", "vtk", "--frames", "0"], ["--frames", '(got "0")'], "cli-frames")
+run_case([good, "--technique", "vtk", "--size", "10x"], ["--size", '(got "10x")'], "cli-size")
+run_case([good, "--technique", "vtk", "--bogus"], ['unknown option "--bogus"'], "cli-option")
+run_case([os.path.join(args.out, "missing.json"), "--technique", "vtk"],
+         ["missing.json"], "cli-missing-scene")
+
+print(f"cli.bad_input: {count} cases, {len(failures)} failed")
+sys.exit(1 if failures else 0)

@@ -1,0 +1,71 @@
+"""The Python wrapping: `import vtkshadow` gives working VTK-style classes."""
+import os
+import sys
+
+import vtkshadow
+from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factory overrides)
+
+source = sys.argv[1]
+failures = []
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+        print("FAIL:", what)
+
+
+scene = vtkshadow.vtkShadowScene()
+check(scene.Load(os.path.join(source, "scenes/basic/sphere-plane.json")), "load the basic scene")
+check(scene.GetNumberOfLights() == 3, "three lights")
+check(scene.GetNumberOfObjects() == 2, "two objects")
+check(scene.GetLightTypeName(2) == "spot", "light 2 is a spot")
+check(scene.GetObjectIsReceiver(1) and not scene.GetObjectIsReceiver(0), "the plane receives")
+poly = scene.GetObjectPolyData(0)
+check(poly is not None and poly.GetNumberOfPolys() > 1000, "the sphere is tessellated")
+check(poly.GetPoints().GetDataType() == 11, "points are double precision")  # VTK_DOUBLE
+bounds = [0.0] * 6
+scene.GetBounds(bounds)
+check(abs(bounds[0] + 5) < 1e-12 and abs(bounds[5] - 1.7) < 1e-9, f"bounds {bounds}")
+
+bad = vtkshadow.vtkShadowScene()
+check(not bad.Load(os.path.join(source, "tests/scene/data/bad/sphere_radius_negative.json")),
+      "a bad scene is rejected")
+check("radius" in bad.GetErrorMessage(), "the message names the field: " + bad.GetErrorMessage())
+
+technique = vtkshadow.vtkShadowTechnique()
+check(technique.GetName() == "none", "default technique")
+technique.SetName("vtk")
+check(technique.IsValid() and technique.GetMapResolution() == 2048, "vtk at 2048")
+check(vtkshadow.vtkShadowTechnique.IsKnownTechnique("vtk"), "static lookup")
+check(not vtkshadow.vtkShadowTechnique.IsKnownTechnique("bogus"), "unknown name")
+
+window = vtkRenderWindow()
+window.SetOffScreenRendering(1)
+window.SetSize(96, 96)
+renderer = vtkRenderer()
+window.AddRenderer(renderer)
+check(scene.Populate(renderer), "populate")
+check(renderer.GetActors().GetNumberOfItems() == 2, "two actors")
+check(renderer.GetLights().GetNumberOfItems() == 3, "three lights in the renderer")
+check(technique.Install(renderer), "install the vtk technique")
+check(technique.GetShadowMapMemory(renderer) > 0, "the vtk maps take memory")
+window.Render()
+
+visibility = vtkshadow.vtkShadowVisibility()
+visibility.SetScene(scene)
+visibility.SetTechnique(technique)
+visibility.SetSize(96, 72)
+visibility.SetLight(0)
+check(visibility.Compute(), "compute visibility")
+image = visibility.GetVisibility()
+check(image.GetDimensions() == (96, 72, 1), f"visibility size {image.GetDimensions()}")
+lo, hi = image.GetScalarRange()
+check(lo == 0.0 and hi == 1.0, f"visibility spans [0, 1] (got [{lo}, {hi}])")
+visibility.SetLight(7)
+check(not visibility.Compute() and "out of range" in visibility.GetErrorMessage(),
+      "an out-of-range light is an error")
+print(str(technique)[:40].replace("\n", " "), "...")
+print("python.api:", "FAILED" if failures else "ok", f"({len(failures)} failures)")
+sys.exit(1 if failures else 0)
