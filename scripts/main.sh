@@ -6,4 +6,4 @@ set -eu
 cd "$(dirname "$0")/.."
 sh scripts/install-deps.sh
 sh scripts/build.sh
-sh scripts/render-scenes.sh out/render scenes
+sh tests/gl-run.sh sh scripts/render-scenes.sh out/render scenes

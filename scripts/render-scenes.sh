@@ -1,11 +1,12 @@
 #!/bin/sh
 # render-scenes.sh OUTDIR SCENEDIR: every scene x technique x light, with
 # progress output. Exit status non-zero if any render failed (the others go on).
+# Needs an X display: main.sh runs it under tests/gl-run.sh (one Xvfb for all).
 set -u
 out=${1:-out/render}
 scenes=${2:-scenes}
 bin="$(cd "$(dirname "$0")/.." && pwd)/build/bin"
-techniques="none vtk"
+techniques="none vtk planar"
 status=0
 count=0
 failed=0
@@ -22,7 +23,7 @@ for scene in $(find "$scenes" -name '*.json' | sort); do
       stats=""
       [ "$k" -eq 0 ] && stats="--stats $dir/stats.json"
       # shellcheck disable=SC2086
-      if ! xvfb-run -a -s "-screen 0 1920x1080x24" "$bin/vtkshadow-render" "$scene" \
+      if ! "$bin/vtkshadow-render" "$scene" \
           --technique "$technique" --image "$dir/image.png" --light "$k" \
           --visibility "$dir/light${k}_visibility.png" --mask "$dir/light${k}_mask.png" \
           $stats --frames 30 --quiet; then

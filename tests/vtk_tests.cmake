@@ -1,12 +1,18 @@
 # Tests that need VTK and an X display (Debian's VTK renders through GLX only).
-# Each GL test starts its own Xvfb server with xvfb-run -a, so the tests also
-# run in parallel and from a shell without DISPLAY. A missing xvfb-run is an
-# error, never a silently skipped test.
-find_program(VTKSHADOW_XVFB_RUN xvfb-run)
-if(NOT VTKSHADOW_XVFB_RUN)
-  message(FATAL_ERROR "xvfb-run not found: apt-get install xvfb xauth (the GL tests need it)")
+# Each GL test starts its own Xvfb server (gl-run.sh), so the tests also run
+# in parallel and from a shell without DISPLAY. A missing Xvfb is an error,
+# never a silently skipped test.
+find_program(VTKSHADOW_XVFB Xvfb)
+if(NOT VTKSHADOW_XVFB)
+  message(FATAL_ERROR "Xvfb not found: apt-get install xvfb xauth (the GL tests need it)")
 endif()
-set(VTKSHADOW_GL ${VTKSHADOW_XVFB_RUN} -a -s "-screen 0 1920x1080x24")
+set(VTKSHADOW_GL ${CMAKE_COMMAND} -E env VTKSHADOW_DISPLAY_FILE=${CMAKE_BINARY_DIR}/xvfb/display
+  ${CMAKE_CURRENT_SOURCE_DIR}/gl-run.sh)
+# One Xvfb for the whole run, started and stopped as a ctest fixture.
+add_test(NAME xvfb.start COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/xvfb-fixture.sh start ${CMAKE_BINARY_DIR}/xvfb)
+add_test(NAME xvfb.stop COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/xvfb-fixture.sh stop ${CMAKE_BINARY_DIR}/xvfb)
+set_tests_properties(xvfb.start PROPERTIES FIXTURES_SETUP xvfb)
+set_tests_properties(xvfb.stop PROPERTIES FIXTURES_CLEANUP xvfb)
 set(VTKSHADOW_BIN "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}")
 set(VTKSHADOW_PY "${VTKSHADOW_BIN}/vtkshadow-python")
 set(VTKSHADOW_TEST_OUT "${CMAKE_BINARY_DIR}/test-output")
@@ -26,9 +32,8 @@ add_test(NAME capi.c
 
 # Install tree + find_package(vtkshadow) from a downstream C project.
 add_test(NAME install.downstream
-  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/downstream/run.sh ${CMAKE_BINARY_DIR}
-          ${CMAKE_CURRENT_SOURCE_DIR}/downstream ${PROJECT_SOURCE_DIR}/scenes/basic/sphere-plane.json
-          ${VTKSHADOW_XVFB_RUN})
+  COMMAND ${VTKSHADOW_GL} ${CMAKE_CURRENT_SOURCE_DIR}/downstream/run.sh ${CMAKE_BINARY_DIR}
+          ${CMAKE_CURRENT_SOURCE_DIR}/downstream ${PROJECT_SOURCE_DIR}/scenes/basic/sphere-plane.json)
 
 # vtkshadow-render: every bad input gives exit status 2, a message naming the
 # file, field and value, and no output file.
@@ -54,3 +59,12 @@ add_test(NAME sanitize.unit
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/sanitize/run.sh ${PROJECT_SOURCE_DIR}
           ${CMAKE_BINARY_DIR}/sanitize)
 set_tests_properties(sanitize.unit PROPERTIES TIMEOUT 1200 LABELS "sanitize")
+include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_tests.cmake)
+
+# Every test of this directory may use the shared X server.
+get_property(vtkshadow_vtk_tests DIRECTORY PROPERTY TESTS)
+foreach(test IN LISTS vtkshadow_vtk_tests)
+  if(NOT test MATCHES "^xvfb\\.")
+    set_tests_properties(${test} PROPERTIES FIXTURES_REQUIRED xvfb)
+  endif()
+endforeach()

@@ -7,8 +7,9 @@ import subprocess
 import sys
 
 import numpy as np
-from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.util import numpy_support
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "render"))
+from png_io import read_png  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--bin", required=True)
@@ -26,17 +27,6 @@ def check(cond, what):
         print("FAIL:", what)
 
 
-def read_png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    scalars = image.GetPointData().GetScalars()
-    a = numpy_support.vtk_to_numpy(scalars).reshape(h, w, -1)
-    return a[::-1], scalars.GetDataTypeAsString()
-
-
 for technique in ("none", "vtk"):
     for light in (0, 1):
         base = os.path.join(args.out, f"{technique}-light{light}")
@@ -49,11 +39,11 @@ for technique in ("none", "vtk"):
         if run.returncode != 0:
             continue
         check("visibility of light" in run.stderr, "progress output on stderr")
-        image, image_type = read_png(base + ".png")
+        image, image_type = read_png(base + ".png", components=True)
         check(image.shape == (240, 320, 3) and image_type == "unsigned char", f"image {image.shape}")
-        vis, vis_type = read_png(base + "-vis.png")
+        vis, vis_type = read_png(base + "-vis.png", components=True)
         check(vis.shape == (240, 320, 1) and vis_type == "unsigned short", f"visibility {vis_type}")
-        mask, mask_type = read_png(base + "-mask.png")
+        mask, mask_type = read_png(base + "-mask.png", components=True)
         check(mask_type == "unsigned char" and set(np.unique(mask)) <= {0, 255}, "mask is 0/255")
         # Row 0 at the top: the top rows see the sky (nothing), the bottom the floor.
         check(mask[:5].max() == 0 and mask[-5:].min() == 255, "row 0 of the mask is the top")

@@ -1,6 +1,24 @@
-"""Exact per-light visibility of analytic scenes (spheres over parallelograms),
-computed by ray casting one ray through the centre of each pixel, with the same
-camera model as VTK, POV-Ray and Cycles (shared/notes/reference-renderers.md).
+"""Exact per-light visibility of analytic scenes, computed by ray casting one
+ray through the centre of each pixel, with the same camera model as VTK, POV-Ray
+and Cycles (shared/notes/reference-renderers.md).
+
+Objects: sphere, plane (parallelogram) and box, each with the scene format's
+optional row-major affine "transform" (docs/scene-format.md; a transformed
+sphere is an ellipsoid). Cylinders and meshes are not supported (ValueError).
+Any number of lights; render_exact() answers for one of them.
+
+Shadow models (render_exact(..., shadows=...)):
+  "all"    every object whose "casts" is not false shadows every other object
+           (scenes without "casts" keys: exactly the original behaviour);
+  "planar" what projected planar shadows promise: only pixels on "receiver"
+           planes are shadowed (by the other casting objects); every other
+           surface gets v = 1 wherever it faces the light;
+  "none"   no shadows (v = 1 on every valid pixel).
+
+All arithmetic is float64 and camera-relative: the eye is subtracted from every
+position (objects, lights) before anything else, so scenes translated far from
+the origin or scaled to tiny sizes are computed as exactly as at the origin;
+epsilons are relative to the hit distance, never absolute.
 
 Used by the render tests: the renderer's triangles approximate the analytic
 shapes, so the tests compare outside a one-pixel band along every exact edge.
@@ -62,32 +80,138 @@ def hit_parallelogram(origin, dirs, o, p1, p2):
     return np.where(ok, t, np.inf), normalize(n)
 
 
-def render_exact(scene, light_index, width, height):
-    """Returns (visibility, valid, object_id), each (H, W), row 0 at the top.
+def _affine(o):
+    """(linear 3x3, translation 3) of an object's row-major "transform"."""
+    m = o.get("transform")
+    if m is None:
+        return np.eye(3), np.zeros(3)
+    m = np.asarray(m, dtype=np.float64).reshape(4, 4)
+    return m[:3, :3].copy(), m[:3, 3].copy()
 
-    The scene holds "sphere" and "plane" objects only (the test scenes)."""
-    eye, dirs = camera_rays(scene["camera"], width, height)
+
+def _primitive(o, eye):
+    """An object in camera-relative coordinates: ("plane", origin, e1, e2),
+    ("sphere", A, b, A^-1) for the unit sphere, ("box", A, b, A^-1) for the
+    unit cube; world point = A local + b, with the eye subtracted in b."""
+    lin, trans = _affine(o)
+    shift = trans - eye  # exact enough: both are given numbers, subtracted once
+    if "plane" in o:
+        pl = o["plane"]
+        org = np.asarray(pl["origin"], np.float64)
+        e1 = np.asarray(pl["point1"], np.float64) - org
+        e2 = np.asarray(pl["point2"], np.float64) - org
+        return ("plane", lin @ org + shift, lin @ e1, lin @ e2)
+    if "sphere" in o:
+        s = o["sphere"]
+        c = np.asarray(s["center"], np.float64)
+        a = lin * float(s["radius"])
+        return ("sphere", a, lin @ c + shift, np.linalg.inv(a))
+    if "box" in o:
+        b = o["box"]
+        lo = np.asarray(b["min"], np.float64)
+        hi = np.asarray(b["max"], np.float64)
+        a = lin @ np.diag(hi - lo)
+        return ("box", a, lin @ lo + shift, np.linalg.inv(a))
+    raise ValueError("exact_scene: only sphere, plane and box objects are supported "
+                     f"(got {sorted(k for k in o if k in ('cylinder', 'mesh'))})")
+
+
+def _intersect(prim, origin, dirs):
+    """Nearest t > 0 along origin + t dirs (inf on a miss), the world normal
+    (unit, outward), and a face index (boxes: 0..5 as -x,+x,-y,+y,-z,+z)."""
+    shape = np.broadcast_shapes(np.shape(origin), np.shape(dirs))
+    origin = np.broadcast_to(origin, shape)
+    dirs = np.broadcast_to(dirs, shape)
+    kind = prim[0]
+    face = np.zeros(shape[:-1], int)
+    if kind == "plane":
+        _, o, e1, e2 = prim
+        n = np.cross(e1, e2)
+        denom = np.einsum("...k,k", dirs, n)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.einsum("...k,k", o - origin, n) / denom
+            rel = origin + t[..., None] * dirs - o
+            g = np.array([[e1 @ e1, e1 @ e2], [e1 @ e2, e2 @ e2]])
+            st = np.stack([rel @ e1, rel @ e2], axis=-1) @ np.linalg.inv(g).T
+            inside = np.all((st >= 0) & (st <= 1), axis=-1)
+        ok = np.isfinite(t) & (t > 0) & inside & (denom != 0)
+        t = np.where(ok, t, np.inf)
+        return t, np.broadcast_to(normalize(n), shape), face
+    _, a, b, ainv = prim
+    ol = (origin - b) @ ainv.T
+    dl = dirs @ ainv.T
+    if kind == "sphere":
+        qa = np.einsum("...k,...k", dl, dl)
+        qb = np.einsum("...k,...k", ol, dl)
+        qc = np.einsum("...k,...k", ol, ol) - 1.0
+        disc = qb * qb - qa * qc
+        sq = np.sqrt(np.maximum(disc, 0.0))
+        # Stable roots: q = -(b + sign(b) sqrt(disc)), t = q / a and c / q.
+        q = -(qb + np.where(qb >= 0, sq, -sq))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            r1 = q / qa
+            r2 = np.where(q != 0, qc / q, -r1)
+        t0 = np.minimum(r1, r2)
+        t1 = np.maximum(r1, r2)
+        t = np.where(t0 > 0, t0, np.where(t1 > 0, t1, np.inf))
+        t = np.where(disc >= 0, t, np.inf)
+        nl = ol + np.where(np.isfinite(t), t, 0.0)[..., None] * dl
+    else:  # box: slabs of the unit cube
+        tiny = np.where(dl >= 0, 1e-300, -1e-300)
+        dsafe = np.where(np.abs(dl) < 1e-300, tiny, dl)
+        ta = (0.0 - ol) / dsafe
+        tb = (1.0 - ol) / dsafe
+        tmin = np.minimum(ta, tb)
+        tmax = np.maximum(ta, tb)
+        tnear = np.max(tmin, axis=-1)
+        tfar = np.min(tmax, axis=-1)
+        hit = (tnear <= tfar) & (tfar > 0)
+        entering = tnear > 0
+        t = np.where(hit, np.where(entering, tnear, tfar), np.inf)
+        axis = np.where(entering, np.argmax(tmin, axis=-1), np.argmin(tmax, axis=-1))
+        # Outward normal: -dir sign when entering, +dir sign when leaving.
+        dsel = np.take_along_axis(dl, axis[..., None], axis=-1)[..., 0]
+        sign = np.where(entering, -np.sign(dsel), np.sign(dsel))
+        sign = np.where(sign == 0, 1.0, sign)
+        nl = np.zeros(shape)
+        np.put_along_axis(nl, axis[..., None], sign[..., None], axis=-1)
+        face = 2 * axis + (sign > 0)
+    # Normals transform by the inverse transpose (outward stays outward, also
+    # for mirroring transforms).
+    n = normalize(np.where(np.isfinite(t)[..., None], nl @ ainv, 1.0))
+    return t, n, face
+
+
+def trace_scene(scene, light_index, width, height, shadows="all"):
+    """Everything the exact renderer knows, as a dict of (H, W) arrays, row 0
+    at the top: "visibility", "valid", "object" (index, -1 background),
+    "face" (box face 0..5, 0 otherwise), "distance" (eye to hit along the
+    ray), "depth" (along the view direction), "receiver" (pixel on a receiver)
+    and "blocked" (the shadow ray hits a caster, under the chosen model)."""
+    if shadows not in ("all", "planar", "none"):
+        raise ValueError(f"shadows must be all, planar or none (got {shadows!r})")
+    cam = scene["camera"]
+    eye_world = np.asarray(cam["position"], np.float64)
+    rel_cam = dict(cam, position=[0.0, 0.0, 0.0],
+                   focal_point=list(np.asarray(cam["focal_point"], np.float64) - eye_world))
+    eye, dirs = camera_rays(rel_cam, width, height)
+    view = normalize(np.asarray(rel_cam["focal_point"], np.float64))
+    prims = [_primitive(o, eye_world) for o in scene["objects"]]
+
     best = np.full((height, width), np.inf)
     obj = np.full((height, width), -1)
+    face = np.zeros((height, width), int)
     normal = np.zeros((height, width, 3))
-    for k, o in enumerate(scene["objects"]):
-        if "sphere" in o:
-            s = o["sphere"]
-            t = hit_sphere(eye, dirs, s["center"], s["radius"])
-            closer = t < best
-            p = eye + t[..., None] * dirs
-            n = normalize(np.where(closer[..., None], p - np.asarray(s["center"], float), 1.0))
-        else:
-            pl = o["plane"]
-            t, n0 = hit_parallelogram(eye, dirs, pl["origin"], pl["point1"], pl["point2"])
-            closer = t < best
-            n = np.broadcast_to(n0, normal.shape)
+    for k, prim in enumerate(prims):
+        t, n, f = _intersect(prim, eye, dirs)
+        closer = t < best
         best = np.where(closer, t, best)
         obj = np.where(closer, k, obj)
+        face = np.where(closer, f, face)
         normal = np.where(closer[..., None], n, normal)
     hitmask = np.isfinite(best)
-    p = eye + np.where(hitmask, best, 0.0)[..., None] * dirs
-    # Two-sided lighting: the normal faces the camera, as VTK, POV-Ray, Cycles.
+    tb = np.where(hitmask, best, 0.0)
+    p = tb[..., None] * dirs  # camera-relative hit points
     facing = np.einsum("...k,...k", normal, dirs) > 0
     normal = np.where(facing[..., None], -normal, normal)
 
@@ -96,29 +220,46 @@ def render_exact(scene, light_index, width, height):
         to_light = np.broadcast_to(-normalize(light["direction"]), p.shape)
         light_dist = np.full(best.shape, np.inf)
     else:
-        d = np.asarray(light["position"], float) - p
+        d = (np.asarray(light["position"], np.float64) - eye_world) - p
         light_dist = np.linalg.norm(d, axis=-1)
-        to_light = d / light_dist[..., None]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            to_light = d / light_dist[..., None]
     valid = hitmask & (np.einsum("...k,...k", normal, to_light) > 1e-6)
     if light["type"] == "spot":
-        axis = normalize(np.asarray(light["focal_point"], float) - np.asarray(light["position"], float))
-        cos_angle = np.einsum("...k,k", -to_light, axis)
-        valid &= cos_angle > np.cos(np.radians(light["cone_angle"]))
+        axis = normalize(np.asarray(light["focal_point"], np.float64)
+                         - np.asarray(light["position"], np.float64))
+        valid &= np.einsum("...k,k", -to_light, axis) > np.cos(np.radians(light["cone_angle"]))
 
-    # Shadow rays from every hit point towards the light.
-    blocked = np.zeros(best.shape, bool)
-    offset = 1e-7 * max(1.0, float(np.max(np.abs(p))))
-    origin = p + offset * to_light
+    receiver = np.zeros(best.shape, bool)
     for k, o in enumerate(scene["objects"]):
-        if "sphere" in o:
-            s = o["sphere"]
-            t = hit_sphere(origin, to_light, s["center"], s["radius"])
-        else:
-            pl = o["plane"]
-            t, _ = hit_parallelogram(origin, to_light, pl["origin"], pl["point1"], pl["point2"])
-        blocked |= (t < light_dist) & (obj != k)
+        if o.get("receiver", False):
+            receiver |= obj == k
+    blocked = np.zeros(best.shape, bool)
+    if shadows != "none":
+        dist = tb * np.linalg.norm(dirs, axis=-1)
+        origin = p + (1e-9 * dist)[..., None] * to_light
+        for k, (o, prim) in enumerate(zip(scene["objects"], prims)):
+            if not o.get("casts", True):
+                continue
+            t, _, _ = _intersect(prim, origin, to_light)
+            # Every primitive is convex: it never shadows its own lit side.
+            blocked |= (t < light_dist) & (obj != k)
+        if shadows == "planar":
+            blocked &= receiver
     visibility = np.where(valid & ~blocked, 1.0, 0.0)
-    return visibility, valid, obj
+    return {
+        "visibility": visibility, "valid": valid, "object": obj, "face": face,
+        "distance": np.where(hitmask, tb * np.linalg.norm(dirs, axis=-1), np.inf),
+        "depth": np.where(hitmask, np.einsum("...k,k", p, view), np.inf),
+        "receiver": receiver, "blocked": blocked & valid,
+    }
+
+
+def render_exact(scene, light_index, width, height, shadows="all"):
+    """Returns (visibility, valid, object_id), each (H, W), row 0 at the top,
+    for light `light_index`; `shadows` as in trace_scene ("all" by default)."""
+    r = trace_scene(scene, light_index, width, height, shadows)
+    return r["visibility"], r["valid"], r["object"]
 
 
 def edge_band(labels, radius=1):

@@ -17,11 +17,9 @@ import subprocess
 import sys
 
 import numpy as np
-from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.util import numpy_support
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from png_io import read_png, write_png  # noqa: E402
 from exact_scene import edge_band, render_exact  # noqa: E402
 
 LIGHTS = {
@@ -44,29 +42,6 @@ def sphere_over_plane(light, width, height):
              "receiver": True},
         ],
     }
-
-
-def read_png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    a = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w)
-    return a[::-1]  # VTK rows go bottom to top
-
-
-def write_png(path, array, bits):
-    h, w = array.shape
-    image = vtkImageData()
-    image.SetDimensions(w, h, 1)
-    dtype = np.uint16 if bits == 16 else np.uint8
-    flat = np.ascontiguousarray(array[::-1].astype(dtype)).reshape(-1)
-    image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(flat, deep=True))
-    writer = vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(image)
-    writer.Write()
 
 
 def main():

@@ -14,6 +14,8 @@
 #include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
+#include "vtkPlanarShadowPass.h"
+#include "vtkInformation.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -510,6 +512,11 @@ bool vtkShadowScene::Populate(vtkRenderer* renderer, bool lambertian, int onlyLi
       p->SetSpecular(0.1);
       p->SetSpecularPower(30.0);
     }
+    // Tell shadow techniques which objects receive and which do not cast.
+    vtkNew<vtkInformation> keys;
+    keys->Set(vtkPlanarShadowPass::RECEIVER(), this->GetObjectIsReceiver(i) ? 1 : 0);
+    keys->Set(vtkPlanarShadowPass::NO_CAST(), this->GetObjectCasts(i) ? 0 : 1);
+    actor->SetPropertyKeys(keys);
     renderer->AddActor(actor);
   }
   renderer->AutomaticLightCreationOff();

@@ -6,6 +6,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkPlanarShadowPass.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
@@ -20,7 +21,7 @@ vtkStandardNewMacro(vtkShadowTechnique);
 
 namespace
 {
-const char* const KnownTechniques[] = { "none", "vtk" };
+const char* const KnownTechniques[] = { "none", "vtk", "planar" };
 }
 
 //------------------------------------------------------------------------------
@@ -63,7 +64,7 @@ bool vtkShadowTechnique::IsValid() const
 //------------------------------------------------------------------------------
 const char* vtkShadowTechnique::GetKnownTechniques()
 {
-  return "none vtk";
+  return "none vtk planar";
 }
 
 //------------------------------------------------------------------------------
@@ -78,6 +79,11 @@ vtkRenderPass* vtkShadowTechnique::CreatePass()
   if (std::strcmp(this->Name, "none") == 0)
   {
     return vtkRenderStepsPass::New();
+  }
+  if (std::strcmp(this->Name, "planar") == 0)
+  {
+    // Receivers are the actors marked vtkPlanarShadowPass::RECEIVER().
+    return vtkPlanarShadowPass::New();
   }
   // "vtk": VTK's own shadow maps, assembled as in VTK's TestShadowMapPass.
   vtkNew<vtkShadowMapPass> shadows;
@@ -120,7 +126,18 @@ bool vtkShadowTechnique::Install(vtkRenderer* renderer)
 //------------------------------------------------------------------------------
 long long vtkShadowTechnique::GetShadowMapMemory(vtkRenderer* renderer) const
 {
-  if (!renderer || !this->Name || std::strcmp(this->Name, "vtk") != 0)
+  if (!renderer || !this->Name)
+  {
+    return 0;
+  }
+  if (std::strcmp(this->Name, "planar") == 0)
+  {
+    // The mask and caster copies of the installed pass, as of its last frame.
+    auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
+    auto* planar = gl ? vtkPlanarShadowPass::SafeDownCast(gl->GetPass()) : nullptr;
+    return planar ? planar->GetMemoryBytes() : 0;
+  }
+  if (std::strcmp(this->Name, "vtk") != 0)
   {
     return 0;
   }

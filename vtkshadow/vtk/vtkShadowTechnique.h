@@ -12,7 +12,11 @@
  *           map resolution set by SetMapResolution() (default 2048). This is
  *           the baseline every vtkshadow technique is measured against.
  *
- * Later techniques ("planar", "csm", "auto") plug in here.
+ * - "planar": vtkPlanarShadowPass, exact shadows on the actors marked with
+ *           vtkPlanarShadowPass::RECEIVER() (vtkShadowScene marks the scene's
+ *           "receiver": true planes).
+ *
+ * Later techniques ("csm", "auto") plug in here.
  *
  * @code{.py}
  * technique = vtkshadow.vtkShadowTechnique()

@@ -58,6 +58,10 @@ bool RenderFloatIntensity(vtkRenderWindow* window, vtkOpenGLRenderer* renderer,
     return false;
   }
   window->MakeCurrent();
+  // Errors left by the passes are theirs (VTK reports them); ours start here.
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
   std::vector<float> rgba(static_cast<size_t>(w) * h * 4);
   color->Activate();
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

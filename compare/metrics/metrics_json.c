@@ -1,0 +1,88 @@
+/* metrics_json.c - see metrics_json.h. A tiny growing string buffer is
+ * enough: the object is flat and small. */
+#include "metrics_json.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct sbuf {
+  char *s;
+  size_t len, cap;
+  int oom;
+} sbuf;
+
+static void sb_printf(sbuf *b, const char *fmt, ...) {
+  if (b->oom) return;
+  for (;;) {
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(b->s + b->len, b->cap - b->len, fmt, ap);
+    va_end(ap);
+    if (n < 0) {
+      b->oom = 1;
+      return;
+    }
+    if ((size_t)n < b->cap - b->len) {
+      b->len += (size_t)n;
+      return;
+    }
+    size_t cap = 2 * b->cap + (size_t)n + 1;
+    char *s = realloc(b->s, cap);
+    if (!s) {
+      b->oom = 1;
+      return;
+    }
+    b->s = s;
+    b->cap = cap;
+  }
+}
+
+/* File names are arbitrary bytes: escape what JSON forbids in strings. */
+static void sb_string(sbuf *b, const char *key, const char *value) {
+  sb_printf(b, "  \"%s\": ", key);
+  if (!value) {
+    sb_printf(b, "null,\n");
+    return;
+  }
+  sb_printf(b, "\"");
+  for (const unsigned char *p = (const unsigned char *)value; *p; ++p) {
+    if (*p == '"' || *p == '\\')
+      sb_printf(b, "\\%c", *p);
+    else if (*p < 0x20)
+      sb_printf(b, "\\u%04x", *p);
+    else
+      sb_printf(b, "%c", *p);
+  }
+  sb_printf(b, "\",\n");
+}
+
+char *metrics_json_format(const metrics_cli_args *a, int width, int height,
+                          const vsh_metrics *m) {
+  sbuf b = {malloc(512), 0, 512, 0};
+  if (!b.s) return NULL;
+  b.s[0] = '\0';
+  sb_printf(&b, "{\n");
+  sb_string(&b, "reference", a->reference);
+  sb_string(&b, "mask", a->mask);
+  sb_string(&b, "test", a->test);
+  sb_string(&b, "exclude", a->exclude);
+  sb_string(&b, "heatmap", a->heatmap);
+  sb_printf(&b, "  \"band\": %d,\n", a->band);
+  sb_printf(&b, "  \"width\": %d,\n  \"height\": %d,\n", width, height);
+  sb_printf(&b, "  \"valid_pixels\": %ld,\n", m->valid_pixels);
+  sb_printf(&b, "  \"compared_pixels\": %ld,\n", m->compared_pixels);
+  /* %.9g: enough digits to compare runs, short enough to read */
+  sb_printf(&b, "  \"vis_mae\": %.9g,\n", m->vis_mae);
+  sb_printf(&b, "  \"wrong_pct\": %.9g,\n", m->wrong_pct);
+  sb_printf(&b, "  \"edge_px\": %.9g,\n", m->edge_px);
+  sb_printf(&b, "  \"false_shadow_pct\": %.9g,\n", m->false_shadow_pct);
+  sb_printf(&b, "  \"false_light_pct\": %.9g\n", m->false_light_pct);
+  sb_printf(&b, "}\n");
+  if (b.oom) {
+    free(b.s);
+    return NULL;
+  }
+  return b.s;
+}

@@ -1,0 +1,102 @@
+/* test_metrics.c - the per-pixel metrics on small synthetic images. */
+#include "vsh_check.h"
+#include "vsh_metrics.h"
+
+#include <stdlib.h>
+
+#define W 10
+#define H 10
+#define N (W * H)
+
+static float v[N], r[N];
+static unsigned char valid[N], ex[N];
+
+static void fill(float *a, float x) {
+  for (int i = 0; i < N; ++i) a[i] = x;
+}
+
+int main(void) {
+  vsh_metrics m;
+
+  /* identical images: every error 0, no boundary */
+  fill(v, 1.0f);
+  fill(r, 1.0f);
+  for (int i = 0; i < N; ++i) valid[i] = 1;
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.valid_pixels == N && m.compared_pixels == N);
+  CHECK(m.vis_mae == 0.0 && m.wrong_pct == 0.0 && m.edge_px == 0.0);
+  CHECK(m.false_shadow_pct == 0.0 && m.false_light_pct == 0.0);
+
+  /* reference lit; test: 10 pixels at 0 (false shadow, wrong), 10 at 0.6
+   * (0.4 off: not wrong), 10 at 0.45 (0.55 off: wrong, v < 0.5 so false
+   * shadow), rest exact. */
+  for (int i = 0; i < 10; ++i) v[i] = 0.0f;
+  for (int i = 10; i < 20; ++i) v[i] = 0.6f;
+  for (int i = 20; i < 30; ++i) v[i] = 0.45f;
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK_NEAR(m.vis_mae, (10 * 1.0 + 10 * 0.4 + 10 * 0.55) / N, 1e-6);
+  CHECK_NEAR(m.wrong_pct, 20.0, 1e-12);
+  CHECK_NEAR(m.false_shadow_pct, 20.0, 1e-12);
+  CHECK(m.false_light_pct == 0.0);
+
+  /* reference dark (0.05), test 0.7 in 5 pixels: false light and wrong;
+   * 0.5 exactly is neither (the tests are strict: > 0.5). */
+  fill(r, 0.05f);
+  fill(v, 0.05f);
+  for (int i = 0; i < 5; ++i) v[i] = 0.7f;
+  v[5] = 0.5f;
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK_NEAR(m.false_light_pct, 5.0, 1e-12);
+  CHECK_NEAR(m.wrong_pct, 5.0, 1e-12);
+  CHECK(m.false_shadow_pct == 0.0);
+
+  /* penumbra reference (0.5) is neither false shadow nor false light */
+  fill(r, 0.5f);
+  fill(v, 0.0f);
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.false_shadow_pct == 0.0 && m.false_light_pct == 0.0 && m.wrong_pct == 0.0);
+  CHECK_NEAR(m.vis_mae, 0.5, 1e-12);
+
+  /* invalid pixels never count, whatever they hold */
+  fill(r, 1.0f);
+  fill(v, 1.0f);
+  for (int i = 0; i < 40; ++i) {
+    valid[i] = 0;
+    v[i] = 0.0f;
+  }
+  v[50] = 0.0f; /* one valid wrong pixel of 60 */
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.valid_pixels == 60 && m.compared_pixels == 60);
+  CHECK_NEAR(m.wrong_pct, 100.0 / 60.0, 1e-12);
+  CHECK_NEAR(m.vis_mae, 1.0 / 60.0, 1e-12);
+
+  /* exclude: leaving out the wrong pixel and 19 others */
+  for (int i = 0; i < N; ++i) ex[i] = (i >= 45 && i < 65);
+  CHECK(vsh_metrics_compute(v, r, valid, ex, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.valid_pixels == 60 && m.compared_pixels == 40);
+  CHECK(m.wrong_pct == 0.0 && m.vis_mae == 0.0 && m.false_shadow_pct == 0.0);
+  /* ... and excluding an invalid pixel changes nothing */
+  ex[0] = 1;
+  CHECK(vsh_metrics_compute(v, r, valid, ex, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.compared_pixels == 40);
+
+  /* all invalid: distinct code, all zero, no division by zero */
+  for (int i = 0; i < N; ++i) valid[i] = 0;
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_EMPTY);
+  CHECK(m.valid_pixels == 0 && m.compared_pixels == 0);
+  CHECK(m.vis_mae == 0.0 && m.wrong_pct == 0.0 && m.edge_px == 0.0);
+  CHECK(m.false_shadow_pct == 0.0 && m.false_light_pct == 0.0);
+
+  /* all valid but all excluded: EMPTY too, valid_pixels still reported */
+  for (int i = 0; i < N; ++i) valid[i] = ex[i] = 1;
+  CHECK(vsh_metrics_compute(v, r, valid, ex, W, H, &m) == VSH_METRICS_EMPTY);
+  CHECK(m.valid_pixels == N && m.compared_pixels == 0 && m.wrong_pct == 0.0);
+
+  /* bad arguments */
+  CHECK(vsh_metrics_compute(NULL, r, valid, NULL, W, H, &m) == VSH_METRICS_EINVAL);
+  CHECK(vsh_metrics_compute(v, r, NULL, NULL, W, H, &m) == VSH_METRICS_EINVAL);
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, 0, H, &m) == VSH_METRICS_EINVAL);
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, -1, &m) == VSH_METRICS_EINVAL);
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, NULL) == VSH_METRICS_EINVAL);
+  return vsh_check_report("metrics.pixel");
+}

@@ -1,0 +1,45 @@
+// vtkPlanarShadowPass: shadow factors for the mapper's lighting code.
+// Inserted after VTK's lighting declarations; the pass multiplies each
+// light's diffuse and specular terms (or PBR radiance) by vshPlanarLit(i, ...).
+uniform usampler2D vshPlanarMask;
+uniform ivec2 vshPlanarMaskOrigin;
+// Receiver index of this actor, or -1 for actors that are not receivers.
+uniform int vshPlanarReceiver;
+// Explicit receiver planes (view coordinates, so camera-relative and
+// precise) with their receiver indices and distance tolerances.
+uniform int vshPlanarPlaneCount;
+uniform vec4 vshPlanarPlaneVC[8];
+uniform int vshPlanarPlaneReceiver[8];
+uniform float vshPlanarPlaneTolerance[8];
+// Number of lights in the mapper's numbering; pair bit = receiver * count + light.
+uniform int vshPlanarLightCount;
+// The fragment's first mask bit (receiver * light count) and mask bits,
+// looked up once per fragment by vshPlanarPrepare() before the lighting code.
+// Off receivers the bits stay 0, so every light is unblocked.
+uint vshPlanarBase = 0u;
+uvec4 vshPlanarBits = uvec4(0u);
+void vshPlanarPrepare(vec3 positionVC)
+{
+  int receiver = vshPlanarReceiver;
+  for (int k = 0; receiver < 0 && k < vshPlanarPlaneCount; ++k)
+  {
+    float d = dot(vshPlanarPlaneVC[k].xyz, positionVC) + vshPlanarPlaneVC[k].w;
+    if (abs(d) <= vshPlanarPlaneTolerance[k] * max(1.0, length(positionVC)))
+    {
+      receiver = vshPlanarPlaneReceiver[k];
+    }
+  }
+  if (receiver >= 0)
+  {
+    vshPlanarBase = uint(receiver * vshPlanarLightCount);
+    vshPlanarBits = texelFetch(vshPlanarMask, ivec2(gl_FragCoord.xy) - vshPlanarMaskOrigin, 0);
+  }
+}
+// 0 where light `light` is blocked at this fragment, 1 elsewhere. The pass
+// keeps receiver * light count + light below 128.
+float vshPlanarLit(int light)
+{
+  uint pair = vshPlanarBase + uint(light);
+  uint word = vshPlanarBits[min(pair >> 5u, 3u)];
+  return float(((word >> (pair & 31u)) & 1u) ^ 1u);
+}

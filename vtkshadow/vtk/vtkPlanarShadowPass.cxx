@@ -1,0 +1,781 @@
+#include "vtkPlanarShadowPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMapper.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkPlanarShadowCasterGeometry.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkWeakPointer.h"
+#include "vtk_glew.h"
+
+#include "vsh_mat4.h"
+#include "vsh_planar.h"
+
+#include "vtkPlanarShadowLightFS.h"
+#include "vtkPlanarShadowMaskFS.h"
+#include "vtkPlanarShadowMaskVS.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkPlanarShadowPass);
+vtkInformationKeyMacro(vtkPlanarShadowPass, RECEIVER, Integer);
+vtkInformationKeyMacro(vtkPlanarShadowPass, NO_CAST, Integer);
+
+namespace
+{
+constexpr int MaxPairs = 128;
+constexpr int MaxExplicitPlanes = 8;
+
+bool HasKey(vtkProp* prop, vtkInformationIntegerKey* key)
+{
+  vtkInformation* info = prop->GetPropertyKeys();
+  return info && info->Has(key) && info->Get(key) != 0;
+}
+
+// Row vector (plane) times matrix: a plane acting on the matrix's input space.
+void PlaneTimesMatrix(const double plane[4], const double m[16], double out[4])
+{
+  for (int c = 0; c < 4; ++c)
+  {
+    out[c] = plane[0] * m[c] + plane[1] * m[4 + c] + plane[2] * m[8 + c] + plane[3] * m[12 + c];
+  }
+}
+
+void ToFloat(const double* in, float* out, int n)
+{
+  for (int i = 0; i < n; ++i)
+  {
+    out[i] = static_cast<float>(in[i]);
+  }
+}
+
+// The plane of a receiver actor's flat geometry in world coordinates, or
+// false when the geometry is not flat (within 1e-6 of its size) or empty.
+bool ReceiverPlane(vtkActor* actor, double plane[4])
+{
+  vtkMapper* mapper = actor->GetMapper();
+  auto* poly = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  if (!poly || !poly->GetPoints() || poly->GetNumberOfPoints() < 3)
+  {
+    return false;
+  }
+  double m[16];
+  vtkMatrix4x4::DeepCopy(m, actor->GetMatrix());
+  std::vector<double> world(3 * poly->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    poly->GetPoint(i, p);
+    vsh_mat4_transform_point(m, p, &world[3 * i]);
+  }
+  // The normal of the largest triangle fanned from point 0 (robust for
+  // slivers and collinear leading points).
+  const double* o = world.data();
+  double best[3] = { 0, 0, 0 }, bestLength = 0.0;
+  for (size_t i = 1; i + 1 < world.size() / 3; ++i)
+  {
+    const double a[3] = { world[3 * i] - o[0], world[3 * i + 1] - o[1], world[3 * i + 2] - o[2] };
+    const double b[3] = { world[3 * i + 3] - o[0], world[3 * i + 4] - o[1],
+      world[3 * i + 5] - o[2] };
+    const double n[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+      a[0] * b[1] - a[1] * b[0] };
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (length > bestLength)
+    {
+      bestLength = length;
+      std::copy_n(n, 3, best);
+    }
+  }
+  if (!(bestLength > 0.0))
+  {
+    return false;
+  }
+  double size = 0.0;
+  for (size_t i = 0; i < world.size() / 3; ++i)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      size = std::max(size, std::abs(world[3 * i + a] - o[a]));
+    }
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    plane[a] = best[a] / bestLength;
+  }
+  plane[3] = -(plane[0] * o[0] + plane[1] * o[1] + plane[2] * o[2]);
+  for (size_t i = 0; i < world.size() / 3; ++i)
+  {
+    const double* p = &world[3 * i];
+    const double d = plane[0] * (p[0] - o[0]) + plane[1] * (p[1] - o[1]) + plane[2] * (p[2] - o[2]);
+    if (std::abs(d) > 1e-6 * size)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
+struct vtkPlanarShadowPass::Internals
+{
+  struct ExplicitPlane
+  {
+    double Origin[3];
+    double Normal[3];
+  };
+  struct CachedPlane
+  {
+    vtkMTimeType Time = 0;
+    bool Flat = false;
+    double Plane[4] = { 0, 0, 0, 0 };
+  };
+  struct Caster
+  {
+    vtkPlanarShadowCasterGeometry Geometry;
+    vtkMTimeType SeenFrame = 0;
+  };
+
+  std::vector<vtkWeakPointer<vtkActor>> ReceiverActors;
+  std::vector<ExplicitPlane> Planes;
+  std::map<vtkActor*, CachedPlane> ReceiverPlanes;
+  std::map<vtkActor*, std::unique_ptr<Caster>> Casters;
+  vtkMTimeType Frame = 0;
+
+  vtkTextureObject* Mask = nullptr;
+  vtkOpenGLFramebufferObject* FBO = nullptr;
+  int MaskSize[2] = { 0, 0 };
+  int MaskOrigin[2] = { 0, 0 };
+
+  // Per-frame values for SetShaderParameters.
+  std::map<vtkProp*, int> ReceiverIndex;
+  int LightCount = 0;
+  int PlaneCount = 0;
+  float PlaneVC[4 * MaxExplicitPlanes] = {};
+  int PlaneReceiver[MaxExplicitPlanes] = {};
+  float PlaneTolerance[MaxExplicitPlanes] = {};
+  vtkMTimeType ShaderTime = 0;
+  std::vector<vtkProp*> Receiving; // sorted (from the map)
+  bool EveryoneReceives = false;
+
+  bool CanReceive(vtkProp* prop) const
+  {
+    return this->EveryoneReceives ||
+      std::binary_search(this->Receiving.begin(), this->Receiving.end(), prop);
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkPlanarShadowPass::vtkPlanarShadowPass()
+  : DelegatePass(nullptr)
+  , PlaneTolerance(1e-5)
+  , CastHeadlightShadows(false)
+  , NumberOfShadowPairs(0)
+  , NumberOfMaskTriangles(0)
+  , NumberOfGeometryBuilds(0)
+  , Impl(new Internals)
+{
+  vtkTimeStamp t;
+  t.Modified();
+  this->Impl->ShaderTime = t.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+vtkPlanarShadowPass::~vtkPlanarShadowPass()
+{
+  if (this->Impl->Mask)
+  {
+    this->Impl->Mask->Delete();
+  }
+  if (this->Impl->FBO)
+  {
+    this->Impl->FBO->Delete();
+  }
+  this->SetDelegatePass(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkPlanarShadowPass, DelegatePass, vtkRenderPass);
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::AddReceiverActor(vtkActor* actor)
+{
+  if (actor)
+  {
+    this->Impl->ReceiverActors.emplace_back(actor);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::RemoveReceiverActor(vtkActor* actor)
+{
+  auto& list = this->Impl->ReceiverActors;
+  list.erase(std::remove_if(list.begin(), list.end(),
+               [&](const vtkWeakPointer<vtkActor>& a) { return a == actor || !a; }),
+    list.end());
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::AddReceiverPlane(
+  double ox, double oy, double oz, double nx, double ny, double nz)
+{
+  const double length = std::sqrt(nx * nx + ny * ny + nz * nz);
+  if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(ox + oy + oz))
+  {
+    vtkErrorMacro("AddReceiverPlane: the normal must be finite and non-zero, the origin finite");
+    return;
+  }
+  if (static_cast<int>(this->Impl->Planes.size()) >= MaxExplicitPlanes)
+  {
+    vtkErrorMacro("AddReceiverPlane: at most " << MaxExplicitPlanes << " explicit planes");
+    return;
+  }
+  this->Impl->Planes.push_back({ { ox, oy, oz }, { nx / length, ny / length, nz / length } });
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::RemoveAllReceivers()
+{
+  this->Impl->ReceiverActors.clear();
+  this->Impl->Planes.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkPlanarShadowPass::GetMemoryBytes() const
+{
+  vtkIdType bytes = static_cast<vtkIdType>(this->Impl->MaskSize[0]) * this->Impl->MaskSize[1] * 16;
+  for (const auto& entry : this->Impl->Casters)
+  {
+    // 3 floats a vertex at most 3 vertices a triangle, 3 indices a triangle.
+    bytes += entry.second->Geometry.GetNumberOfTriangles() * 12 * 2;
+  }
+  return bytes;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->NumberOfShadowPairs = 0;
+  this->NumberOfMaskTriangles = 0;
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window)
+  {
+    vtkErrorMacro("vtkPlanarShadowPass needs an OpenGL render window");
+    return;
+  }
+  if (!this->DelegatePass)
+  {
+    vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
+    this->SetDelegatePass(steps);
+    steps->Delete();
+  }
+  Internals& impl = *this->Impl;
+  ++impl.Frame;
+
+  // Viewport of this renderer in the target: the mask matches it pixel for pixel.
+  int size[2], origin[2] = { 0, 0 };
+  if (s->GetFrameBuffer() == nullptr)
+  {
+    renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  }
+  else
+  {
+    s->GetWindowSize(size);
+  }
+  impl.MaskOrigin[0] = origin[0];
+  impl.MaskOrigin[1] = origin[1];
+
+  // Lights in the mapper's numbering: every switched-on light, in order.
+  struct LightInfo
+  {
+    double Homogeneous[4];
+    bool Casts;
+  };
+  std::vector<LightInfo> lights;
+  {
+    vtkLightCollection* collection = renderer->GetLights();
+    vtkCollectionSimpleIterator it;
+    collection->InitTraversal(it);
+    while (vtkLight* light = collection->GetNextLight(it))
+    {
+      if (!light->GetSwitch())
+      {
+        continue;
+      }
+      LightInfo info;
+      double p[3], f[3];
+      light->GetTransformedPosition(p);
+      light->GetTransformedFocalPoint(f);
+      if (light->GetPositional())
+      {
+        info.Homogeneous[0] = p[0];
+        info.Homogeneous[1] = p[1];
+        info.Homogeneous[2] = p[2];
+        info.Homogeneous[3] = 1.0;
+      }
+      else
+      {
+        // Towards the light: from the focal point back to the position.
+        info.Homogeneous[0] = p[0] - f[0];
+        info.Homogeneous[1] = p[1] - f[1];
+        info.Homogeneous[2] = p[2] - f[2];
+        info.Homogeneous[3] = 0.0;
+      }
+      info.Casts = !light->LightTypeIsHeadlight() || this->CastHeadlightShadows;
+      lights.push_back(info);
+    }
+  }
+  impl.LightCount = static_cast<int>(lights.size());
+
+  // Props: receivers and casters.
+  std::vector<vtkActor*> casters;
+  struct ReceiverInfo
+  {
+    vtkActor* Actor;
+    double Plane[4];
+  };
+  std::vector<ReceiverInfo> receivers;
+  impl.ReceiverIndex.clear();
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    if (!actor || !actor->GetVisibility() || !actor->GetMapper())
+    {
+      continue;
+    }
+    const bool opaque = !actor->HasTranslucentPolygonalGeometry();
+    bool receiver = HasKey(actor, RECEIVER());
+    for (const auto& r : impl.ReceiverActors)
+    {
+      receiver = receiver || r == actor;
+    }
+    if (receiver && opaque)
+    {
+      Internals::CachedPlane& cached = impl.ReceiverPlanes[actor];
+      vtkMTimeType t = actor->GetMTime();
+      if (auto* data = actor->GetMapper()->GetInputDataObject(0, 0))
+      {
+        t = std::max(t, data->GetMTime());
+      }
+      t = std::max(t, actor->GetMapper()->GetMTime());
+      if (t > cached.Time)
+      {
+        cached.Time = t;
+        cached.Flat = ReceiverPlane(actor, cached.Plane);
+        if (!cached.Flat)
+        {
+          vtkWarningMacro("receiver actor " << actor << " is not flat: it receives no shadow");
+        }
+      }
+      // Every (receiver, light) pair needs a mask bit: at most 128 of them.
+      if (cached.Flat && (static_cast<int>(receivers.size()) + 1) * std::max<int>(impl.LightCount, 1) > MaxPairs)
+      {
+        vtkWarningMacro("more receivers than " << MaxPairs << " mask bits allow for "
+                                               << impl.LightCount << " lights: ignoring some");
+      }
+      else if (cached.Flat)
+      {
+        ReceiverInfo info{ actor, {} };
+        std::copy_n(cached.Plane, 4, info.Plane);
+        impl.ReceiverIndex[actor] = static_cast<int>(receivers.size());
+        receivers.push_back(info);
+      }
+    }
+    if (opaque && !HasKey(actor, NO_CAST()))
+    {
+      casters.push_back(actor);
+    }
+  }
+  // Only receiving actors get the shadow lookup in their shaders; when the set
+  // changes, VTK's mappers must rebuild their shaders.
+  {
+    std::vector<vtkProp*> receiving;
+    for (const auto& entry : impl.ReceiverIndex)
+    {
+      receiving.push_back(entry.first);
+    }
+    const bool everyone = !impl.Planes.empty();
+    if (receiving != impl.Receiving || everyone != impl.EveryoneReceives)
+    {
+      impl.Receiving = receiving;
+      impl.EveryoneReceives = everyone;
+      vtkTimeStamp t;
+      t.Modified();
+      impl.ShaderTime = t.GetMTime();
+    }
+  }
+  for (const auto& p : impl.Planes)
+  {
+    ReceiverInfo info{ nullptr, { p.Normal[0], p.Normal[1], p.Normal[2],
+                                  -(p.Normal[0] * p.Origin[0] + p.Normal[1] * p.Origin[1] +
+                                    p.Normal[2] * p.Origin[2]) } };
+    receivers.push_back(info);
+  }
+
+  // Camera: projection times the eye-relative view rotation, in double.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double aspect = size[1] > 0 ? static_cast<double>(size[0]) / size[1] : 1.0;
+  double eye[3];
+  camera->GetPosition(eye);
+  double view[16], projection[16], cameraRelative[16];
+  vtkMatrix4x4::DeepCopy(view, camera->GetViewTransformMatrix());
+  view[3] = view[7] = view[11] = 0.0; // rotation only: inputs are relative to the eye
+  vtkMatrix4x4::DeepCopy(projection, camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  vsh_mat4_multiply(projection, view, cameraRelative);
+
+  // Explicit planes in view coordinates for the receivers' fragment shaders.
+  impl.PlaneCount = 0;
+  for (size_t r = 0; r < receivers.size(); ++r)
+  {
+    if (receivers[r].Actor || impl.PlaneCount >= MaxExplicitPlanes)
+    {
+      continue;
+    }
+    const double* pl = receivers[r].Plane;
+    double nvc[3];
+    vsh_mat4_transform_direction(view, pl, nvc);
+    const double d = pl[3] + pl[0] * eye[0] + pl[1] * eye[1] + pl[2] * eye[2];
+    float* out = impl.PlaneVC + 4 * impl.PlaneCount;
+    ToFloat(nvc, out, 3);
+    out[3] = static_cast<float>(d);
+    impl.PlaneReceiver[impl.PlaneCount] = static_cast<int>(r);
+    impl.PlaneTolerance[impl.PlaneCount] = static_cast<float>(this->PlaneTolerance);
+    ++impl.PlaneCount;
+  }
+
+  // The mask target, sized to the viewport.
+  vtkOpenGLState* state = window->GetState();
+  if (!impl.Mask)
+  {
+    impl.Mask = vtkTextureObject::New();
+    impl.FBO = vtkOpenGLFramebufferObject::New();
+  }
+  impl.Mask->SetContext(window);
+  impl.FBO->SetContext(window);
+  if (impl.MaskSize[0] != size[0] || impl.MaskSize[1] != size[1] || !impl.Mask->GetHandle())
+  {
+    impl.Mask->ReleaseGraphicsResources(window);
+    impl.Mask->SetRequireTextureInteger(true);
+    impl.Mask->SetInternalFormat(GL_RGBA32UI);
+    impl.Mask->SetFormat(GL_RGBA_INTEGER);
+    impl.Mask->SetDataType(GL_UNSIGNED_INT);
+    impl.Mask->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.Mask->SetMagnificationFilter(vtkTextureObject::Nearest);
+    impl.Mask->Allocate2D(size[0], size[1], 4, VTK_UNSIGNED_INT);
+    impl.MaskSize[0] = size[0];
+    impl.MaskSize[1] = size[1];
+  }
+
+  state->PushFramebufferBindings();
+  impl.FBO->Bind();
+  impl.FBO->AddColorAttachment(0, impl.Mask);
+  impl.FBO->ActivateDrawBuffers(1);
+  {
+    vtkOpenGLState::ScopedglViewport viewport(state);
+    vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglColorMask colorMask(state);
+    state->vtkglViewport(0, 0, size[0], size[1]);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    const GLuint zero[4] = { 0, 0, 0, 0 };
+    glClearBufferuiv(GL_COLOR, 0, zero);
+
+    const int pairs = static_cast<int>(receivers.size()) * impl.LightCount;
+    vtkShaderProgram* program = nullptr;
+    if (pairs > 0)
+    {
+      program = window->GetShaderCache()->ReadyShaderProgram(
+        vtkPlanarShadowMaskVS, vtkPlanarShadowMaskFS, "");
+    }
+    if (program)
+    {
+      // Overlapping shadow triangles and casters only set the same bit again.
+      glEnable(GL_COLOR_LOGIC_OP);
+      glLogicOp(GL_OR);
+      glEnable(GL_CLIP_DISTANCE0);
+      glEnable(GL_CLIP_DISTANCE1);
+      for (size_t r = 0; r < receivers.size(); ++r)
+      {
+        for (int l = 0; l < impl.LightCount; ++l)
+        {
+          const int pair = static_cast<int>(r) * impl.LightCount + l;
+          if (!lights[l].Casts || pair >= MaxPairs)
+          {
+            continue;
+          }
+          // Orient the plane towards the light: its lit side is the light's side.
+          double plane[4];
+          std::copy_n(receivers[r].Plane, 4, plane);
+          const double* light = lights[l].Homogeneous;
+          const double side = plane[0] * light[0] + plane[1] * light[1] + plane[2] * light[2] +
+            plane[3] * light[3];
+          if (side < 0)
+          {
+            for (double& v : plane)
+            {
+              v = -v;
+            }
+          }
+          double shadow[16], clip[2][4];
+          if (vsh_planar_shadow_matrix_relative(plane, light, eye, shadow) != VSH_PLANAR_OK ||
+            vsh_planar_caster_clip_planes_relative(plane, light, eye, clip) != VSH_PLANAR_OK)
+          {
+            continue; // light on, behind or parallel to the plane: no shadow
+          }
+          ++this->NumberOfShadowPairs;
+          double shadowDC[16];
+          vsh_mat4_multiply(cameraRelative, shadow, shadowDC);
+          unsigned int bits[4] = { 0, 0, 0, 0 };
+          bits[pair / 32] = 1u << (pair % 32);
+          glUniform4uiv(glGetUniformLocation(program->GetHandle(), "pairBit"), 1, bits);
+          for (vtkActor* actor : casters)
+          {
+            if (actor == receivers[r].Actor)
+            {
+              continue; // a flat receiver does not shadow itself
+            }
+            auto& caster = impl.Casters[actor];
+            if (!caster)
+            {
+              caster.reset(new Internals::Caster);
+            }
+            if (caster->SeenFrame != impl.Frame)
+            {
+              const vtkMTimeType built = caster->Geometry.GetBuildTime();
+              caster->Geometry.Update(actor);
+              if (caster->Geometry.GetBuildTime() != built)
+              {
+                ++this->NumberOfGeometryBuilds;
+              }
+              caster->SeenFrame = impl.Frame;
+            }
+            if (caster->Geometry.GetNumberOfTriangles() == 0)
+            {
+              continue;
+            }
+            // Model (shifted) -> world -> relative to the eye, in double.
+            const double* shift = caster->Geometry.GetShift();
+            double model[16], toShifted[16], toRelative[16], modelRelative[16];
+            vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
+            const double negEye[3] = { -eye[0], -eye[1], -eye[2] };
+            vsh_mat4_translation(shift, toShifted);
+            vsh_mat4_translation(negEye, toRelative);
+            double modelShifted[16];
+            vsh_mat4_multiply(model, toShifted, modelShifted);
+            vsh_mat4_multiply(toRelative, modelShifted, modelRelative);
+            double mcdc[16], keep0[4], keep1[4];
+            vsh_mat4_multiply(shadowDC, modelRelative, mcdc);
+            PlaneTimesMatrix(clip[0], modelRelative, keep0);
+            PlaneTimesMatrix(clip[1], modelRelative, keep1);
+            float mcdcF[16], keep0F[4], keep1F[4];
+            // vtkShaderProgram expects column-major (OpenGL) order.
+            double transposed[16];
+            vsh_mat4_transpose(mcdc, transposed);
+            ToFloat(transposed, mcdcF, 16);
+            ToFloat(keep0, keep0F, 4);
+            ToFloat(keep1, keep1F, 4);
+            program->SetUniformMatrix4x4("shadowMCDC", mcdcF);
+            program->SetUniform4f("receiverSideMC", keep0F);
+            program->SetUniform4f("belowLightMC", keep1F);
+            caster->Geometry.Draw(program);
+            this->NumberOfMaskTriangles += caster->Geometry.GetNumberOfTriangles();
+          }
+        }
+      }
+      glDisable(GL_CLIP_DISTANCE0);
+      glDisable(GL_CLIP_DISTANCE1);
+      glDisable(GL_COLOR_LOGIC_OP);
+    }
+  }
+  impl.FBO->RemoveColorAttachment(0);
+  state->PopFramebufferBindings();
+
+  // Forget casters that left the scene.
+  for (auto it = impl.Casters.begin(); it != impl.Casters.end();)
+  {
+    if (it->second->SeenFrame + 1 < impl.Frame && it->second->SeenFrame != 0)
+    {
+      it->second->Geometry.ReleaseGraphicsResources(window);
+      it = impl.Casters.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+
+  // The scene, with the receivers' lighting reading the mask.
+  impl.Mask->Activate();
+  this->PreRender(s);
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  this->PostRender(s);
+  impl.Mask->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlanarShadowPass::PreReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
+{
+  if (!this->Impl->CanReceive(prop))
+  {
+    return true; // casters and translucent actors keep VTK's own shader
+  }
+  // Our declarations ride along with VTK's lighting declarations.
+  if (fragmentShader.find("//VTK::Light::Dec") != std::string::npos)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
+      std::string("//VTK::Light::Dec\n") + vtkPlanarShadowLightFS, false);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlanarShadowPass::PostReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  if (fragmentShader.find("vshPlanarLit") == std::string::npos)
+  {
+    return true;
+  }
+  // VTK 9.1's lighting code adds each light as
+  //   diffuse += (df * lightColorI);  specular += (sf * lightColorI);
+  // (Phong/Gouraud) or sets radiance = lightColorI; (PBR). Scale exactly
+  // those terms by the light's shadow factor.
+  size_t first = std::string::npos;
+  for (int i = 0; i < 16; ++i)
+  {
+    const std::string n = std::to_string(i);
+    const std::string factor = " * vshPlanarLit(" + n + ")";
+    const std::string terms[3][2] = {
+      { "diffuse += (df * lightColor" + n + ");", "diffuse += (df * lightColor" + n + factor + ");" },
+      { "specular += (sf * lightColor" + n + ");",
+        "specular += (sf * lightColor" + n + factor + ");" },
+      { "radiance = lightColor" + n + ";", "radiance = lightColor" + n + factor + ";" }
+    };
+    for (const auto& term : terms)
+    {
+      first = std::min(first, fragmentShader.find(term[0]));
+      vtkShaderProgram::Substitute(fragmentShader, term[0], term[1], true);
+    }
+  }
+  if (first == std::string::npos)
+  {
+    return true; // no lighting (e.g. lighting off): nothing to shadow
+  }
+  // Look the mask up once, at the start of the line of the first light term
+  // (main's top level, where vertexVC exists).
+  const size_t line = fragmentShader.rfind('\n', first);
+  fragmentShader.insert(line == std::string::npos ? 0 : line + 1,
+    "  vshPlanarPrepare(vertexVC.xyz);\n");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlanarShadowPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  Internals& impl = *this->Impl;
+  if (!program->IsUniformUsed("vshPlanarMask") || !impl.Mask)
+  {
+    return true;
+  }
+  program->SetUniformi("vshPlanarMask", impl.Mask->GetTextureUnit());
+  program->SetUniform2i("vshPlanarMaskOrigin", impl.MaskOrigin);
+  auto it = impl.ReceiverIndex.find(prop);
+  program->SetUniformi("vshPlanarReceiver", it == impl.ReceiverIndex.end() ? -1 : it->second);
+  program->SetUniformi("vshPlanarLightCount", std::max(impl.LightCount, 1));
+  program->SetUniformi("vshPlanarPlaneCount", impl.PlaneCount);
+  if (impl.PlaneCount > 0)
+  {
+    program->SetUniform4fv("vshPlanarPlaneVC", impl.PlaneCount,
+      reinterpret_cast<const float(*)[4]>(impl.PlaneVC));
+    program->SetUniform1iv("vshPlanarPlaneReceiver", impl.PlaneCount, impl.PlaneReceiver);
+    program->SetUniform1fv("vshPlanarPlaneTolerance", impl.PlaneCount, impl.PlaneTolerance);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkPlanarShadowPass::GetShaderStageMTime()
+{
+  // The shader code never changes; only uniforms do.
+  return this->Impl->ShaderTime;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  Internals& impl = *this->Impl;
+  if (impl.Mask)
+  {
+    impl.Mask->ReleaseGraphicsResources(w);
+  }
+  if (impl.FBO)
+  {
+    impl.FBO->ReleaseGraphicsResources(w);
+  }
+  impl.MaskSize[0] = impl.MaskSize[1] = 0;
+  for (auto& entry : impl.Casters)
+  {
+    entry.second->Geometry.ReleaseGraphicsResources(w);
+  }
+  impl.Casters.clear();
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ReceiverActors: " << this->Impl->ReceiverActors.size() << "\n";
+  os << indent << "ReceiverPlanes: " << this->Impl->Planes.size() << "\n";
+  os << indent << "PlaneTolerance: " << this->PlaneTolerance << "\n";
+  os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
+  os << indent << "NumberOfShadowPairs: " << this->NumberOfShadowPairs << "\n";
+  os << indent << "NumberOfMaskTriangles: " << this->NumberOfMaskTriangles << "\n";
+  os << indent << "NumberOfGeometryBuilds: " << this->NumberOfGeometryBuilds << "\n";
+  os << indent << "DelegatePass: ";
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->PrintSelf(os, indent.GetNextIndent());
+  }
+  else
+  {
+    os << "(none)\n";
+  }
+}
