@@ -9,5 +9,6 @@
 #include "vsh_bounds.h"
 #include "vsh_camera.h"
 #include "vsh_planar.h"
+#include "vsh_csm.h"
 
 #endif

@@ -14,7 +14,8 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkPlanarShadowCasterGeometry.h"
+#include "vtkShadowCasterGeometry.h"
+#include "vtkShadowLightingHook.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProp.h"
@@ -152,7 +153,7 @@ struct vtkPlanarShadowPass::Internals
   };
   struct Caster
   {
-    vtkPlanarShadowCasterGeometry Geometry;
+    vtkShadowCasterGeometry Geometry;
     vtkMTimeType SeenFrame = 0;
   };
 
@@ -669,36 +670,9 @@ bool vtkPlanarShadowPass::PostReplaceShaderValues(std::string&, std::string&,
   {
     return true;
   }
-  // VTK 9.1's lighting code adds each light as
-  //   diffuse += (df * lightColorI);  specular += (sf * lightColorI);
-  // (Phong/Gouraud) or sets radiance = lightColorI; (PBR). Scale exactly
-  // those terms by the light's shadow factor.
-  size_t first = std::string::npos;
-  for (int i = 0; i < 16; ++i)
-  {
-    const std::string n = std::to_string(i);
-    const std::string factor = " * vshPlanarLit(" + n + ")";
-    const std::string terms[3][2] = {
-      { "diffuse += (df * lightColor" + n + ");", "diffuse += (df * lightColor" + n + factor + ");" },
-      { "specular += (sf * lightColor" + n + ");",
-        "specular += (sf * lightColor" + n + factor + ");" },
-      { "radiance = lightColor" + n + ";", "radiance = lightColor" + n + factor + ";" }
-    };
-    for (const auto& term : terms)
-    {
-      first = std::min(first, fragmentShader.find(term[0]));
-      vtkShaderProgram::Substitute(fragmentShader, term[0], term[1], true);
-    }
-  }
-  if (first == std::string::npos)
-  {
-    return true; // no lighting (e.g. lighting off): nothing to shadow
-  }
-  // Look the mask up once, at the start of the line of the first light term
-  // (main's top level, where vertexVC exists).
-  const size_t line = fragmentShader.rfind('\n', first);
-  fragmentShader.insert(line == std::string::npos ? 0 : line + 1,
-    "  vshPlanarPrepare(vertexVC.xyz);\n");
+  // Each light's diffuse and specular terms times its mask bit; the mask is
+  // read once per fragment.
+  vtkshadow::InjectLightFactors(fragmentShader, "vshPlanarLit(%d)", "vshPlanarPrepare(vertexVC.xyz);");
   return true;
 }
 

@@ -56,6 +56,13 @@ VTKSHADOW_EXPORT int vtkshadow_technique_install(vtkshadow_technique *technique,
                                                  void *vtk_renderer, char *error,
                                                  size_t error_size);
 
+/* Planar shadows: mark a vtkActor (passed as void*) as a receiver (its flat
+ * geometry is the plane and the area shadows may cover), or opt it out of
+ * casting. Technique "planar" uses these marks; vtkshadow_scene_populate sets
+ * them from the scene's "receiver" and "casts" fields. */
+VTKSHADOW_EXPORT int vtkshadow_actor_set_receiver(void *vtk_actor, int receiver);
+VTKSHADOW_EXPORT int vtkshadow_actor_set_casts(void *vtk_actor, int casts);
+
 /* Render the scene in colour with the technique to a PNG file (offscreen;
  * needs an X display with Debian's VTK). */
 VTKSHADOW_EXPORT int vtkshadow_render_png(const vtkshadow_scene *scene,

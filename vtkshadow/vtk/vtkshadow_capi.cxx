@@ -1,7 +1,10 @@
 // The extern "C" API: opaque handles that own the VTK objects.
 #include "vtkshadow.h"
 
+#include "vtkActor.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkPlanarShadowPass.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -131,6 +134,42 @@ extern "C"
       SetError(error, error_size, "vtkshadow_technique_install: need a vtkOpenGLRenderer*");
       return 1;
     }
+    return 0;
+  }
+
+  int vtkshadow_actor_set_receiver(void* vtk_actor, int receiver)
+  {
+    auto* actor = static_cast<vtkObjectBase*>(vtk_actor);
+    if (!actor || !actor->IsA("vtkActor"))
+    {
+      return 1;
+    }
+    auto* a = static_cast<vtkActor*>(actor);
+    if (!a->GetPropertyKeys())
+    {
+      vtkNew<vtkInformation> keys;
+      a->SetPropertyKeys(keys);
+    }
+    a->GetPropertyKeys()->Set(vtkPlanarShadowPass::RECEIVER(), receiver ? 1 : 0);
+    a->Modified();
+    return 0;
+  }
+
+  int vtkshadow_actor_set_casts(void* vtk_actor, int casts)
+  {
+    auto* actor = static_cast<vtkObjectBase*>(vtk_actor);
+    if (!actor || !actor->IsA("vtkActor"))
+    {
+      return 1;
+    }
+    auto* a = static_cast<vtkActor*>(actor);
+    if (!a->GetPropertyKeys())
+    {
+      vtkNew<vtkInformation> keys;
+      a->SetPropertyKeys(keys);
+    }
+    a->GetPropertyKeys()->Set(vtkPlanarShadowPass::NO_CAST(), casts ? 0 : 1);
+    a->Modified();
     return 0;
   }
 

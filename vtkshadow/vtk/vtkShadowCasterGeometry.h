@@ -1,14 +1,14 @@
-// vtkPlanarShadowCasterGeometry.h - the triangles of one caster actor on the
-// GPU, for vtkPlanarShadowPass's mask draws.
+// vtkShadowCasterGeometry.h - the triangles of one caster actor on the
+// GPU, for the shadow passes' own draws (planar masks, shadow maps).
 //
-// The planar pass draws every caster once per (receiver, light) pair with a
-// trivial shader, so it keeps its own compact copy of each caster's triangles
+// The passes draw every caster once per (receiver, light) pair or per shadow
+// map with a trivial shader, so they keep a compact copy of each caster's triangles
 // (positions only, relative to the data's centre so float keeps precision far
 // from the origin) instead of re-running VTK's mappers with another shader,
 // which would rebuild their shaders every frame. The copy is rebuilt only when
 // the mapper or its input changed.
-#ifndef vtkPlanarShadowCasterGeometry_h
-#define vtkPlanarShadowCasterGeometry_h
+#ifndef vtkShadowCasterGeometry_h
+#define vtkShadowCasterGeometry_h
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -24,11 +24,11 @@ class vtkPolyData;
 class vtkShaderProgram;
 class vtkWindow;
 
-class vtkPlanarShadowCasterGeometry
+class vtkShadowCasterGeometry
 {
 public:
-  vtkPlanarShadowCasterGeometry();
-  ~vtkPlanarShadowCasterGeometry();
+  vtkShadowCasterGeometry();
+  ~vtkShadowCasterGeometry();
 
   // Refresh the triangles from the actor's mapper if it changed. Supports
   // vtkPolyDataMapper, vtkCompositePolyDataMapper(2) and vtkGlyph3DMapper.
@@ -49,8 +49,8 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  vtkPlanarShadowCasterGeometry(const vtkPlanarShadowCasterGeometry&) = delete;
-  void operator=(const vtkPlanarShadowCasterGeometry&) = delete;
+  vtkShadowCasterGeometry(const vtkShadowCasterGeometry&) = delete;
+  void operator=(const vtkShadowCasterGeometry&) = delete;
 
   void Upload(const std::vector<vtkPolyData*>& pieces);
 

@@ -1,4 +1,4 @@
-#include "vtkPlanarShadowCasterGeometry.h"
+#include "vtkShadowCasterGeometry.h"
 
 #include "vtkActor.h"
 #include "vtkCellArray.h"
@@ -185,13 +185,13 @@ void GlyphMatrix(vtkGlyph3DMapper* m, vtkDataSet* input, vtkIdType i, vtkDataArr
 }
 
 //------------------------------------------------------------------------------
-vtkPlanarShadowCasterGeometry::vtkPlanarShadowCasterGeometry() = default;
+vtkShadowCasterGeometry::vtkShadowCasterGeometry() = default;
 
 //------------------------------------------------------------------------------
-vtkPlanarShadowCasterGeometry::~vtkPlanarShadowCasterGeometry() = default;
+vtkShadowCasterGeometry::~vtkShadowCasterGeometry() = default;
 
 //------------------------------------------------------------------------------
-bool vtkPlanarShadowCasterGeometry::Update(vtkActor* actor)
+bool vtkShadowCasterGeometry::Update(vtkActor* actor)
 {
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
   if (!mapper)
@@ -273,7 +273,7 @@ bool vtkPlanarShadowCasterGeometry::Update(vtkActor* actor)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowCasterGeometry::Draw(vtkShaderProgram* program)
+void vtkShadowCasterGeometry::Draw(vtkShaderProgram* program)
 {
   if (this->TriangleCount == 0)
   {
@@ -316,7 +316,7 @@ void vtkPlanarShadowCasterGeometry::Draw(vtkShaderProgram* program)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowCasterGeometry::ReleaseGraphicsResources(vtkWindow*)
+void vtkShadowCasterGeometry::ReleaseGraphicsResources(vtkWindow*)
 {
   if (this->VAO)
   {

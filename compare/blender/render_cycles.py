@@ -1,0 +1,243 @@
+# render_cycles.py - the ONE fixed Blender script of the vtkshadow harness.
+#
+#   blender -b --factory-startup --python-exit-code 1 -t N \
+#       --python compare/blender/render_cycles.py -- DATAFILE OUTDIR
+#
+# DATAFILE is a binary file of numbers written by vtkshadow-compare (format
+# below); nothing in it is ever evaluated, so a scene file cannot run code
+# through Blender. For every light K the script renders the scene twice with
+# only that light (shadows on, shadows off) and writes
+#   OUTDIR/light<K>_on.f32, OUTDIR/light<K>_off.f32
+# as raw little-endian float32, width*height values of the red channel,
+# BOTTOM row first (Blender's order); the harness flips the rows.
+#
+# DATAFILE layout (little-endian):
+#   8 bytes   magic b"VSHCYC01"
+#   int32 x6  width, height, samples, threads(unused), light_count, object_count
+#   float64 x10 camera: eye[3], focal[3], up[3], vertical view angle (deg)
+#   float64 x2  clip_start, clip_end
+#   per light:  float64 x8  type (0 dir, 1 point, 2 spot), position[3],
+#               axis[3] (unit; where the light travels / cone axis), cone half-angle (deg)
+#   per object: int32 x3  point_count, triangle_count, casts
+#               float64 x 3*point_count  points
+#               float64 x 3*point_count  normals
+#               int32   x 3*triangle_count  triangles
+import math
+import os
+import struct
+import sys
+from array import array
+
+import bpy
+from mathutils import Matrix, Vector
+
+
+def fail(message):
+    sys.stderr.write("render_cycles.py: %s\n" % message)
+    sys.exit(1)
+
+
+def read_data(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    pos = 0
+
+    def take(fmt):
+        nonlocal pos
+        size = struct.calcsize(fmt)
+        if pos + size > len(data):
+            fail("%s: truncated" % path)
+        values = struct.unpack_from(fmt, data, pos)
+        pos += size
+        return values
+
+    def take_array(code, count):
+        nonlocal pos
+        a = array(code)
+        size = a.itemsize * count
+        if pos + size > len(data):
+            fail("%s: truncated" % path)
+        a.frombytes(data[pos:pos + size])
+        if sys.byteorder != "little":
+            a.byteswap()
+        pos += size
+        return a
+
+    if take("<8s")[0] != b"VSHCYC01":
+        fail("%s: not a vtkshadow Cycles data file" % path)
+    width, height, samples, _threads, nlights, nobjects = take("<6i")
+    camera = take("<10d")
+    clip = take("<2d")
+    lights = [take("<8d") for _ in range(nlights)]
+    objects = []
+    for _ in range(nobjects):
+        npts, ntri, casts = take("<3i")
+        pts = take_array("d", 3 * npts)
+        nrm = take_array("d", 3 * npts)
+        tri = take_array("i", 3 * ntri)
+        objects.append((npts, ntri, casts, pts, nrm, tri))
+    if pos != len(data):
+        fail("%s: trailing bytes" % path)
+    return width, height, samples, camera, clip, lights, objects
+
+
+def frame_from_axis(z_axis):
+    """A rotation whose local -Z is `axis` (lights shine down local -Z)."""
+    z = -Vector(z_axis).normalized()
+    helper = Vector((1.0, 0.0, 0.0)) if abs(z.x) < 0.9 else Vector((0.0, 1.0, 0.0))
+    x = helper.cross(z).normalized()
+    y = z.cross(x)
+    return Matrix(((x.x, y.x, z.x), (x.y, y.y, z.y), (x.z, y.z, z.z)))
+
+
+def main():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    if len(argv) != 2:
+        fail("usage: blender -b --factory-startup --python-exit-code 1 --python render_cycles.py -- DATAFILE OUTDIR")
+    datafile, outdir = argv
+    width, height, samples, camera, clip, lights, objects = read_data(datafile)
+
+    # Empty scene: delete the factory cube, light and camera.
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj, do_unlink=True)
+    scene = bpy.context.scene
+    scene.world = None
+
+    scene.render.engine = "CYCLES"
+    cyc = scene.cycles
+    cyc.device = "CPU"
+    cyc.samples = samples
+    cyc.use_adaptive_sampling = False
+    cyc.use_denoising = False
+    cyc.max_bounces = 0
+    cyc.diffuse_bounces = 0
+    cyc.glossy_bounces = 0
+    cyc.transmission_bounces = 0
+    cyc.volume_bounces = 0
+    cyc.transparent_max_bounces = 0
+    cyc.caustics_reflective = False
+    cyc.caustics_refractive = False
+    cyc.light_sampling_threshold = 0.0
+    cyc.seed = 0
+    cyc.pixel_filter_type = "BOX"
+    cyc.filter_width = 0.01 if samples == 1 else 1.0
+    scene.render.resolution_x = width
+    scene.render.resolution_y = height
+    scene.render.resolution_percentage = 100
+    scene.render.pixel_aspect_x = 1.0
+    scene.render.pixel_aspect_y = 1.0
+    scene.render.dither_intensity = 0.0
+    scene.render.film_transparent = False
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.image_settings.exr_codec = "NONE"
+    scene.render.use_compositing = False
+    scene.render.use_sequencer = False
+
+    # White Lambertian: a Diffuse BSDF (roughness 0 = Lambert), colour 1.
+    mat = bpy.data.materials.new("white")
+    mat.use_nodes = True
+    nodes = mat.node_tree.nodes
+    nodes.clear()
+    bsdf = nodes.new("ShaderNodeBsdfDiffuse")
+    bsdf.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+    bsdf.inputs["Roughness"].default_value = 0.0
+    out = nodes.new("ShaderNodeOutputMaterial")
+    mat.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
+
+    for index, (npts, ntri, casts, pts, nrm, tri) in enumerate(objects):
+        mesh = bpy.data.meshes.new("m%d" % index)
+        mesh.vertices.add(npts)
+        mesh.vertices.foreach_set("co", array("f", pts))
+        mesh.loops.add(3 * ntri)
+        mesh.loops.foreach_set("vertex_index", tri)
+        mesh.polygons.add(ntri)
+        mesh.polygons.foreach_set("loop_start", array("i", range(0, 3 * ntri, 3)))
+        mesh.polygons.foreach_set("loop_total", array("i", [3]) * ntri)
+        mesh.polygons.foreach_set("use_smooth", array("b", [1]) * ntri)
+        mesh.update(calc_edges=True)
+        mesh.validate(clean_customdata=False)
+        # The loader's per-vertex normals, exactly (custom split normals).
+        mesh.use_auto_smooth = True
+        mesh.normals_split_custom_set_from_vertices(
+            [tuple(nrm[3 * i:3 * i + 3]) for i in range(npts)])
+        mesh.materials.append(mat)
+        obj = bpy.data.objects.new("o%d" % index, mesh)
+        obj.visible_shadow = bool(casts)
+        # No shadow-terminator tricks: shadow rays start on the true triangle.
+        obj.shadow_terminator_geometry_offset = 0.0
+        obj.shadow_terminator_normal_offset = 0.0
+        scene.collection.objects.link(obj)
+
+    # Camera: columns (r, u, -f, E), vertical sensor fit.
+    eye = Vector(camera[0:3])
+    f = (Vector(camera[3:6]) - eye).normalized()
+    r = f.cross(Vector(camera[6:9])).normalized()
+    u = r.cross(f)
+    cam_data = bpy.data.cameras.new("camera")
+    cam_data.type = "PERSP"
+    cam_data.sensor_fit = "VERTICAL"
+    cam_data.angle_y = math.radians(camera[9])
+    cam_data.shift_x = 0.0
+    cam_data.shift_y = 0.0
+    cam_data.clip_start = clip[0]
+    cam_data.clip_end = clip[1]
+    cam = bpy.data.objects.new("camera", cam_data)
+    cam.matrix_world = Matrix(((r.x, u.x, -f.x, eye.x), (r.y, u.y, -f.y, eye.y),
+                               (r.z, u.z, -f.z, eye.z), (0.0, 0.0, 0.0, 1.0)))
+    scene.collection.objects.link(cam)
+    scene.camera = cam
+
+    exr = os.path.join(outdir, "render.exr")
+    for k, (ltype, px, py, pz, ax, ay, az, cone) in enumerate(lights):
+        if ltype == 0:
+            ldata = bpy.data.lights.new("light", "SUN")
+            ldata.angle = 0.0
+        elif ltype == 1:
+            ldata = bpy.data.lights.new("light", "POINT")
+            ldata.shadow_soft_size = 0.0
+        else:
+            ldata = bpy.data.lights.new("light", "SPOT")
+            ldata.shadow_soft_size = 0.0
+            ldata.spot_size = math.radians(2.0 * cone)
+            ldata.spot_blend = 0.0
+            ldata.show_cone = False
+        ldata.energy = 1.0
+        ldata.color = (1.0, 1.0, 1.0)
+        ldata.cycles.max_bounces = 0
+        lobj = bpy.data.objects.new("light", ldata)
+        rot = frame_from_axis((ax, ay, az)).to_4x4()
+        rot.translation = Vector((px, py, pz))
+        lobj.matrix_world = rot
+        scene.collection.objects.link(lobj)
+        for state in ("on", "off"):
+            ldata.cycles.cast_shadow = (state == "on")
+            scene.render.filepath = exr
+            bpy.ops.render.render(write_still=True)
+            img = bpy.data.images.load(exr, check_existing=False)
+            if tuple(img.size) != (width, height):
+                fail("rendered %dx%d, expected %dx%d" % (img.size[0], img.size[1], width, height))
+            px4 = array("f", bytes(4 * 4 * width * height))
+            img.pixels.foreach_get(px4)
+            red = px4[0::4]
+            target = os.path.join(outdir, "light%d_%s.f32" % (k, state))
+            with open(target + ".tmp", "wb") as f:
+                if sys.byteorder != "little":
+                    red.byteswap()
+                red.tofile(f)
+            os.replace(target + ".tmp", target)
+            bpy.data.images.remove(img)
+            sys.stderr.write("cycles: light %d shadows %s done\n" % (k, state))
+        bpy.data.objects.remove(lobj, do_unlink=True)
+        bpy.data.lights.remove(ldata)
+    try:
+        os.remove(exr)
+    except OSError:
+        pass
+
+
+main()

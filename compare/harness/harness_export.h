@@ -1,0 +1,62 @@
+// harness_export.h - the scene as numbers for the ray tracers: POV-Ray scene
+// text and the binary data file read by compare/blender/render_cycles.py.
+//
+// Only numbers from the loaded scene reach these outputs, each formatted by
+// this code (%.17g); no string of the scene file (names, descriptions, mesh
+// paths) is ever written, so a scene cannot inject POV-Ray directives or
+// Python code.
+#ifndef VTKSHADOW_HARNESS_EXPORT_H
+#define VTKSHADOW_HARNESS_EXPORT_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vsh_harness
+{
+
+struct ExportObject
+{
+  std::vector<double> points;  // 3 per point, normalized frame (see ExportScene)
+  std::vector<double> normals; // 3 per point, unit
+  std::vector<uint32_t> triangles;
+  bool casts = true;
+};
+
+struct ExportLight
+{
+  int type = 0;          // 0 directional, 1 point, 2 spot
+  double position[3];    // normalized frame (point, spot; directional: far away)
+  double axis[3];        // unit: direction of travel (directional), cone axis (spot)
+  double cone = 0;       // half-angle, degrees
+};
+
+// The scene in the renderers' frame: x' = (x - anchor) * scale, with anchor
+// the camera position and scale a power of two (so the scaling is exact)
+// that brings the camera's focal distance to about 10 units. A similarity
+// transform leaves visibility unchanged; it keeps single-precision mesh
+// vertices (POV-Ray mesh2, Cycles) and POV-Ray's fixed 1e-3 shadow-ray
+// epsilon meaningful for scenes far from the origin or at tiny scales.
+struct ExportScene
+{
+  int width = 0, height = 0;
+  double anchor[3] = { 0, 0, 0 };
+  double scale = 1;
+  double eye[3], focal[3], up[3];
+  double view_angle = 30; // vertical, degrees
+  double bounds_center[3] = { 0, 0, 0 };
+  double bounds_diagonal = 1;
+  std::vector<ExportLight> lights;
+  std::vector<ExportObject> objects;
+};
+
+// POV-Ray 3.7 scene. Light K and shadows on/off are chosen on the command
+// line: Declare=VSH_LIGHT=K Declare=VSH_SHADOWS=0|1.
+std::string PovScene(const ExportScene& s);
+
+// Binary data file for render_cycles.py (layout documented there).
+std::string CyclesData(const ExportScene& s, int samples);
+
+} // namespace vsh_harness
+
+#endif

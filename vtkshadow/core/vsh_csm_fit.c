@@ -1,0 +1,254 @@
+/* vsh_csm_fit.c - where each shadow map looks: directional cascades fitted
+ * to view slices, perspective maps for spot lights and cube faces. */
+#include "vsh_csm.h"
+
+#include "vsh_mat4.h"
+#include "vsh_vec3.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define VSH_PI 3.14159265358979323846
+
+/* A right-handed basis whose z points towards the light (against
+ * `travel`), chosen from the world axes only, so it never depends on the
+ * camera: the texel grid stays put while the camera turns. */
+static int light_basis(const double travel[3], double x[3], double y[3], double z[3])
+{
+  double t[3];
+  if (!vsh_vec3_is_finite(travel) || vsh_vec3_normalize(travel, t) == 0.0)
+    return 1;
+  vsh_vec3_scale(t, -1.0, z);
+  /* Reference axis: the world axis least aligned with z. */
+  double ref[3] = {0, 0, 0};
+  const double ax = fabs(z[0]), ay = fabs(z[1]), az = fabs(z[2]);
+  ref[(ax <= ay && ax <= az) ? 0 : (ay <= az ? 1 : 2)] = 1.0;
+  double c[3];
+  vsh_vec3_cross(ref, z, c);
+  vsh_vec3_normalize(c, x);
+  vsh_vec3_cross(z, x, y);
+  return 0;
+}
+
+/* Light-space coordinates (x, y, height towards the light) of the 8 corners
+ * of a box given relative to the origin. */
+static void box_in_light(const vsh_bounds *b, const double origin[3], const double x[3],
+                         const double y[3], const double z[3], double out[8][3])
+{
+  double corners[8][3];
+  vsh_bounds_corners(b, corners);
+  for (int i = 0; i < 8; ++i) {
+    double rel[3];
+    vsh_vec3_sub(corners[i], origin, rel);
+    out[i][0] = vsh_vec3_dot(rel, x);
+    out[i][1] = vsh_vec3_dot(rel, y);
+    out[i][2] = vsh_vec3_dot(rel, z);
+  }
+}
+
+/* Orthographic world_to_clip for the light-space box [x0,x1] x [y0,y1] and
+ * heights [h_far, h_near] (h_near nearest the light maps to depth -1). */
+static void ortho(const double x[3], const double y[3], const double z[3], double x0, double x1,
+                  double y0, double y1, double h_far, double h_near, double out[16])
+{
+  const double sx = 2.0 / (x1 - x0), sy = 2.0 / (y1 - y0), sz = 2.0 / (h_near - h_far);
+  memset(out, 0, sizeof(double) * 16);
+  for (int k = 0; k < 3; ++k) {
+    out[0 + k] = sx * x[k];
+    out[4 + k] = sy * y[k];
+    out[8 + k] = -sz * z[k];
+  }
+  out[3] = -sx * 0.5 * (x0 + x1);
+  out[7] = -sy * 0.5 * (y0 + y1);
+  out[11] = sz * 0.5 * (h_near + h_far);
+  out[15] = 1.0;
+}
+
+/* The radius, rounded up to a geometric grid of 2^(1/8) steps, so that
+ * small changes of the split depths do not resize the map (which would
+ * make every shadow edge swim). */
+static double quantize_up(double v)
+{
+  return exp2(ceil(8.0 * log2(v) - 1e-9) / 8.0);
+}
+
+int vsh_csm_fit_directional(const vsh_camera *camera, double aspect, double slice_near,
+                            double slice_far, const double light_direction[3],
+                            const vsh_bounds *receivers, const vsh_bounds *casters, int stable,
+                            int resolution, vsh_shadow_view *out)
+{
+  double r[3], u[3], f[3], lx[3], ly[3], lz[3];
+  if (!camera || !out || !(aspect > 0.0) || !(slice_near > 0.0) || !(slice_far > slice_near) ||
+      !isfinite(slice_far) || resolution < 1 || vsh_camera_basis(camera, r, u, f) != 0 ||
+      light_basis(light_direction, lx, ly, lz) != 0 ||
+      !(camera->view_angle > 0.0 && camera->view_angle < 180.0))
+    return 2;
+  const double *origin = camera->position;
+  const double t = tan(camera->view_angle * 0.5 * VSH_PI / 180.0);
+  /* Slice corners relative to the eye, then in light space. */
+  double pts[8][3];
+  for (int i = 0; i < 8; ++i) {
+    const double d = (i & 4) ? slice_far : slice_near;
+    const double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
+    double p[3];
+    for (int k = 0; k < 3; ++k)
+      p[k] = d * (f[k] + sx * t * aspect * r[k] + sy * t * u[k]);
+    pts[i][0] = vsh_vec3_dot(p, lx);
+    pts[i][1] = vsh_vec3_dot(p, ly);
+    pts[i][2] = vsh_vec3_dot(p, lz);
+  }
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  double h_lo = INFINITY, h_hi = -INFINITY;
+  for (int i = 0; i < 8; ++i) {
+    x0 = fmin(x0, pts[i][0]);
+    x1 = fmax(x1, pts[i][0]);
+    y0 = fmin(y0, pts[i][1]);
+    y1 = fmax(y1, pts[i][1]);
+    h_lo = fmin(h_lo, pts[i][2]);
+    h_hi = fmax(h_hi, pts[i][2]);
+  }
+  /* Receivers clip the slice: shadows fall nowhere else. */
+  if (receivers && !vsh_bounds_is_empty(receivers)) {
+    double rb[8][3];
+    box_in_light(receivers, origin, lx, ly, lz, rb);
+    double rx0 = INFINITY, rx1 = -INFINITY, ry0 = INFINITY, ry1 = -INFINITY, rh0 = INFINITY;
+    double rh1 = -INFINITY;
+    for (int i = 0; i < 8; ++i) {
+      rx0 = fmin(rx0, rb[i][0]);
+      rx1 = fmax(rx1, rb[i][0]);
+      ry0 = fmin(ry0, rb[i][1]);
+      ry1 = fmax(ry1, rb[i][1]);
+      rh0 = fmin(rh0, rb[i][2]);
+      rh1 = fmax(rh1, rb[i][2]);
+    }
+    if (rx0 > x1 || rx1 < x0 || ry0 > y1 || ry1 < y0 || rh0 > h_hi || rh1 < h_lo)
+      return 1;
+    if (!stable) {
+      x0 = fmax(x0, rx0);
+      x1 = fmin(x1, rx1);
+      y0 = fmax(y0, ry0);
+      y1 = fmin(y1, ry1);
+    }
+    h_lo = fmax(h_lo, rh0);
+  }
+  /* The map's near plane: the highest caster (casters outside the view
+   * still cast into it), not the slice's top, which may reach far into empty
+   * sky and waste depth precision. */
+  double h_near = h_hi;
+  if (casters && !vsh_bounds_is_empty(casters)) {
+    double cb[8][3];
+    box_in_light(casters, origin, lx, ly, lz, cb);
+    h_near = -INFINITY;
+    for (int i = 0; i < 8; ++i)
+      h_near = fmax(h_near, cb[i][2]);
+    h_near = fmax(h_near, h_lo);
+  }
+  if (stable) {
+    /* Rotation-invariant size: the sphere around the slice's corners, with
+     * its centre on the view axis, depends only on depths, angle and aspect. */
+    const double mid = 0.5 * (slice_near + slice_far);
+    const double half = 0.5 * (slice_far - slice_near);
+    const double radius =
+        quantize_up(sqrt(half * half + slice_far * slice_far * t * t * (1.0 + aspect * aspect)));
+    double c[3], center[3];
+    vsh_vec3_scale(f, mid, c);
+    center[0] = vsh_vec3_dot(c, lx);
+    center[1] = vsh_vec3_dot(c, ly);
+    /* Snap the centre to whole texels of a grid anchored at the world
+     * origin: absolute light coordinates in double, then back. */
+    const double texel = 2.0 * radius / resolution;
+    for (int k = 0; k < 2; ++k) {
+      const double *axis = k == 0 ? lx : ly;
+      const double anchor = vsh_vec3_dot(origin, axis);
+      const double absolute = center[k] + anchor;
+      center[k] = floor(absolute / texel + 0.5) * texel - anchor;
+    }
+    x0 = center[0] - radius;
+    x1 = center[0] + radius;
+    y0 = center[1] - radius;
+    y1 = center[1] + radius;
+  }
+  if (!(x1 > x0) || !(y1 > y0))
+    return 1;
+  /* A little depth margin so geometry exactly on the range is kept. */
+  const double extent = fmax(h_near - h_lo, 1e-12 * fmax(fabs(h_near), 1.0));
+  const double margin = 1e-3 * extent;
+  ortho(lx, ly, lz, x0, x1, y0, y1, h_lo - margin, h_near + margin, out->world_to_clip);
+  out->texel_world = fmax(x1 - x0, y1 - y0) / resolution;
+  out->perspective = 0;
+  out->depth_extent = extent + 2.0 * margin;
+  out->near_far[0] = 0.0;
+  out->near_far[1] = out->depth_extent;
+  return 0;
+}
+
+int vsh_csm_fit_perspective(const double position[3], const double direction[3],
+                            double half_angle_deg, const vsh_bounds *bounds,
+                            const double origin[3], int resolution, vsh_shadow_view *out)
+{
+  double z[3], x[3], y[3], d[3];
+  if (!position || !direction || !bounds || !origin || !out || resolution < 1 ||
+      !(half_angle_deg > 0.0 && half_angle_deg < 90.0) || !vsh_vec3_is_finite(position) ||
+      vsh_bounds_is_empty(bounds) || !vsh_bounds_is_finite(bounds) ||
+      !vsh_vec3_is_finite(direction) || vsh_vec3_normalize(direction, d) == 0.0)
+    return 2;
+  /* View basis looking along d (z towards the viewer, as OpenGL). */
+  double back[3];
+  vsh_vec3_scale(d, -1.0, back);
+  if (light_basis(d, x, y, z) != 0)
+    return 2;
+  (void)back;
+  /* Depth range along d of the bounds, relative to the light. */
+  double corners[8][3], dmin = INFINITY, dmax = -INFINITY;
+  vsh_bounds_corners(bounds, corners);
+  for (int i = 0; i < 8; ++i) {
+    double rel[3];
+    vsh_vec3_sub(corners[i], position, rel);
+    const double depth = vsh_vec3_dot(rel, d);
+    dmin = fmin(dmin, depth);
+    dmax = fmax(dmax, depth);
+  }
+  if (!(dmax > 0.0))
+    return 1;
+  /* Near: the nearest bounds depth, but never so close that depth precision
+   * collapses (a 24-bit map keeps far/near <= 1e4 usable). */
+  const double far_d = dmax * 1.001;
+  const double near_d = fmax(dmin * 0.999, far_d * 1e-4);
+  const double cot = 1.0 / tan(half_angle_deg * VSH_PI / 180.0);
+  /* view (camera-relative world -> light view): rows x, y, z; eye at
+   * position - origin. */
+  double view[16], proj[16], eye[3];
+  vsh_vec3_sub(position, origin, eye);
+  memset(view, 0, sizeof view);
+  for (int k = 0; k < 3; ++k) {
+    view[0 + k] = x[k];
+    view[4 + k] = y[k];
+    view[8 + k] = z[k];
+  }
+  view[3] = -vsh_vec3_dot(x, eye);
+  view[7] = -vsh_vec3_dot(y, eye);
+  view[11] = -vsh_vec3_dot(z, eye);
+  view[15] = 1.0;
+  memset(proj, 0, sizeof proj);
+  proj[0] = cot;
+  proj[5] = cot;
+  proj[10] = -(far_d + near_d) / (far_d - near_d);
+  proj[11] = -2.0 * far_d * near_d / (far_d - near_d);
+  proj[14] = -1.0;
+  vsh_mat4_multiply(proj, view, out->world_to_clip);
+  out->texel_world = 2.0 / (cot * resolution); /* at distance 1 */
+  out->perspective = 1;
+  out->depth_extent = far_d - near_d;
+  out->near_far[0] = near_d;
+  out->near_far[1] = far_d;
+  return 0;
+}
+
+void vsh_csm_cube_face_direction(int face, double out[3])
+{
+  out[0] = out[1] = out[2] = 0.0;
+  if (face < 0 || face > 5)
+    face = 0;
+  out[face / 2] = (face % 2) ? -1.0 : 1.0;
+}

@@ -1,0 +1,25 @@
+// vtkShadowLightingHook.h - put per-light shadow factors into the lighting
+// code of VTK 9.1's polydata mapper shaders.
+#ifndef vtkShadowLightingHook_h
+#define vtkShadowLightingHook_h
+
+#include <string>
+
+namespace vtkshadow
+{
+/**
+ * VTK 9.1's mapper adds each light I as
+ *   diffuse += (df * lightColorI);   specular += (sf * lightColorI);
+ * (Phong and Gouraud) or sets `radiance = lightColorI;` (PBR). Multiply
+ * exactly those terms by `factor(I)`, where `factor` is a GLSL expression
+ * with "%d" standing for the light index, and insert `prepare` (a GLSL
+ * statement) once, at main's top level just before the first light term,
+ * so per-fragment work (texture lookups) happens once, not per term.
+ * Returns false (shader unchanged) when the shader has no light terms, e.g.
+ * for actors with lighting off.
+ */
+bool InjectLightFactors(std::string& fragmentShader, const std::string& factor,
+  const std::string& prepare, int maxLights = 16);
+}
+
+#endif
