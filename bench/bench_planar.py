@@ -358,7 +358,12 @@ def main():
     ap.add_argument("--only", default="", help="comma-separated config keys to run (debugging)")
     ap.add_argument("--output", default=os.path.join(REPO, "docs", "results.md"))
     ap.add_argument("--no-write", action="store_true")
+    ap.add_argument("--profile", metavar="TECHNIQUE",
+                    help="render only the 1M-triangle scene with TECHNIQUE for --frames frames "
+                         "and exit (run under perf record)")
     args = ap.parse_args()
+    if args.profile:
+        return profile(args)
 
     S = (800, 600)
     configs = [
@@ -504,6 +509,31 @@ def main():
         interp = interpretation_from(args.output)
         write_section(args.output, text.replace("<!-- interpretation -->", interp))
         log("wrote %s" % args.output)
+
+
+def profile(args):
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    renderer = vtkRenderer()
+    renderer.AutomaticLightCreationOff()
+    window.AddRenderer(renderer)
+    window.SetSize(800, 600)
+    info = build_sphere(renderer, args)
+    tech, pss = make_pass(args.profile)
+    renderer.SetPass(pss)
+    for i in range(args.warmup):
+        place_camera(renderer, info["camera"], i, args.frames)
+        window.Render()
+        window.WaitForCompletion()
+    log("profile: start")  # perf can be told to skip the set-up with --delay
+    t0 = time.perf_counter()
+    for i in range(args.frames):
+        place_camera(renderer, info["camera"], i, args.frames)
+        window.Render()
+        window.WaitForCompletion()
+    log("profile: %s %.1f ms/frame (mean)" % (args.profile,
+                                             1000 * (time.perf_counter() - t0) / args.frames))
+    pss.ReleaseGraphicsResources(window)
 
 
 def interpretation_from(path):

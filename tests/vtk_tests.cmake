@@ -60,6 +60,8 @@ add_test(NAME sanitize.unit
           ${CMAKE_BINARY_DIR}/sanitize)
 set_tests_properties(sanitize.unit PROPERTIES TIMEOUT 1200 LABELS "sanitize")
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_robust_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_tests.cmake)
 
 # Every test of this directory may use the shared X server.
 get_property(vtkshadow_vtk_tests DIRECTORY PROPERTY TESTS)

@@ -169,8 +169,12 @@ def main():
         obj = bpy.data.objects.new("o%d" % index, mesh)
         obj.visible_shadow = bool(casts)
         # No shadow-terminator tricks: shadow rays start on the true triangle.
-        obj.shadow_terminator_geometry_offset = 0.0
-        obj.shadow_terminator_normal_offset = 0.0
+        # (Blender 3.4 keeps these on the object's Cycles settings.)
+        for holder in (obj, obj.cycles):
+            for prop in ("shadow_terminator_geometry_offset", "shadow_terminator_offset",
+                         "shadow_terminator_normal_offset"):
+                if hasattr(holder, prop):
+                    setattr(holder, prop, 0.0)
         scene.collection.objects.link(obj)
 
     # Camera: columns (r, u, -f, E), vertical sensor fit.

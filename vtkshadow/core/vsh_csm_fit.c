@@ -17,7 +17,7 @@
 static int light_basis(const double travel[3], double x[3], double y[3], double z[3])
 {
   double t[3];
-  if (!vsh_vec3_is_finite(travel) || vsh_vec3_normalize(travel, t) == 0.0)
+  if (!travel || !vsh_vec3_is_finite(travel) || vsh_vec3_normalize(travel, t) == 0.0)
     return 1;
   vsh_vec3_scale(t, -1.0, z);
   /* Reference axis: the world axis least aligned with z. */
@@ -82,7 +82,9 @@ int vsh_csm_fit_directional(const vsh_camera *camera, double aspect, double slic
   if (!camera || !out || !(aspect > 0.0) || !(slice_near > 0.0) || !(slice_far > slice_near) ||
       !isfinite(slice_far) || resolution < 1 || vsh_camera_basis(camera, r, u, f) != 0 ||
       light_basis(light_direction, lx, ly, lz) != 0 ||
-      !(camera->view_angle > 0.0 && camera->view_angle < 180.0))
+      !(camera->view_angle > 0.0 && camera->view_angle < 180.0) || !isfinite(aspect) ||
+      (receivers && !vsh_bounds_is_empty(receivers) && !vsh_bounds_is_finite(receivers)) ||
+      (casters && !vsh_bounds_is_empty(casters) && !vsh_bounds_is_finite(casters)))
     return 2;
   const double *origin = camera->position;
   const double t = tan(camera->view_angle * 0.5 * VSH_PI / 180.0);
@@ -98,7 +100,7 @@ int vsh_csm_fit_directional(const vsh_camera *camera, double aspect, double slic
     pts[i][1] = vsh_vec3_dot(p, ly);
     pts[i][2] = vsh_vec3_dot(p, lz);
   }
-  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY, stable_texel = 0.0;
   double h_lo = INFINITY, h_hi = -INFINITY;
   for (int i = 0; i < 8; ++i) {
     x0 = fmin(x0, pts[i][0]);
@@ -125,10 +127,24 @@ int vsh_csm_fit_directional(const vsh_camera *camera, double aspect, double slic
     if (rx0 > x1 || rx1 < x0 || ry0 > y1 || ry1 < y0 || rh0 > h_hi || rh1 < h_lo)
       return 1;
     if (!stable) {
+      /* Zero-volume receivers (a point, a segment along a light-space axis)
+       * leave a zero-width range: keep at least one texel of the unclipped
+       * fit around it so the map stays valid. */
+      const double min_width = fmax(x1 - x0, y1 - y0) / resolution;
       x0 = fmax(x0, rx0);
       x1 = fmin(x1, rx1);
       y0 = fmax(y0, ry0);
       y1 = fmin(y1, ry1);
+      if (x1 - x0 < min_width) {
+        const double c = 0.5 * (x0 + x1);
+        x0 = c - 0.5 * min_width;
+        x1 = c + 0.5 * min_width;
+      }
+      if (y1 - y0 < min_width) {
+        const double c = 0.5 * (y0 + y1);
+        y0 = c - 0.5 * min_width;
+        y1 = c + 0.5 * min_width;
+      }
     }
     h_lo = fmax(h_lo, rh0);
   }
@@ -156,26 +172,37 @@ int vsh_csm_fit_directional(const vsh_camera *camera, double aspect, double slic
     center[0] = vsh_vec3_dot(c, lx);
     center[1] = vsh_vec3_dot(c, ly);
     /* Snap the centre to whole texels of a grid anchored at the world
-     * origin: absolute light coordinates in double, then back. */
-    const double texel = 2.0 * radius / resolution;
-    for (int k = 0; k < 2; ++k) {
+     * origin: absolute light coordinates in double, then back. Snapping
+     * moves the centre by up to half a texel, so the map is half a texel
+     * wider than the sphere on each side: res texels of 2 radius / (res - 1).
+     * (A one-texel map cannot be snapped and still cover the slice.) */
+    const double texel = resolution > 1 ? 2.0 * radius / (resolution - 1) : 2.0 * radius;
+    const double half_width = 0.5 * texel * resolution;
+    stable_texel = texel;
+    for (int k = 0; k < 2 && resolution > 1; ++k) {
       const double *axis = k == 0 ? lx : ly;
       const double anchor = vsh_vec3_dot(origin, axis);
       const double absolute = center[k] + anchor;
       center[k] = floor(absolute / texel + 0.5) * texel - anchor;
     }
-    x0 = center[0] - radius;
-    x1 = center[0] + radius;
-    y0 = center[1] - radius;
-    y1 = center[1] + radius;
+    x0 = center[0] - half_width;
+    x1 = center[0] + half_width;
+    y0 = center[1] - half_width;
+    y1 = center[1] + half_width;
   }
   if (!(x1 > x0) || !(y1 > y0))
     return 1;
+  /* The depth range's floor (casters all below the receivers leave h_near
+   * == h_lo) is relative to the map's width too: a range of 1e-12 would let
+   * rounding of the heights alone push receivers outside [-1, 1]. */
+  const double extent =
+      fmax(h_near - h_lo, fmax(1e-12 * fmax(fabs(h_near), 1.0), 1e-6 * fmax(x1 - x0, y1 - y0)));
   /* A little depth margin so geometry exactly on the range is kept. */
-  const double extent = fmax(h_near - h_lo, 1e-12 * fmax(fabs(h_near), 1.0));
   const double margin = 1e-3 * extent;
-  ortho(lx, ly, lz, x0, x1, y0, y1, h_lo - margin, h_near + margin, out->world_to_clip);
-  out->texel_world = fmax(x1 - x0, y1 - y0) / resolution;
+  ortho(lx, ly, lz, x0, x1, y0, y1, h_lo - margin, h_lo + extent + margin, out->world_to_clip);
+  /* Stable: exactly the texel the centre was snapped to (x1 - x0 carries the
+   * rounding of the centre's coordinate). */
+  out->texel_world = stable ? stable_texel : fmax(x1 - x0, y1 - y0) / resolution;
   out->perspective = 0;
   out->depth_extent = extent + 2.0 * margin;
   out->near_far[0] = 0.0;
@@ -190,6 +217,7 @@ int vsh_csm_fit_perspective(const double position[3], const double direction[3],
   double z[3], x[3], y[3], d[3];
   if (!position || !direction || !bounds || !origin || !out || resolution < 1 ||
       !(half_angle_deg > 0.0 && half_angle_deg < 90.0) || !vsh_vec3_is_finite(position) ||
+      !vsh_vec3_is_finite(origin) ||
       vsh_bounds_is_empty(bounds) || !vsh_bounds_is_finite(bounds) ||
       !vsh_vec3_is_finite(direction) || vsh_vec3_normalize(direction, d) == 0.0)
     return 2;

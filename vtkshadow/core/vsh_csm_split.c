@@ -33,7 +33,8 @@ int vsh_csm_visible_depth_range(const vsh_camera *camera, double aspect, double 
                                 double out_near_far[2])
 {
   double r[3], u[3], f[3];
-  if (!camera || !bounds || !out_near_far || !(aspect > 0.0) || !(clip_near > 0.0) ||
+  if (!camera || !bounds || !out_near_far || !(aspect > 0.0) || !isfinite(aspect) ||
+      !(clip_near > 0.0) ||
       !(clip_far > clip_near) || !isfinite(clip_far) || vsh_bounds_is_empty(bounds) ||
       !vsh_bounds_is_finite(bounds) || vsh_camera_basis(camera, r, u, f) != 0 ||
       !(camera->view_angle > 0.0 && camera->view_angle < 180.0))
@@ -71,6 +72,26 @@ int vsh_csm_visible_depth_range(const vsh_camera *camera, double aspect, double 
     for (int k = 0; k < n; ++k) {
       lo = fmin(lo, a[k][2]);
       hi = fmax(hi, a[k][2]);
+    }
+  }
+  /* Clipping the box's faces finds every vertex of box-and-frustum that lies
+   * on the box's surface; the others are frustum corners inside the box (a
+   * box straddling the near plane, or containing the camera or the whole
+   * view). Depth is linear, so its extremes are at these vertices. */
+  double rmin[3], rmax[3];
+  vsh_vec3_sub(bounds->min, camera->position, rmin);
+  vsh_vec3_sub(bounds->max, camera->position, rmax);
+  for (int i = 0; i < 8; ++i) {
+    const double d = (i & 4) ? clip_far : clip_near;
+    const double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
+    int inside = 1;
+    for (int k = 0; k < 3; ++k) {
+      const double p = d * (f[k] + sx * t * aspect * r[k] + sy * t * u[k]);
+      inside &= p >= rmin[k] && p <= rmax[k];
+    }
+    if (inside) {
+      lo = fmin(lo, d);
+      hi = fmax(hi, d);
     }
   }
   if (!(lo <= hi))

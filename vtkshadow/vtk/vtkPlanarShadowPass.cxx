@@ -71,6 +71,23 @@ void ToFloat(const double* in, float* out, int n)
   }
 }
 
+// Whether an actor's world bounds lie within 1e-6 of their size of the plane.
+bool LiesInPlane(vtkActor* actor, const double plane[4])
+{
+  double b[6];
+  actor->GetBounds(b);
+  const double size = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4], 1e-300 });
+  for (int k = 0; k < 8; ++k)
+  {
+    const double p[3] = { b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)] };
+    if (std::abs(plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3]) > 1e-6 * size)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // The plane of a receiver actor's flat geometry in world coordinates, or
 // false when the geometry is not flat (within 1e-6 of its size) or empty.
 bool ReceiverPlane(vtkActor* actor, double plane[4])
@@ -317,6 +334,14 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     double Homogeneous[4];
     bool Casts;
   };
+  // Lights that follow the camera (and the automatic headlight) are updated
+  // by VTK's lights pass inside the delegate, after our shadow work: bring
+  // them up to date now, or their shadows lag one frame behind.
+  if (renderer->GetLights()->GetNumberOfItems() == 0 && renderer->GetAutomaticLightCreation())
+  {
+    renderer->CreateLight();
+  }
+  renderer->UpdateLightsGeometryToFollowCamera();
   std::vector<LightInfo> lights;
   {
     vtkLightCollection* collection = renderer->GetLights();
@@ -565,6 +590,10 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
             if (actor == receivers[r].Actor)
             {
               continue; // a flat receiver does not shadow itself
+            }
+            if (!receivers[r].Actor && LiesInPlane(actor, receivers[r].Plane))
+            {
+              continue; // nor does a surface lying in an explicit receiver plane
             }
             auto& caster = impl.Casters[actor];
             if (!caster)

@@ -4,7 +4,10 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkMultiPieceDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
@@ -25,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace
@@ -245,18 +249,44 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
       AppendTriangles(source, matrix, this->Shift, vertices, indices);
     }
   }
-  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  else if (vtkCompositeDataSet::SafeDownCast(data))
   {
+    // Visibility is inherited down the block tree, as the mapper draws it.
     auto* cpdm = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
-    auto it = vtk::TakeSmartPointer(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      auto* poly = vtkPolyData::SafeDownCast(it->GetCurrentDataObject());
-      if (poly && (!cpdm || cpdm->GetBlockVisibility(it->GetCurrentFlatIndex())))
+    vtkCompositeDataDisplayAttributes* attributes =
+      cpdm ? cpdm->GetCompositeDataDisplayAttributes() : nullptr;
+    std::function<void(vtkDataObject*, bool)> visit = [&](vtkDataObject* node, bool visible) {
+      if (!node)
       {
-        AppendTriangles(poly, nullptr, this->Shift, vertices, indices);
+        return;
       }
-    }
+      if (attributes && attributes->HasBlockVisibility(node))
+      {
+        visible = attributes->GetBlockVisibility(node);
+      }
+      if (auto* mb = vtkMultiBlockDataSet::SafeDownCast(node))
+      {
+        for (unsigned int b = 0; b < mb->GetNumberOfBlocks(); ++b)
+        {
+          visit(mb->GetBlock(b), visible);
+        }
+      }
+      else if (auto* mp = vtkMultiPieceDataSet::SafeDownCast(node))
+      {
+        for (unsigned int b = 0; b < mp->GetNumberOfPieces(); ++b)
+        {
+          visit(mp->GetPiece(b), visible);
+        }
+      }
+      else if (auto* leaf = vtkPolyData::SafeDownCast(node))
+      {
+        if (visible)
+        {
+          AppendTriangles(leaf, nullptr, this->Shift, vertices, indices);
+        }
+      }
+    };
+    visit(data, true);
   }
   else if (auto* poly = vtkPolyData::SafeDownCast(data))
   {

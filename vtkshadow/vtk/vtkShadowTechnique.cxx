@@ -7,6 +7,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkPlanarShadowPass.h"
+#include "vtkCascadedShadowMapPass.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
@@ -21,13 +22,14 @@ vtkStandardNewMacro(vtkShadowTechnique);
 
 namespace
 {
-const char* const KnownTechniques[] = { "none", "vtk", "planar" };
+const char* const KnownTechniques[] = { "none", "vtk", "planar", "csm" };
 }
 
 //------------------------------------------------------------------------------
 vtkShadowTechnique::vtkShadowTechnique()
   : Name(nullptr)
   , MapResolution(2048)
+  , CascadedSettings(vtkCascadedShadowMapPass::New())
 {
   this->SetName("none");
 }
@@ -36,6 +38,13 @@ vtkShadowTechnique::vtkShadowTechnique()
 vtkShadowTechnique::~vtkShadowTechnique()
 {
   this->SetName(nullptr);
+  this->CascadedSettings->Delete();
+}
+
+//------------------------------------------------------------------------------
+vtkCascadedShadowMapPass* vtkShadowTechnique::GetCascadedSettings()
+{
+  return this->CascadedSettings;
 }
 
 //------------------------------------------------------------------------------
@@ -64,7 +73,7 @@ bool vtkShadowTechnique::IsValid() const
 //------------------------------------------------------------------------------
 const char* vtkShadowTechnique::GetKnownTechniques()
 {
-  return "none vtk planar";
+  return "none vtk planar csm";
 }
 
 //------------------------------------------------------------------------------
@@ -84,6 +93,13 @@ vtkRenderPass* vtkShadowTechnique::CreatePass()
   {
     // Receivers are the actors marked vtkPlanarShadowPass::RECEIVER().
     return vtkPlanarShadowPass::New();
+  }
+  if (std::strcmp(this->Name, "csm") == 0)
+  {
+    vtkCascadedShadowMapPass* csm = vtkCascadedShadowMapPass::New();
+    csm->CopySettings(this->CascadedSettings);
+    csm->SetMapResolution(this->MapResolution);
+    return csm;
   }
   // "vtk": VTK's own shadow maps, assembled as in VTK's TestShadowMapPass.
   vtkNew<vtkShadowMapPass> shadows;
@@ -136,6 +152,12 @@ long long vtkShadowTechnique::GetShadowMapMemory(vtkRenderer* renderer) const
     auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
     auto* planar = gl ? vtkPlanarShadowPass::SafeDownCast(gl->GetPass()) : nullptr;
     return planar ? planar->GetMemoryBytes() : 0;
+  }
+  if (std::strcmp(this->Name, "csm") == 0)
+  {
+    auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
+    auto* csm = gl ? vtkCascadedShadowMapPass::SafeDownCast(gl->GetPass()) : nullptr;
+    return csm ? csm->GetMemoryBytes() : 0;
   }
   if (std::strcmp(this->Name, "vtk") != 0)
   {

@@ -30,6 +30,7 @@
 #include "vtkObject.h"
 #include "vtkshadowModule.h" // for export macro
 
+class vtkCascadedShadowMapPass;
 class vtkRenderPass;
 class vtkRenderer;
 
@@ -52,6 +53,12 @@ public:
    */
   vtkSetClampMacro(MapResolution, int, 16, 16384);
   vtkGetMacro(MapResolution, int);
+
+  /**
+   * The settings of the "csm" technique: CreatePass() copies them into each
+   * new vtkCascadedShadowMapPass (MapResolution comes from this object).
+   */
+  vtkCascadedShadowMapPass* GetCascadedSettings();
 
   /**
    * True when Name is one of the techniques this build provides.
@@ -88,6 +95,7 @@ protected:
 
   char* Name;
   int MapResolution;
+  vtkCascadedShadowMapPass* CascadedSettings;
 
 private:
   vtkShadowTechnique(const vtkShadowTechnique&) = delete;

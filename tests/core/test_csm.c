@@ -1,0 +1,1438 @@
+/* test_csm.c - unit tests of vsh_csm: split depths against their closed
+ * forms, the default cascade count, the visible depth range (exact clipping
+ * against known answers and dense sampling), directional fits (coverage of
+ * the slice, depth range reaching the casters, stability under camera
+ * rotation and sub-texel translation, a world-anchored texel grid at 1e6),
+ * perspective fits (cone boundary, depth range, cube-face coverage), the
+ * texel-size measure, bias and the resolution/count chooser against a brute
+ * force search. Every degenerate input the header names is included: light
+ * parallel to the view direction, zero-volume bounds, empty scenes. */
+#include "vsh_check.h"
+#include "vsh_csm.h"
+#include "vsh_mat4.h"
+#include "vsh_vec3.h"
+
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+/* ---- helpers ------------------------------------------------------------ */
+
+static uint64_t rng_state = 0x9E3779B97F4A7C15ull; /* fixed seed: reproducible */
+
+static double rnd(double lo, double hi) { /* xorshift64*, 53-bit uniform */
+  rng_state ^= rng_state >> 12;
+  rng_state ^= rng_state << 25;
+  rng_state ^= rng_state >> 27;
+  const uint64_t r = rng_state * 0x2545F4914F6CDD1Dull;
+  return lo + (hi - lo) * ((double)(r >> 11) * (1.0 / 9007199254740992.0));
+}
+
+static void rnd_unit(double out[3]) {
+  double v[3];
+  do {
+    v[0] = rnd(-1, 1);
+    v[1] = rnd(-1, 1);
+    v[2] = rnd(-1, 1);
+  } while (vsh_vec3_length(v) < 0.1 || vsh_vec3_length(v) > 1);
+  vsh_vec3_normalize(v, out);
+}
+
+static vsh_camera make_camera(double ex, double ey, double ez, double fx, double fy, double fz,
+                              double ux, double uy, double uz, double angle) {
+  vsh_camera c = {{ex, ey, ez}, {fx, fy, fz}, {ux, uy, uz}, angle};
+  return c;
+}
+
+/* A camera at E looking along the unit direction dir (random non-parallel up). */
+static vsh_camera camera_looking(const double E[3], const double dir[3], double angle) {
+  double up[3];
+  do {
+    rnd_unit(up);
+  } while (vsh_vec3_parallel(up, dir, 0.2));
+  return make_camera(E[0], E[1], E[2], E[0] + dir[0], E[1] + dir[1], E[2] + dir[2], up[0], up[1],
+                     up[2], angle);
+}
+
+static vsh_bounds box(double x0, double x1, double y0, double y1, double z0, double z1) {
+  vsh_bounds b = {{x0, y0, z0}, {x1, y1, z1}};
+  return b;
+}
+
+static double tan_half(double angle_deg) { return tan(angle_deg * 0.5 * PI / 180.0); }
+
+/* Clip coordinates (after the divide) of the camera-relative point rel. */
+static double clip_of(const double M[16], const double rel[3], double out[3]) {
+  return vsh_mat4_transform_point(M, rel, out);
+}
+
+/* Clip coordinates of the world point P for a map with origin `origin`. */
+static double clip_world(const double M[16], const double origin[3], const double P[3],
+                         double out[3]) {
+  double rel[3];
+  vsh_vec3_sub(P, origin, rel);
+  return clip_of(M, rel, out);
+}
+
+/* Camera-relative corner k of the view slice [n, f] (bit 0 right, bit 1 up,
+ * bit 2 far), computed from the camera basis independently of the code. */
+static void slice_corner(const vsh_camera *c, double aspect, double n, double f, int k,
+                         double out[3]) {
+  double r[3], u[3], fw[3];
+  vsh_camera_basis(c, r, u, fw);
+  const double t = tan_half(c->view_angle), d = (k & 4) ? f : n;
+  const double sx = (k & 1) ? 1 : -1, sy = (k & 2) ? 1 : -1;
+  for (int i = 0; i < 3; ++i) out[i] = d * (fw[i] + sx * t * aspect * r[i] + sy * t * u[i]);
+}
+
+/* Is the world point P inside the view slice [n, f] (with a relative slack)? */
+static int in_slice(const vsh_camera *c, double aspect, double n, double f, const double P[3],
+                    double slack) {
+  double r[3], u[3], fw[3], rel[3];
+  vsh_camera_basis(c, r, u, fw);
+  vsh_vec3_sub(P, c->position, rel);
+  const double t = tan_half(c->view_angle), d = vsh_vec3_dot(rel, fw);
+  return d >= n * (1 + slack) && d <= f * (1 - slack) &&
+         fabs(vsh_vec3_dot(rel, r)) <= t * aspect * d * (1 - slack) &&
+         fabs(vsh_vec3_dot(rel, u)) <= t * d * (1 - slack);
+}
+
+static int view_is_finite(const vsh_shadow_view *v) {
+  return vsh_mat4_is_finite(v->world_to_clip) && isfinite(v->texel_world) &&
+         v->texel_world > 0 && isfinite(v->depth_extent) && v->depth_extent > 0 &&
+         isfinite(v->near_far[0]) && isfinite(v->near_far[1]);
+}
+
+/* ---- splits ------------------------------------------------------------- */
+
+static void check_split_invariants(const double *s, int count, double n, double f) {
+  CHECK(s[0] == n);
+  CHECK(s[count] == f);
+  for (int i = 0; i < count; ++i) CHECK(s[i + 1] > s[i]);
+}
+
+static void test_splits_closed_forms(void) {
+  const double ranges[][2] = {{1, 100}, {0.1, 1000}, {1e-3, 1e6}, {5, 6}, {0.5, 0.5000001}};
+  for (size_t q = 0; q < sizeof ranges / sizeof ranges[0]; ++q) {
+    const double n = ranges[q][0], f = ranges[q][1];
+    for (int c = 1; c <= VSH_CSM_MAX_CASCADES; ++c) {
+      double u[VSH_CSM_MAX_CASCADES + 1], l[VSH_CSM_MAX_CASCADES + 1];
+      double p0[VSH_CSM_MAX_CASCADES + 1], p1[VSH_CSM_MAX_CASCADES + 1];
+      double ph[VSH_CSM_MAX_CASCADES + 1];
+      CHECK(vsh_csm_splits(VSH_SPLIT_UNIFORM, c, n, f, 0.0, NULL, u) == 0);
+      CHECK(vsh_csm_splits(VSH_SPLIT_LOG, c, n, f, 0.0, NULL, l) == 0);
+      CHECK(vsh_csm_splits(VSH_SPLIT_PRACTICAL, c, n, f, 0.0, NULL, p0) == 0);
+      CHECK(vsh_csm_splits(VSH_SPLIT_PRACTICAL, c, n, f, 1.0, NULL, p1) == 0);
+      CHECK(vsh_csm_splits(VSH_SPLIT_PRACTICAL, c, n, f, 0.5, NULL, ph) == 0);
+      check_split_invariants(u, c, n, f);
+      check_split_invariants(l, c, n, f);
+      check_split_invariants(p0, c, n, f);
+      check_split_invariants(p1, c, n, f);
+      check_split_invariants(ph, c, n, f);
+      for (int i = 0; i <= c; ++i) {
+        const double x = (double)i / c;
+        const double wu = n + (f - n) * x, wl = n * pow(f / n, x);
+        CHECK_NEAR(u[i], wu, 1e-15 * f);
+        CHECK_NEAR(l[i], wl, 1e-14 * wl);
+        CHECK_NEAR(l[i] / n, exp(x * log(f / n)), 1e-13 * l[i] / n); /* n (f/n)^x */
+        CHECK_NEAR(p0[i], wu, 1e-15 * f); /* lambda 0: uniform */
+        CHECK_NEAR(p1[i], wl, 1e-14 * wl); /* lambda 1: logarithmic */
+        CHECK_NEAR(ph[i], 0.5 * (wu + wl), 1e-14 * f);
+        /* The log split is below the uniform one (f/n > 1): PSSM in between. */
+        CHECK(l[i] <= u[i] * (1 + 1e-15));
+        CHECK(ph[i] >= l[i] * (1 - 1e-15) && ph[i] <= u[i] * (1 + 1e-15));
+      }
+    }
+  }
+  /* Exact decades: log over [1, 1e4] in 4 steps. */
+  double s[VSH_CSM_MAX_CASCADES + 1];
+  CHECK(vsh_csm_splits(VSH_SPLIT_LOG, 4, 1, 1e4, 0, NULL, s) == 0);
+  CHECK_NEAR(s[1], 10, 1e-13);
+  CHECK_NEAR(s[2], 100, 1e-12);
+  CHECK_NEAR(s[3], 1000, 1e-11);
+  CHECK(vsh_csm_splits(VSH_SPLIT_UNIFORM, 4, 2, 10, 0, NULL, s) == 0);
+  CHECK(s[0] == 2 && s[1] == 4 && s[2] == 6 && s[3] == 8 && s[4] == 10);
+  /* Uniform ignores lambda (only PRACTICAL reads it). */
+  CHECK(vsh_csm_splits(VSH_SPLIT_UNIFORM, 4, 2, 10, 7.0, NULL, s) == 0);
+  CHECK(s[2] == 6);
+  /* Explicit fractions. */
+  const double fr[3] = {0.1, 0.3, 0.7};
+  CHECK(vsh_csm_splits(VSH_SPLIT_EXPLICIT, 4, 10, 110, 0, fr, s) == 0);
+  check_split_invariants(s, 4, 10, 110);
+  CHECK_NEAR(s[1], 20, 1e-13);
+  CHECK_NEAR(s[2], 40, 1e-13);
+  CHECK_NEAR(s[3], 80, 1e-13);
+  /* Explicit with one cascade reads no fractions. */
+  CHECK(vsh_csm_splits(VSH_SPLIT_EXPLICIT, 1, 10, 110, 0, fr, s) == 0);
+  CHECK(s[0] == 10 && s[1] == 110);
+  /* All 8 explicit. */
+  const double fr8[7] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.8};
+  CHECK(vsh_csm_splits(VSH_SPLIT_EXPLICIT, 8, 1, 101, 0, fr8, s) == 0);
+  check_split_invariants(s, 8, 1, 101);
+  for (int i = 1; i < 8; ++i) CHECK_NEAR(s[i], 1 + 100 * fr8[i - 1], 1e-13);
+  /* Seeded random lambdas: monotone and between log and uniform. */
+  for (int k = 0; k < 500; ++k) {
+    const double n = exp(rnd(log(1e-3), log(10))), f = n * exp(rnd(0.01, log(1e6)));
+    const int c = 1 + (int)rnd(0, 8);
+    const double lam = rnd(0, 1);
+    double p[VSH_CSM_MAX_CASCADES + 1];
+    CHECK(vsh_csm_splits(VSH_SPLIT_PRACTICAL, c, n, f, lam, NULL, p) == 0);
+    check_split_invariants(p, c, n, f);
+  }
+}
+
+static void test_splits_bad_input(void) {
+  const double good_fr[3] = {0.2, 0.5, 0.8};
+  const double not_inc[3] = {0.2, 0.2, 0.8}, dec[3] = {0.2, 0.6, 0.4};
+  const double at0[3] = {0.0, 0.5, 0.8}, at1[3] = {0.2, 0.5, 1.0}, neg[3] = {-0.1, 0.5, 0.8};
+  const double big[3] = {0.2, 0.5, 1.5}, nanf[3] = {0.2, NAN, 0.8};
+  struct {
+    vsh_split_scheme scheme;
+    int count;
+    double n, f, lambda;
+    const double *fr;
+  } cases[] = {
+      {VSH_SPLIT_UNIFORM, 0, 1, 100, 0, NULL},
+      {VSH_SPLIT_UNIFORM, -1, 1, 100, 0, NULL},
+      {VSH_SPLIT_UNIFORM, 9, 1, 100, 0, NULL},
+      {VSH_SPLIT_LOG, INT_MAX, 1, 100, 0, NULL},
+      {VSH_SPLIT_LOG, 4, 0, 100, 0, NULL},
+      {VSH_SPLIT_LOG, 4, -1, 100, 0, NULL},
+      {VSH_SPLIT_UNIFORM, 4, -1, 100, 0, NULL},
+      {VSH_SPLIT_UNIFORM, 4, 100, 100, 0, NULL},
+      {VSH_SPLIT_UNIFORM, 4, 100, 10, 0, NULL},
+      {VSH_SPLIT_UNIFORM, 4, NAN, 100, 0, NULL},
+      {VSH_SPLIT_UNIFORM, 4, 1, NAN, 0, NULL},
+      {VSH_SPLIT_UNIFORM, 4, 1, INFINITY, 0, NULL},
+      {VSH_SPLIT_LOG, 4, 1, INFINITY, 0, NULL},
+      {VSH_SPLIT_UNIFORM, 4, INFINITY, INFINITY, 0, NULL},
+      {VSH_SPLIT_PRACTICAL, 4, 1, 100, -0.01, NULL},
+      {VSH_SPLIT_PRACTICAL, 4, 1, 100, 1.01, NULL},
+      {VSH_SPLIT_PRACTICAL, 4, 1, 100, NAN, NULL},
+      {VSH_SPLIT_PRACTICAL, 4, 1, 100, INFINITY, NULL},
+      {VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, NULL},
+      {VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, not_inc},
+      {VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, dec},
+      {VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, at0},
+      {VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, at1},
+      {VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, neg},
+      {VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, big},
+      {VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, nanf},
+      {VSH_SPLIT_EXPLICIT, 4, 0, 100, 0, good_fr},
+      {(vsh_split_scheme)4, 4, 1, 100, 0, good_fr},
+      {(vsh_split_scheme)-1, 4, 1, 100, 0, good_fr},
+  };
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+    double out[VSH_CSM_MAX_CASCADES + 2];
+    for (int i = 0; i < VSH_CSM_MAX_CASCADES + 2; ++i) out[i] = -7.25;
+    const int st = vsh_csm_splits(cases[k].scheme, cases[k].count, cases[k].n, cases[k].f,
+                                  cases[k].lambda, cases[k].fr, out);
+    if (st == 0) fprintf(stderr, "splits bad case %zu accepted\n", k);
+    CHECK(st != 0);
+    int untouched = 1;
+    for (int i = 0; i < VSH_CSM_MAX_CASCADES + 2; ++i) untouched &= out[i] == -7.25;
+    CHECK(untouched);
+  }
+  CHECK(vsh_csm_splits(VSH_SPLIT_UNIFORM, 4, 1, 100, 0, NULL, NULL) != 0);
+  /* The good explicit fractions are accepted (so the cases above fail for
+   * the reason they name). */
+  double out[VSH_CSM_MAX_CASCADES + 1];
+  CHECK(vsh_csm_splits(VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, good_fr, out) == 0);
+}
+
+/* ---- default count -------------------------------------------------------- */
+
+static void test_default_count(void) {
+  CHECK(vsh_csm_default_count(1, 8, 8) == 1);
+  CHECK(vsh_csm_default_count(0.25, 2, 8) == 1);
+  CHECK(vsh_csm_default_count(1, 64, 8) == 2);
+  CHECK(vsh_csm_default_count(0.1, 6.4, 8) == 2); /* 64 with rounding in the ratio */
+  CHECK(vsh_csm_default_count(1, 65, 8) == 3);
+  CHECK(vsh_csm_default_count(1, 1.0001, 8) == 1);
+  CHECK(vsh_csm_default_count(1, 1e6, 8) == 7); /* log8(1e6) = 6.64 */
+  CHECK(vsh_csm_default_count(1, 1e6, 2) == 8); /* 19.9: clamped */
+  CHECK(vsh_csm_default_count(1, 1e9, 8) == 8); /* 9.97: clamped */
+  CHECK(vsh_csm_default_count(1e-3, 1e300, 1.5) == 8);
+  for (int k = 1; k <= 8; ++k) {
+    const double r = pow(8, k);
+    CHECK(vsh_csm_default_count(1, r, 8) == k);
+    CHECK(vsh_csm_default_count(0.5, 0.5 * r, 8) == k);
+    CHECK(vsh_csm_default_count(3, 3 * r * 1.001, 8) == (k + 1 > 8 ? 8 : k + 1));
+    CHECK(vsh_csm_default_count(3, 3 * r * 0.999, 8) == k);
+  }
+  /* Bad input: 1. */
+  const double bad[][3] = {{1, 1, 8},     {1, 0.5, 8},   {0, 10, 8},      {-1, 10, 8},
+                           {NAN, 10, 8},  {1, NAN, 8},   {1, INFINITY, 8}, {1, 100, 1},
+                           {1, 100, 0.5}, {1, 100, -8},  {1, 100, NAN},
+                           {INFINITY, INFINITY, 8}};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k)
+    CHECK(vsh_csm_default_count(bad[k][0], bad[k][1], bad[k][2]) == 1);
+  CHECK(vsh_csm_default_count(1, 100, INFINITY) == 1); /* one cascade covers any ratio */
+}
+
+/* ---- visible depth range -------------------------------------------------- */
+
+/* Camera at the origin looking down -z, +y up (so depth = -z, right = +x). */
+static vsh_camera axis_camera(double angle) {
+  return make_camera(0, 0, 0, 0, 0, -1, 0, 1, 0, angle);
+}
+
+static vsh_bounds shifted(vsh_bounds b, const double s[3]) {
+  for (int k = 0; k < 3; ++k) {
+    b.min[k] += s[k];
+    b.max[k] += s[k];
+  }
+  return b;
+}
+
+static vsh_camera shifted_camera(vsh_camera c, const double s[3]) {
+  for (int k = 0; k < 3; ++k) {
+    c.position[k] += s[k];
+    c.focal_point[k] += s[k];
+  }
+  return c;
+}
+
+static void test_visible_depth_known(void) {
+  double nf[2];
+  const vsh_camera c60 = axis_camera(60), c90 = axis_camera(90);
+  const double t90 = tan_half(90);
+  /* Fully inside: exactly the corner depths. */
+  vsh_bounds b = box(-1, 1, -0.5, 0.5, -20, -5);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 100, &b, nf) == 0);
+  CHECK(nf[0] == 5 && nf[1] == 20);
+  /* Straddling the near plane (and the eye): clipped to clip_near. */
+  b = box(-0.1, 0.1, -0.1, 0.1, -20, 5);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 100, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 0.1, 1e-15);
+  CHECK(nf[1] == 20);
+  /* Beyond the far plane: clipped to clip_far. */
+  b = box(-1, 1, -1, 1, -200, -50);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 100, &b, nf) == 0);
+  CHECK(nf[0] == 50);
+  CHECK_NEAR(nf[1], 100, 1e-13);
+  /* A long thin box along the view axis, partly outside the LEFT plane
+   * (aspect 2, 90 degrees: visible where x >= -2 t d): its inner edge
+   * x = -3.8 enters at depth 1.9 / t. */
+  b = box(-4, -3.8, -0.1, 0.1, -10, -1);
+  CHECK(vsh_csm_visible_depth_range(&c90, 2.0, 0.1, 100, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 1.9 / t90, 1e-13);
+  CHECK(nf[1] == 10);
+  /* ... and mirrored outside the RIGHT plane. */
+  b = box(3.8, 4, -0.1, 0.1, -10, -1);
+  CHECK(vsh_csm_visible_depth_range(&c90, 2.0, 0.1, 100, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 1.9 / t90, 1e-13);
+  CHECK(nf[1] == 10);
+  /* ... above the TOP plane (y <= t d, aspect does not matter). */
+  b = box(-0.1, 0.1, 2.5, 2.7, -10, -1);
+  CHECK(vsh_csm_visible_depth_range(&c90, 3.0, 0.1, 100, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 2.5 / t90, 1e-13);
+  CHECK(nf[1] == 10);
+  /* ... below the BOTTOM plane. */
+  b = box(-0.1, 0.1, -2.7, -2.5, -10, -1);
+  CHECK(vsh_csm_visible_depth_range(&c90, 0.5, 0.1, 100, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 2.5 / t90, 1e-13);
+  /* Box in a corner: must pass BOTH the right and the top plane:
+   * x = 3 enters at 3 / (t a), y = 5 at 5 / t; the later one wins. */
+  b = box(3, 3.5, 5, 5.5, -30, -1);
+  CHECK(vsh_csm_visible_depth_range(&c90, 1.5, 0.1, 100, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 5 / t90, 1e-13);
+  CHECK(nf[1] == 30);
+  /* A box whose near face is partly outside: the visible depth is the
+   * clipped polygon's (the far face is inside, the side face x = -3 enters
+   * at depth 3 / t). */
+  b = box(-3, 0, -0.1, 0.1, -6, -2);
+  CHECK(vsh_csm_visible_depth_range(&c90, 1.0, 0.1, 100, &b, nf) == 0);
+  CHECK(nf[0] == 2); /* the near face's part with x >= -2 t is inside */
+  CHECK(nf[1] == 6);
+  /* The camera inside a big box: [clip_near, the far face]. */
+  b = box(-10, 10, -10, 10, -10, 10);
+  CHECK(vsh_csm_visible_depth_range(&c90, 1.0, 0.1, 1000, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 0.1, 1e-15);
+  CHECK(nf[1] == 10);
+  /* A box containing the whole view frustum: [clip_near, clip_far]. */
+  b = box(-1e4, 1e4, -1e4, 1e4, -1e4, 1e4);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.5, 0.1, 100, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 0.1, 1e-15);
+  CHECK_NEAR(nf[1], 100, 1e-13);
+  /* A slab crossing the whole view at depths 30..40 (no corner visible). */
+  b = box(-1e4, 1e4, -1e4, 1e4, -40, -30);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.5, 0.1, 100, &b, nf) == 0);
+  CHECK(nf[0] == 30 && nf[1] == 40);
+  /* A box containing the far part of the frustum only. */
+  b = box(-1e4, 1e4, -1e4, 1e4, -1e4, -30);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.5, 0.1, 100, &b, nf) == 0);
+  CHECK(nf[0] == 30);
+  CHECK_NEAR(nf[1], 100, 1e-13);
+  /* Zero-volume: a flat floor 1 below the eye, 60 degrees: the bottom plane
+   * y >= -t d meets it at d = 1 / t; its far edge (z = -50) is inside. */
+  b = box(-50, 50, -1, -1, -50, 50);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 1 / tan_half(60), 1e-13);
+  CHECK(nf[1] == 50);
+  /* A flat wall facing the camera: a single depth. */
+  b = box(-1, 1, -1, 1, -7, -7);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 0);
+  CHECK(nf[0] == 7 && nf[1] == 7);
+  /* ... and much larger than the view: still a single depth. */
+  b = box(-1e3, 1e3, -1e3, 1e3, -7, -7);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 0);
+  CHECK(nf[0] == 7 && nf[1] == 7);
+  /* A single point inside / outside. */
+  b = box(0.3, 0.3, -0.2, -0.2, -7, -7);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 0);
+  CHECK(nf[0] == 7 && nf[1] == 7);
+  b = box(30, 30, -0.2, -0.2, -7, -7);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 1);
+  /* A line segment along the view axis. */
+  b = box(0, 0, 0, 0, -9, 4);
+  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.5, 1000, &b, nf) == 0);
+  CHECK_NEAR(nf[0], 0.5, 1e-15);
+  CHECK(nf[1] == 9);
+  /* Nothing visible: 1. */
+  const vsh_bounds invisible[] = {
+      box(-1, 1, -1, 1, 5, 10),          /* behind the camera */
+      box(-100, -90, -1, 1, -10, -5),    /* left of the frustum */
+      box(-1, 1, 50, 60, -10, -5),       /* above */
+      box(-1, 1, -1, 1, -300, -200),     /* beyond clip_far */
+      box(-0.01, 0.01, 0, 0, -0.05, -0.01), /* between the eye and clip_near */
+      box(-50, 50, -1, -1, 0.5, 50),     /* a floor behind the eye */
+  };
+  for (size_t k = 0; k < sizeof invisible / sizeof invisible[0]; ++k) {
+    const int st = vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 100, &invisible[k], nf);
+    if (st != 1) fprintf(stderr, "invisible case %zu: %d\n", k, st);
+    CHECK(st == 1);
+  }
+}
+
+static void test_visible_depth_bad_input(void) {
+  double nf[2];
+  const vsh_camera good = axis_camera(60);
+  const vsh_bounds b = box(-1, 1, -1, 1, -10, -5);
+  vsh_bounds empty;
+  vsh_bounds_init_empty(&empty);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &empty, nf) == 2);
+  const vsh_bounds nanb = box(NAN, 1, -1, 1, -10, -5), infb = box(-1, INFINITY, -1, 1, -10, -5);
+  const vsh_bounds inverted = box(1, -1, -1, 1, -10, -5);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &nanb, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &infb, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &inverted, nf) == 2);
+  const vsh_camera bad_cams[] = {
+      make_camera(0, 0, 0, 0, 0, -1, 0, 0, 1, 60),   /* view_up parallel */
+      make_camera(0, 0, 0, 0, 0, -1, 0, 0, -3, 60),  /* anti-parallel */
+      make_camera(0, 0, 0, 0, 0, 0, 0, 1, 0, 60),    /* position == focal point */
+      make_camera(0, 0, 0, 0, 0, -1, 0, 0, 0, 60),   /* zero view_up */
+      make_camera(NAN, 0, 0, 0, 0, -1, 0, 1, 0, 60), /* NaN position */
+      make_camera(0, 0, 0, 0, 0, -1, 0, 1, 0, 0),    /* zero angle */
+      make_camera(0, 0, 0, 0, 0, -1, 0, 1, 0, 180),
+      make_camera(0, 0, 0, 0, 0, -1, 0, 1, 0, NAN),
+      make_camera(0, 0, 0, 0, 0, -1, 0, 1, 0, -30),
+  };
+  for (size_t k = 0; k < sizeof bad_cams / sizeof bad_cams[0]; ++k)
+    CHECK(vsh_csm_visible_depth_range(&bad_cams[k], 1.0, 0.1, 100, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 0.0, 0.1, 100, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, -1.0, 0.1, 100, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, NAN, 0.1, 100, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, INFINITY, 0.1, 100, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.0, 100, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, -1, 100, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, NAN, 100, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 0.1, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 0.05, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, NAN, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, INFINITY, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(NULL, 1.0, 0.1, 100, &b, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, NULL, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &b, NULL) == 2);
+  /* ... and the good call works. */
+  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &b, nf) == 0);
+}
+
+/* Translating the camera and the box together by 1e6 changes nothing. */
+static void test_visible_depth_offset(void) {
+  const double shifts[][3] = {{1e6, 1e6, 1e6}, {-1e6, 2e6, 3e6}, {1e6, 0, 0}};
+  const vsh_bounds boxes[] = {
+      box(-1, 1, -0.5, 0.5, -20, -5), box(-0.1, 0.1, -0.1, 0.1, -20, 5),
+      box(-4, -3.8, -0.1, 0.1, -10, -1), box(-50, 50, -1, -1, -50, 50),
+      box(0.25, 0.25, -0.5, -0.5, -7, -7), box(-10, 10, -10, 10, -10, 10)};
+  const vsh_camera cams[] = {axis_camera(60), axis_camera(90),
+                             make_camera(0, 0, 0, 0.25, -0.125, -1, 0, 1, 0.25, 75)};
+  for (size_t s = 0; s < sizeof shifts / sizeof shifts[0]; ++s)
+    for (size_t c = 0; c < sizeof cams / sizeof cams[0]; ++c)
+      for (size_t k = 0; k < sizeof boxes / sizeof boxes[0]; ++k) {
+        double a[2], b[2];
+        const int sa = vsh_csm_visible_depth_range(&cams[c], 1.5, 0.1, 100, &boxes[k], a);
+        const vsh_camera cs = shifted_camera(cams[c], shifts[s]);
+        const vsh_bounds bs = shifted(boxes[k], shifts[s]);
+        const int sb = vsh_csm_visible_depth_range(&cs, 1.5, 0.1, 100, &bs, b);
+        CHECK(sa == sb);
+        if (sa == 0 && sb == 0) {
+          CHECK_NEAR(a[0], b[0], 1e-9 * a[0]);
+          CHECK_NEAR(a[1], b[1], 1e-9 * a[1]);
+        }
+      }
+}
+
+/* Random cameras and boxes against dense sampling of the box's faces: every
+ * sampled visible point lies in the range, and the range is not wider than
+ * the samples (up to the sampling step). */
+static void test_visible_depth_sampled(void) {
+  int visible_cases = 0;
+  for (int s = 0; s < 300; ++s) {
+    double E[3], dir[3];
+    for (int k = 0; k < 3; ++k) E[k] = rnd(-5, 5);
+    rnd_unit(dir);
+    const vsh_camera c = camera_looking(E, dir, rnd(20, 120));
+    const double aspect = rnd(0.5, 2.5), cn = rnd(0.05, 1), cf = cn * rnd(5, 100);
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+      const double a = rnd(-15, 15), w = rnd(0, 1) < 0.2 ? 0 : rnd(0, 10);
+      lo[k] = a;
+      hi[k] = a + w;
+    }
+    const vsh_bounds b = box(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]);
+    double nf[2] = {0, 0};
+    const int st = vsh_csm_visible_depth_range(&c, aspect, cn, cf, &b, nf);
+    CHECK(st == 0 || st == 1);
+    double r[3], u[3], f[3];
+    vsh_camera_basis(&c, r, u, f);
+    const double t = tan_half(c.view_angle);
+    const int N = 40;
+    double smin = INFINITY, smax = -INFINITY;
+    for (int face = 0; face < 6; ++face) {
+      const int axis = face / 2;
+      for (int i = 0; i <= N; ++i)
+        for (int j = 0; j <= N; ++j) {
+          double P[3], rel[3];
+          P[axis] = (face & 1) ? hi[axis] : lo[axis];
+          const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+          P[a1] = lo[a1] + (hi[a1] - lo[a1]) * i / N;
+          P[a2] = lo[a2] + (hi[a2] - lo[a2]) * j / N;
+          vsh_vec3_sub(P, c.position, rel);
+          const double d = vsh_vec3_dot(rel, f);
+          if (d < cn || d > cf || fabs(vsh_vec3_dot(rel, r)) > t * aspect * d ||
+              fabs(vsh_vec3_dot(rel, u)) > t * d)
+            continue;
+          smin = fmin(smin, d);
+          smax = fmax(smax, d);
+        }
+    }
+    if (smin <= smax) {
+      ++visible_cases;
+      CHECK(st == 0);
+      if (st != 0) continue;
+      const double tol = 1e-9 * cf;
+      CHECK(nf[0] <= smin + tol && nf[1] >= smax - tol);
+      CHECK(nf[0] >= cn && nf[1] <= cf && nf[0] <= nf[1]);
+      /* Not wider than the samples: one sampling step of slack. */
+      const double step = vsh_bounds_diagonal_length(&b) / N * 2 + tol;
+      CHECK(nf[0] >= smin - step);
+      CHECK(nf[1] <= smax + step);
+    }
+  }
+  CHECK(visible_cases > 30);
+}
+
+/* ---- directional fit ------------------------------------------------------ */
+
+/* All checks of one fit: finite; slice corners inside [-1,1]^2 (when
+ * `slice_covered`); caster corners at clip z >= -1; receiver points inside
+ * the slice mapped inside the unit cube. */
+static void check_directional(const vsh_camera *c, double aspect, double n, double f,
+                              const vsh_bounds *receivers, const vsh_bounds *casters,
+                              int slice_covered, const vsh_shadow_view *v, double *worst_xy) {
+  CHECK(view_is_finite(v));
+  CHECK(v->perspective == 0);
+  const double *M = v->world_to_clip;
+  /* Orthographic: the last row is (0,0,0,1). */
+  CHECK(M[12] == 0 && M[13] == 0 && M[14] == 0 && M[15] == 1);
+  const double eps = 1e-9;
+  if (slice_covered)
+    for (int k = 0; k < 8; ++k) {
+      double rel[3], q[3];
+      slice_corner(c, aspect, n, f, k, rel);
+      clip_of(M, rel, q);
+      if (worst_xy) *worst_xy = fmax(*worst_xy, fmax(fabs(q[0]), fabs(q[1])));
+      CHECK(fabs(q[0]) <= 1 + eps && fabs(q[1]) <= 1 + eps);
+    }
+  if (casters && !vsh_bounds_is_empty(casters)) {
+    double corners[8][3];
+    vsh_bounds_corners(casters, corners);
+    for (int k = 0; k < 8; ++k) {
+      double q[3];
+      clip_world(M, c->position, corners[k], q);
+      CHECK(q[2] >= -1 - eps);
+    }
+  }
+  if (receivers && !vsh_bounds_is_empty(receivers)) {
+    const int N = 6;
+    for (int i = 0; i <= N; ++i)
+      for (int j = 0; j <= N; ++j)
+        for (int k = 0; k <= N; ++k) {
+          const double P[3] = {receivers->min[0] + (receivers->max[0] - receivers->min[0]) * i / N,
+                               receivers->min[1] + (receivers->max[1] - receivers->min[1]) * j / N,
+                               receivers->min[2] + (receivers->max[2] - receivers->min[2]) * k / N};
+          if (!in_slice(c, aspect, n, f, P, 1e-12)) continue;
+          double q[3];
+          clip_world(M, c->position, P, q);
+          CHECK(q[2] <= 1 + eps);
+          CHECK(fabs(q[0]) <= 1 + eps && fabs(q[1]) <= 1 + eps);
+        }
+  }
+}
+
+static void test_directional_basic(void) {
+  vsh_shadow_view v;
+  const vsh_camera c = make_camera(0, 2, 10, 0, 0, 0, 0, 1, 0, 50);
+  const double sun[3] = {0.3, -1, -0.2};
+  const vsh_bounds floor_ = box(-30, 30, 0, 0, -30, 30), tower = box(-1, 1, 0, 25, -1, 1);
+  vsh_bounds scene = floor_;
+  vsh_bounds_merge(&scene, &tower);
+  for (int stable = 0; stable <= 1; ++stable) {
+    /* No receivers, no casters. */
+    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, NULL, NULL, stable, 2048, &v) == 0);
+    check_directional(&c, 1.5, 1, 20, NULL, NULL, 1, &v, NULL);
+    /* Casters = the scene (the tower reaches above the slice). */
+    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, NULL, &scene, stable, 2048, &v) == 0);
+    check_directional(&c, 1.5, 1, 20, NULL, &scene, 1, &v, NULL);
+    /* Receivers: the floor (zero volume); casters: the scene. */
+    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, &floor_, &scene, stable, 2048, &v) == 0);
+    check_directional(&c, 1.5, 1, 20, &floor_, &scene, stable, &v, NULL);
+    CHECK(v.depth_extent > 0);
+    /* Empty receivers and casters mean "none given". */
+    vsh_bounds empty;
+    vsh_bounds_init_empty(&empty);
+    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, &empty, &empty, stable, 2048, &v) == 0);
+    check_directional(&c, 1.5, 1, 20, NULL, NULL, 1, &v, NULL);
+    /* A caster far outside the slice (behind the camera, towards the sun)
+     * still gets clip z >= -1. */
+    const vsh_bounds far_caster = box(-40, -38, 0, 80, 60, 62);
+    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, &floor_, &far_caster, stable, 2048, &v) ==
+          0);
+    check_directional(&c, 1.5, 1, 20, &floor_, &far_caster, stable, &v, NULL);
+    /* Casters entirely below the receivers: finite, nothing breaks. */
+    const vsh_bounds under = box(-5, 5, -10, -9, -5, 5);
+    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, &floor_, &under, stable, 2048, &v) == 0);
+    check_directional(&c, 1.5, 1, 20, &floor_, NULL, stable, &v, NULL);
+  }
+  /* Orthographic map depth: the caster top maps to -1 (up to the margin),
+   * the lowest receiver point in the slice to +1 (same). Light straight
+   * down, camera looking down at a floor at y = 0 from y = 10. */
+  const vsh_camera top = make_camera(0, 10, 0, 0, 0, 0, 0, 0, -1, 60);
+  const double down[3] = {0, -1, 0};
+  const vsh_bounds tall = box(-1, 1, 0, 4, -1, 1);
+  CHECK(vsh_csm_fit_directional(&top, 1.0, 5, 10, down, &floor_, &tall, 0, 1024, &v) == 0);
+  check_directional(&top, 1.0, 5, 10, &floor_, &tall, 0, &v, NULL);
+  double q[3];
+  clip_world(v.world_to_clip, top.position, (double[3]){0, 4, 0}, q);
+  CHECK(q[2] >= -1 && q[2] < -0.99);
+  clip_world(v.world_to_clip, top.position, (double[3]){0, 0, 0}, q);
+  CHECK(q[2] <= 1 && q[2] > 0.99);
+  CHECK_NEAR(v.depth_extent, 4, 0.01);
+  /* Non-stable without receivers: the map is the tight light-space box of
+   * the slice, so some corner reaches |x| = 1 and some |y| = 1. */
+  CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, NULL, NULL, 0, 1000, &v) == 0);
+  double mx = 0, my = 0;
+  for (int k = 0; k < 8; ++k) {
+    double rel[3];
+    slice_corner(&c, 1.5, 1, 20, k, rel);
+    clip_of(v.world_to_clip, rel, q);
+    mx = fmax(mx, fabs(q[0]));
+    my = fmax(my, fabs(q[1]));
+  }
+  CHECK_NEAR(mx, 1, 1e-12);
+  CHECK_NEAR(my, 1, 1e-12);
+}
+
+static void test_directional_random(void) {
+  double worst_stable = 0, worst_tight = 0;
+  int fitted = 0, skipped = 0;
+  for (int s = 0; s < 2000; ++s) {
+    double E[3], dir[3], L[3];
+    for (int k = 0; k < 3; ++k) E[k] = rnd(-50, 50);
+    rnd_unit(dir);
+    rnd_unit(L);
+    const vsh_camera c = camera_looking(E, dir, rnd(20, 110));
+    const double aspect = rnd(0.5, 2.5), n = rnd(0.1, 10), f = n * rnd(1.2, 100);
+    const int stable = s & 1;
+    static const int resolutions[] = {2, 64, 256, 1024, 2048, 4096};
+    const int res = resolutions[(int)rnd(0, 6)];
+    vsh_bounds rec, cas;
+    const vsh_bounds *rp = NULL, *cp = NULL;
+    if (rnd(0, 1) < 0.7) {
+      for (int k = 0; k < 3; ++k) {
+        const double a = E[k] + rnd(-60, 60), w = rnd(0, 1) < 0.3 ? 0 : rnd(0, 80);
+        rec.min[k] = a;
+        rec.max[k] = a + w;
+      }
+      rp = &rec;
+    }
+    if (rnd(0, 1) < 0.7) {
+      for (int k = 0; k < 3; ++k) {
+        const double a = E[k] + rnd(-100, 100), w = rnd(0, 100);
+        cas.min[k] = a;
+        cas.max[k] = a + w;
+      }
+      cp = &cas;
+    }
+    vsh_shadow_view v;
+    const int st = vsh_csm_fit_directional(&c, aspect, n, f, L, rp, cp, stable, res, &v);
+    CHECK(st == 0 || st == 1);
+    if (st == 0) {
+      ++fitted;
+      double w = 0;
+      check_directional(&c, aspect, n, f, rp, cp, stable || !rp, &v, &w);
+      if (stable)
+        worst_stable = fmax(worst_stable, w);
+      else if (!rp)
+        worst_tight = fmax(worst_tight, w);
+    } else {
+      ++skipped;
+      /* 1 only when no receiver point is in the slice. */
+      CHECK(rp != NULL);
+      if (rp) {
+        const int N = 8;
+        int inside = 0;
+        for (int i = 0; i <= N; ++i)
+          for (int j = 0; j <= N; ++j)
+            for (int k = 0; k <= N; ++k) {
+              const double P[3] = {rec.min[0] + (rec.max[0] - rec.min[0]) * i / N,
+                                   rec.min[1] + (rec.max[1] - rec.min[1]) * j / N,
+                                   rec.min[2] + (rec.max[2] - rec.min[2]) * k / N};
+              inside |= in_slice(&c, aspect, n, f, P, 1e-9);
+            }
+        CHECK(!inside);
+      }
+    }
+  }
+  CHECK(fitted > 1000);
+  CHECK(skipped > 10);
+  CHECK(worst_stable <= 1 + 1e-9);
+  CHECK_NEAR(worst_tight, 1, 1e-9);
+}
+
+/* The stable fit's map must cover the slice even when the radius sits
+ * exactly on the 2^(1/8) grid (no quantization slack) and the centre snap
+ * moves the map by up to half a texel. The camera is oriented so that a far
+ * corner's offset from the sphere's centre is the world +x axis, and the
+ * light travels along -z, so that corner projects at exactly the radius
+ * along one of the map's axes. */
+static void test_directional_stable_tight_radius(void) {
+  /* 90 degrees, aspect 1: r^2 = ((f - n)/2)^2 + 2 t^2 f^2 = 1 with n = f/2. */
+  const double f = 4.0 / sqrt(33.0), n = 0.5 * f, t = tan_half(90);
+  /* The far corner's offset in camera coordinates (right, up, forward). */
+  double a[3] = {f * t, f * t, 0.5 * (f - n)}, b2[3], b3[3];
+  vsh_vec3_normalize(a, a);
+  vsh_vec3_cross(a, (double[3]){0, 0, 1}, b2);
+  vsh_vec3_normalize(b2, b2);
+  vsh_vec3_cross(a, b2, b3);
+  /* World axes of the camera: a -> +x, b2 -> +y, b3 -> +z. */
+  const double fw[3] = {a[2], b2[2], b3[2]}, up[3] = {a[1], b2[1], b3[1]};
+  const double L[3] = {0, 0, -1};
+  double worst = 0;
+  int covered = 1, finite = 1;
+  for (int s = 0; s < 600; ++s) {
+    const double E[3] = {rnd(-3, 3), rnd(-3, 3), rnd(-3, 3)};
+    const vsh_camera c = make_camera(E[0], E[1], E[2], E[0] + fw[0], E[1] + fw[1], E[2] + fw[2],
+                                     up[0], up[1], up[2], 90);
+    vsh_shadow_view v;
+    const int res = (s % 3 == 0) ? 16 : (s % 3 == 1) ? 256 : 2048;
+    CHECK(vsh_csm_fit_directional(&c, 1.0, n, f, L, NULL, NULL, 1, res, &v) == 0);
+    finite &= view_is_finite(&v);
+    for (int i = 0; i < 8; ++i) {
+      double rel[3], q[3];
+      slice_corner(&c, 1.0, n, f, i, rel);
+      clip_of(v.world_to_clip, rel, q);
+      const double m = fmax(fabs(q[0]), fabs(q[1]));
+      worst = fmax(worst, m);
+      covered &= m <= 1 + 1e-9;
+    }
+  }
+  if (!covered) fprintf(stderr, "stable tight radius: worst |xy| = %.17g\n", worst);
+  CHECK(finite);
+  CHECK(covered);
+  CHECK(worst > 0.99); /* the construction does reach the map's edge */
+}
+
+/* Light-space phase of the texel centres of map v along matrix row `row`
+ * (0: x, 1: y), in texels, relative to the world origin: frac((q + a) / texel)
+ * for the centre q of texel 0. Also returns the texel size along the row. */
+static double texel_phase(const vsh_shadow_view *v, const double origin[3], int row, int res,
+                          double *texel_out) {
+  const double *m = v->world_to_clip + 4 * row;
+  const double s = vsh_vec3_length(m); /* 2 / width */
+  double axis[3];
+  vsh_vec3_scale(m, 1.0 / s, axis);
+  const double width = 2.0 / s, texel = width / res;
+  const double clip_centre0 = -1.0 + 1.0 / res;
+  const double q = (clip_centre0 - m[3]) / s;       /* camera-relative light coordinate */
+  const double anchor = vsh_vec3_dot(origin, axis); /* of the camera position */
+  const double cells = (q + anchor) / texel;
+  if (texel_out) *texel_out = texel;
+  return cells - floor(cells);
+}
+
+static double phase_diff(double a, double b) {
+  double d = fabs(a - b);
+  return fmin(d, 1 - d);
+}
+
+static void test_directional_stable(void) {
+  const double L[3] = {0.4, -0.8, 0.3};
+  const double aspect = 1.6, n = 2, f = 400;
+  const int res = 1024;
+  /* (1) Width independent of the camera's rotation: yaw 0..360 and pitch. */
+  double width0 = 0;
+  int first = 1;
+  for (int yaw = 0; yaw <= 360; yaw += 15)
+    for (int pitch = -80; pitch <= 80; pitch += 40) {
+      const double y = yaw * PI / 180, p = pitch * PI / 180;
+      const double E[3] = {3, 4, 5};
+      const vsh_camera c = make_camera(E[0], E[1], E[2], E[0] + cos(p) * sin(y),
+                                       E[1] + sin(p), E[2] - cos(p) * cos(y), 0, 1, 0, 55);
+      vsh_shadow_view v;
+      CHECK(vsh_csm_fit_directional(&c, aspect, n, f, L, NULL, NULL, 1, res, &v) == 0);
+      check_directional(&c, aspect, n, f, NULL, NULL, 1, &v, NULL);
+      const double w = v.texel_world * res;
+      if (first) width0 = w, first = 0;
+      CHECK(w == width0); /* bit for bit */
+      /* Both light-space axes have the same width: square texels. */
+      const double sx = vsh_vec3_length(v.world_to_clip), sy = vsh_vec3_length(v.world_to_clip + 4);
+      CHECK_NEAR(sx, sy, 1e-12 * sx);
+      CHECK_NEAR(2 / sx, w, 1e-12 * w);
+    }
+  /* The width is at least the slice's bounding sphere's diameter and at
+   * most 2^(1/8) times it (geometric quantization). */
+  const double t = tan_half(55), half = 0.5 * (f - n);
+  const double r0 = sqrt(half * half + f * f * t * t * (1 + aspect * aspect));
+  CHECK(width0 >= 2 * r0 * (1 - 1e-12));
+  CHECK(width0 <= 2 * r0 * exp2(1.0 / 8) * (1 + 1e-12));
+  /* (2) Small changes of the slice depths within one quantization step
+   * keep the width; a large change changes it by a power of 2^(1/8). */
+  const vsh_camera c0 = make_camera(3, 4, 5, 3.2, 3.9, 4, 0, 1, 0, 55);
+  vsh_shadow_view v0, v1;
+  CHECK(vsh_csm_fit_directional(&c0, aspect, n, f, L, NULL, NULL, 1, res, &v0) == 0);
+  const double step0 = ceil(8 * log2(r0) - 1e-9);
+  int same_step_cases = 0;
+  for (int k = -20; k <= 20; ++k) {
+    const double n1 = n * (1 + 1e-4 * k), f1 = f * (1 - 3e-5 * k);
+    const double h1 = 0.5 * (f1 - n1);
+    const double r1 = sqrt(h1 * h1 + f1 * f1 * t * t * (1 + aspect * aspect));
+    if (ceil(8 * log2(r1) - 1e-9) != step0) continue;
+    ++same_step_cases;
+    CHECK(vsh_csm_fit_directional(&c0, aspect, n1, f1, L, NULL, NULL, 1, res, &v1) == 0);
+    CHECK(v1.texel_world == v0.texel_world);
+  }
+  CHECK(same_step_cases >= 30);
+  CHECK(vsh_csm_fit_directional(&c0, aspect, n, f * 1.5, L, NULL, NULL, 1, res, &v1) == 0);
+  const double steps = 8 * log2(v1.texel_world / v0.texel_world);
+  CHECK(steps > 0.5);
+  CHECK_NEAR(steps, round(steps), 1e-9);
+}
+
+/* The texel grid is anchored to the world: moving the camera by fractions
+ * of a texel moves the map by whole texels only, so the world positions of
+ * texel centres stay on one lattice; also with everything at 1e6. */
+static void test_directional_texel_grid(void) {
+  const double lights[][3] = {{0.4, -0.8, 0.3}, {0, -1, 0}, {0, 0, -1}, {1, -1e-3, 0}};
+  const double offsets[][3] = {{0, 0, 0}, {1e6, 1e6, 1e6}, {-3e6, 1e6, 2.5e6}};
+  const int resolutions[] = {1024, 2048, 1000};
+  for (size_t li = 0; li < sizeof lights / sizeof lights[0]; ++li)
+    for (size_t oi = 0; oi < sizeof offsets / sizeof offsets[0]; ++oi)
+      for (size_t ri = 0; ri < sizeof resolutions / sizeof resolutions[0]; ++ri) {
+        const int res = resolutions[ri];
+        double ref_phase[2] = {0, 0}, ref_texel = 0;
+        double worst = 0, worst_ref = 0;
+        int moved = 0;
+        double first_m3 = 0, first_m7 = 0, ref_texel_world = 0;
+        for (int step = 0; step < 80; ++step) {
+          /* Sub-texel moves (texel ~ 1.2 or 0.6 here), ~0.05 of a world unit
+           * each, > 2 texels in all. */
+          const double E[3] = {offsets[oi][0] + 10 + 0.037 * step,
+                               offsets[oi][1] + 5 + 0.029 * step,
+                               offsets[oi][2] - 7 - 0.013 * step};
+          const vsh_camera c = make_camera(E[0], E[1], E[2], E[0] + 0.3, E[1] - 0.2, E[2] - 1,
+                                           0, 1, 0, 60);
+          vsh_shadow_view v;
+          CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 500, lights[li], NULL, NULL, 1, res, &v) ==
+                0);
+          CHECK(view_is_finite(&v));
+          check_directional(&c, 1.5, 1, 500, NULL, NULL, 1, &v, NULL);
+          for (int row = 0; row < 2; ++row) {
+            double texel;
+            const double ph = texel_phase(&v, c.position, row, res, &texel);
+            if (step == 0) {
+              ref_phase[row] = ph;
+              ref_texel = texel;
+              /* Even resolutions put the texel boundaries on the lattice k
+               * texel, the centres at half-integers. */
+              if (res % 2 == 0) worst_ref = fmax(worst_ref, phase_diff(ph, 0.5));
+            }
+            worst = fmax(worst, phase_diff(ph, ref_phase[row]));
+            CHECK_NEAR(texel, ref_texel, 1e-12 * ref_texel);
+            if (step > 0) CHECK(v.texel_world == ref_texel_world);
+          }
+          if (step == 0) {
+            first_m3 = v.world_to_clip[3];
+            first_m7 = v.world_to_clip[7];
+            ref_texel_world = v.texel_world;
+          }
+          /* One texel is 2 / res in clip units. */
+          moved |= fabs(v.world_to_clip[3] - first_m3) > 1.0 / res ||
+                   fabs(v.world_to_clip[7] - first_m7) > 1.0 / res;
+        }
+        /* 1e-9 of a texel up to 1e6 from the origin; further out the
+         * world coordinates themselves (ulp(4e6) = 4.7e-10, texel 0.6 at
+         * res 2048) limit what double can resolve. */
+        const double far_ =
+            fmax(fabs(offsets[oi][0]), fmax(fabs(offsets[oi][1]), fabs(offsets[oi][2])));
+        const double tol = 1e-9 * fmax(1.0, far_ / 1e6);
+        if (worst > tol || worst_ref > tol || !moved)
+          fprintf(stderr, "texel grid: light %zu offset %zu res %d: drift %.3g ref %.3g moved %d\n",
+                  li, oi, res, worst, worst_ref, moved);
+        CHECK(worst <= tol);
+        CHECK(worst_ref <= tol);
+        CHECK(moved); /* the camera moved > 2 texels: the map followed */
+      }
+}
+
+static void test_directional_degenerate(void) {
+  vsh_shadow_view v;
+  const vsh_bounds floor_ = box(-100, 100, 0, 0, -100, 100);
+  const vsh_bounds stuff = box(-3, 3, 0, 6, -3, 3);
+  /* Light travelling exactly along the camera's forward axis. */
+  const vsh_camera fwd = make_camera(1, 5, 20, 1, 5, 0, 0, 1, 0, 45);
+  const double along[3] = {0, 0, -1};
+  for (int stable = 0; stable <= 1; ++stable) {
+    CHECK(vsh_csm_fit_directional(&fwd, 1.3, 0.5, 30, along, NULL, &stuff, stable, 1024, &v) ==
+          0);
+    check_directional(&fwd, 1.3, 0.5, 30, NULL, &stuff, 1, &v, NULL);
+    /* Looking straight down with the sun straight down (a top view). */
+    const vsh_camera topv = make_camera(2, 50, 3, 2, 0, 3, 0, 0, -1, 45);
+    const double down[3] = {0, -2, 0};
+    CHECK(vsh_csm_fit_directional(&topv, 1.3, 1, 60, down, &floor_, &stuff, stable, 1024, &v) ==
+          0);
+    check_directional(&topv, 1.3, 1, 60, &floor_, &stuff, stable, &v, NULL);
+    /* ... and the light coming against the view direction. */
+    const double up[3] = {0, 1, 0};
+    CHECK(vsh_csm_fit_directional(&topv, 1.3, 1, 60, up, NULL, &stuff, stable, 1024, &v) == 0);
+    check_directional(&topv, 1.3, 1, 60, NULL, &stuff, 1, &v, NULL);
+    /* A light nearly (1e-12) off a world axis. */
+    const double almost[3] = {1e-12, -1, 0};
+    CHECK(vsh_csm_fit_directional(&topv, 1.3, 1, 60, almost, &floor_, &stuff, stable, 1024,
+                                  &v) == 0);
+    check_directional(&topv, 1.3, 1, 60, &floor_, &stuff, stable, &v, NULL);
+    /* Zero-volume receivers: a floor (done above), a point in the slice,
+     * a segment. */
+    const vsh_camera c = make_camera(0, 3, 10, 0, 0, 0, 0, 1, 0, 50);
+    const double sun[3] = {0.3, -1, -0.2};
+    const vsh_bounds point = box(0.5, 0.5, 0, 0, 1, 1);
+    const int sp = vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &point, &stuff, stable, 1024, &v);
+    CHECK(sp == 0);
+    if (sp == 0) check_directional(&c, 1.3, 1, 30, &point, &stuff, stable, &v, NULL);
+    const vsh_bounds seg = box(-2, 2, 0, 0, 1, 1);
+    const int ss = vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &seg, &stuff, stable, 1024, &v);
+    CHECK(ss == 0);
+    if (ss == 0) check_directional(&c, 1.3, 1, 30, &seg, &stuff, stable, &v, NULL);
+    /* Casters NULL and receivers NULL. */
+    CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, NULL, NULL, stable, 1024, &v) == 0);
+    check_directional(&c, 1.3, 1, 30, NULL, NULL, 1, &v, NULL);
+    /* A zero-volume caster (a point) at the receivers' level. */
+    const vsh_bounds cpt = box(0, 0, 0, 0, 0, 0);
+    CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &floor_, &cpt, stable, 1024, &v) == 0);
+    check_directional(&c, 1.3, 1, 30, &floor_, &cpt, stable, &v, NULL);
+    /* Receivers not overlapping the slice: 1. */
+    const vsh_bounds away = box(500, 600, -50, -40, 500, 600);
+    CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &away, &stuff, stable, 1024, &v) == 1);
+    const vsh_bounds behind = box(-1, 1, -1, 1, 200, 210);
+    CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &behind, &stuff, stable, 1024, &v) == 1);
+    /* Resolution 1 and 2: still finite and covering. */
+    for (int res = 1; res <= 2; ++res) {
+      CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, NULL, NULL, stable, res, &v) == 0);
+      check_directional(&c, 1.3, 1, 30, NULL, NULL, 1, &v, NULL);
+    }
+  }
+}
+
+static void test_directional_bad_input(void) {
+  vsh_shadow_view v;
+  const vsh_camera c = make_camera(0, 3, 10, 0, 0, 0, 0, 1, 0, 50);
+  const double sun[3] = {0.3, -1, -0.2};
+  const double zero[3] = {0, 0, 0}, nanl[3] = {NAN, -1, 0}, infl[3] = {INFINITY, -1, 0};
+  const double tiny[3] = {1e-300, -1e-300, 0}; /* tiny but a direction */
+  for (int stable = 0; stable <= 1; ++stable) {
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, zero, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, nanl, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, infl, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, NULL, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, tiny, NULL, NULL, stable, 512, &v) == 0);
+    CHECK(view_is_finite(&v));
+    CHECK(vsh_csm_fit_directional(NULL, 1, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, sun, NULL, NULL, stable, 512, NULL) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 0, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, NAN, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, INFINITY, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 0, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, -1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 30, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 30, 1, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, NAN, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, NAN, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, INFINITY, sun, NULL, NULL, stable, 512, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, sun, NULL, NULL, stable, 0, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, sun, NULL, NULL, stable, -4, &v) == 2);
+    const vsh_camera bad[] = {make_camera(0, 0, 0, 0, -1, 0, 0, 1, 0, 50),
+                              make_camera(1, 1, 1, 1, 1, 1, 0, 1, 0, 50),
+                              make_camera(0, 3, 10, 0, 0, 0, 0, 1, 0, 0),
+                              make_camera(0, 3, 10, 0, 0, 0, 0, 1, 0, 180),
+                              make_camera(0, 3, 10, 0, 0, 0, 0, 1, 0, NAN)};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k)
+      CHECK(vsh_csm_fit_directional(&bad[k], 1, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+    /* Non-finite receivers or casters are bad input, not NaN matrices. */
+    const vsh_bounds nanb = box(NAN, 1, 0, 1, 0, 1), infb = box(-INFINITY, 1, 0, 1, 0, 1);
+    int st = vsh_csm_fit_directional(&c, 1, 1, 30, sun, &nanb, NULL, stable, 512, &v);
+    CHECK(st == 2 || (st == 0 && view_is_finite(&v)));
+    st = vsh_csm_fit_directional(&c, 1, 1, 30, sun, NULL, &infb, stable, 512, &v);
+    CHECK(st == 2 || (st == 0 && view_is_finite(&v)));
+    st = vsh_csm_fit_directional(&c, 1, 1, 30, sun, &infb, NULL, stable, 512, &v);
+    CHECK(st == 2 || (st == 0 && view_is_finite(&v)));
+  }
+}
+
+/* ---- perspective fit ------------------------------------------------------ */
+
+static void test_perspective(void) {
+  vsh_shadow_view v;
+  int cases = 0;
+  for (int s = 0; s < 500; ++s) {
+    double P[3], D[3], O[3];
+    for (int k = 0; k < 3; ++k) {
+      P[k] = rnd(-20, 20);
+      O[k] = P[k] + rnd(-30, 30);
+    }
+    rnd_unit(D);
+    const double half = rnd(5, 85);
+    const int res = 512;
+    /* Bounds: a box in front of the light. */
+    double Cn[3];
+    const double dist = rnd(2, 50);
+    for (int k = 0; k < 3; ++k) Cn[k] = P[k] + dist * D[k];
+    const double w = rnd(0, 0.5) * dist;
+    vsh_bounds b = box(Cn[0] - w, Cn[0] + w, Cn[1] - w, Cn[1] + w * rnd(0, 1), Cn[2] - w,
+                       Cn[2] + w);
+    const int st = vsh_csm_fit_perspective(P, D, half, &b, O, res, &v);
+    double corners[8][3];
+    vsh_bounds_corners(&b, corners);
+    double dmin = INFINITY;
+    for (int k = 0; k < 8; ++k) {
+      double rel[3];
+      vsh_vec3_sub(corners[k], P, rel);
+      dmin = fmin(dmin, vsh_vec3_dot(rel, D));
+    }
+    CHECK(st == 0);
+    if (st != 0) continue;
+    ++cases;
+    CHECK(view_is_finite(&v));
+    CHECK(v.perspective == 1);
+    CHECK(v.near_far[0] > 0 && v.near_far[1] > v.near_far[0]);
+    CHECK_NEAR(v.depth_extent, v.near_far[1] - v.near_far[0], 1e-12 * v.near_far[1]);
+    CHECK_NEAR(v.texel_world, 2 * tan_half(2 * half) / res, 1e-14);
+    /* Bounds corners: in front (w > 0) with clip z in [-1, 1] (when the
+     * nearest corner is not closer than the 1e4 depth-ratio floor). */
+    for (int k = 0; k < 8; ++k) {
+      double q[3];
+      const double ww = clip_world(v.world_to_clip, O, corners[k], q);
+      CHECK(ww > 0);
+      if (dmin > 1e-3 * v.near_far[1]) CHECK(q[2] >= -1 - 1e-9 && q[2] <= 1 + 1e-9);
+    }
+    /* The light's axis maps to the centre at w = distance. */
+    double on_axis[3], q[3];
+    for (int k = 0; k < 3; ++k) on_axis[k] = P[k] + 7 * D[k];
+    const double wa = clip_world(v.world_to_clip, O, on_axis, q);
+    CHECK_NEAR(wa, 7, 1e-9);
+    CHECK(fabs(q[0]) < 1e-9 && fabs(q[1]) < 1e-9);
+    /* near/far distances map to -1 and +1. */
+    for (int e = 0; e < 2; ++e) {
+      double p[3];
+      for (int k = 0; k < 3; ++k) p[k] = P[k] + v.near_far[e] * D[k];
+      clip_world(v.world_to_clip, O, p, q);
+      CHECK_NEAR(q[2], e ? 1 : -1, 1e-8);
+    }
+    /* Points on the cone at the half angle: x^2 + y^2 = 1 (so |x| = 1 or
+     * |y| = 1 along the map's axes). */
+    for (int j = 0; j < 4; ++j) {
+      double e[3], tmp[3], a[3], p[3];
+      rnd_unit(a);
+      vsh_vec3_cross(D, a, tmp);
+      if (vsh_vec3_normalize(tmp, e) == 0) continue;
+      const double dd = rnd(1, 40), tn = tan(half * PI / 180);
+      for (int k = 0; k < 3; ++k) p[k] = P[k] + dd * (D[k] + tn * e[k]);
+      const double wp = clip_world(v.world_to_clip, O, p, q);
+      CHECK(wp > 0);
+      CHECK_NEAR(hypot(q[0], q[1]), 1, 1e-10);
+    }
+    /* ... and along the map's own x axis (row 0): |x| = 1, y = 0. */
+    double ax[3], p[3];
+    vsh_vec3_normalize(v.world_to_clip, ax);
+    const double tn = tan(half * PI / 180);
+    for (int k = 0; k < 3; ++k) p[k] = P[k] + 3 * (D[k] + tn * ax[k]);
+    clip_world(v.world_to_clip, O, p, q);
+    CHECK_NEAR(fabs(q[0]), 1, 1e-10);
+    CHECK(fabs(q[1]) < 1e-10);
+    vsh_vec3_normalize(v.world_to_clip + 4, ax);
+    for (int k = 0; k < 3; ++k) p[k] = P[k] + 3 * (D[k] - tn * ax[k]);
+    clip_world(v.world_to_clip, O, p, q);
+    CHECK_NEAR(fabs(q[1]), 1, 1e-10);
+    CHECK(fabs(q[0]) < 1e-10);
+  }
+  CHECK(cases > 400);
+}
+
+static void test_perspective_offset_and_degenerate(void) {
+  vsh_shadow_view v, w;
+  const double P[3] = {1, 2, 3}, D[3] = {0.2, -1, 0.1}, O[3] = {4, 5, 6};
+  const vsh_bounds b = box(-5, 5, -10, -2, -5, 5);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, O, 1024, &v) == 0);
+  /* Everything shifted by 1e6: the same camera-relative matrix. */
+  const double s[3] = {1e6, -2e6, 1e6};
+  double P2[3], O2[3];
+  vsh_vec3_add(P, s, P2);
+  vsh_vec3_add(O, s, O2);
+  const vsh_bounds b2 = shifted(b, s);
+  CHECK(vsh_csm_fit_perspective(P2, D, 40, &b2, O2, 1024, &w) == 0);
+  for (int k = 0; k < 16; ++k) CHECK_NEAR(w.world_to_clip[k], v.world_to_clip[k], 1e-8);
+  CHECK_NEAR(w.near_far[0], v.near_far[0], 1e-9 * v.near_far[0]);
+  CHECK_NEAR(w.near_far[1], v.near_far[1], 1e-9 * v.near_far[1]);
+  /* Bounds straddling the light: near is the 1e-4 floor, still finite. */
+  const vsh_bounds around = box(-10, 10, -10, 10, -10, 10);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &around, O, 1024, &v) == 0);
+  CHECK(view_is_finite(&v));
+  CHECK_NEAR(v.near_far[0], 1e-4 * v.near_far[1], 1e-12 * v.near_far[1]);
+  /* Zero-volume bounds: a point in front, a floor below. */
+  const vsh_bounds pt = box(1, 1, -5, -5, 3, 3);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &pt, O, 1024, &v) == 0);
+  CHECK(view_is_finite(&v));
+  double q[3];
+  CHECK(clip_world(v.world_to_clip, O, pt.min, q) > 0);
+  CHECK(q[2] >= -1 && q[2] <= 1);
+  const vsh_bounds flo = box(-50, 50, -3, -3, -50, 50);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &flo, O, 1024, &v) == 0);
+  CHECK(view_is_finite(&v));
+  /* All bounds behind the light: 1. Touching its plane from behind: 1. */
+  const vsh_bounds behind = box(-5, 5, 10, 20, -5, 5);
+  CHECK(vsh_csm_fit_perspective(P, (double[3]){0, -1, 0}, 40, &behind, O, 1024, &v) == 1);
+  const vsh_bounds touching = box(-5, 5, 2, 20, -5, 5);
+  CHECK(vsh_csm_fit_perspective(P, (double[3]){0, -1, 0}, 40, &touching, O, 1024, &v) == 1);
+  /* Bad input: 2. */
+  CHECK(vsh_csm_fit_perspective(P, D, 0, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, 90, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, 120, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, -10, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, NAN, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, INFINITY, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, (double[3]){0, 0, 0}, 40, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, (double[3]){NAN, 0, 1}, 40, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective((double[3]){NAN, 0, 0}, D, 40, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, (double[3]){0, INFINITY, 0}, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, O, 0, &v) == 2);
+  vsh_bounds empty;
+  vsh_bounds_init_empty(&empty);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &empty, O, 1024, &v) == 2);
+  const vsh_bounds nanb = box(NAN, 1, 0, 1, 0, 1);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &nanb, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(NULL, D, 40, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, NULL, 40, &b, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, NULL, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, NULL, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, O, 1024, NULL) == 2);
+}
+
+static void test_cube_faces(void) {
+  static const double want[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                                     {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (int f = 0; f < 6; ++f) {
+    double d[3];
+    vsh_csm_cube_face_direction(f, d);
+    CHECK(d[0] == want[f][0] && d[1] == want[f][1] && d[2] == want[f][2]);
+  }
+  /* Out of range: still a unit axis, never garbage. */
+  const int bad[] = {-1, 6, 7, INT_MAX, INT_MIN};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+    double d[3] = {NAN, NAN, NAN};
+    vsh_csm_cube_face_direction(bad[k], d);
+    CHECK(vsh_vec3_is_finite(d));
+    CHECK(fabs(d[0]) + fabs(d[1]) + fabs(d[2]) == 1);
+    CHECK(vsh_vec3_length(d) == 1);
+  }
+  /* The 6 faces at 45 degrees cover every direction. */
+  const double L[3] = {3, -2, 7}, O[3] = {0, 0, 0};
+  const vsh_bounds around = box(-7, 13, -12, 8, -3, 17);
+  vsh_shadow_view faces[6];
+  for (int f = 0; f < 6; ++f) {
+    double d[3];
+    vsh_csm_cube_face_direction(f, d);
+    CHECK(vsh_csm_fit_perspective(L, d, 45, &around, O, 256, &faces[f]) == 0);
+    CHECK(view_is_finite(&faces[f]));
+  }
+  int all_covered = 1, multiply = 0;
+  for (int s = 0; s < 20000; ++s) {
+    double u[3], p[3];
+    if (s < 8) { /* the cube's corners: the worst directions */
+      u[0] = (s & 1) ? 1 : -1;
+      u[1] = (s & 2) ? 1 : -1;
+      u[2] = (s & 4) ? 1 : -1;
+      vsh_vec3_normalize(u, u);
+    } else {
+      rnd_unit(u);
+    }
+    const double dist = rnd(0.5, 8);
+    for (int k = 0; k < 3; ++k) p[k] = L[k] + dist * u[k];
+    int covered = 0;
+    for (int f = 0; f < 6; ++f) {
+      double q[3];
+      const double w = clip_world(faces[f].world_to_clip, O, p, q);
+      if (w > 0 && fabs(q[0]) <= 1 + 1e-12 && fabs(q[1]) <= 1 + 1e-12) ++covered;
+    }
+    all_covered &= covered >= 1;
+    multiply += covered > 1;
+  }
+  CHECK(all_covered);
+  CHECK(multiply >= 8); /* the corners sit on three faces' edges */
+}
+
+/* ---- texel size, bias ----------------------------------------------------- */
+
+static void test_texel_pixels(void) {
+  /* texel / (2 d tan(a/2) / H). */
+  const double want = 0.1 / (2 * 10 * tan(30 * PI / 180) / 1000);
+  CHECK_NEAR(vsh_csm_texel_pixels(0.1, 10, 60, 1000), want, 1e-13 * want);
+  CHECK_NEAR(want, 8.660254037844386, 1e-12);
+  /* 90 degrees, H = 2: pixel world size at depth 1 is 1. */
+  CHECK_NEAR(vsh_csm_texel_pixels(1, 1, 90, 2), 1, 1e-15);
+  for (int s = 0; s < 200; ++s) {
+    const double tw = exp(rnd(-8, 3)), d = exp(rnd(-3, 8)), a = rnd(1, 170);
+    const int H = 1 + (int)rnd(0, 4000);
+    const double w = tw * H / (2 * d * tan(a * PI / 360));
+    const double got = vsh_csm_texel_pixels(tw, d, a, H);
+    CHECK_NEAR(got, w, 1e-13 * w);
+    /* Linear in texel and H, inverse in depth. */
+    CHECK_NEAR(vsh_csm_texel_pixels(2 * tw, d, a, H), 2 * got, 1e-13 * got);
+    CHECK_NEAR(vsh_csm_texel_pixels(tw, 2 * d, a, H), 0.5 * got, 1e-13 * got);
+  }
+  const double bad[][3] = {{0, 10, 60},  {-1, 10, 60},       {NAN, 10, 60}, {INFINITY, 10, 60},
+                           {1, 0, 60},   {1, -10, 60},       {1, NAN, 60},  {1, INFINITY, 60},
+                           {1, 10, 0},   {1, 10, 180},       {1, 10, -5},   {1, 10, NAN},
+                           {1, 10, 200}, {1, 10, INFINITY}};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k)
+    CHECK(vsh_csm_texel_pixels(bad[k][0], bad[k][1], bad[k][2], 1000) == 0);
+  CHECK(vsh_csm_texel_pixels(1, 10, 60, 0) == 0);
+  CHECK(vsh_csm_texel_pixels(1, 10, 60, -100) == 0);
+}
+
+static void test_bias(void) {
+  double db, no;
+  vsh_csm_bias(0.02, 50, 1, &db, &no);
+  CHECK_NEAR(db, 0.5 * 0.02 / 50, 1e-18);
+  CHECK_NEAR(no, 1.5 * 0.02, 1e-17);
+  /* Proportional to the texel and the scale. */
+  double db2, no2;
+  vsh_csm_bias(0.04, 50, 1, &db2, &no2);
+  CHECK_NEAR(db2, 2 * db, 1e-18);
+  CHECK_NEAR(no2, 2 * no, 1e-17);
+  vsh_csm_bias(0.02, 50, 3, &db2, &no2);
+  CHECK_NEAR(db2, 3 * db, 1e-18);
+  CHECK_NEAR(no2, 3 * no, 1e-17);
+  vsh_csm_bias(0.02, 100, 1, &db2, &no2); /* deeper range: smaller normalized bias */
+  CHECK_NEAR(db2, 0.5 * db, 1e-18);
+  CHECK_NEAR(no2, no, 1e-17);
+  /* Scale 0: no bias. */
+  vsh_csm_bias(0.02, 50, 0, &db2, &no2);
+  CHECK(db2 == 0 && no2 == 0);
+  /* Scale NaN (and Inf, negative): falls back to 1. */
+  const double fallback[] = {NAN, INFINITY, -INFINITY};
+  for (size_t k = 0; k < sizeof fallback / sizeof fallback[0]; ++k) {
+    vsh_csm_bias(0.02, 50, fallback[k], &db2, &no2);
+    CHECK(db2 == db && no2 == no);
+  }
+  vsh_csm_bias(0.02, 50, -2, &db2, &no2);
+  CHECK(isfinite(db2) && isfinite(no2) && db2 >= 0 && no2 >= 0);
+  /* Zero / negative / NaN / Inf texel or depth range: 0, never NaN. */
+  const double bad[][2] = {{0, 50},    {-0.02, 50}, {NAN, 50}, {INFINITY, 50}, {0.02, 0},
+                           {0.02, -50}, {0.02, NAN}, {0.02, INFINITY}, {NAN, NAN}};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k)
+    for (int sc = 0; sc < 2; ++sc) {
+      db2 = no2 = NAN;
+      vsh_csm_bias(bad[k][0], bad[k][1], sc ? NAN : 1.0, &db2, &no2);
+      CHECK(db2 == 0 && no2 == 0);
+    }
+  /* NULL outputs are allowed. */
+  vsh_csm_bias(0.02, 50, 1, NULL, &no2);
+  CHECK(no2 == no);
+  vsh_csm_bias(0.02, 50, 1, &db2, NULL);
+  CHECK(db2 == db);
+  vsh_csm_bias(0.02, 50, 1, NULL, NULL);
+}
+
+/* ---- choose ----------------------------------------------------------------- */
+
+/* The worst on-screen texel size of `count` log cascades at resolution
+ * `res`, with the texel sizes taken from the stable directional fit itself. */
+static double predicted_px(double n, double f, double angle, double aspect, int H, int res,
+                           int count) {
+  double s[VSH_CSM_MAX_CASCADES + 1];
+  if (vsh_csm_splits(VSH_SPLIT_LOG, count, n, f, 0, NULL, s) != 0) return INFINITY;
+  const vsh_camera c = make_camera(1, 2, 3, 1.5, 1.75, 2, 0, 1, 0, angle);
+  const double L[3] = {0.2, -1, 0.4};
+  double worst = 0;
+  for (int i = 0; i < count; ++i) {
+    vsh_shadow_view v;
+    if (vsh_csm_fit_directional(&c, aspect, s[i], s[i + 1], L, NULL, NULL, 1, res, &v) != 0)
+      return INFINITY;
+    worst = fmax(worst, vsh_csm_texel_pixels(v.texel_world, s[i], angle, H));
+  }
+  return worst;
+}
+
+static int is_pow2(int x) { return x > 0 && (x & (x - 1)) == 0; }
+
+static void check_choose(double n, double f, double angle, double aspect, int H, double target,
+                         long long budget, int min_res, int max_res, int max_count) {
+  int res = -1, count = -1;
+  double px = -1;
+  const int st = vsh_csm_choose(n, f, angle, aspect, H, target, budget, min_res, max_res,
+                                max_count, &res, &count, &px);
+  /* Brute force over the documented space. */
+  double best_mem = INFINITY, best_px_any = INFINITY;
+  int any_in_budget = 0;
+  const int mc = max_count > VSH_CSM_MAX_CASCADES ? VSH_CSM_MAX_CASCADES : max_count;
+  for (int cnt = 1; cnt <= mc; ++cnt)
+    for (long long r = 1; r <= max_res; r *= 2) {
+      if (r < min_res) continue;
+      const double mem = 4.0 * cnt * (double)r * (double)r;
+      if (mem > (double)budget) continue;
+      any_in_budget = 1;
+      const double p = predicted_px(n, f, angle, aspect, H, (int)r, cnt);
+      best_px_any = fmin(best_px_any, p);
+      if (p <= target) best_mem = fmin(best_mem, mem);
+    }
+  CHECK(st == 0 || st == 1);
+  CHECK(is_pow2(res) && res >= min_res && res <= max_res);
+  CHECK(count >= 1 && count <= mc);
+  CHECK(isfinite(px));
+  const double mem = 4.0 * count * (double)res * (double)res;
+  const double p = predicted_px(n, f, angle, aspect, H, res, count);
+  if (isfinite(best_mem)) {
+    if (st != 0)
+      fprintf(stderr, "choose: target %g reachable with %g bytes but status %d\n", target,
+              best_mem, st);
+    CHECK(st == 0);
+    CHECK(p <= target * (1 + 1e-12));
+    CHECK(mem == best_mem);
+  } else {
+    CHECK(st == 1);
+  }
+  if (any_in_budget) {
+    CHECK(mem <= (double)budget);
+    CHECK_NEAR(px, p, 1e-9 * p);
+    /* When the target is out of reach: the best achievable within budget. */
+    if (st == 1) CHECK(p <= best_px_any * (1 + 1e-12));
+  }
+}
+
+static void test_choose(void) {
+  /* Generous budgets: the cheapest config that meets the target. */
+  const double targets[] = {0.5, 1, 2, 4, 10};
+  for (size_t k = 0; k < sizeof targets / sizeof targets[0]; ++k) {
+    check_choose(0.1, 1000, 60, 1.6, 1080, targets[k], 1LL << 34, 256, 8192, 8);
+    check_choose(1, 100, 45, 1.0, 720, targets[k], 1LL << 30, 512, 4096, 4);
+    check_choose(0.5, 5000, 90, 2.0, 1440, targets[k], 1LL << 28, 128, 4096, 6);
+  }
+  /* Tiny budget: one min_res map fits, the target does not. */
+  check_choose(0.1, 1000, 60, 1.6, 1080, 1, 4LL * 256 * 256, 256, 8192, 8);
+  int res, count;
+  double px;
+  CHECK(vsh_csm_choose(0.1, 1000, 60, 1.6, 1080, 1, 4LL * 256 * 256, 256, 8192, 8, &res, &count,
+                       &px) == 1);
+  CHECK(res == 256 && count == 1 && px > 1);
+  /* A budget below a single min_res map: 1, finite outputs. */
+  CHECK(vsh_csm_choose(0.1, 1000, 60, 1.6, 1080, 1, 1000, 256, 8192, 8, &res, &count, &px) == 1);
+  CHECK(res >= 1 && count >= 1 && isfinite(px));
+  CHECK(vsh_csm_choose(0.1, 1000, 60, 1.6, 1080, 1, -5, 256, 8192, 8, &res, &count, &px) == 1);
+  CHECK(res >= 1 && count >= 1 && isfinite(px));
+  /* min_res / max_res not powers of two: the resolution is one in range. */
+  check_choose(1, 100, 45, 1.0, 720, 2, 1LL << 30, 300, 3000, 4);
+  check_choose(1, 100, 45, 1.0, 720, 0.5, 1LL << 30, 100, 5000, 8);
+  /* max_count above the maximum: clamped. */
+  check_choose(0.1, 1e4, 60, 1.6, 1080, 1, 1LL << 34, 256, 8192, 20);
+  /* Random cases. */
+  for (int s = 0; s < 40; ++s) {
+    const double n = exp(rnd(log(0.01), log(5))), f = n * exp(rnd(1, log(1e5)));
+    const int minr = 1 << (int)rnd(6, 10), maxr = minr << (int)rnd(0, 5);
+    check_choose(n, f, rnd(30, 100), rnd(0.75, 2.5), 400 + (int)rnd(0, 2000), rnd(0.3, 8),
+                 (long long)exp(rnd(log(1e5), log(1e10))), minr, maxr, 1 + (int)rnd(0, 8));
+  }
+  /* Bad input: 1 with finite, usable outputs. */
+  struct {
+    double n, f, angle, aspect;
+    int H;
+    double target;
+    int min_res, max_res, max_count;
+  } bad[] = {
+      {0, 100, 60, 1, 1000, 1, 256, 4096, 4},     {-1, 100, 60, 1, 1000, 1, 256, 4096, 4},
+      {NAN, 100, 60, 1, 1000, 1, 256, 4096, 4},   {1, 1, 60, 1, 1000, 1, 256, 4096, 4},
+      {1, INFINITY, 60, 1, 1000, 1, 256, 4096, 4}, {1, NAN, 60, 1, 1000, 1, 256, 4096, 4},
+      {1, 100, 0, 1, 1000, 1, 256, 4096, 4},      {1, 100, 180, 1, 1000, 1, 256, 4096, 4},
+      {1, 100, NAN, 1, 1000, 1, 256, 4096, 4},    {1, 100, 60, 0, 1000, 1, 256, 4096, 4},
+      {1, 100, 60, NAN, 1000, 1, 256, 4096, 4},   {1, 100, 60, INFINITY, 1000, 1, 256, 4096, 4},
+      {1, 100, 60, 1, 0, 1, 256, 4096, 4},
+      {1, 100, 60, 1, 1000, 0, 256, 4096, 4},     {1, 100, 60, 1, 1000, NAN, 256, 4096, 4},
+      {1, 100, 60, 1, 1000, -1, 256, 4096, 4},    {1, 100, 60, 1, 1000, 1, 0, 4096, 4},
+      {1, 100, 60, 1, 1000, 1, -256, 4096, 4},    {1, 100, 60, 1, 1000, 1, 4096, 256, 4},
+      {1, 100, 60, 1, 1000, 1, 256, 4096, 0},     {1, 100, 60, 1, 1000, 1, 256, 4096, -3},
+  };
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+    res = count = -7;
+    px = NAN;
+    const int st = vsh_csm_choose(bad[k].n, bad[k].f, bad[k].angle, bad[k].aspect, bad[k].H,
+                                  bad[k].target, 1LL << 30, bad[k].min_res, bad[k].max_res,
+                                  bad[k].max_count, &res, &count, &px);
+    CHECK(st == 1);
+    CHECK(res >= 1 && count >= 1 && count <= VSH_CSM_MAX_CASCADES && isfinite(px));
+  }
+  /* No power of two in [min_res, max_res]: 1, finite outputs. */
+  CHECK(vsh_csm_choose(1, 100, 60, 1, 1000, 1, 1LL << 30, 300, 500, 4, &res, &count, &px) == 1);
+  CHECK(res >= 1 && count >= 1 && isfinite(px));
+  /* NULL outputs are allowed (and do not change the answer). */
+  CHECK(vsh_csm_choose(1, 100, 60, 1, 1000, 4, 1LL << 30, 256, 4096, 4, &res, &count, &px) == 0);
+  CHECK(vsh_csm_choose(1, 100, 60, 1, 1000, 4, 1LL << 30, 256, 4096, 4, NULL, NULL, NULL) == 0);
+  CHECK(vsh_csm_choose(1, 100, 60, 1, 1000, 0.01, 1LL << 30, 256, 4096, 4, NULL, NULL, NULL) ==
+        1);
+}
+
+int main(void) {
+  test_splits_closed_forms();
+  test_splits_bad_input();
+  test_default_count();
+  test_visible_depth_known();
+  test_visible_depth_bad_input();
+  test_visible_depth_offset();
+  test_visible_depth_sampled();
+  test_directional_basic();
+  test_directional_random();
+  test_directional_stable_tight_radius();
+  test_directional_stable();
+  test_directional_texel_grid();
+  test_directional_degenerate();
+  test_directional_bad_input();
+  test_perspective();
+  test_perspective_offset_and_degenerate();
+  test_cube_faces();
+  test_texel_pixels();
+  test_bias();
+  test_choose();
+  return vsh_check_report("core.csm");
+}

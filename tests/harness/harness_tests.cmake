@@ -1,0 +1,31 @@
+# The reference harness (docs/harness.md): included by tests/vtk_tests.cmake,
+# which defines VTKSHADOW_GL (a prefix giving an X display through the shared
+# Xvfb fixture), VTKSHADOW_PY, VTKSHADOW_BIN and VTKSHADOW_TEST_OUT.
+#
+# harness.library.<group>: the whole scene library at test scale (0.4, i.e.
+# 320x240), POV-Ray and Cycles rendered fresh (--no-cache), every VTK
+# technique, --check against scenes/thresholds.json.
+# harness.<unit>: cache invalidation, missing / hanging / crashing renderer,
+# hostile scene.
+find_program(VTKSHADOW_POVRAY povray)
+find_program(VTKSHADOW_BLENDER blender)
+if(NOT VTKSHADOW_POVRAY OR NOT VTKSHADOW_BLENDER)
+  message(FATAL_ERROR "the harness tests need povray and blender: sh scripts/install-deps.sh")
+endif()
+
+set(_harness_src ${CMAKE_CURRENT_LIST_DIR})
+foreach(group basic scivis cad hard)
+  add_test(NAME harness.library.${group}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_BIN}/vtkshadow-compare ${PROJECT_SOURCE_DIR}/scenes/${group}
+            --out ${VTKSHADOW_TEST_OUT}/harness/library-${group} --scale 0.4 --no-cache --check
+            --thresholds ${PROJECT_SOURCE_DIR}/scenes/thresholds.json)
+  set_tests_properties(harness.library.${group} PROPERTIES TIMEOUT 900 LABELS "harness"
+    FIXTURES_REQUIRED xvfb)
+endforeach()
+
+foreach(unit cache missing timeout crash hostile)
+  add_test(NAME harness.${unit}
+    COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_harness.py ${unit} --bin ${VTKSHADOW_BIN}
+            --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/${unit})
+  set_tests_properties(harness.${unit} PROPERTIES TIMEOUT 600 LABELS "harness")
+endforeach()

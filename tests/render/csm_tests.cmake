@@ -1,0 +1,30 @@
+# Cascaded shadow maps (--technique csm) against the exact answer by ray
+# casting, with shadows on every surface (--reference all), using the scene
+# builders of test_planar.py. Bound: wrong_pct <= 0.5% of valid pixels outside
+# a one-pixel band along the exact boundary (issue #4).
+set(_csm_cases
+  sphere-floor-directional-4x3
+  sphere-floor-point-4x3
+  sphere-floor-spot-4x3
+  sphere-floor-directional-16x9
+  box-tilted-plane-directional
+  box-tilted-plane-point
+  box-tilted-plane-spot
+  grazing-85
+  light-below-camera-below
+  caster-above-point-light
+  near-far-1e5
+  offset-1e6
+  scale-1e-6
+  two-lights
+  big-floor-200
+  thin-plate)
+foreach(case IN LISTS _csm_cases)
+  add_test(NAME render.csm.${case}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_planar.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/csm --case ${case}
+            --technique csm --reference all --max-wrong-pct 0.5)
+  set_tests_properties(render.csm.${case} PROPERTIES LABELS "render" TIMEOUT 300)
+endforeach()
+# A unit sphere over a 200 x 200 floor must keep its shadow: false_light_pct
+# is part of wrong_pct above; VTK 9.1's own pass measured 3.8% wrong there.

@@ -1,0 +1,5 @@
+//VTK::System::Dec
+// vtkCascadedShadowMapPass: depth only.
+void main()
+{
+}

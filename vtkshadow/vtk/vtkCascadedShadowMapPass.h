@@ -1,0 +1,223 @@
+/**
+ * @class   vtkCascadedShadowMapPass
+ * @brief   Cascaded shadow maps for directional lights, perspective maps for
+ *          spot lights, cube maps for point lights: fitted, stable, auto-biased.
+ *
+ * All shadow math comes from vtkshadow's C core (vsh_csm.h) in double
+ * precision, camera-relative. Per frame the pass:
+ *  1. measures the depth range of the visible geometry (scene bounds clipped
+ *     to the view frustum) and picks the cascade count from its ratio
+ *     (or CascadeCount), and the split depths (SplitScheme);
+ *  2. fits each cascade to its view slice clipped to the receivers, with the
+ *     near plane pulled back to every caster (casters outside the view still
+ *     cast); in Stable mode the size does not change when the camera turns
+ *     and the map is snapped to whole texels of a world-anchored grid;
+ *  3. renders only the maps whose matrix, light or casters changed into one
+ *     depth-texture atlas (a still camera over a still scene renders none);
+ *  4. while its delegate renders the scene, multiplies each light's diffuse
+ *     and specular term by the filtered shadow lookup (hardware 2x2 PCF, NxN
+ *     PCF or a Poisson disc), with a slope/normal bias from the texel size,
+ *     a blend band between cascades and a fade at MaxShadowDistance.
+ *
+ * The on-screen size of one shadow texel is computed per cascade
+ * (GetCascadeTexelPixels); with MaxTexelPixels > 0 the pass chooses map
+ * resolution and cascade count to keep it under the target within
+ * MemoryBudget.
+ *
+ * @code{.py}
+ * csm = vtkshadow.vtkCascadedShadowMapPass()
+ * csm.SetMapResolution(2048)
+ * renderer.SetPass(csm)   # delegate defaults to vtkRenderStepsPass
+ * @endcode
+ */
+#ifndef vtkCascadedShadowMapPass_h
+#define vtkCascadedShadowMapPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkshadowModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkRenderPass;
+
+class VTKSHADOW_EXPORT vtkCascadedShadowMapPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkCascadedShadowMapPass* New();
+  vtkTypeMacro(vtkCascadedShadowMapPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum SplitSchemes
+  {
+    UNIFORM = 0,
+    LOGARITHMIC = 1,
+    PRACTICAL = 2,
+    EXPLICIT = 3
+  };
+  enum Filters
+  {
+    HARDWARE_2X2 = 0,
+    PCF = 1,
+    POISSON = 2
+  };
+
+  /**
+   * Cascades for directional lights: 0 (default) picks 1..8 from the depth
+   * ratio of the visible geometry (RatioPerCascade per cascade).
+   */
+  vtkSetClampMacro(CascadeCount, int, 0, 8);
+  vtkGetMacro(CascadeCount, int);
+  vtkSetClampMacro(RatioPerCascade, double, 1.5, 1e6);
+  vtkGetMacro(RatioPerCascade, double);
+
+  /**
+   * Split scheme (default PRACTICAL with lambda 0.75) and its parameters.
+   * Explicit fractions: SetSplitFraction(i, f) for the split between
+   * cascade i and i+1, as a fraction of the visible depth range.
+   */
+  vtkSetClampMacro(SplitScheme, int, UNIFORM, EXPLICIT);
+  vtkGetMacro(SplitScheme, int);
+  vtkSetClampMacro(SplitLambda, double, 0.0, 1.0);
+  vtkGetMacro(SplitLambda, double);
+  void SetSplitFraction(int i, double fraction);
+  double GetSplitFraction(int i) const;
+
+  /**
+   * Stable cascades (default on): rotation-invariant size, texel snapping.
+   */
+  vtkSetMacro(Stable, bool);
+  vtkGetMacro(Stable, bool);
+  vtkBooleanMacro(Stable, bool);
+
+  /**
+   * Edge length of each map in texels (default 2048). Clamped to what the
+   * GL allows for the atlas, with a warning.
+   */
+  vtkSetClampMacro(MapResolution, int, 16, 16384);
+  vtkGetMacro(MapResolution, int);
+
+  /**
+   * Error target: when > 0, resolution and cascade count are chosen so that
+   * one shadow texel covers at most this many pixels on screen, within
+   * MemoryBudget bytes (default 0: off; budget 256 MiB).
+   */
+  vtkSetMacro(MaxTexelPixels, double);
+  vtkGetMacro(MaxTexelPixels, double);
+  vtkSetMacro(MemoryBudget, long long);
+  vtkGetMacro(MemoryBudget, long long);
+
+  /**
+   * Scale of the automatic bias (slope-scaled depth offset plus normal
+   * offset, both from the texel size; default 1).
+   */
+  vtkSetClampMacro(BiasScale, double, 0.0, 100.0);
+  vtkGetMacro(BiasScale, double);
+
+  /**
+   * Filter (default HARDWARE_2X2), the NxN size for PCF (default 3) and the
+   * Poisson disc radius in texels (default 1.5).
+   */
+  vtkSetClampMacro(Filter, int, HARDWARE_2X2, POISSON);
+  vtkGetMacro(Filter, int);
+  vtkSetClampMacro(PCFSize, int, 1, 9);
+  vtkGetMacro(PCFSize, int);
+  vtkSetClampMacro(PoissonRadius, double, 0.0, 16.0);
+  vtkGetMacro(PoissonRadius, double);
+
+  /**
+   * Width of the blend band between cascades as a fraction of each cascade
+   * (default 0.1; 0 = hard switch).
+   */
+  vtkSetClampMacro(BlendBand, double, 0.0, 0.5);
+  vtkGetMacro(BlendBand, double);
+
+  /**
+   * Shadows end at this view depth (default 0: at the visible geometry's far
+   * end), fading out over the last FadeFraction of it (default 0.1).
+   */
+  vtkSetMacro(MaxShadowDistance, double);
+  vtkGetMacro(MaxShadowDistance, double);
+  vtkSetClampMacro(FadeFraction, double, 0.0, 1.0);
+  vtkGetMacro(FadeFraction, double);
+
+  /**
+   * Tint each cascade with its own colour (debug view).
+   */
+  vtkSetMacro(DebugCascades, bool);
+  vtkGetMacro(DebugCascades, bool);
+  vtkBooleanMacro(DebugCascades, bool);
+
+  /**
+   * Whether the headlight casts (default off).
+   */
+  vtkSetMacro(CastHeadlightShadows, bool);
+  vtkGetMacro(CastHeadlightShadows, bool);
+  vtkBooleanMacro(CastHeadlightShadows, bool);
+
+  /**
+   * Copy every setting (not the delegate, not the GL state) from `other`.
+   */
+  void CopySettings(vtkCascadedShadowMapPass* other);
+
+  virtual void SetDelegatePass(vtkRenderPass* pass);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+
+  /**
+   * What the last frame used: cascades of directional light `light`
+   * (mapper numbering), their far split depths and the on-screen size of a
+   * shadow texel at the near end of each, the resolution, the number of maps
+   * rendered in that frame and since creation, and the atlas bytes.
+   */
+  int GetNumberOfCascades(int light) const;
+  double GetCascadeFar(int light, int cascade) const;
+  double GetCascadeTexelPixels(int light, int cascade) const;
+  vtkGetMacro(UsedResolution, int);
+  vtkGetMacro(NumberOfMapsRendered, int);
+  vtkGetMacro(TotalMapsRendered, int);
+  long long GetMemoryBytes() const;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  vtkCascadedShadowMapPass();
+  ~vtkCascadedShadowMapPass() override;
+
+  vtkRenderPass* DelegatePass;
+  int CascadeCount;
+  double RatioPerCascade;
+  int SplitScheme;
+  double SplitLambda;
+  bool Stable;
+  int MapResolution;
+  double MaxTexelPixels;
+  long long MemoryBudget;
+  double BiasScale;
+  int Filter;
+  int PCFSize;
+  double PoissonRadius;
+  double BlendBand;
+  double MaxShadowDistance;
+  double FadeFraction;
+  bool DebugCascades;
+  bool CastHeadlightShadows;
+  int UsedResolution;
+  int NumberOfMapsRendered;
+  int TotalMapsRendered;
+
+private:
+  vtkCascadedShadowMapPass(const vtkCascadedShadowMapPass&) = delete;
+  void operator=(const vtkCascadedShadowMapPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif
