@@ -1,8 +1,10 @@
 #include "render_options.h"
 
+#include "vtkNew.h"
 #include "vtkShadowTechnique.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -33,7 +35,8 @@ const char* RenderUsage()
 {
   return "usage: vtkshadow-render SCENE --technique T --image OUT.png\n"
          "         [--visibility V.png] [--mask M.png] [--light K] [--stats S.json]\n"
-         "         [--frames N] [--map-resolution R] [--size WxH] [--quiet]\n"
+         "         [--frames N] [--map-resolution R] [--size WxH] [--set KEY=VALUE]...\n"
+         "         [--quiet]\n"
          "\n"
          "Render SCENE (a vtkshadow scene file) with shadow technique T.\n"
          "  --technique T        one of the known techniques (default none)\n"
@@ -45,6 +48,8 @@ const char* RenderUsage()
          "  --frames N           timed frames after warm-up (default 30)\n"
          "  --map-resolution R   shadow-map size for map techniques (default 2048)\n"
          "  --size WxH           override the scene's image size\n"
+         "  --set KEY=VALUE      a technique setting, e.g. cascades=4, filter=1,\n"
+         "                       bias_scale=0.5 (see docs/cascaded-shadow-maps.md)\n"
          "  --quiet              no progress output\n"
          "Exit status: 0 success, 1 rendering failure, 2 bad input.\n";
 }
@@ -123,6 +128,21 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::stri
         return 2;
       }
     }
+    else if (arg == "--set")
+    {
+      const char* v = value("--set");
+      if (!v)
+        return 2;
+      const char* eq = std::strchr(v, '=');
+      char* end = nullptr;
+      const double number = eq ? std::strtod(eq + 1, &end) : 0.0;
+      if (!eq || eq == v || !end || end == eq + 1 || *end != '\0' || !std::isfinite(number))
+      {
+        error = std::string("--set: expected KEY=NUMBER (got \"") + v + "\")";
+        return 2;
+      }
+      options.Settings.emplace_back(std::string(v, eq), number);
+    }
     else if (arg == "--quiet")
     {
       options.Quiet = true;
@@ -158,6 +178,19 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::stri
     error = "--technique: unknown technique \"" + options.Technique +
       "\" (known: " + vtkShadowTechnique::GetKnownTechniques() + ")";
     return 2;
+  }
+  {
+    vtkNew<vtkShadowTechnique> probe;
+    probe->SetName(options.Technique.c_str());
+    for (const auto& setting : options.Settings)
+    {
+      if (!probe->SetOption(setting.first.c_str(), setting.second))
+      {
+        error = "--set: unknown key or value out of range (got \"" + setting.first + "=" +
+          std::to_string(setting.second) + "\")";
+        return 2;
+      }
+    }
   }
   if (options.Image.empty())
   {

@@ -4,6 +4,8 @@
 #define vtkshadow_render_options_h
 
 #include <string>
+#include <utility>
+#include <vector>
 
 struct RenderOptions
 {
@@ -19,6 +21,8 @@ struct RenderOptions
   int Width = 0; // 0: the scene's size
   int Height = 0;
   bool Quiet = false;
+  // --set KEY=VALUE technique settings, in order.
+  std::vector<std::pair<std::string, double>> Settings;
 };
 
 // Parse argv. Returns 0 when the program should go on, 2 on a usage error

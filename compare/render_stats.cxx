@@ -91,7 +91,7 @@ FrameTimes TimeFrames(
 
 std::string StatsJson(const std::string& scene, const std::string& technique, int width,
   int height, int frames, const FrameTimes& shadowed, const FrameTimes& unshadowed,
-  long long shadowMapBytes)
+  long long shadowMapBytes, const std::string& techniqueJson)
 {
   std::ostringstream out;
   out.precision(6);
@@ -103,7 +103,8 @@ std::string StatsJson(const std::string& scene, const std::string& technique, in
       << "  \"shadowed_ms\": " << Json(shadowed) << ",\n"
       << "  \"unshadowed_ms\": " << Json(unshadowed) << ",\n"
       << "  \"overhead_ms\": " << (shadowed.Median - unshadowed.Median) << ",\n"
-      << "  \"shadow_map_bytes\": " << shadowMapBytes << "\n"
+      << "  \"shadow_map_bytes\": " << shadowMapBytes << ",\n"
+      << "  \"technique_stats\": " << techniqueJson << "\n"
       << "}\n";
   return out.str();
 }

@@ -23,6 +23,6 @@ FrameTimes TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, const vtkS
 // The stats JSON document.
 std::string StatsJson(const std::string& scene, const std::string& technique, int width,
   int height, int frames, const FrameTimes& shadowed, const FrameTimes& unshadowed,
-  long long shadowMapBytes);
+  long long shadowMapBytes, const std::string& techniqueJson);
 
 #endif

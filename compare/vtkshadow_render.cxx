@@ -82,6 +82,10 @@ int main(int argc, char* argv[])
   vtkNew<vtkShadowTechnique> technique;
   technique->SetName(options.Technique.c_str());
   technique->SetMapResolution(options.MapResolution);
+  for (const auto& setting : options.Settings)
+  {
+    technique->SetOption(setting.first.c_str(), setting.second); // checked while parsing
+  }
   auto progress = [&](const std::string& what) {
     if (!options.Quiet)
     {
@@ -127,11 +131,15 @@ int main(int argc, char* argv[])
   {
     progress("timing " + std::to_string(options.Frames) + " frames, shadowed and unshadowed");
     const FrameTimes shadowed = TimeFrames(window, renderer, scene, options.Frames, 3);
+    // Memory and details of the technique's pass, before it is replaced.
+    const long long bytes = technique->GetShadowMapMemory(renderer);
+    window->Render(); // the scene camera again, for the details
+    const std::string details = technique->GetStatsJSON(renderer);
     vtkNew<vtkShadowTechnique> none;
     none->Install(renderer);
     const FrameTimes unshadowed = TimeFrames(window, renderer, scene, options.Frames, 3);
     statsText = StatsJson(options.Scene, options.Technique, width, height, options.Frames,
-      shadowed, unshadowed, technique->GetShadowMapMemory(renderer));
+      shadowed, unshadowed, bytes, details);
   }
 
   // Free the passes' GL objects while the context still exists.

@@ -16,7 +16,9 @@
 #include "vtkShadowMapBakerPass.h"
 #include "vtkShadowMapPass.h"
 
+#include <cmath>
 #include <cstring>
+#include <sstream>
 
 vtkStandardNewMacro(vtkShadowTechnique);
 
@@ -177,6 +179,133 @@ long long vtkShadowTechnique::GetShadowMapMemory(vtkRenderer* renderer) const
   }
   const long long texels = static_cast<long long>(this->MapResolution) * this->MapResolution;
   return lights > 0 ? (lights + 1) * texels * 4 : 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowTechnique::SetOption(const char* key, double v)
+{
+  if (!key || !std::isfinite(v))
+  {
+    return false;
+  }
+  const std::string k = key;
+  vtkCascadedShadowMapPass* c = this->CascadedSettings;
+  auto in = [&](double lo, double hi) { return v >= lo && v <= hi; };
+  auto integral = [&](double lo, double hi) { return in(lo, hi) && v == std::floor(v); };
+  if (k == "map_resolution" && integral(16, 16384))
+  {
+    this->SetMapResolution(static_cast<int>(v));
+  }
+  else if (k == "cascades" && integral(0, 8))
+  {
+    c->SetCascadeCount(static_cast<int>(v));
+  }
+  else if (k == "ratio_per_cascade" && in(1.5, 1e6))
+  {
+    c->SetRatioPerCascade(v);
+  }
+  else if (k == "split" && integral(0, 3))
+  {
+    c->SetSplitScheme(static_cast<int>(v));
+  }
+  else if (k == "lambda" && in(0, 1))
+  {
+    c->SetSplitLambda(v);
+  }
+  else if (k.rfind("split_fraction_", 0) == 0 && k.size() == 16 && k[15] >= '0' && k[15] <= '6' &&
+    v > 0 && v < 1)
+  {
+    c->SetSplitFraction(k[15] - '0', v);
+  }
+  else if (k == "stable" && integral(0, 1))
+  {
+    c->SetStable(v != 0);
+  }
+  else if (k == "max_texel_px" && in(0, 1e6))
+  {
+    c->SetMaxTexelPixels(v);
+  }
+  else if (k == "memory_budget" && in(1 << 16, 1e12))
+  {
+    c->SetMemoryBudget(static_cast<long long>(v));
+  }
+  else if (k == "bias_scale" && in(0, 100))
+  {
+    c->SetBiasScale(v);
+  }
+  else if (k == "filter" && integral(0, 2))
+  {
+    c->SetFilter(static_cast<int>(v));
+  }
+  else if (k == "pcf_size" && integral(1, 9))
+  {
+    c->SetPCFSize(static_cast<int>(v));
+  }
+  else if (k == "poisson_radius" && in(0, 16))
+  {
+    c->SetPoissonRadius(v);
+  }
+  else if (k == "blend_band" && in(0, 0.5))
+  {
+    c->SetBlendBand(v);
+  }
+  else if (k == "max_distance" && in(0, 1e300))
+  {
+    c->SetMaxShadowDistance(v);
+  }
+  else if (k == "fade" && in(0, 1))
+  {
+    c->SetFadeFraction(v);
+  }
+  else if (k == "debug_cascades" && integral(0, 1))
+  {
+    c->SetDebugCascades(v != 0);
+  }
+  else
+  {
+    return false;
+  }
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowTechnique::GetStatsJSON(vtkRenderer* renderer) const
+{
+  auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
+  std::ostringstream out;
+  out.precision(6);
+  if (auto* csm = gl ? vtkCascadedShadowMapPass::SafeDownCast(gl->GetPass()) : nullptr)
+  {
+    out << "{\"resolution\": " << csm->GetUsedResolution()
+        << ", \"maps_rendered_total\": " << csm->GetTotalMapsRendered() << ", \"lights\": [";
+    const int lights = renderer->GetLights()->GetNumberOfItems();
+    for (int l = 0; l < lights; ++l)
+    {
+      out << (l ? ", " : "") << "{\"cascades\": " << csm->GetNumberOfCascades(l)
+          << ", \"far\": [";
+      for (int c = 0; c < csm->GetNumberOfCascades(l); ++c)
+      {
+        out << (c ? ", " : "") << csm->GetCascadeFar(l, c);
+      }
+      out << "], \"texel_px\": [";
+      for (int c = 0; c < csm->GetNumberOfCascades(l); ++c)
+      {
+        out << (c ? ", " : "") << csm->GetCascadeTexelPixels(l, c);
+      }
+      out << "]}";
+    }
+    out << "]}";
+    return out.str();
+  }
+  if (auto* planar = gl ? vtkPlanarShadowPass::SafeDownCast(gl->GetPass()) : nullptr)
+  {
+    out << "{\"shadow_pairs\": " << planar->GetNumberOfShadowPairs()
+        << ", \"mask_triangles\": " << planar->GetNumberOfMaskTriangles()
+        << ", \"geometry_builds\": " << planar->GetNumberOfGeometryBuilds() << "}";
+    return out.str();
+  }
+  return "{}";
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,8 @@
 #include "vtkObject.h"
 #include "vtkshadowModule.h" // for export macro
 
+#include <string> // for std::string
+
 class vtkCascadedShadowMapPass;
 class vtkRenderPass;
 class vtkRenderer;
@@ -59,6 +61,24 @@ public:
    * new vtkCascadedShadowMapPass (MapResolution comes from this object).
    */
   vtkCascadedShadowMapPass* GetCascadedSettings();
+
+  /**
+   * Set a technique setting by name (command lines, the C API). Keys:
+   * map_resolution, and for "csm": cascades, ratio_per_cascade, split
+   * (0 uniform, 1 log, 2 practical, 3 explicit), lambda, split_fraction_<i>,
+   * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
+   * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
+   * fade, debug_cascades. Returns false for an unknown key or a value out of
+   * range (nothing is changed then).
+   */
+  bool SetOption(const char* key, double value);
+
+  /**
+   * Technique details of the last frame rendered on `renderer` as a JSON
+   * object (cascades and their on-screen texel sizes for "csm", shadow pairs
+   * and caster triangles for "planar"), "{}" otherwise.
+   */
+  std::string GetStatsJSON(vtkRenderer* renderer) const;
 
   /**
    * True when Name is one of the techniques this build provides.
