@@ -62,6 +62,7 @@ set_tests_properties(sanitize.unit PROPERTIES TIMEOUT 1200 LABELS "sanitize")
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_robust_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/harness/harness_tests.cmake)
 
 # Every test of this directory may use the shared X server.
 get_property(vtkshadow_vtk_tests DIRECTORY PROPERTY TESTS)

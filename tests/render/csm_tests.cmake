@@ -28,3 +28,14 @@ foreach(case IN LISTS _csm_cases)
 endforeach()
 # A unit sphere over a 200 x 200 floor must keep its shadow: false_light_pct
 # is part of wrong_pct above; VTK 9.1's own pass measured 3.8% wrong there.
+
+# The automatic choice (--technique auto: planar where every shadow falls on
+# plane receivers, cascaded maps otherwise, nothing when nothing casts) must
+# meet the same bound on every case.
+foreach(case IN LISTS _csm_cases)
+  add_test(NAME render.auto.${case}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_planar.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/auto --case ${case}
+            --technique auto --reference all --max-wrong-pct 0.5)
+  set_tests_properties(render.auto.${case} PROPERTIES LABELS "render" TIMEOUT 300)
+endforeach()

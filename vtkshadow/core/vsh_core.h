@@ -10,5 +10,6 @@
 #include "vsh_camera.h"
 #include "vsh_planar.h"
 #include "vsh_csm.h"
+#include "vsh_auto.h"
 
 #endif

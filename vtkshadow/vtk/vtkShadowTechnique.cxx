@@ -7,6 +7,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkPlanarShadowPass.h"
+#include "vtkAutoShadowPass.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderStepsPass.h"
@@ -24,7 +25,7 @@ vtkStandardNewMacro(vtkShadowTechnique);
 
 namespace
 {
-const char* const KnownTechniques[] = { "none", "vtk", "planar", "csm" };
+const char* const KnownTechniques[] = { "none", "vtk", "planar", "csm", "auto" };
 }
 
 //------------------------------------------------------------------------------
@@ -75,7 +76,7 @@ bool vtkShadowTechnique::IsValid() const
 //------------------------------------------------------------------------------
 const char* vtkShadowTechnique::GetKnownTechniques()
 {
-  return "none vtk planar csm";
+  return "none vtk planar csm auto";
 }
 
 //------------------------------------------------------------------------------
@@ -102,6 +103,13 @@ vtkRenderPass* vtkShadowTechnique::CreatePass()
     csm->CopySettings(this->CascadedSettings);
     csm->SetMapResolution(this->MapResolution);
     return csm;
+  }
+  if (std::strcmp(this->Name, "auto") == 0)
+  {
+    vtkAutoShadowPass* automatic = vtkAutoShadowPass::New();
+    automatic->GetCascadedPass()->CopySettings(this->CascadedSettings);
+    automatic->GetCascadedPass()->SetMapResolution(this->MapResolution);
+    return automatic;
   }
   // "vtk": VTK's own shadow maps, assembled as in VTK's TestShadowMapPass.
   vtkNew<vtkShadowMapPass> shadows;
@@ -148,18 +156,23 @@ long long vtkShadowTechnique::GetShadowMapMemory(vtkRenderer* renderer) const
   {
     return 0;
   }
-  if (std::strcmp(this->Name, "planar") == 0)
+  auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
+  vtkRenderPass* pass = gl ? gl->GetPass() : nullptr;
+  if (auto* automatic = vtkAutoShadowPass::SafeDownCast(pass))
+  {
+    const std::string choice = automatic->GetChoice();
+    pass = choice == "planar" ? static_cast<vtkRenderPass*>(automatic->GetPlanarPass())
+      : choice == "csm"       ? static_cast<vtkRenderPass*>(automatic->GetCascadedPass())
+                              : nullptr;
+  }
+  if (auto* planar = vtkPlanarShadowPass::SafeDownCast(pass))
   {
     // The mask and caster copies of the installed pass, as of its last frame.
-    auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
-    auto* planar = gl ? vtkPlanarShadowPass::SafeDownCast(gl->GetPass()) : nullptr;
-    return planar ? planar->GetMemoryBytes() : 0;
+    return planar->GetMemoryBytes();
   }
-  if (std::strcmp(this->Name, "csm") == 0)
+  if (auto* csm = vtkCascadedShadowMapPass::SafeDownCast(pass))
   {
-    auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
-    auto* csm = gl ? vtkCascadedShadowMapPass::SafeDownCast(gl->GetPass()) : nullptr;
-    return csm ? csm->GetMemoryBytes() : 0;
+    return csm->GetMemoryBytes();
   }
   if (std::strcmp(this->Name, "vtk") != 0)
   {
@@ -275,9 +288,30 @@ std::string vtkShadowTechnique::GetStatsJSON(vtkRenderer* renderer) const
   auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
   std::ostringstream out;
   out.precision(6);
-  if (auto* csm = gl ? vtkCascadedShadowMapPass::SafeDownCast(gl->GetPass()) : nullptr)
+  vtkRenderPass* pass = gl ? gl->GetPass() : nullptr;
+  std::string prefix;
+  if (auto* automatic = vtkAutoShadowPass::SafeDownCast(pass))
   {
-    out << "{\"resolution\": " << csm->GetUsedResolution()
+    const std::string choice = automatic->GetChoice();
+    std::string reason = automatic->GetReason();
+    for (size_t at = reason.find('"'); at != std::string::npos; at = reason.find('"', at + 2))
+    {
+      reason.insert(at, "\\");
+    }
+    prefix = "\"choice\": \"" + choice + "\", \"reason\": \"" + reason + "\"";
+    pass = choice == "planar" ? static_cast<vtkRenderPass*>(automatic->GetPlanarPass())
+      : choice == "csm"       ? static_cast<vtkRenderPass*>(automatic->GetCascadedPass())
+                              : nullptr;
+    if (!pass)
+    {
+      return "{" + prefix + "}";
+    }
+    prefix += ", ";
+  }
+  if (auto* csm = vtkCascadedShadowMapPass::SafeDownCast(pass))
+  {
+    out << "{" << prefix;
+    out << "\"resolution\": " << csm->GetUsedResolution()
         << ", \"maps_rendered_total\": " << csm->GetTotalMapsRendered() << ", \"lights\": [";
     const int lights = renderer->GetLights()->GetNumberOfItems();
     for (int l = 0; l < lights; ++l)
@@ -298,9 +332,9 @@ std::string vtkShadowTechnique::GetStatsJSON(vtkRenderer* renderer) const
     out << "]}";
     return out.str();
   }
-  if (auto* planar = gl ? vtkPlanarShadowPass::SafeDownCast(gl->GetPass()) : nullptr)
+ if (auto* planar = vtkPlanarShadowPass::SafeDownCast(pass))
   {
-    out << "{\"shadow_pairs\": " << planar->GetNumberOfShadowPairs()
+    out << "{" << prefix << "\"shadow_pairs\": " << planar->GetNumberOfShadowPairs()
         << ", \"mask_triangles\": " << planar->GetNumberOfMaskTriangles()
         << ", \"geometry_builds\": " << planar->GetNumberOfGeometryBuilds() << "}";
     return out.str();
