@@ -622,6 +622,7 @@ def main():
 def profile(args):
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)  # as in run_config
     renderer = vtkRenderer()
     renderer.AutomaticLightCreationOff()
     window.AddRenderer(renderer)

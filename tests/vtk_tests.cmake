@@ -16,6 +16,8 @@ set_tests_properties(xvfb.stop PROPERTIES FIXTURES_CLEANUP xvfb)
 set(VTKSHADOW_BIN "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}")
 set(VTKSHADOW_PY "${VTKSHADOW_BIN}/vtkshadow-python")
 set(VTKSHADOW_TEST_OUT "${CMAKE_BINARY_DIR}/test-output")
+# Tests write below it; their own folders they make themselves.
+file(MAKE_DIRECTORY "${VTKSHADOW_TEST_OUT}")
 
 # Python: the wrapped classes import and work.
 add_test(NAME python.api
@@ -62,6 +64,7 @@ set_tests_properties(sanitize.unit PROPERTIES TIMEOUT 1200 LABELS "sanitize")
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_robust_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_extra_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/harness/harness_tests.cmake)
 
 # Every test of this directory may use the shared X server.

@@ -16,7 +16,16 @@ int main(int argc, char **argv)
   }
   char error[1024] = "";
   char path[4096];
-  mkdir(argv[2], 0755);
+  /* mkdir -p: the output folder's parents may not exist in a fresh build. */
+  snprintf(path, sizeof path, "%s", argv[2]);
+  for (char *p = path + 1; *p; ++p) {
+    if (*p == '/') {
+      *p = '\0';
+      mkdir(path, 0755);
+      *p = '/';
+    }
+  }
+  mkdir(path, 0755);
 
   CHECK(strcmp(vtkshadow_version(), "0.1.0") == 0);
   CHECK(vtkshadow_scene_load("/nonexistent/scene.json", error, sizeof error) == NULL);

@@ -292,7 +292,9 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     {
       casters.push_back(actor);
       vsh_bounds_merge(&casterBounds, &ab);
-      casterTime = std::max(casterTime, actor->GetMTime());
+      // The actor's placement, not its own MTime: VTK's pass machinery gives
+      // actors property keys during the first frame, which bumps it.
+      casterTime = std::max(casterTime, actor->GetMatrix()->GetMTime());
       if (auto* data = actor->GetMapper()->GetInputDataObject(0, 0))
       {
         casterTime = std::max(casterTime, data->GetMTime());

@@ -223,8 +223,7 @@ vtkIdType vtkPlanarShadowPass::GetMemoryBytes() const
   vtkIdType bytes = static_cast<vtkIdType>(this->Impl->MaskSize[0]) * this->Impl->MaskSize[1] * 16;
   for (const auto& entry : this->Impl->Casters)
   {
-    // 3 floats a vertex at most 3 vertices a triangle, 3 indices a triangle.
-    bytes += entry.second->Geometry.GetNumberOfTriangles() * 12 * 2;
+    bytes += entry.second->Geometry.GetNumberOfBytes();
   }
   return bytes;
 }
@@ -571,6 +570,31 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
             ToFloat(transposed, mcdcF, 16);
             ToFloat(keep0, keep0F, 4);
             ToFloat(keep1, keep1F, 4);
+            // Clipping costs a software rasterizer a stage per triangle: skip
+            // it when every corner of the caster's bounds is kept anyway.
+            double b[6];
+            actor->GetBounds(b);
+            bool clipNeeded = false;
+            for (int k = 0; k < 8 && !clipNeeded; ++k)
+            {
+              const double p[3] = { b[k & 1] - eye[0], b[2 + ((k >> 1) & 1)] - eye[1],
+                b[4 + ((k >> 2) & 1)] - eye[2] };
+              for (const auto& plane : clip)
+              {
+                clipNeeded = clipNeeded ||
+                  plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3] <= 0.0;
+              }
+            }
+            if (clipNeeded)
+            {
+              glEnable(GL_CLIP_DISTANCE0);
+              glEnable(GL_CLIP_DISTANCE1);
+            }
+            else
+            {
+              glDisable(GL_CLIP_DISTANCE0);
+              glDisable(GL_CLIP_DISTANCE1);
+            }
             program->SetUniformMatrix4x4("shadowMCDC", mcdcF);
             program->SetUniform4f("receiverSideMC", keep0F);
             program->SetUniform4f("belowLightMC", keep1F);

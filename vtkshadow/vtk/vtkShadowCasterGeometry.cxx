@@ -293,6 +293,7 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
     AppendTriangles(poly, nullptr, this->Shift, vertices, indices);
   }
   this->TriangleCount = static_cast<vtkIdType>(indices.size() / 3);
+  this->VertexCount = static_cast<vtkIdType>(vertices.size() / 3);
   this->PendingVertices.swap(vertices);
   this->PendingIndices.swap(indices);
   this->NeedsUpload = true;
@@ -361,4 +362,5 @@ void vtkShadowCasterGeometry::ReleaseGraphicsResources(vtkWindow*)
   // The GPU copy is gone: rebuild from the data next time.
   this->DataTime = 0;
   this->TriangleCount = 0;
+  this->VertexCount = 0;
 }

@@ -43,6 +43,8 @@ public:
   void Draw(vtkShaderProgram* program);
 
   vtkIdType GetNumberOfTriangles() const { return this->TriangleCount; }
+  // GPU bytes of the copy (12 a vertex, 12 a triangle).
+  vtkIdType GetNumberOfBytes() const { return 12 * (this->VertexCount + this->TriangleCount); }
   // The time of the last geometry rebuild.
   vtkMTimeType GetBuildTime() const { return this->BuildTime; }
 
@@ -60,6 +62,7 @@ private:
   vtkShaderProgram* LastProgram = nullptr;
   double Shift[3] = { 0, 0, 0 };
   vtkIdType TriangleCount = 0;
+  vtkIdType VertexCount = 0;
   vtkMTimeType DataTime = 0;
   vtkMTimeType BuildTime = 0;
   bool NeedsUpload = false;

@@ -1,0 +1,450 @@
+#!/usr/bin/env python3
+"""vtkshadow-bench: speed against error for every shadow technique.
+
+    bench/vtkshadow-bench SCENE... --out DIR [--scale F] [--frames N]
+                          [--grid small|full] [--rounds R] [--light K]
+
+(bench/vtkshadow-bench runs this file with build/bin/vtkshadow-python under
+tests/gl-run.sh when no X display is set.)
+
+For each scene (light K, default 0) it runs build/bin/vtkshadow-render with:
+none; vtk at map 1024, 2048, 4096; planar when the scene has a receiver;
+csm at its defaults and over a grid (small: cascades 1,2,4 x map 1024,2048 x
+filter 0 (hardware); full: cascades 1..4 x map 512..4096 x filter 0,1,2);
+auto. Each render gives the visibility and mask of light K (scored with
+build/bin/vtkshadow-metrics against the POV-Ray reference of
+build/bin/vtkshadow-compare --renderers povray, cached in DIR/refs) and
+--stats timings: the median ms per frame over --frames (>= 30) frames along
+vtkshadow-render's camera orbit, shadowed and unshadowed in the same process.
+
+Timing on a shared machine is noisy, so: the configurations of one scene are
+interleaved in --rounds rounds (the order rotates every round); every run
+reports its own unshadowed time, and `ratio` = shadowed / unshadowed of the
+same run (median over rounds) is the number to compare. `ms_per_frame` is
+ratio x the scene's median unshadowed time over all its runs (a noise-reduced
+absolute time); `raw_ms` is the plain median of the shadowed medians;
+overhead_ms = ms_per_frame - unshadowed. Timings cover all lights of a scene
+(vtkshadow-render renders every light); errors are for light K only.
+
+Outputs: DIR/bench.csv (one row per scene and configuration), DIR/bench.json,
+DIR/<scene>/<config>/ (visibility, mask, stats, metrics of each run),
+DIR/<scene>.png (gnuplot: wrong_pct, log, floored at 1e-3, against
+ms_per_frame, log; one series per technique family; Pareto front drawn),
+DIR/summary.md (tables, auto's position against the Pareto front, goals).
+Progress lines go to stderr.
+"""
+
+import argparse
+import csv
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BIN = os.path.join(ROOT, "build", "bin")
+WRONG_FLOOR = 1e-3
+
+COLUMNS = ["scene", "technique", "settings", "ms_per_frame", "overhead_ms",
+           "unshadowed_ms", "ratio", "raw_ms", "memory_bytes", "wrong_pct",
+           "vis_mae", "edge_px", "false_shadow_pct", "false_light_pct",
+           "auto_choice", "texel_px"]
+
+
+def log(msg):
+    print("vtkshadow-bench: " + msg, file=sys.stderr, flush=True)
+
+
+def scene_key(path):
+    """Same naming as vtkshadow-compare: path relative to the folder of the
+    nearest thresholds.json, without .json, / -> -."""
+    path = os.path.abspath(path)
+    d = os.path.dirname(path)
+    while True:
+        if os.path.exists(os.path.join(d, "thresholds.json")):
+            break
+        parent = os.path.dirname(d)
+        if parent == d:
+            d = os.path.dirname(path)
+            break
+        d = parent
+    rel = os.path.relpath(path, d)
+    if rel.endswith(".json"):
+        rel = rel[:-5]
+    return rel.replace(os.sep, "-")
+
+
+def scene_info(path):
+    with open(path) as f:
+        doc = json.load(f)
+    size = doc.get("size", [800, 600])
+    receivers = any(o.get("receiver") for o in doc.get("objects", []))
+    return size, receivers
+
+
+def configs_for(receivers, grid):
+    """(technique, settings label, extra vtkshadow-render args)."""
+    out = [("none", "-", [])]
+    for r in (1024, 2048, 4096):
+        out.append(("vtk", "map=%d" % r, ["--map-resolution", str(r)]))
+    if receivers:
+        out.append(("planar", "-", []))
+    out.append(("csm", "default", []))
+    if grid == "small":
+        cascades, maps, filters = (1, 2, 4), (1024, 2048), (0,)
+    else:
+        cascades, maps, filters = (1, 2, 3, 4), (512, 1024, 2048, 4096), (0, 1, 2)
+    for c in cascades:
+        for m in maps:
+            for fl in filters:
+                out.append(("csm", "cascades=%d map=%d filter=%d" % (c, m, fl),
+                            ["--map-resolution", str(m), "--set", "cascades=%d" % c,
+                             "--set", "filter=%d" % fl]))
+    out.append(("auto", "default", []))
+    return out
+
+
+def config_dir(tech, settings):
+    s = settings.replace(" ", "_").replace("=", "")
+    return tech if s in ("-", "default") and tech != "csm" else tech + "_" + s
+
+
+def ensure_refs(scenes, out, scale):
+    refs = os.path.join(out, "refs")
+    cmd = [os.path.join(BIN, "vtkshadow-compare")] + scenes + [
+        "--out", refs, "--scale", repr(scale), "--renderers", "povray", "--no-report"]
+    log("POV-Ray references (cached): " + " ".join(cmd))
+    with open(os.path.join(out, "refs.log"), "w") as logf:
+        rc = subprocess.call(cmd, stdout=logf, stderr=subprocess.STDOUT)
+    if rc != 0:
+        log("warning: vtkshadow-compare exited %d (see %s/refs.log)" % (rc, out))
+    return refs
+
+
+def run_render(scene, args, size, light, frames, d, want_images):
+    os.makedirs(d, exist_ok=True)
+    stats = os.path.join(d, "stats.json")
+    cmd = [os.path.join(BIN, "vtkshadow-render"), scene, "--image",
+           os.path.join(d, "image.png"), "--light", str(light), "--stats", stats,
+           "--frames", str(frames), "--size", "%dx%d" % size, "--quiet"] + args
+    if want_images:
+        cmd += ["--visibility", os.path.join(d, "visibility.png"),
+                "--mask", os.path.join(d, "mask.png")]
+    if os.path.exists(stats):
+        os.remove(stats)
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    with open(os.path.join(d, "render.log"), "a") as f:
+        f.write(" ".join(cmd) + "\n" + p.stdout)
+    if p.returncode != 0 or not os.path.exists(stats):
+        log("  FAILED (%d): %s" % (p.returncode, " ".join(cmd)))
+        return None
+    with open(stats) as f:
+        return json.load(f)
+
+
+def metrics(ref_vis, ref_mask, test, out_json):
+    cmd = [os.path.join(BIN, "vtkshadow-metrics"), "--reference", ref_vis,
+           "--mask", ref_mask, "--test", test, "--json", out_json]
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if p.returncode != 0 or not os.path.exists(out_json):
+        log("  metrics FAILED: " + " ".join(cmd) + "\n" + p.stderr)
+        return {}
+    with open(out_json) as f:
+        return json.load(f)
+
+
+def pareto(rows):
+    """Rows not dominated in (ratio, wrong_pct): sorted by time."""
+    pts = sorted((r for r in rows if r["ratio"] is not None and r["wrong_pct"] is not None),
+                 key=lambda r: (r["ratio"], r["wrong_pct"]))
+    front, best = [], float("inf")
+    for r in pts:
+        if r["wrong_pct"] < best:
+            front.append(r)
+            best = r["wrong_pct"]
+    return front
+
+
+def bench_scene(scene, a, refs):
+    key = scene_key(scene)
+    size0, receivers = scene_info(scene)
+    size = (max(1, round(size0[0] * a.scale)), max(1, round(size0[1] * a.scale)))
+    ref_vis = os.path.join(refs, key, "povray", "light%d_visibility.png" % a.light)
+    ref_mask = os.path.join(refs, key, "povray", "light%d_mask.png" % a.light)
+    have_ref = os.path.exists(ref_vis) and os.path.exists(ref_mask)
+    if not have_ref:
+        log("%s: no POV-Ray reference at %s: errors left empty" % (key, ref_vis))
+    cfgs = configs_for(receivers, a.grid)
+    runs = {i: [] for i in range(len(cfgs))}
+    stats_last = {}
+    for rnd in range(a.rounds):
+        order = list(range(len(cfgs)))
+        k = (rnd * len(cfgs)) // a.rounds
+        order = order[k:] + order[:k]
+        if rnd % 2 == 1:
+            order.reverse()
+        for n, i in enumerate(order):
+            tech, settings, extra = cfgs[i]
+            d = os.path.join(a.out, key, config_dir(tech, settings))
+            t0 = time.time()
+            st = run_render(scene, ["--technique", tech] + extra, size, a.light,
+                            a.frames, d, want_images=(rnd == 0))
+            if st is None:
+                continue
+            runs[i].append(st)
+            stats_last[i] = st
+            log("%s: round %d/%d, %d/%d %s %s: %.1f ms (unshadowed %.1f) [%.0f s]" % (
+                key, rnd + 1, a.rounds, n + 1, len(cfgs), tech, settings,
+                st["shadowed_ms"]["median"], st["unshadowed_ms"]["median"],
+                time.time() - t0))
+    all_unsh = [s["unshadowed_ms"]["median"] for i in runs for s in runs[i]]
+    unsh = statistics.median(all_unsh) if all_unsh else None
+    rows = []
+    for i, (tech, settings, extra) in enumerate(cfgs):
+        d = os.path.join(a.out, key, config_dir(tech, settings))
+        row = {c: None for c in COLUMNS}
+        row.update(scene=key, technique=tech, settings=settings)
+        if runs[i]:
+            ratio = statistics.median(s["shadowed_ms"]["median"] / s["unshadowed_ms"]["median"]
+                                      for s in runs[i])
+            row["ratio"] = ratio
+            row["raw_ms"] = statistics.median(s["shadowed_ms"]["median"] for s in runs[i])
+            row["ms_per_frame"] = ratio * unsh
+            row["unshadowed_ms"] = unsh
+            row["overhead_ms"] = (ratio - 1.0) * unsh
+            st = stats_last[i]
+            row["memory_bytes"] = st.get("shadow_map_bytes")
+            ts = st.get("technique_stats") or {}
+            if tech == "auto":
+                ch = ts.get("choice")
+                if isinstance(ts.get("lights"), list) and ch is None:
+                    ch = ";".join(str(l.get("choice")) for l in ts["lights"])
+                row["auto_choice"] = "%s (%s)" % (ch, ts.get("reason", "")) if ts.get("reason") else (
+                    ch if ch is not None else json.dumps(ts, sort_keys=True)[:200])
+            lights = ts.get("lights")
+            if tech in ("csm",) and isinstance(lights, list) and len(lights) > a.light:
+                tp = lights[a.light].get("texel_px")
+                if tp:
+                    row["texel_px"] = "/".join("%.2f" % v for v in tp)
+        vis = os.path.join(d, "visibility.png")
+        if have_ref and os.path.exists(vis):
+            m = metrics(ref_vis, ref_mask, vis, os.path.join(d, "metrics.json"))
+            for k in ("wrong_pct", "vis_mae", "edge_px", "false_shadow_pct", "false_light_pct"):
+                row[k] = m.get(k)
+        rows.append(row)
+    return key, size, rows
+
+
+def fmt(v, nd=2):
+    if v is None:
+        return "-"
+    if isinstance(v, float):
+        if v != 0 and abs(v) < 10 ** -nd:
+            return "%.1e" % v
+        return ("%." + str(nd) + "f") % v
+    return str(v)
+
+
+def mib(b):
+    return "-" if b is None else ("0" if b == 0 else "%.1f MiB" % (b / 1048576.0))
+
+
+def family(r):
+    return r["technique"]
+
+
+def plot(key, rows, front, out):
+    gp = shutil.which("gnuplot")
+    if not gp:
+        log("gnuplot not found (apt-get install gnuplot-nox): no plot")
+        return None
+    ddir = os.path.join(out, key)
+    os.makedirs(ddir, exist_ok=True)
+    fams = []
+    for r in rows:
+        if r["ms_per_frame"] is None or r["wrong_pct"] is None:
+            continue
+        f = family(r)
+        if f not in fams:
+            fams.append(f)
+        with open(os.path.join(ddir, "plot_%s.dat" % f), "a" if fams.count(f) and os.path.exists(
+                os.path.join(ddir, "plot_%s.dat" % f)) else "w") as fh:
+            fh.write("%g %g\n" % (r["ms_per_frame"], max(r["wrong_pct"], WRONG_FLOOR)))
+    with open(os.path.join(ddir, "plot_front.dat"), "w") as fh:
+        for r in front:
+            fh.write("%g %g\n" % (r["ms_per_frame"], max(r["wrong_pct"], WRONG_FLOOR)))
+    png = os.path.join(out, key + ".png")
+    styles = {"none": "pt 6 ps 1.5 lc rgb '#777777'", "vtk": "pt 5 ps 1.5 lc rgb '#d62728'",
+              "planar": "pt 9 ps 1.5 lc rgb '#2ca02c'", "csm": "pt 7 ps 1.5 lc rgb '#1f77b4'",
+              "auto": "pt 3 ps 2.5 lc rgb '#000000'"}
+    plots = ["'%s' using 1:2 with linespoints dt 2 lw 1.5 lc rgb '#ff7f0e' pt 1 title 'Pareto front'"
+             % os.path.join(ddir, "plot_front.dat")]
+    for f in fams:
+        plots.append("'%s' using 1:2 with points %s title '%s'" % (
+            os.path.join(ddir, "plot_%s.dat" % f), styles.get(f, "pt 1"), f))
+    script = "\n".join([
+        "set terminal pngcairo size 720,480 noenhanced" if _has_cairo(gp) else
+        "set terminal png size 720,480 noenhanced",
+        "set output '%s'" % png,
+        "set title '%s: error against frame time (light 0; time = same-run ratio x median unshadowed)'" % key,
+        "set logscale xy",
+        "set xlabel 'ms per frame (log)'",
+        "set ylabel 'wrong_pct (log, floor %g)'" % WRONG_FLOOR,
+        "set grid",
+        "set key outside right",
+        "plot " + ", ".join(plots),
+    ]) + "\n"
+    p = subprocess.run([gp], input=script, text=True, stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE)
+    if p.returncode != 0:
+        log("gnuplot failed: " + p.stderr)
+        return None
+    return png
+
+
+_CAIRO = None
+
+
+def _has_cairo(gp):
+    global _CAIRO
+    if _CAIRO is None:
+        p = subprocess.run([gp, "-e", "set terminal"], stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, text=True)
+        _CAIRO = "pngcairo" in p.stdout
+    return _CAIRO
+
+
+def auto_check(rows, front):
+    """Auto against the Pareto front of the other configurations: the fastest
+    non-auto configuration with wrong_pct <= auto's; auto passes when its time
+    is within 10% of that one's."""
+    auto = [r for r in rows if r["technique"] == "auto" and r["ratio"] is not None]
+    if not auto or auto[0]["wrong_pct"] is None:
+        return "auto: no result"
+    a = auto[0]
+    others = [r for r in rows if r["technique"] != "auto" and r["ratio"] is not None
+              and r["wrong_pct"] is not None and r["wrong_pct"] <= a["wrong_pct"] + 1e-9]
+    if not others:
+        return ("auto (%s): wrong_pct %s, lower than every other configuration: on the front"
+                % (a["auto_choice"], fmt(a["wrong_pct"], 3)))
+    best = min(others, key=lambda r: r["ratio"])
+    rel = a["ratio"] / best["ratio"]
+    verdict = "on or within 10%% of the front" if rel <= 1.10 else "NOT within 10%% of the front"
+    return ("auto (%s): wrong_pct %s at %.1f ms; fastest other with wrong_pct <= that: %s %s, "
+            "wrong_pct %s at %.1f ms; auto/that = %.2fx: %s" % (
+                a["auto_choice"], fmt(a["wrong_pct"], 3), a["ms_per_frame"], best["technique"],
+                best["settings"], fmt(best["wrong_pct"], 3), best["ms_per_frame"], rel, verdict % ()))
+
+
+def goals(key, rows):
+    out = []
+    get = lambda t, s: next((r for r in rows if r["technique"] == t and r["settings"] == s
+                             and r["ratio"] is not None), None)
+    csm, vtk, none, planar = get("csm", "default"), get("vtk", "map=2048"), get("none", "-"), get("planar", "-")
+    hard = key.startswith("hard-")
+    if csm and vtk and csm["wrong_pct"] is not None and vtk["wrong_pct"] is not None:
+        f_err = vtk["wrong_pct"] / max(csm["wrong_pct"], WRONG_FLOOR)
+        f_time = csm["ratio"] / vtk["ratio"]
+        ok = f_err >= 10 and f_time <= 1.2
+        out.append("csm default vs vtk (2048): wrong_pct %s vs %s (%.1fx lower%s), frame time %.2fx "
+                   "of vtk's -> %s%s" % (
+                       fmt(csm["wrong_pct"], 3), fmt(vtk["wrong_pct"], 3), f_err,
+                       ", csm floored at %g" % WRONG_FLOOR if csm["wrong_pct"] < WRONG_FLOOR else "",
+                       f_time, "met" if ok else "MISSED", " (hard scene: not part of the goal)" if hard else ""))
+    if planar and none:
+        ov = planar["ratio"] - 1.0
+        out.append("planar overhead %.1f ms = %.0f%% of the unshadowed frame (goal <= 15%%) -> %s" % (
+            planar["overhead_ms"], 100 * ov, "met" if ov <= 0.15 else "MISSED by %.0f points" % (100 * ov - 15)))
+    return out
+
+
+def summary(results, a, cmdline):
+    lines = ["Command: `%s`" % cmdline, "",
+             "Timing: per scene the configurations are interleaved in %d round(s) (order rotated), "
+             "%d timed frames each on vtkshadow-render's camera orbit; `ratio` = shadowed / unshadowed "
+             "median of the same vtkshadow-render process (median over rounds); ms/frame = ratio x the "
+             "scene's median unshadowed time; overhead = ms/frame - unshadowed. Compare ratios, not "
+             "absolute times (shared 2-core llvmpipe machine). Times include every light of the scene; "
+             "errors are light %d against POV-Ray." % (a.rounds, a.frames, a.light), ""]
+    for key, size, rows, front, png in results:
+        lines += ["### %s (%dx%d)" % (key, size[0], size[1]), "",
+                  "| technique | settings | ms/frame | overhead ms | ratio | memory | wrong_pct | "
+                  "vis_mae | edge_px | false_shadow_pct | false_light_pct |",
+                  "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+        fset = set(id(r) for r in front)
+        for r in rows:
+            lines.append("| %s | %s%s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                r["technique"], r["settings"], " (front)" if id(r) in fset else "",
+                fmt(r["ms_per_frame"], 1), fmt(r["overhead_ms"], 1), fmt(r["ratio"], 2),
+                mib(r["memory_bytes"]), fmt(r["wrong_pct"], 3), fmt(r["vis_mae"], 4),
+                fmt(r["edge_px"], 2), fmt(r["false_shadow_pct"], 3), fmt(r["false_light_pct"], 3)))
+        lines += ["", "- " + auto_check(rows, front)]
+        for g in goals(key, rows):
+            lines.append("- " + g)
+        if png:
+            lines.append("- plot: %s" % png)
+        lines.append("")
+    return "\n".join(lines)
+
+
+def main():
+    p = argparse.ArgumentParser(prog="vtkshadow-bench", description=__doc__.split("\n\n")[0])
+    p.add_argument("scenes", nargs="+")
+    p.add_argument("--out", required=True)
+    p.add_argument("--scale", type=float, default=1.0)
+    p.add_argument("--frames", type=int, default=30)
+    p.add_argument("--grid", choices=("small", "full"), default="small")
+    p.add_argument("--rounds", type=int, default=2)
+    p.add_argument("--light", type=int, default=0)
+    a = p.parse_args()
+    if a.frames < 30:
+        p.error("--frames must be >= 30")
+    scenes = []
+    for s in a.scenes:
+        if os.path.isdir(s):
+            for dp, dn, fn in os.walk(s):
+                dn[:] = sorted(x for x in dn if x != "meshes")
+                scenes += [os.path.join(dp, f) for f in sorted(fn)
+                           if f.endswith(".json") and f != "thresholds.json"]
+        else:
+            scenes.append(s)
+    os.makedirs(a.out, exist_ok=True)
+    for x in ("vtkshadow-render", "vtkshadow-metrics", "vtkshadow-compare"):
+        if not os.access(os.path.join(BIN, x), os.X_OK):
+            p.error("missing %s (build first)" % os.path.join(BIN, x))
+    refs = ensure_refs(scenes, a.out, a.scale)
+    log("timings: techniques interleaved in %d rounds; compare ratios within a run, "
+        "not absolute times" % a.rounds)
+    results, allrows = [], []
+    for s in scenes:
+        key, size, rows = bench_scene(s, a, refs)
+        front = pareto(rows)
+        for f in os.listdir(os.path.join(a.out, key)) if os.path.isdir(os.path.join(a.out, key)) else []:
+            if f.startswith("plot_") and f.endswith(".dat"):
+                os.remove(os.path.join(a.out, key, f))
+        png = plot(key, rows, front, a.out)
+        results.append((key, size, rows, front, png))
+        allrows += rows
+        log("%s: done; %s" % (key, auto_check(rows, front)))
+    with open(os.path.join(a.out, "bench.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=COLUMNS)
+        w.writeheader()
+        for r in allrows:
+            w.writerow({k: ("" if v is None else v) for k, v in r.items()})
+    with open(os.path.join(a.out, "bench.json"), "w") as f:
+        json.dump(allrows, f, indent=1)
+    cmdline = "bench/vtkshadow-bench " + " ".join(sys.argv[1:])
+    md = summary(results, a, cmdline)
+    with open(os.path.join(a.out, "summary.md"), "w") as f:
+        f.write(md + "\n")
+    print("NOTE: timings are interleaved per scene; compare ratios within this run, "
+          "not absolute times across runs.")
+    print(md)
+    print(os.path.join(a.out, "bench.csv"))
+
+
+if __name__ == "__main__":
+    main()
