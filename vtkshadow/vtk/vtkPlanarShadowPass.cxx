@@ -9,6 +9,9 @@
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkSmartPointer.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -118,6 +121,12 @@ struct vtkPlanarShadowPass::Internals
 
   vtkTextureObject* Mask = nullptr;
   vtkOpenGLFramebufferObject* FBO = nullptr;
+  // Stencil for silhouette fans (winding numbers), and a screen quad.
+  unsigned int Stencil = 0;
+  int StencilSize[2] = { 0, 0 };
+  vtkSmartPointer<vtkOpenGLBufferObject> Quad;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> QuadVAO;
+  vtkShaderProgram* QuadProgram = nullptr;
   int MaskSize[2] = { 0, 0 };
   int MaskOrigin[2] = { 0, 0 };
 
@@ -456,8 +465,23 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   impl.FBO->Bind();
   impl.FBO->AddColorAttachment(0, impl.Mask);
   impl.FBO->ActivateDrawBuffers(1);
+  if (!impl.Stencil || impl.StencilSize[0] != size[0] || impl.StencilSize[1] != size[1])
+  {
+    if (!impl.Stencil)
+    {
+      glGenRenderbuffers(1, &impl.Stencil);
+    }
+    glBindRenderbuffer(GL_RENDERBUFFER, impl.Stencil);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size[0], size[1]);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    impl.StencilSize[0] = size[0];
+    impl.StencilSize[1] = size[1];
+  }
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, impl.Stencil);
   {
     vtkOpenGLState::ScopedglViewport viewport(state);
+    vtkOpenGLState::ScopedglScissor scissorBox(state);
+    vtkOpenGLState::ScopedglEnableDisable stencil(state, GL_STENCIL_TEST);
     vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
@@ -520,6 +544,15 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
           unsigned int bits[4] = { 0, 0, 0, 0 };
           bits[pair / 32] = 1u << (pair % 32);
           glUniform4uiv(glGetUniformLocation(program->GetHandle(), "pairBit"), 1, bits);
+          struct Fan
+          {
+            vtkShadowCasterGeometry* Geometry;
+            float MCDC[16];
+            double Light[4];
+          };
+          std::vector<Fan> fans;
+          double fanRect[4] = { 1e300, 1e300, -1e300, -1e300 }; // NDC x0 y0 x1 y1
+          bool fanRectFull = false;
           for (vtkActor* actor : casters)
           {
             if (actor == receivers[r].Actor)
@@ -585,6 +618,40 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
                   plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3] <= 0.0;
               }
             }
+            // (Directional lights only for now: with positional lights the
+            // fan path missed shadows in two exact tests; they draw every
+            // triangle until that is understood.)
+            if (!clipNeeded && light[3] == 0.0 && caster->Geometry.IsClosed())
+            {
+              // Closed and unclipped: its silhouette fans, counted in the
+              // stencil below, cover exactly what its triangles would.
+              Fan fan;
+              fan.Geometry = &caster->Geometry;
+              std::copy_n(mcdcF, 16, fan.MCDC);
+              double inverse[16];
+              if (vsh_mat4_inverse(model, inverse))
+              {
+                vsh_mat4_transform_point4(inverse, light, fan.Light);
+                fans.push_back(fan);
+                for (int k = 0; k < 8; ++k)
+                {
+                  const double p[4] = { b[k & 1] - eye[0], b[2 + ((k >> 1) & 1)] - eye[1],
+                    b[4 + ((k >> 2) & 1)] - eye[2], 1.0 };
+                  double q[4];
+                  vsh_mat4_transform_point4(shadowDC, p, q);
+                  if (!(q[3] > 0.0))
+                  {
+                    fanRectFull = true;
+                    continue;
+                  }
+                  fanRect[0] = std::min(fanRect[0], q[0] / q[3]);
+                  fanRect[1] = std::min(fanRect[1], q[1] / q[3]);
+                  fanRect[2] = std::max(fanRect[2], q[0] / q[3]);
+                  fanRect[3] = std::max(fanRect[3], q[1] / q[3]);
+                }
+                continue;
+              }
+            }
             if (clipNeeded)
             {
               glEnable(GL_CLIP_DISTANCE0);
@@ -601,6 +668,81 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
             caster->Geometry.Draw(program);
             this->NumberOfMaskTriangles += caster->Geometry.GetNumberOfTriangles();
           }
+          if (!fans.empty())
+          {
+            // Winding numbers of the silhouette fans in the stencil (front
+            // +1, back -1), then the pair's bit wherever it is not zero,
+            // within the casters' projected bounds.
+            int x0 = 0, y0 = 0, x1 = size[0], y1 = size[1];
+            if (!fanRectFull)
+            {
+              x0 = std::max(0, static_cast<int>(std::floor((fanRect[0] * 0.5 + 0.5) * size[0])) - 1);
+              y0 = std::max(0, static_cast<int>(std::floor((fanRect[1] * 0.5 + 0.5) * size[1])) - 1);
+              x1 = std::min(size[0], static_cast<int>(std::ceil((fanRect[2] * 0.5 + 0.5) * size[0])) + 1);
+              y1 = std::min(size[1], static_cast<int>(std::ceil((fanRect[3] * 0.5 + 0.5) * size[1])) + 1);
+            }
+            if (x1 > x0 && y1 > y0)
+            {
+              // Through vtkOpenGLState: VTK caches this state, and a stale
+              // cache would leave our scissor box on its own renders.
+              state->vtkglEnable(GL_SCISSOR_TEST);
+              state->vtkglScissor(x0, y0, x1 - x0, y1 - y0);
+              state->vtkglStencilMask(0xff);
+              glClearStencil(0);
+              state->vtkglClear(GL_STENCIL_BUFFER_BIT);
+              state->vtkglEnable(GL_STENCIL_TEST);
+              // Counting only: OR-ing zero writes nothing (llvmpipe does not
+              // honour a colour mask with logic ops on integer targets).
+              const unsigned int none[4] = { 0, 0, 0, 0 };
+              const GLint pairBitLocation = glGetUniformLocation(program->GetHandle(), "pairBit");
+              glUniform4uiv(pairBitLocation, 1, none);
+              state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
+              state->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+              state->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+              glDisable(GL_CLIP_DISTANCE0);
+              glDisable(GL_CLIP_DISTANCE1);
+              for (const Fan& fan : fans)
+              {
+                float mcdc[16];
+                std::copy_n(fan.MCDC, 16, mcdc);
+                program->SetUniformMatrix4x4("shadowMCDC", mcdc);
+                fan.Geometry->DrawSilhouetteFans(program, fan.Light);
+                this->NumberOfMaskTriangles += fan.Geometry->GetNumberOfSilhouetteTriangles();
+              }
+              glUniform4uiv(pairBitLocation, 1, bits);
+              state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
+              state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+              // A quad over the viewport in clip space sets the bit.
+              if (!impl.Quad)
+              {
+                const std::vector<float> corners = { -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, -1, 0, 1, 1,
+                  0, -1, 1, 0 };
+                impl.Quad = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+                impl.Quad->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+                impl.Quad->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
+                impl.QuadVAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+                impl.QuadProgram = nullptr;
+              }
+              if (impl.QuadProgram != program)
+              {
+                impl.QuadVAO->ShaderProgramChanged();
+                impl.QuadVAO->Bind();
+                impl.QuadVAO->AddAttributeArray(
+                  program, impl.Quad, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+                impl.QuadProgram = program;
+              }
+              float identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+              const float keep[4] = { 0, 0, 0, 1 };
+              program->SetUniformMatrix4x4("shadowMCDC", identity);
+              program->SetUniform4f("receiverSideMC", keep);
+              program->SetUniform4f("belowLightMC", keep);
+              impl.QuadVAO->Bind();
+              glDrawArrays(GL_TRIANGLES, 0, 6);
+              impl.QuadVAO->Release();
+              state->vtkglDisable(GL_STENCIL_TEST);
+              state->vtkglDisable(GL_SCISSOR_TEST);
+            }
+          }
         }
       }
       glDisable(GL_CLIP_DISTANCE0);
@@ -608,6 +750,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
       glDisable(GL_COLOR_LOGIC_OP);
     }
   }
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);
   impl.FBO->RemoveColorAttachment(0);
   state->PopFramebufferBindings();
 
@@ -710,6 +853,20 @@ void vtkPlanarShadowPass::ReleaseGraphicsResources(vtkWindow* w)
     impl.FBO->ReleaseGraphicsResources(w);
   }
   impl.MaskSize[0] = impl.MaskSize[1] = 0;
+  if (impl.Stencil)
+  {
+    glDeleteRenderbuffers(1, &impl.Stencil);
+    impl.Stencil = 0;
+    impl.StencilSize[0] = impl.StencilSize[1] = 0;
+  }
+  if (impl.QuadVAO)
+  {
+    impl.QuadVAO->ReleaseGraphicsResources();
+    impl.Quad->ReleaseGraphicsResources();
+  }
+  impl.Quad = nullptr;
+  impl.QuadVAO = nullptr;
+  impl.QuadProgram = nullptr;
   for (auto& entry : impl.Casters)
   {
     entry.second->Geometry.ReleaseGraphicsResources(w);

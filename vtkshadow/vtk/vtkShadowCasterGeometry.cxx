@@ -294,6 +294,11 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
   }
   this->TriangleCount = static_cast<vtkIdType>(indices.size() / 3);
   this->VertexCount = static_cast<vtkIdType>(vertices.size() / 3);
+  // Kept for silhouettes (analysed lazily, only when a planar pass asks).
+  this->Positions = vertices;
+  this->Welded = indices;
+  this->Closed = -1;
+  this->FanValid = false;
   this->PendingVertices.swap(vertices);
   this->PendingIndices.swap(indices);
   this->NeedsUpload = true;
@@ -347,8 +352,193 @@ void vtkShadowCasterGeometry::Draw(vtkShaderProgram* program)
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowCasterGeometry::Analyse()
+{
+  // Weld vertices that share an exact position (seams duplicate points).
+  const size_t n = this->Positions.size() / 3;
+  std::vector<unsigned int> order(n), canonical(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    order[i] = static_cast<unsigned int>(i);
+  }
+  const float* p = this->Positions.data();
+  std::sort(order.begin(), order.end(), [p](unsigned int a, unsigned int b) {
+    return std::lexicographical_compare(p + 3 * a, p + 3 * a + 3, p + 3 * b, p + 3 * b + 3);
+  });
+  for (size_t k = 0; k < n; ++k)
+  {
+    const unsigned int i = order[k];
+    canonical[i] = (k > 0 && std::equal(p + 3 * i, p + 3 * i + 3, p + 3 * order[k - 1]))
+      ? canonical[order[k - 1]]
+      : i;
+  }
+  for (unsigned int& v : this->Welded)
+  {
+    v = canonical[v];
+  }
+  // Every directed edge must appear once, and its reverse once: a closed,
+  // consistently oriented 2-manifold (degenerate triangles excluded).
+  struct DirectedEdge
+  {
+    unsigned int From, To, Triangle;
+  };
+  std::vector<DirectedEdge> edges;
+  edges.reserve(this->Welded.size());
+  const size_t triangles = this->Welded.size() / 3;
+  for (size_t t = 0; t < triangles; ++t)
+  {
+    const unsigned int* v = &this->Welded[3 * t];
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
+    {
+      this->Closed = 0; // a degenerate triangle: do not trust the topology
+      return;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.push_back({ v[k], v[(k + 1) % 3], static_cast<unsigned int>(t) });
+    }
+  }
+  auto key = [](const DirectedEdge& e) {
+    return std::make_pair(std::min(e.From, e.To), std::max(e.From, e.To));
+  };
+  std::sort(edges.begin(), edges.end(),
+    [&](const DirectedEdge& a, const DirectedEdge& b) { return key(a) < key(b); });
+  this->EdgeA.clear();
+  this->EdgeB.clear();
+  this->EdgeLeft.clear();
+  this->EdgeRight.clear();
+  for (size_t k = 0; k < edges.size(); k += 2)
+  {
+    if (k + 1 >= edges.size() || key(edges[k]) != key(edges[k + 1]) ||
+      (k + 2 < edges.size() && key(edges[k + 2]) == key(edges[k])) ||
+      edges[k].From != edges[k + 1].To)
+    {
+      this->Closed = 0;
+      return;
+    }
+    this->EdgeA.push_back(edges[k].From);
+    this->EdgeB.push_back(edges[k].To);
+    this->EdgeLeft.push_back(edges[k].Triangle);
+    this->EdgeRight.push_back(edges[k + 1].Triangle);
+  }
+  this->Closed = edges.empty() ? 0 : 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowCasterGeometry::IsClosed()
+{
+  if (this->Closed < 0)
+  {
+    this->Analyse();
+  }
+  return this->Closed == 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowCasterGeometry::DrawSilhouetteFans(
+  vtkShaderProgram* program, const double lightInData[4])
+{
+  if (!this->IsClosed())
+  {
+    return false;
+  }
+  // The light relative to the stored positions (which are data - Shift).
+  const double light[4] = { lightInData[0] - lightInData[3] * this->Shift[0],
+    lightInData[1] - lightInData[3] * this->Shift[1],
+    lightInData[2] - lightInData[3] * this->Shift[2], lightInData[3] };
+  if (!this->FanValid || !std::equal(light, light + 4, this->FanLight))
+  {
+    std::copy_n(light, 4, this->FanLight);
+    const float* p = this->Positions.data();
+    const size_t triangles = this->Welded.size() / 3;
+    std::vector<char> facing(triangles);
+    for (size_t t = 0; t < triangles; ++t)
+    {
+      const unsigned int* v = &this->Welded[3 * t];
+      double a[3], e1[3], e2[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        a[k] = p[3 * v[0] + k];
+        e1[k] = p[3 * v[1] + k] - a[k];
+        e2[k] = p[3 * v[2] + k] - a[k];
+      }
+      const double nrm[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+        e1[0] * e2[1] - e1[1] * e2[0] };
+      const double to[3] = { light[0] - light[3] * a[0], light[1] - light[3] * a[1],
+        light[2] - light[3] * a[2] };
+      facing[t] = (nrm[0] * to[0] + nrm[1] * to[1] + nrm[2] * to[2]) > 0.0;
+    }
+    // Silhouette edges, oriented as in their light-facing triangle, fanned
+    // from one silhouette vertex: the fan's winding number is the coverage.
+    this->FanData.clear();
+    bool haveCentre = false;
+    float centre[3] = { 0, 0, 0 };
+    for (size_t e = 0; e < this->EdgeA.size(); ++e)
+    {
+      const bool left = facing[this->EdgeLeft[e]] != 0;
+      if (left == (facing[this->EdgeRight[e]] != 0))
+      {
+        continue;
+      }
+      // EdgeA -> EdgeB runs along the left triangle's orientation.
+      const unsigned int from = left ? this->EdgeA[e] : this->EdgeB[e];
+      const unsigned int to = left ? this->EdgeB[e] : this->EdgeA[e];
+      if (!haveCentre)
+      {
+        std::copy_n(p + 3 * from, 3, centre);
+        haveCentre = true;
+      }
+      this->FanData.insert(this->FanData.end(), centre, centre + 3);
+      this->FanData.insert(this->FanData.end(), p + 3 * from, p + 3 * from + 3);
+      this->FanData.insert(this->FanData.end(), p + 3 * to, p + 3 * to + 3);
+    }
+    this->FanTriangles = static_cast<vtkIdType>(this->FanData.size() / 9);
+    this->FanValid = true;
+    this->FanNeedsUpload = true;
+  }
+  if (this->FanTriangles == 0)
+  {
+    return true; // nothing faces the light: no shadow
+  }
+  if (!this->FanVertices)
+  {
+    this->FanVertices = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    this->FanVertices->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+    this->FanVAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+    this->FanNeedsUpload = true;
+  }
+  if (this->FanNeedsUpload)
+  {
+    this->FanVertices->Upload(this->FanData, vtkOpenGLBufferObject::ArrayBuffer);
+    this->FanNeedsUpload = false;
+    this->FanProgram = nullptr;
+  }
+  if (this->FanProgram != program)
+  {
+    this->FanVAO->ShaderProgramChanged();
+    this->FanVAO->Bind();
+    this->FanVAO->AddAttributeArray(
+      program, this->FanVertices, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    this->FanProgram = program;
+  }
+  this->FanVAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->FanTriangles));
+  this->FanVAO->Release();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowCasterGeometry::ReleaseGraphicsResources(vtkWindow*)
 {
+  if (this->FanVAO)
+  {
+    this->FanVAO->ReleaseGraphicsResources();
+    this->FanVertices->ReleaseGraphicsResources();
+  }
+  this->FanVAO = nullptr;
+  this->FanVertices = nullptr;
+  this->FanProgram = nullptr;
+  this->FanValid = false;
   if (this->VAO)
   {
     this->VAO->ReleaseGraphicsResources();

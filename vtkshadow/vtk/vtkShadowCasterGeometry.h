@@ -48,6 +48,24 @@ public:
   // The time of the last geometry rebuild.
   vtkMTimeType GetBuildTime() const { return this->BuildTime; }
 
+  /**
+   * Silhouette fans for closed casters (planar shadows). When the caster is
+   * a closed, consistently oriented triangle mesh (vertices welded by exact
+   * position), the shadow it casts from a light is the region where the
+   * winding number of its projected silhouette loops is non-zero: every
+   * point of the shadow is covered by the light-facing triangles as many
+   * times as the silhouette winds around it. DrawSilhouetteFans() draws one
+   * triangle (fan centre, a, b) per silhouette edge a->b; counting them in
+   * the stencil buffer (front +1, back -1) gives that winding number with a
+   * few thousand triangles instead of the whole mesh.
+   * `lightInData` is the light in the data's own (unshifted) coordinates,
+   * homogeneous: (x, y, z, 1) positional or (towards the light, 0).
+   * Returns false (nothing drawn) for casters that are not closed.
+   */
+  bool IsClosed();
+  bool DrawSilhouetteFans(vtkShaderProgram* program, const double lightInData[4]);
+  vtkIdType GetNumberOfSilhouetteTriangles() const { return this->FanTriangles; }
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
@@ -68,6 +86,21 @@ private:
   bool NeedsUpload = false;
   std::vector<float> PendingVertices;
   std::vector<unsigned int> PendingIndices;
+  // CPU copies for silhouettes: positions (relative to Shift) and welded
+  // triangles; each edge's two triangles; -1 = not analysed yet.
+  std::vector<float> Positions;
+  std::vector<unsigned int> Welded;
+  std::vector<unsigned int> EdgeA, EdgeB, EdgeLeft, EdgeRight; // left: a->b in it
+  int Closed = -1;
+  double FanLight[4] = { 0, 0, 0, 0 };
+  bool FanValid = false;
+  vtkIdType FanTriangles = 0;
+  vtkSmartPointer<vtkOpenGLBufferObject> FanVertices;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> FanVAO;
+  vtkShaderProgram* FanProgram = nullptr;
+  bool FanNeedsUpload = false;
+  std::vector<float> FanData;
+  void Analyse();
 };
 
 #endif
