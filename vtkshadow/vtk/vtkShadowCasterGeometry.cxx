@@ -421,6 +421,38 @@ void vtkShadowCasterGeometry::Analyse()
     this->EdgeLeft.push_back(edges[k].Triangle);
     this->EdgeRight.push_back(edges[k + 1].Triangle);
   }
+  // Connected components (union-find over the welded triangles).
+  std::vector<unsigned int> parent(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    parent[i] = static_cast<unsigned int>(i);
+  }
+  std::function<unsigned int(unsigned int)> find = [&](unsigned int x) {
+    while (parent[x] != x)
+    {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
+  for (size_t t = 0; t < triangles; ++t)
+  {
+    const unsigned int* v = &this->Welded[3 * t];
+    parent[find(v[1])] = find(v[0]);
+    parent[find(v[2])] = find(v[0]);
+  }
+  this->Component.assign(n, 0);
+  std::vector<unsigned int> label(n, ~0u);
+  this->ComponentCount = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const unsigned int root = find(static_cast<unsigned int>(i));
+    if (label[root] == ~0u)
+    {
+      label[root] = this->ComponentCount++;
+    }
+    this->Component[i] = label[root];
+  }
   this->Closed = edges.empty() ? 0 : 1;
 }
 
@@ -471,8 +503,9 @@ bool vtkShadowCasterGeometry::DrawSilhouetteFans(
     // Silhouette edges, oriented as in their light-facing triangle, fanned
     // from one silhouette vertex: the fan's winding number is the coverage.
     this->FanData.clear();
-    bool haveCentre = false;
-    float centre[3] = { 0, 0, 0 };
+    // One centre per connected component: any point works for a closed
+    // loop, and a local one keeps the fan triangles small.
+    std::vector<unsigned int> centreOf(this->ComponentCount, ~0u);
     for (size_t e = 0; e < this->EdgeA.size(); ++e)
     {
       const bool left = facing[this->EdgeLeft[e]] != 0;
@@ -483,12 +516,12 @@ bool vtkShadowCasterGeometry::DrawSilhouetteFans(
       // EdgeA -> EdgeB runs along the left triangle's orientation.
       const unsigned int from = left ? this->EdgeA[e] : this->EdgeB[e];
       const unsigned int to = left ? this->EdgeB[e] : this->EdgeA[e];
-      if (!haveCentre)
+      unsigned int& centre = centreOf[this->Component[from]];
+      if (centre == ~0u)
       {
-        std::copy_n(p + 3 * from, 3, centre);
-        haveCentre = true;
+        centre = from;
       }
-      this->FanData.insert(this->FanData.end(), centre, centre + 3);
+      this->FanData.insert(this->FanData.end(), p + 3 * centre, p + 3 * centre + 3);
       this->FanData.insert(this->FanData.end(), p + 3 * from, p + 3 * from + 3);
       this->FanData.insert(this->FanData.end(), p + 3 * to, p + 3 * to + 3);
     }

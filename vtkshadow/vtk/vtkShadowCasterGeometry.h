@@ -91,6 +91,10 @@ private:
   std::vector<float> Positions;
   std::vector<unsigned int> Welded;
   std::vector<unsigned int> EdgeA, EdgeB, EdgeLeft, EdgeRight; // left: a->b in it
+  // Connected component of each vertex: fans are centred per component, so
+  // fan triangles stay as small as the part (10,000 glyphs, not one field).
+  std::vector<unsigned int> Component;
+  unsigned int ComponentCount = 0;
   int Closed = -1;
   double FanLight[4] = { 0, 0, 0, 0 };
   bool FanValid = false;
