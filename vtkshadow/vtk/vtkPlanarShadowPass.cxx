@@ -618,10 +618,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
                   plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3] <= 0.0;
               }
             }
-            // (Directional lights only for now: with positional lights the
-            // fan path missed shadows in two exact tests; they draw every
-            // triangle until that is understood.)
-            if (!clipNeeded && light[3] == 0.0 && caster->Geometry.IsClosed())
+            if (!clipNeeded && caster->Geometry.IsClosed())
             {
               // Closed and unclipped: its silhouette fans, counted in the
               // stencil below, cover exactly what its triangles would.
@@ -661,6 +658,9 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
             {
               glDisable(GL_CLIP_DISTANCE0);
               glDisable(GL_CLIP_DISTANCE1);
+              keep0F[0] = keep0F[1] = keep0F[2] = 0.0f;
+              keep0F[3] = 1.0f;
+              std::copy_n(keep0F, 4, keep1F);
             }
             program->SetUniformMatrix4x4("shadowMCDC", mcdcF);
             program->SetUniform4f("receiverSideMC", keep0F);
@@ -701,6 +701,11 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
               state->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
               glDisable(GL_CLIP_DISTANCE0);
               glDisable(GL_CLIP_DISTANCE1);
+              // Keep-all planes too: llvmpipe was seen to apply the clip
+              // distances a shader writes even with them disabled.
+              const float keepAll[4] = { 0, 0, 0, 1 };
+              program->SetUniform4f("receiverSideMC", keepAll);
+              program->SetUniform4f("belowLightMC", keepAll);
               for (const Fan& fan : fans)
               {
                 float mcdc[16];
