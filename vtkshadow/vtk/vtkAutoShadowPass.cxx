@@ -1,6 +1,9 @@
 #include "vtkAutoShadowPass.h"
 
 #include "vtkActor.h"
+#include "vtkDataObject.h"
+#include "vtkMapper.h"
+#include "vtkMatrix4x4.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
@@ -16,6 +19,7 @@
 
 #include "vsh_auto.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -91,7 +95,20 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
       { b[0], b[1], b[2], b[3], b[4], b[5] }, false, { 0, 0, 0, 0 } };
     if (sphere.Receiver)
     {
-      sphere.Flat = vtkshadow::ReceiverPlane(actor, sphere.Plane);
+      // Planes are recomputed only when the actor, its mapper or data change.
+      CachedPlane& cached = this->Planes[actor];
+      vtkMTimeType t = std::max(actor->GetMatrix()->GetMTime(), actor->GetMapper()->GetMTime());
+      if (vtkDataObject* data = actor->GetMapper()->GetInputDataObject(0, 0))
+      {
+        t = std::max(t, data->GetMTime());
+      }
+      if (t > cached.Time || cached.Time == 0)
+      {
+        cached.Time = t;
+        cached.Flat = vtkshadow::ReceiverPlane(actor, cached.Plane);
+      }
+      sphere.Flat = cached.Flat;
+      std::copy_n(cached.Plane, 4, sphere.Plane);
     }
     anyReceiver = anyReceiver || sphere.Receiver;
     anyCaster = anyCaster || sphere.Casts;

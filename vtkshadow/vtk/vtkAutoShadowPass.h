@@ -21,10 +21,13 @@
 #include "vtkRenderPass.h"
 #include "vtkshadowModule.h" // for export macro
 
+#include <map>    // for std::map
 #include <string> // for std::string
+#include <utility> // for std::pair
 
 class vtkCascadedShadowMapPass;
 class vtkPlanarShadowPass;
+class vtkProp;
 class vtkRenderStepsPass;
 
 class VTKSHADOW_EXPORT vtkAutoShadowPass : public vtkRenderPass
@@ -59,6 +62,14 @@ protected:
   vtkRenderStepsPass* PlainPass;
   std::string Choice;
   std::string Reason;
+  // Receiver planes by actor, with the time they were computed at.
+  struct CachedPlane
+  {
+    vtkMTimeType Time = 0;
+    bool Flat = false;
+    double Plane[4] = { 0, 0, 0, 0 };
+  };
+  std::map<vtkProp*, CachedPlane> Planes;
 
 private:
   vtkAutoShadowPass(const vtkAutoShadowPass&) = delete;
