@@ -289,12 +289,13 @@ def plot(key, rows, front, out):
         "set terminal pngcairo size 720,480 noenhanced" if _has_cairo(gp) else
         "set terminal png size 720,480 noenhanced",
         "set output '%s'" % png,
-        "set title '%s: error against frame time (light 0; time = same-run ratio x median unshadowed)'" % key,
+        "set title '%s: wrong_pct (light 0) against ms/frame'" % key,
+        "set label 1 'time = same-run shadowed/unshadowed ratio x median unshadowed' at graph 0.02,0.04 font ',8'",
         "set logscale xy",
         "set xlabel 'ms per frame (log)'",
         "set ylabel 'wrong_pct (log, floor %g)'" % WRONG_FLOOR,
         "set grid",
-        "set key outside right",
+        "set key top right",
         "plot " + ", ".join(plots),
     ]) + "\n"
     p = subprocess.run([gp], input=script, text=True, stdout=subprocess.PIPE,
