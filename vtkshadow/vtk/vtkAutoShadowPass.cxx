@@ -14,6 +14,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
+#include "vtkShadowCasterGeometry.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkRenderer.h"
 
@@ -150,6 +151,36 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     this->Choice = "csm";
     this->Reason = "no plane receivers: shadows may fall on any surface";
     return;
+  }
+  // Self-shadowing: planar puts nothing on casters themselves, which is only
+  // right for convex ones (their own shadow is the lighting's terminator).
+  for (const Sphere& o : objects)
+  {
+    if (o.Receiver || !o.Casts)
+    {
+      continue;
+    }
+    vtkMTimeType t = std::max(o.Actor->GetMapper()->GetMTime(), o.Actor->GetMTime());
+    if (vtkDataObject* data = o.Actor->GetMapper()->GetInputDataObject(0, 0))
+    {
+      t = std::max(t, data->GetMTime());
+    }
+    auto& cached = this->Convex[o.Actor];
+    if (cached.first != t || t == 0)
+    {
+      vtkShadowCasterGeometry geometry;
+      cached.first = t;
+      cached.second = geometry.Update(o.Actor) && geometry.IsConvex();
+    }
+    if (!cached.second)
+    {
+      std::ostringstream why;
+      why << "an object that is not convex (bounds centre " << o.Center[0] << ", " << o.Center[1]
+          << ", " << o.Center[2] << ") may shadow itself";
+      this->Choice = "csm";
+      this->Reason = why.str();
+      return;
+    }
   }
   for (size_t l = 0; l < lights.size(); ++l)
   {

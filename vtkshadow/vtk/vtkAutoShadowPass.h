@@ -70,6 +70,8 @@ protected:
     double Plane[4] = { 0, 0, 0, 0 };
   };
   std::map<vtkProp*, CachedPlane> Planes;
+  // Convexity of non-receivers (a non-convex object may shadow itself).
+  std::map<vtkProp*, std::pair<vtkMTimeType, bool>> Convex;
 
 private:
   vtkAutoShadowPass(const vtkAutoShadowPass&) = delete;

@@ -298,6 +298,7 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
   this->Positions = vertices;
   this->Welded = indices;
   this->Closed = -1;
+  this->Convex = -1;
   this->FanValid = false;
   this->PendingVertices.swap(vertices);
   this->PendingIndices.swap(indices);
@@ -464,6 +465,59 @@ bool vtkShadowCasterGeometry::IsClosed()
     this->Analyse();
   }
   return this->Closed == 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowCasterGeometry::IsConvex()
+{
+  if (this->Convex >= 0)
+  {
+    return this->Convex == 1;
+  }
+  this->Convex = 0;
+  if (!this->IsClosed() || this->ComponentCount != 1)
+  {
+    return false;
+  }
+  const float* p = this->Positions.data();
+  double size = 0.0;
+  for (size_t i = 0; i + 2 < this->Positions.size(); i += 3)
+  {
+    size = std::max({ size, std::abs(static_cast<double>(p[i])),
+      std::abs(static_cast<double>(p[i + 1])), std::abs(static_cast<double>(p[i + 2])) });
+  }
+  // Float positions: allow their rounding (relative 1e-5 of the size).
+  const double tolerance = 1e-5 * size;
+  for (size_t e = 0; e < this->EdgeA.size(); ++e)
+  {
+    const unsigned int* t = &this->Welded[3 * this->EdgeLeft[e]];
+    const unsigned int* u = &this->Welded[3 * this->EdgeRight[e]];
+    unsigned int far = u[0];
+    for (int k = 0; k < 3; ++k)
+    {
+      if (u[k] != this->EdgeA[e] && u[k] != this->EdgeB[e])
+      {
+        far = u[k];
+      }
+    }
+    double a[3], e1[3], e2[3], d[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      a[k] = p[3 * t[0] + k];
+      e1[k] = p[3 * t[1] + k] - a[k];
+      e2[k] = p[3 * t[2] + k] - a[k];
+      d[k] = p[3 * far + k] - a[k];
+    }
+    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+      e1[0] * e2[1] - e1[1] * e2[0] };
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (length > 0.0 && (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / length > tolerance)
+    {
+      return false; // a reflex edge: the surface folds back on itself
+    }
+  }
+  this->Convex = 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -63,6 +63,12 @@ public:
    * Returns false (nothing drawn) for casters that are not closed.
    */
   bool IsClosed();
+  /**
+   * Closed, one connected component, and convex along every edge (the
+   * neighbouring triangle's far vertex never in front of a triangle's plane):
+   * such a surface is convex, so it cannot shadow itself.
+   */
+  bool IsConvex();
   bool DrawSilhouetteFans(vtkShaderProgram* program, const double lightInData[4]);
   vtkIdType GetNumberOfSilhouetteTriangles() const { return this->FanTriangles; }
 
@@ -96,6 +102,7 @@ private:
   std::vector<unsigned int> Component;
   unsigned int ComponentCount = 0;
   int Closed = -1;
+  int Convex = -1;
   double FanLight[4] = { 0, 0, 0, 0 };
   bool FanValid = false;
   vtkIdType FanTriangles = 0;
