@@ -14,6 +14,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
+#include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkRenderer.h"
@@ -29,11 +30,6 @@ vtkStandardNewMacro(vtkAutoShadowPass);
 
 namespace
 {
-bool Flag(vtkProp* prop, vtkInformationIntegerKey* key)
-{
-  vtkInformation* info = prop->GetPropertyKeys();
-  return info && info->Has(key) && info->Get(key) != 0;
-}
 
 struct Sphere
 {
@@ -92,7 +88,7 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     Sphere sphere{ actor, { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) },
       0.5 * std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
               (b[5] - b[4]) * (b[5] - b[4])),
-      Flag(actor, vtkPlanarShadowPass::RECEIVER()), !Flag(actor, vtkPlanarShadowPass::NO_CAST()),
+      vtkshadow::HasFlag(actor, vtkPlanarShadowPass::RECEIVER()), !vtkshadow::HasFlag(actor, vtkPlanarShadowPass::NO_CAST()),
       { b[0], b[1], b[2], b[3], b[4], b[5] }, false, { 0, 0, 0, 0 } };
     if (sphere.Receiver)
     {

@@ -19,6 +19,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkTextureObject.h"
@@ -56,12 +57,6 @@ enum LightKind
   Point = 3
 };
 
-bool NoCast(vtkProp* prop)
-{
-  vtkInformation* info = prop->GetPropertyKeys();
-  return info && info->Has(vtkPlanarShadowPass::NO_CAST()) &&
-    info->Get(vtkPlanarShadowPass::NO_CAST()) != 0;
-}
 
 void ToFloatTransposed(const double m[16], float out[16])
 {
@@ -288,7 +283,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     vsh_bounds ab;
     vsh_bounds_from_vtk(&ab, b);
     vsh_bounds_merge(&receiverBounds, &ab);
-    if (!NoCast(actor))
+    if (!vtkshadow::HasFlag(actor, vtkPlanarShadowPass::NO_CAST()))
     {
       casters.push_back(actor);
       vsh_bounds_merge(&casterBounds, &ab);

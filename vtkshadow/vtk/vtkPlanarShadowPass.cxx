@@ -17,6 +17,7 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
@@ -52,11 +53,6 @@ namespace
 constexpr int MaxPairs = 128;
 constexpr int MaxExplicitPlanes = 8;
 
-bool HasKey(vtkProp* prop, vtkInformationIntegerKey* key)
-{
-  vtkInformation* info = prop->GetPropertyKeys();
-  return info && info->Has(key) && info->Get(key) != 0;
-}
 
 // Row vector (plane) times matrix: a plane acting on the matrix's input space.
 void PlaneTimesMatrix(const double plane[4], const double m[16], double out[4])
@@ -339,7 +335,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
       continue;
     }
     const bool opaque = !actor->HasTranslucentPolygonalGeometry();
-    bool receiver = HasKey(actor, RECEIVER());
+    bool receiver = vtkshadow::HasFlag(actor, RECEIVER());
     for (const auto& r : impl.ReceiverActors)
     {
       receiver = receiver || r == actor;
@@ -376,7 +372,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
         receivers.push_back(info);
       }
     }
-    if (opaque && !HasKey(actor, NO_CAST()))
+    if (opaque && !vtkshadow::HasFlag(actor, NO_CAST()))
     {
       casters.push_back(actor);
     }

@@ -8,6 +8,7 @@
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkShadowActorFlags.h"
 #include "vtkShadowPNG.h"
 #include "vtkShadowScene.h"
 #include "vtkShadowTechnique.h"
@@ -30,6 +31,13 @@ struct vtkshadow_technique
 
 namespace
 {
+// The vtkActor behind a void* from C, or nullptr for anything else.
+vtkActor* AsActor(void* pointer)
+{
+  auto* object = static_cast<vtkObjectBase*>(pointer);
+  return object && object->IsA("vtkActor") ? static_cast<vtkActor*>(object) : nullptr;
+}
+
 void SetError(char* error, size_t size, const std::string& message)
 {
   if (error && size > 0)
@@ -139,37 +147,23 @@ extern "C"
 
   int vtkshadow_actor_set_receiver(void* vtk_actor, int receiver)
   {
-    auto* actor = static_cast<vtkObjectBase*>(vtk_actor);
-    if (!actor || !actor->IsA("vtkActor"))
+    vtkActor* actor = AsActor(vtk_actor);
+    if (!actor)
     {
       return 1;
     }
-    auto* a = static_cast<vtkActor*>(actor);
-    if (!a->GetPropertyKeys())
-    {
-      vtkNew<vtkInformation> keys;
-      a->SetPropertyKeys(keys);
-    }
-    a->GetPropertyKeys()->Set(vtkPlanarShadowPass::RECEIVER(), receiver ? 1 : 0);
-    a->Modified();
+    vtkshadow::SetFlag(actor, vtkPlanarShadowPass::RECEIVER(), receiver ? 1 : 0);
     return 0;
   }
 
   int vtkshadow_actor_set_casts(void* vtk_actor, int casts)
   {
-    auto* actor = static_cast<vtkObjectBase*>(vtk_actor);
-    if (!actor || !actor->IsA("vtkActor"))
+    vtkActor* actor = AsActor(vtk_actor);
+    if (!actor)
     {
       return 1;
     }
-    auto* a = static_cast<vtkActor*>(actor);
-    if (!a->GetPropertyKeys())
-    {
-      vtkNew<vtkInformation> keys;
-      a->SetPropertyKeys(keys);
-    }
-    a->GetPropertyKeys()->Set(vtkPlanarShadowPass::NO_CAST(), casts ? 0 : 1);
-    a->Modified();
+    vtkshadow::SetFlag(actor, vtkPlanarShadowPass::NO_CAST(), casts ? 0 : 1);
     return 0;
   }
 
