@@ -369,11 +369,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   // Lights that follow the camera (and the automatic headlight) are updated
   // by VTK's lights pass inside the delegate, after our shadow work: bring
   // them up to date now, or their shadows lag one frame behind.
-  if (renderer->GetLights()->GetNumberOfItems() == 0 && renderer->GetAutomaticLightCreation())
-  {
-    renderer->CreateLight();
-  }
-  renderer->UpdateLightsGeometryToFollowCamera();
+  vtkshadow::UpdateLights(renderer);
   impl.Tiles.clear();
   impl.LightCount = 0;
   {
@@ -645,14 +641,8 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
           {
             continue;
           }
-          const double* shift = geometry->GetShift();
-          double model[16], toShifted[16], modelShifted[16], toRelative[16], modelRelative[16];
-          vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
-          vsh_mat4_translation(shift, toShifted);
-          vsh_mat4_multiply(model, toShifted, modelShifted);
-          const double negEye[3] = { -cam.position[0], -cam.position[1], -cam.position[2] };
-          vsh_mat4_translation(negEye, toRelative);
-          vsh_mat4_multiply(toRelative, modelShifted, modelRelative);
+          double modelRelative[16];
+          geometry->GetModelRelativeMatrix(actor, cam.position, modelRelative);
           double mcdc[16];
           vsh_mat4_multiply(tile.View.world_to_clip, modelRelative, mcdc);
           float mcdcF[16];

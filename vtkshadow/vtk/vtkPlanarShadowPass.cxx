@@ -277,11 +277,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   // Lights that follow the camera (and the automatic headlight) are updated
   // by VTK's lights pass inside the delegate, after our shadow work: bring
   // them up to date now, or their shadows lag one frame behind.
-  if (renderer->GetLights()->GetNumberOfItems() == 0 && renderer->GetAutomaticLightCreation())
-  {
-    renderer->CreateLight();
-  }
-  renderer->UpdateLightsGeometryToFollowCamera();
+  vtkshadow::UpdateLights(renderer);
   std::vector<LightInfo> lights;
   {
     vtkLightCollection* collection = renderer->GetLights();
@@ -579,15 +575,9 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
               continue;
             }
             // Model (shifted) -> world -> relative to the eye, in double.
-            const double* shift = caster->Geometry.GetShift();
-            double model[16], toShifted[16], toRelative[16], modelRelative[16];
+            double model[16], modelRelative[16];
             vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
-            const double negEye[3] = { -eye[0], -eye[1], -eye[2] };
-            vsh_mat4_translation(shift, toShifted);
-            vsh_mat4_translation(negEye, toRelative);
-            double modelShifted[16];
-            vsh_mat4_multiply(model, toShifted, modelShifted);
-            vsh_mat4_multiply(toRelative, modelShifted, modelRelative);
+            caster->Geometry.GetModelRelativeMatrix(actor, eye, modelRelative);
             double mcdc[16], keep0[4], keep1[4];
             vsh_mat4_multiply(shadowDC, modelRelative, mcdc);
             PlaneTimesMatrix(clip[0], modelRelative, keep0);

@@ -26,6 +26,8 @@
 #include "vtkTransform.h"
 #include "vtk_glew.h"
 
+#include "vsh_mat4.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -612,6 +614,19 @@ bool vtkShadowCasterGeometry::DrawSilhouetteFans(
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->FanTriangles));
   this->FanVAO->Release();
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowCasterGeometry::GetModelRelativeMatrix(
+  vtkActor* actor, const double eye[3], double out[16]) const
+{
+  double model[16], toShifted[16], modelShifted[16], toRelative[16];
+  vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
+  vsh_mat4_translation(this->Shift, toShifted);
+  vsh_mat4_multiply(model, toShifted, modelShifted);
+  const double negEye[3] = { -eye[0], -eye[1], -eye[2] };
+  vsh_mat4_translation(negEye, toRelative);
+  vsh_mat4_multiply(toRelative, modelShifted, out);
 }
 
 //------------------------------------------------------------------------------

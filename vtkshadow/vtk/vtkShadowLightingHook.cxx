@@ -1,11 +1,22 @@
 #include "vtkShadowLightingHook.h"
 
+#include "vtkLightCollection.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 
 #include <algorithm>
 
 namespace vtkshadow
 {
+void UpdateLights(vtkRenderer* renderer)
+{
+  if (renderer->GetLights()->GetNumberOfItems() == 0 && renderer->GetAutomaticLightCreation())
+  {
+    renderer->CreateLight();
+  }
+  renderer->UpdateLightsGeometryToFollowCamera();
+}
+
 bool InjectLightFactors(std::string& fs, const std::string& factor, const std::string& prepare,
   int maxLights)
 {

@@ -5,6 +5,8 @@
 
 #include <string>
 
+class vtkRenderer;
+
 namespace vtkshadow
 {
 /**
@@ -18,6 +20,13 @@ namespace vtkshadow
  * Returns false (shader unchanged) when the shader has no light terms, e.g.
  * for actors with lighting off.
  */
+/**
+ * Bring lights that follow the camera (and the automatic headlight) up to
+ * date before shadow work: VTK's lights pass does it only inside the
+ * delegate, after the shadows, which would make them lag a frame.
+ */
+void UpdateLights(vtkRenderer* renderer);
+
 bool InjectLightFactors(std::string& fragmentShader, const std::string& factor,
   const std::string& prepare, int maxLights = 16);
 }
