@@ -1,7 +1,13 @@
-# render_cycles.py - the ONE fixed Blender script of the vtkshadow harness.
+# render_cycles.py - the ONE fixed Blender script of the vtkshadow harness,
+# for Cycles (the check of the POV-Ray reference) and for EEVEE (a peer
+# rasterizer measured like the VTK techniques; docs/harness.md).
 #
 #   blender -b --factory-startup --python-exit-code 1 -t N \
-#       --python compare/blender/render_cycles.py -- DATAFILE OUTDIR
+#       --python compare/blender/render_cycles.py -- DATAFILE OUTDIR [PRESET]
+#
+# PRESET is one of the fixed words `cycles` (default), `eevee` (Blender's own
+# EEVEE shadow defaults) or `eevee-best` (EEVEE shadow settings chosen for
+# hard shadows); see PRESETS below. EEVEE needs an X display (xvfb-run -a).
 #
 # DATAFILE is a binary file of numbers written by vtkshadow-compare (format
 # below); nothing in it is ever evaluated, so a scene file cannot run code
@@ -9,11 +15,13 @@
 # only that light (shadows on, shadows off) and writes
 #   OUTDIR/light<K>_on.f32, OUTDIR/light<K>_off.f32
 # as raw little-endian float32, width*height values of the red channel,
-# BOTTOM row first (Blender's order); the harness flips the rows.
+# BOTTOM row first (Blender's order); the harness flips the rows. It also
+# writes OUTDIR/frame_seconds.txt: one line per render (light, on|off,
+# seconds of bpy.ops.render.render, i.e. one frame without Blender start-up).
 #
 # DATAFILE layout (little-endian):
 #   8 bytes   magic b"VSHCYC01"
-#   int32 x6  width, height, samples, threads(unused), light_count, object_count
+#   int32 x6  width, height, samples (Cycles only), threads(unused), light_count, object_count
 #   float64 x10 camera: eye[3], focal[3], up[3], vertical view angle (deg)
 #   float64 x2  clip_start, clip_end
 #   per light:  float64 x8  type (0 dir, 1 point, 2 spot), position[3],
@@ -26,6 +34,7 @@ import math
 import os
 import struct
 import sys
+import time
 from array import array
 
 import bpy
@@ -90,19 +99,26 @@ def frame_from_axis(z_axis):
     return Matrix(((x.x, y.x, z.x), (x.y, y.y, z.y), (x.z, y.z, z.z)))
 
 
-def main():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    if len(argv) != 2:
-        fail("usage: blender -b --factory-startup --python-exit-code 1 --python render_cycles.py -- DATAFILE OUTDIR")
-    datafile, outdir = argv
-    width, height, samples, camera, clip, lights, objects = read_data(datafile)
+# EEVEE shadow settings of the two presets (docs/harness.md, "EEVEE as a peer").
+# `eevee` sets nothing here: scene.eevee and every light keep the values
+# Blender gives a new scene / a newly created light (cascade 1024, cube 512,
+# soft shadows on, 16-bit maps, light radius 0.25, sun angle 0.526 deg,
+# bias 1.0, 4 cascades up to 200 units, exponent 0.8, 64 TAA samples).
+# `eevee-best` is for the hard point / directional / spot shadows of the
+# references: largest maps, 32-bit depth, no soft shadows (radius 0, angle 0),
+# cascades fitted to the visible depth, the lowest bias that stays clean.
+EEVEE_BEST = {
+    "shadow_cascade_size": "4096",
+    "shadow_cube_size": "4096",
+    "use_shadow_high_bitdepth": True,
+    "use_soft_shadows": False,
+}
+EEVEE_BEST_BIAS = 0.2
+EEVEE_BEST_CASCADE_EXPONENT = 0.5
+PRESETS = ("cycles", "eevee", "eevee-best")
 
-    # Empty scene: delete the factory cube, light and camera.
-    for obj in list(bpy.data.objects):
-        bpy.data.objects.remove(obj, do_unlink=True)
-    scene = bpy.context.scene
-    scene.world = None
 
+def setup_cycles(scene, samples):
     scene.render.engine = "CYCLES"
     cyc = scene.cycles
     cyc.device = "CPU"
@@ -121,6 +137,131 @@ def main():
     cyc.seed = 0
     cyc.pixel_filter_type = "BOX"
     cyc.filter_width = 0.01 if samples == 1 else 1.0
+
+
+def setup_eevee(scene, best):
+    scene.render.engine = "BLENDER_EEVEE"
+    # Pixel-centre sampling like the ray tracers (a film setting, not a
+    # shadow one): the TAA samples are not spread over the pixel.
+    scene.render.filter_size = 0.0
+    ee = scene.eevee
+    # No screen-space effects that would change I_on / I_off (all off by default).
+    for prop in ("use_gtao", "use_ssr", "use_bloom", "use_motion_blur", "use_volumetric_lights"):
+        if hasattr(ee, prop):
+            setattr(ee, prop, False)
+    if best:
+        for prop, value in EEVEE_BEST.items():
+            setattr(ee, prop, value)
+
+
+def visible_depth(camera, clip, objects):
+    """Nearest and farthest depth (along the view direction) of the
+    geometry in front of the camera, clamped to the exported clip range."""
+    eye = Vector(camera[0:3])
+    f = (Vector(camera[3:6]) - eye).normalized()
+    near, far = clip[1], clip[0]
+    for (npts, _ntri, _casts, pts, _nrm, _tri) in objects:
+        for i in range(npts):
+            d = (pts[3 * i] - eye.x) * f.x + (pts[3 * i + 1] - eye.y) * f.y + (pts[3 * i + 2] - eye.z) * f.z
+            if d > clip[0]:
+                near = min(near, d)
+                far = max(far, d)
+    if far <= near:
+        return clip[0], clip[1]
+    return max(clip[0], near), min(clip[1], far)
+
+
+def farthest_point(position, objects):
+    p = Vector(position)
+    best = 0.0
+    for (npts, _ntri, _casts, pts, _nrm, _tri) in objects:
+        for i in range(npts):
+            best = max(best, (Vector(pts[3 * i:3 * i + 3]) - p).length)
+    return best
+
+
+def make_material(name, preset, casts):
+    # White Lambertian: a Diffuse BSDF (roughness 0 = Lambert), colour 1.
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nodes = mat.node_tree.nodes
+    nodes.clear()
+    bsdf = nodes.new("ShaderNodeBsdfDiffuse")
+    bsdf.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+    bsdf.inputs["Roughness"].default_value = 0.0
+    out = nodes.new("ShaderNodeOutputMaterial")
+    mat.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
+    if preset != "cycles" and not casts:
+        mat.shadow_method = "NONE"  # EEVEE: objects with "casts": false
+    return mat
+
+
+def make_light(ltype, cone, preset, position, objects, depth):
+    kind = ("SUN", "POINT", "SPOT")[ltype]
+    ldata = bpy.data.lights.new("light", kind)
+    if ltype == 2:
+        ldata.spot_size = math.radians(2.0 * cone)
+        ldata.spot_blend = 0.0
+        ldata.show_cone = False
+    ldata.energy = 1.0
+    ldata.color = (1.0, 1.0, 1.0)
+    if preset == "cycles":
+        if ltype == 0:
+            ldata.angle = 0.0
+        else:
+            ldata.shadow_soft_size = 0.0
+        ldata.cycles.max_bounces = 0
+        return ldata
+    if ltype != 0:
+        # The light reaches the whole scene (EEVEE otherwise cuts it off where
+        # energy/distance^2 < light_threshold); also the far plane of its
+        # shadow map, so it is fitted, not huge.
+        ldata.use_custom_distance = True
+        ldata.cutoff_distance = 1.01 * farthest_point(position, objects) + 1e-6
+    if preset == "eevee-best":
+        ldata.shadow_buffer_bias = EEVEE_BEST_BIAS
+        if ltype == 0:
+            ldata.angle = 0.0
+            ldata.shadow_cascade_count = 4
+            ldata.shadow_cascade_max_distance = 1.01 * depth[1]
+            ldata.shadow_cascade_exponent = EEVEE_BEST_CASCADE_EXPONENT
+        else:
+            ldata.shadow_soft_size = 0.0
+    return ldata
+
+
+def set_shadows(ldata, preset, on):
+    if preset == "cycles":
+        ldata.cycles.cast_shadow = on
+    else:
+        ldata.use_shadow = on
+
+
+def main():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    if len(argv) not in (2, 3) or (len(argv) == 3 and argv[2] not in PRESETS):
+        fail("usage: blender -b --factory-startup --python-exit-code 1 --python render_cycles.py "
+             "-- DATAFILE OUTDIR [%s]" % "|".join(PRESETS))
+    datafile, outdir = argv[0], argv[1]
+    preset = argv[2] if len(argv) == 3 else "cycles"
+    width, height, samples, camera, clip, lights, objects = read_data(datafile)
+
+    # Empty scene: delete the factory cube, light and camera.
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj, do_unlink=True)
+    scene = bpy.context.scene
+    scene.world = None
+
+    if preset == "cycles":
+        setup_cycles(scene, samples)
+        depth = clip
+    else:
+        setup_eevee(scene, preset == "eevee-best")
+        # A rasterizer needs a depth range fitted to the scene (as VTK's
+        # ResetCameraClippingRange); the ray tracers' 1e-5 near plane would
+        # waste the depth buffer and the cascades. Same for both presets.
+        near, far = visible_depth(camera, clip, objects)
+        depth = (0.5 * near, 1.01 * far)
     scene.render.resolution_x = width
     scene.render.resolution_y = height
     scene.render.resolution_percentage = 100
@@ -138,17 +279,7 @@ def main():
     scene.render.use_compositing = False
     scene.render.use_sequencer = False
 
-    # White Lambertian: a Diffuse BSDF (roughness 0 = Lambert), colour 1.
-    mat = bpy.data.materials.new("white")
-    mat.use_nodes = True
-    nodes = mat.node_tree.nodes
-    nodes.clear()
-    bsdf = nodes.new("ShaderNodeBsdfDiffuse")
-    bsdf.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
-    bsdf.inputs["Roughness"].default_value = 0.0
-    out = nodes.new("ShaderNodeOutputMaterial")
-    mat.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
-
+    materials = {}
     for index, (npts, ntri, casts, pts, nrm, tri) in enumerate(objects):
         mesh = bpy.data.meshes.new("m%d" % index)
         mesh.vertices.add(npts)
@@ -165,7 +296,9 @@ def main():
         mesh.use_auto_smooth = True
         mesh.normals_split_custom_set_from_vertices(
             [tuple(nrm[3 * i:3 * i + 3]) for i in range(npts)])
-        mesh.materials.append(mat)
+        if bool(casts) not in materials:
+            materials[bool(casts)] = make_material("white%d" % casts, preset, casts)
+        mesh.materials.append(materials[bool(casts)])
         obj = bpy.data.objects.new("o%d" % index, mesh)
         obj.visible_shadow = bool(casts)
         # No shadow-terminator tricks: shadow rays start on the true triangle.
@@ -188,8 +321,8 @@ def main():
     cam_data.angle_y = math.radians(camera[9])
     cam_data.shift_x = 0.0
     cam_data.shift_y = 0.0
-    cam_data.clip_start = clip[0]
-    cam_data.clip_end = clip[1]
+    cam_data.clip_start = depth[0]
+    cam_data.clip_end = depth[1]
     cam = bpy.data.objects.new("camera", cam_data)
     cam.matrix_world = Matrix(((r.x, u.x, -f.x, eye.x), (r.y, u.y, -f.y, eye.y),
                                (r.z, u.z, -f.z, eye.z), (0.0, 0.0, 0.0, 1.0)))
@@ -197,31 +330,21 @@ def main():
     scene.camera = cam
 
     exr = os.path.join(outdir, "render.exr")
+    frame_log = []
     for k, (ltype, px, py, pz, ax, ay, az, cone) in enumerate(lights):
-        if ltype == 0:
-            ldata = bpy.data.lights.new("light", "SUN")
-            ldata.angle = 0.0
-        elif ltype == 1:
-            ldata = bpy.data.lights.new("light", "POINT")
-            ldata.shadow_soft_size = 0.0
-        else:
-            ldata = bpy.data.lights.new("light", "SPOT")
-            ldata.shadow_soft_size = 0.0
-            ldata.spot_size = math.radians(2.0 * cone)
-            ldata.spot_blend = 0.0
-            ldata.show_cone = False
-        ldata.energy = 1.0
-        ldata.color = (1.0, 1.0, 1.0)
-        ldata.cycles.max_bounces = 0
+        ltype = int(ltype)
+        ldata = make_light(ltype, cone, preset, (px, py, pz), objects, depth)
         lobj = bpy.data.objects.new("light", ldata)
         rot = frame_from_axis((ax, ay, az)).to_4x4()
         rot.translation = Vector((px, py, pz))
         lobj.matrix_world = rot
         scene.collection.objects.link(lobj)
         for state in ("on", "off"):
-            ldata.cycles.cast_shadow = (state == "on")
+            set_shadows(ldata, preset, state == "on")
             scene.render.filepath = exr
+            start = time.monotonic()
             bpy.ops.render.render(write_still=True)
+            frame_log.append("%d %s %.4f\n" % (k, state, time.monotonic() - start))
             img = bpy.data.images.load(exr, check_existing=False)
             if tuple(img.size) != (width, height):
                 fail("rendered %dx%d, expected %dx%d" % (img.size[0], img.size[1], width, height))
@@ -235,9 +358,11 @@ def main():
                 red.tofile(f)
             os.replace(target + ".tmp", target)
             bpy.data.images.remove(img)
-            sys.stderr.write("cycles: light %d shadows %s done\n" % (k, state))
+            sys.stderr.write("%s: light %d shadows %s done\n" % (preset, k, state))
         bpy.data.objects.remove(lobj, do_unlink=True)
         bpy.data.lights.remove(ldata)
+    with open(os.path.join(outdir, "frame_seconds.txt"), "w") as f:
+        f.writelines(frame_log)
     try:
         os.remove(exr)
     except OSError:

@@ -1,5 +1,5 @@
-// vtkshadow-compare: render scenes with VTK techniques, POV-Ray and Blender
-// Cycles, extract per-light visibility from each, compute the metrics (C,
+// vtkshadow-compare: render scenes with VTK techniques, POV-Ray, Blender
+// Cycles and (on request) Blender EEVEE, extract per-light visibility from each, compute the metrics (C,
 // compare/metrics) and write results.csv, results.json and index.html.
 // See docs/harness.md.
 #include "harness_export.h"
@@ -47,7 +47,8 @@ const char* const kFormatVersion = "vtkshadow-compare reference format 1";
 const char* Usage()
 {
   return "usage: vtkshadow-compare SCENE|DIR... --out DIR [options]\n"
-         "  --renderers LIST      any of vtk,povray,cycles (default all three)\n"
+         "  --renderers LIST      any of vtk,povray,cycles,eevee,eevee-best\n"
+         "                        (default vtk,povray,cycles)\n"
          "  --techniques LIST     VTK techniques (default: all that vtkshadow knows)\n"
          "  --scale F             image size = scene size * F (default 1)\n"
          "  --check               compare with thresholds.json; exit 3 on a regression\n"
@@ -57,12 +58,13 @@ const char* Usage()
          "  --threads N           threads per ray-tracer render (default: cores / jobs)\n"
          "  --timeout S           per-render time limit in seconds (default 600)\n"
          "  --cache DIR           reference cache (default OUT/cache)\n"
-         "  --no-cache            always render POV-Ray and Cycles fresh (no cache read)\n"
+         "  --no-cache            always render POV-Ray, Cycles and EEVEE fresh (no cache read)\n"
          "  --cycles-samples N    Cycles samples per pixel (default 1, pixel centre)\n"
          "  --povray-binary P     (default povray)\n"
          "  --blender-binary P    (default blender)\n"
          "  --render-binary P     vtkshadow-render (default: next to this program)\n"
-         "  --cycles-script P     (default: compare/blender/render_cycles.py of the source)\n"
+         "  --cycles-script P     Blender script of Cycles and EEVEE\n"
+         "                        (default: compare/blender/render_cycles.py of the source)\n"
          "  --no-report           skip index.html and the plot\n"
          "  --keep-work           keep the exported scene.pov / scene.bin (debugging, tests)\n"
          "Exit status: 0 all good, 1 a render or metric failed (other scenes go on),\n"
@@ -102,6 +104,12 @@ std::vector<std::string> Split(const std::string& s)
       r.push_back(item);
   return r;
 }
+
+// Every renderer --renderers accepts. The Blender ones share one script,
+// told which preset to use (render_cycles.py PRESETS); each has its own
+// output folder, cache folder, rows and seconds under its name.
+const char* const kRenderers[] = { "vtk", "povray", "cycles", "eevee", "eevee-best" };
+const char* const kBlenderRenderers[] = { "cycles", "eevee", "eevee-best" };
 
 std::mutex g_log_mutex;
 void Progress(const std::string& msg)
@@ -185,6 +193,7 @@ struct SceneResult
   std::vector<std::string> errors;  // render failures
   std::vector<Row> rows;
   std::map<std::string, double> seconds; // renderer -> render time
+  std::map<std::string, double> frame_seconds; // Blender renderer -> mean seconds per frame
   std::map<std::string, bool> cached;
 };
 
@@ -249,13 +258,13 @@ public:
       if (povray_version.empty())
         pov_version_error = "POV-Ray not usable: '" + opt.povray + " --version' failed (is povray installed? apt-get install povray)";
     }
-    if (Has("cycles"))
+    if (Has("cycles") || Has("eevee") || Has("eevee-best"))
     {
       blender_version = CommandVersion({ opt.blender, "--version" }, "Blender", 120);
       if (blender_version.empty())
         blender_version_error = "Blender not usable: '" + opt.blender + " --version' failed (is blender installed? apt-get install blender)";
       if (!ReadFile(opt.cycles_script, script_bytes))
-        blender_version_error = "cannot read the Cycles script " + opt.cycles_script;
+        blender_version_error = "cannot read the Blender script " + opt.cycles_script;
     }
   }
 
@@ -525,31 +534,42 @@ public:
     return true;
   }
 
-  // ----------------------------------------------------------------- Cycles
-  bool RenderCycles(const SceneEntry& e, const ExportScene& ex, const std::string& content_key,
-                    SceneResult& res)
+  // The settings line of a Blender renderer's cache key (the script's MD5
+  // is in the key too, so every preset value written there is covered).
+  std::string BlenderSettings(const std::string& name) const
+  {
+    if (name == "cycles")
+      return "cycles samples=" + std::to_string(opt.cycles_samples) +
+        " box filter, bounces 0, no denoise, EXR32 red channel, mask eps=1e-6*max";
+    return "preset " + name + ", filter_size 0, fitted clip and light cutoff, EXR32 red "
+      "channel, mask eps=1e-6*max";
+  }
+
+  // ------------------------------------------------- Cycles and EEVEE
+  // `name` is one of kBlenderRenderers: the preset argument of the script.
+  bool RenderBlender(const std::string& name, const SceneEntry& e, const ExportScene& ex,
+                     const std::string& content_key, SceneResult& res)
   {
     const int L = static_cast<int>(ex.lights.size());
-    const std::string outdir = opt.out + "/" + e.dir_id + "/cycles";
+    const std::string outdir = opt.out + "/" + e.dir_id + "/" + name;
     MakeDirs(outdir);
     RemoveLightFiles(outdir, L);
     if (!blender_version_error.empty())
     {
-      res.errors.push_back("cycles: " + blender_version_error);
+      res.errors.push_back(name + ": " + blender_version_error);
       return false;
     }
     const std::string data = CyclesData(ex, opt.cycles_samples);
-    const std::string settings = "cycles samples=" + std::to_string(opt.cycles_samples) +
-      " box filter, bounces 0, no denoise, EXR32 red channel, mask eps=1e-6*max";
+    const std::string settings = BlenderSettings(name);
     const std::string keytext = std::string(kFormatVersion) + "\nrenderer " + blender_version +
       "\nsettings " + settings + "\nscript " + MD5Hex(script_bytes) + "\n" + content_key +
       "export " + MD5Hex(data) + "\n";
     const std::string key = MD5Hex(keytext);
-    const std::string cdir = CacheDir("cycles", key);
+    const std::string cdir = CacheDir(name, key);
     if (CacheLoad(cdir, outdir, L))
     {
-      Progress(e.id + ": cycles from cache " + key);
-      res.cached["cycles"] = true;
+      Progress(e.id + ": " + name + " from cache " + key);
+      res.cached[name] = true;
       return true;
     }
     const std::string work = AbsPath(outdir + "/.work" + std::to_string(getpid()));
@@ -558,7 +578,7 @@ public:
     std::string err;
     if (!WriteFileAtomic(work + "/scene.bin", data, err))
     {
-      res.errors.push_back("cycles: " + err);
+      res.errors.push_back(name + ": " + err);
       RemoveTree(work);
       return false;
     }
@@ -566,14 +586,14 @@ public:
     unlink(log.c_str());
     std::vector<std::string> argv{ opt.blender, "-b", "--factory-startup",
       "--python-exit-code", "1", "-t", std::to_string(opt.threads), "--python",
-      opt.cycles_script, "--", work + "/scene.bin", work };
-    Progress(e.id + ": cycles " + std::to_string(L) + " light(s) x shadows on/off ...");
+      opt.cycles_script, "--", work + "/scene.bin", work, name };
+    Progress(e.id + ": " + name + " " + std::to_string(L) + " light(s) x shadows on/off ...");
     RunResult r = RunProcess(argv, work, log, opt.timeout * 2 * L + 60);
-    Progress(e.id + ": cycles" + (r.ok() ? " done" : " FAILED") + " (" +
+    Progress(e.id + ": " + name + (r.ok() ? " done" : " FAILED") + " (" +
              Fmt(r.seconds, "%.1f") + " s)");
     if (!r.ok())
     {
-      res.errors.push_back("cycles: " + r.error);
+      res.errors.push_back(name + ": " + r.error + "; log: " + log);
       RemoveTree(work);
       return false;
     }
@@ -587,7 +607,7 @@ public:
         const std::string f = work + "/light" + std::to_string(k) + (shadows ? "_on" : "_off") + ".f32";
         if (!ReadFile(f, raw) || raw.size() != 4 * n)
         {
-          res.errors.push_back("cycles: missing or short output " + f + "; log: " + log);
+          res.errors.push_back(name + ": missing or short output " + f + "; log: " + log);
           RemoveLightFiles(outdir, L);
           RemoveTree(work);
           return false;
@@ -608,15 +628,31 @@ public:
       OnOff(img[1], img[0], 1e-6 * mx, v, mask);
       if (!WriteVisibility(outdir, k, v, mask, ex.width, ex.height, err))
       {
-        res.errors.push_back("cycles: " + err);
+        res.errors.push_back(name + ": " + err);
         RemoveLightFiles(outdir, L);
         RemoveTree(work);
         return false;
       }
     }
+    // Seconds per frame (one bpy.ops.render.render, without Blender start-up).
+    std::string frames;
+    if (ReadFile(work + "/frame_seconds.txt", frames))
+    {
+      std::stringstream fs(frames);
+      int light = 0, count = 0;
+      std::string state;
+      double sec = 0, sum = 0;
+      while (fs >> light >> state >> sec)
+      {
+        sum += sec;
+        ++count;
+      }
+      if (count)
+        res.frame_seconds[name] = sum / count;
+    }
     if (!opt.keep_work)
       RemoveTree(work);
-    res.seconds["cycles"] = r.seconds;
+    res.seconds[name] = r.seconds;
     CacheStore(cdir, outdir, L, keytext);
     return true;
   }
@@ -750,11 +786,13 @@ public:
     Progress(e.id + ": " + std::to_string(w) + "x" + std::to_string(h) + ", " +
              std::to_string(L) + " light(s)");
 
-    bool pov_ok = false, cyc_ok = false;
+    bool pov_ok = false;
+    std::vector<std::string> blender_ok;
     if (have_export && Has("povray"))
       pov_ok = RenderPovray(e, ex, content_key, res);
-    if (have_export && Has("cycles"))
-      cyc_ok = RenderCycles(e, ex, content_key, res);
+    for (const char* b : kBlenderRenderers)
+      if (have_export && Has(b) && RenderBlender(b, e, ex, content_key, res))
+        blender_ok.push_back(b);
     std::set<std::string> ok_t;
     if (Has("vtk"))
       RenderVtk(e, w, h, L, res, ok_t);
@@ -765,8 +803,8 @@ public:
         for (const std::string& t : opt.techniques)
           if (ok_t.count(t))
             res.rows.push_back(Compare(e, k, "vtk/" + t, "vtk/" + t, res.light_types[k]));
-        if (cyc_ok)
-          res.rows.push_back(Compare(e, k, "cycles", "cycles", res.light_types[k]));
+        for (const std::string& b : blender_ok)
+          res.rows.push_back(Compare(e, k, b, b, res.light_types[k]));
       }
     }
     for (const Row& r : res.rows)
@@ -812,6 +850,13 @@ void WriteResults(const Options& opt, const std::vector<SceneResult>& all)
       ",\n     \"render_seconds\": {";
     bool first = true;
     for (const auto& kv : sr.seconds)
+    {
+      json += std::string(first ? "" : ", ") + "\"" + JsonEscape(kv.first) + "\": " + Fmt(kv.second, "%.3f");
+      first = false;
+    }
+    json += "},\n     \"frame_seconds\": {";
+    first = true;
+    for (const auto& kv : sr.frame_seconds)
     {
       json += std::string(first ? "" : ", ") + "\"" + JsonEscape(kv.first) + "\": " + Fmt(kv.second, "%.3f");
       first = false;
@@ -916,7 +961,7 @@ void WriteHtml(const Options& opt, const std::vector<SceneResult>& all,
                   "figure{display:inline-block;margin:2px}figcaption{font-size:80%}</style>"
                   "</head><body>\n<h1>vtkshadow: shadows against ray tracers</h1>\n";
   h += "<p>Visibility per light (white = lit). Reference: POV-Ray; Cycles row = the check of "
-       "the reference itself. Heat maps: blue = test too dark (false shadow), red = too "
+       "the reference itself; eevee / eevee-best rows = Blender's rasterizer as a peer. Heat maps: blue = test too dark (false shadow), red = too "
        "bright (false light), grey = not valid. See docs/harness.md.</p>\n";
   if (plot)
     h += "<p><img src=\"wrong_pct.png\" style=\"max-width:100%\" alt=\"wrong_pct plot\"></p>\n";
@@ -942,8 +987,9 @@ void WriteHtml(const Options& opt, const std::vector<SceneResult>& all,
     for (int k = 0; k < sr.lights; ++k)
     {
       h += "<h3>light " + std::to_string(k) + " (" + HtmlEscape(sr.light_types[k]) + ")</h3>\n<div>";
-      std::vector<std::pair<std::string, std::string>> imgs{ { "povray", "povray" },
-                                                             { "cycles", "cycles" } };
+      std::vector<std::pair<std::string, std::string>> imgs{ { "povray", "povray" } };
+      for (const char* b : kBlenderRenderers)
+        imgs.push_back({ b, b });
       for (const auto& t : opt.techniques)
         imgs.push_back({ "vtk/" + t, "vtk/" + t });
       const std::string lk = "light" + std::to_string(k);
@@ -1071,8 +1117,10 @@ int main(int argc, char* argv[])
   if (usage_error.empty() && opt.inputs.empty())
     usage_error = "no scene given";
   for (const auto& r : opt.renderers)
-    if (usage_error.empty() && r != "vtk" && r != "povray" && r != "cycles")
-      usage_error = "--renderers: unknown renderer '" + r + "' (vtk, povray, cycles)";
+    if (usage_error.empty() &&
+        std::find(std::begin(kRenderers), std::end(kRenderers), r) == std::end(kRenderers))
+      usage_error = "--renderers: unknown renderer '" + r +
+        "' (known: vtk, povray, cycles, eevee, eevee-best)";
   for (const auto& t : opt.techniques)
     if (usage_error.empty() && (t.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos ||
                                 !vtkShadowTechnique::IsKnownTechnique(t.c_str())))
@@ -1142,9 +1190,9 @@ int main(int argc, char* argv[])
   Harness H;
   H.opt = opt;
   H.Prepare();
-  if (H.Has("vtk") && !getenv("DISPLAY"))
-    Progress("WARNING: DISPLAY is not set; vtkshadow-render needs an X server (run under "
-             "xvfb-run -a or tests/gl-run.sh)");
+  if ((H.Has("vtk") || H.Has("eevee") || H.Has("eevee-best")) && !getenv("DISPLAY"))
+    Progress("WARNING: DISPLAY is not set; vtkshadow-render and EEVEE need an X server (run "
+             "under xvfb-run -a or tests/gl-run.sh)");
 
   std::vector<SceneResult> results(scenes.size());
   std::atomic<size_t> next{ 0 };
@@ -1162,8 +1210,9 @@ int main(int argc, char* argv[])
   for (const auto& t : opt.techniques)
     if (H.Has("vtk"))
       tests.push_back("vtk/" + t);
-  if (H.Has("cycles"))
-    tests.push_back("cycles");
+  for (const char* b : kBlenderRenderers)
+    if (H.Has(b))
+      tests.push_back(b);
 
   // --check.
   std::vector<std::string> failures;

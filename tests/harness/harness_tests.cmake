@@ -6,7 +6,9 @@
 # 320x240), POV-Ray and Cycles rendered fresh (--no-cache), every VTK
 # technique, --check against scenes/thresholds.json.
 # harness.<unit>: cache invalidation, missing / hanging / crashing renderer,
-# hostile scene.
+# hostile scene, unknown renderer name.
+# harness.eevee: Blender EEVEE (both presets) as a peer on one small basic
+# scene, wrong_pct against POV-Ray within measured bounds (about 1 min).
 find_program(VTKSHADOW_POVRAY povray)
 find_program(VTKSHADOW_BLENDER blender)
 if(NOT VTKSHADOW_POVRAY OR NOT VTKSHADOW_BLENDER)
@@ -23,9 +25,15 @@ foreach(group basic scivis cad hard)
     FIXTURES_REQUIRED xvfb)
 endforeach()
 
-foreach(unit cache missing timeout crash hostile)
+foreach(unit cache missing timeout crash hostile renderers)
   add_test(NAME harness.${unit}
     COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_harness.py ${unit} --bin ${VTKSHADOW_BIN}
             --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/${unit})
   set_tests_properties(harness.${unit} PROPERTIES TIMEOUT 600 LABELS "harness")
 endforeach()
+
+# EEVEE renders through OpenGL: it needs the shared X display.
+add_test(NAME harness.eevee
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_harness.py eevee --bin ${VTKSHADOW_BIN}
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/eevee)
+set_tests_properties(harness.eevee PROPERTIES TIMEOUT 600 LABELS "harness" FIXTURES_REQUIRED xvfb)

@@ -1,6 +1,6 @@
 """Unit-ish tests of vtkshadow-compare (docs/harness.md).
 
-    test_harness.py {cache,missing,timeout,crash,hostile} --bin BUILD/bin --source SRC --out DIR
+    test_harness.py {cache,missing,timeout,crash,hostile,eevee,renderers} --bin BUILD/bin --source SRC --out DIR
 
 cache     a reference is reused only under the same key: editing the scene
           file, a mesh file's bytes, the renderer version or the settings
@@ -12,6 +12,14 @@ crash     a POV-Ray that dies of SIGSEGV: exit 1, "crashed", no image.
 hostile   names, descriptions and mesh paths full of POV-Ray directives and
           Python: nothing runs, nothing is written, and the exported
           scene.pov / scene.bin hold none of those strings (numbers only).
+eevee     Blender EEVEE as a peer (needs an X display): both presets on
+          scenes/basic/sphere-plane.json (directional, point, spot) at
+          --scale 0.25 write visibility and mask per light, give result rows
+          and seconds per frame, and stay within EEVEE_BOUNDS of POV-Ray;
+          eevee-best is not worse than eevee. A missing Blender is an error
+          (exit 1, clear message, no EEVEE image), not a skip.
+renderers an unknown --renderers name: exit 2, a message naming it and the
+          known ones, nothing written.
 """
 import argparse
 import glob
@@ -251,6 +259,81 @@ def test_hostile(a, compare):
     print("PASS hostile")
 
 
+# wrong_pct limits against POV-Ray of test_eevee (basic/sphere-plane at
+# --scale 0.25, 200x150), per preset and light: the values measured with
+# Blender 3.4.1 on llvmpipe (docs/harness.md, "EEVEE as a peer") times about
+# 2, rounded up. eevee = Blender's defaults (soft shadows of radius 0.25,
+# 512 cube / 1024 cascade maps); eevee-best = hard 4096 maps.
+EEVEE_BOUNDS = {
+    "eevee": {0: 0.15, 1: 0.25, 2: 0.25},
+    "eevee-best": {0: 0.1, 1: 0.1, 2: 0.15},
+}
+
+
+def test_eevee(a, compare):
+    shutil.rmtree(a.out, ignore_errors=True)
+    scene = os.path.join(a.source, "scenes", "basic", "sphere-plane.json")
+    out = os.path.join(a.out, "result")
+    run(a, compare, scene, "--out", out, "--renderers", "povray,eevee,eevee-best", "--scale", "0.25",
+        "--no-cache", expect=0)
+    for preset in ("eevee", "eevee-best"):
+        files = sorted(os.path.basename(f) for f in vis_files(out, preset))
+        if files != ["light%d_%s.png" % (k, w) for k in range(3) for w in ("mask", "visibility")]:
+            fail("%s: expected visibility and mask of 3 lights, got %s" % (preset, files))
+    res = json.load(open(os.path.join(out, "results.json")))["scenes"][0]
+    if res["errors"]:
+        fail("errors: %s" % res["errors"])
+    for preset in ("eevee", "eevee-best"):
+        if not res["render_seconds"].get(preset, 0) > 0 or not res["frame_seconds"].get(preset, 0) > 0:
+            fail("%s: no render / frame seconds in results.json: %s %s"
+                 % (preset, res["render_seconds"], res["frame_seconds"]))
+    rows = {(r["test"], r["light"]): r for r in res["results"]}
+    with open(os.path.join(out, "results.csv")) as f:
+        csv_tests = {line.split(",")[3] for line in f.read().splitlines()[1:]}
+    if not {"eevee", "eevee-best"} <= csv_tests:
+        fail("results.csv lacks eevee rows: %s" % csv_tests)
+    worse = 0.0
+    for k in range(3):
+        for preset, bounds in EEVEE_BOUNDS.items():
+            r = rows.get((preset, k))
+            if r is None or r["status"] != "ok" or r["valid_pixels"] < 1000:
+                fail("%s light %d: no usable row: %s" % (preset, k, r))
+            print("%s light %d: wrong_pct %.4f vis_mae %.6f (bound %.2f)"
+                  % (preset, k, r["wrong_pct"], r["vis_mae"], bounds[k]))
+            if r["wrong_pct"] > bounds[k]:
+                fail("%s light %d: wrong_pct %.4f > %.2f" % (preset, k, r["wrong_pct"], bounds[k]))
+        # Best is at least as good as the defaults (in visibility error, where
+        # the defaults' soft penumbra shows; wrong_pct may tie within a few pixels).
+        worse = max(worse, rows[("eevee-best", k)]["vis_mae"] - rows[("eevee", k)]["vis_mae"])
+    if worse > 0:
+        fail("eevee-best has a larger vis_mae than eevee (by %.6f)" % worse)
+    if "eevee" not in open(os.path.join(out, "index.html"), encoding="utf-8").read():
+        fail("index.html does not show eevee")
+    # A missing Blender is an error, not a skip.
+    out2 = os.path.join(a.out, "missing")
+    p = run(a, compare, scene, "--out", out2, "--renderers", "povray,eevee", "--scale", "0.25",
+            "--blender-binary", "/nonexistent/blender", "--no-report", expect=1)
+    if "Blender not usable" not in p.stderr or "/nonexistent/blender" not in p.stderr:
+        fail("no clear error for the missing Blender")
+    if vis_files(out2, "eevee"):
+        fail("EEVEE images without Blender: %s" % vis_files(out2, "eevee"))
+    print("PASS eevee")
+
+
+def test_renderers(a, compare):
+    shutil.rmtree(a.out, ignore_errors=True)
+    scene = os.path.join(a.source, "scenes", "basic", "sphere-plane.json")
+    out = os.path.join(a.out, "result")
+    for bad in ("povray,eeve", "EEVEE", "povray,eevee-default"):
+        p = run(a, compare, scene, "--out", out, "--renderers", bad, expect=2)
+        name = bad.split(",")[-1]
+        if "unknown renderer '%s'" % name not in p.stderr or "eevee-best" not in p.stderr:
+            fail("no clear message for --renderers %s" % bad)
+        if os.path.exists(out):
+            fail("a bad --renderers wrote %s" % out)
+    print("PASS renderers")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("test")
@@ -269,6 +352,10 @@ def main():
         test_fake(a, compare, "kill -SEGV $$", ["crashed", "signal 11"], "crash")
     elif a.test == "hostile":
         test_hostile(a, compare)
+    elif a.test == "eevee":
+        test_eevee(a, compare)
+    elif a.test == "renderers":
+        test_renderers(a, compare)
     else:
         fail("unknown test " + a.test)
 
