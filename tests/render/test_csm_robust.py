@@ -44,7 +44,9 @@ Cases:
   big-map        SetMapResolution(16384) with 4 cascades: GetUsedResolution()
                  < 16384, a warning naming the GL limit, and the sphere-floor
                  scene within the exact bound.
-  caching        still camera over a still scene: GetNumberOfMapsRendered() == 0
+  caching        still camera over a still scene: GetNumberOfMapsRendered() == 0;
+                 small camera moves reuse maps (GetNumberOfMapsReused() > 0) and
+                 still match a fresh render
                  from the 2nd frame on; moving a caster re-renders (and equals a
                  fresh render); changing a caster's points re-renders; moving
                  the light re-renders (and equals a fresh render); an orbiting
@@ -691,15 +693,30 @@ def case_caching(c, out):
     c.check(changed >= MIN_SHADOWED, f"the shadow moved with the light: {changed} px changed")
 
     camera = renderer.GetActiveCamera()
-    orbit = []
-    for _ in range(4):
-        camera.Azimuth(5.0)
-        render(window, "orbit")
-        orbit.append(p.GetNumberOfMapsRendered())
-    c.check(all(m >= 1 for m in orbit), f"orbiting camera: maps rendered per frame {orbit}")
-    state["camera"] = dict(position=camera.GetPosition(), focal_point=camera.GetFocalPoint(),
-                           view_up=camera.GetViewUp())
-    frame_vs_fresh("last orbit frame vs a fresh render")
+
+    def orbit(step, frames, label):
+        rendered, reused = [], []
+        for _ in range(frames):
+            camera.Azimuth(step)
+            render(window, label)
+            rendered.append(p.GetNumberOfMapsRendered())
+            reused.append(p.GetNumberOfMapsReused())
+        state["camera"] = dict(position=camera.GetPosition(), focal_point=camera.GetFocalPoint(),
+                               view_up=camera.GetViewUp())
+        return rendered, reused
+
+    # Large steps eventually leave the maps' squares: some frames render.
+    rendered, reused = orbit(5.0, 4, "orbit 5 deg")
+    c.check(sum(rendered) >= 1, f"orbit by 5 deg a frame: maps rendered per frame "
+                                f"{rendered} (reused {reused})")
+    frame_vs_fresh("last 5-deg orbit frame vs a fresh render")
+    # Small steps stay inside the stable cascades' squares: earlier maps are
+    # reused, and the frame must still equal a fresh render (which renders
+    # every map for exactly this camera).
+    rendered, reused = orbit(0.25, 6, "orbit 0.25 deg")
+    c.check(sum(reused) >= 1, f"orbit by 0.25 deg a frame: maps reused per frame {reused} "
+                              f"(rendered {rendered})")
+    frame_vs_fresh("last 0.25-deg orbit frame (reused maps) vs a fresh render")
     print(f"caching: total maps rendered {p.GetTotalMapsRendered()}")
     cap.release()
     window.Finalize()

@@ -73,6 +73,32 @@ int vsh_csm_fit_directional(const vsh_camera *camera, double aspect, double slic
                             const vsh_bounds *receivers, const vsh_bounds *casters, int stable,
                             int resolution, vsh_shadow_view *out);
 
+/* The box, in `view`'s clip coordinates (xmin, xmax, ymin, ymax, zmin,
+ * zmax), that shadow lookups of the view slice [lookup_near, slice_far] can
+ * reach: the slice's corners bounded in clip space, intersected with the
+ * receivers' box (lookups only happen on receivers; may be NULL), and in
+ * depth widened to the casters' box (the map must hold them; may be NULL);
+ * clamped to the view's [-1, 1]. Directional (orthographic) views only.
+ * Pass a lookup_near below the slice's near to include a blend band.
+ * Returns 0, 1 when the slice and receivers do not overlap, 2 on bad input. */
+int vsh_csm_lookup_region(const vsh_camera *camera, double aspect, double lookup_near,
+                          double slice_far, const vsh_bounds *receivers,
+                          const vsh_bounds *casters, const vsh_shadow_view *view,
+                          double out_clip[6]);
+
+/* 1 when an orthographic map rendered with `rendered` (its world_to_clip
+ * relative to rendered_origin) can stand in for `needed` (relative to
+ * needed_origin): both have the same light direction and texel size (equal
+ * x and y rows), depth rows that differ at most in scale, and
+ * needed_region (needed's clip coordinates, from vsh_csm_lookup_region)
+ * maps inside the rendered map, margin_texels texels (the filter's reach)
+ * inside its x and y edges and within its depth range. 0 otherwise,
+ * including bad input and perspective views. The caller then samples the
+ * rendered map with the rendered view's matrix and bias. */
+int vsh_csm_view_covers(const vsh_shadow_view *rendered, const double rendered_origin[3],
+                        const vsh_shadow_view *needed, const double needed_origin[3],
+                        const double needed_region[6], int resolution, double margin_texels);
+
 /* A perspective map from `position` looking along `direction` with half
  * angle `half_angle_deg` (< 90), its depth range fitted to `bounds` (the
  * casters and receivers). For spot lights (the cone) and point-light cube

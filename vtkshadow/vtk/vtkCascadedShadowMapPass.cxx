@@ -74,11 +74,35 @@ struct Tile
 {
   vsh_shadow_view View;      // camera-relative world -> clip
   double Absolute[16];       // world -> clip (for caching)
+  double Near = 0.0;         // cascade near depth
   double Far = 0.0;          // cascade far depth
   double TexelPixels = 0.0;  // on-screen size of a texel at the cascade's near end
   double Bias[2] = { 0, 0 }; // depth bias, normal offset
   int Light = -1;
 };
+
+// Depth bias and normal offset from the map's texel size and depth range,
+// and the absolute world -> clip matrix (for caching).
+void ComputeBiasAndAbsolute(Tile& tile, const double eye[3], double biasScale)
+{
+  double texel = tile.View.texel_world;
+  if (tile.View.perspective)
+  {
+    // Texel size at the middle of the depth range (per unit distance x distance).
+    texel *= 0.5 * (tile.View.near_far[0] + tile.View.near_far[1]);
+  }
+  vsh_csm_bias(texel, tile.View.depth_extent, biasScale, &tile.Bias[0], &tile.Bias[1]);
+  if (tile.View.perspective)
+  {
+    // Perspective depth is not linear: express the bias as a fraction of
+    // the depth range near the far plane, where it is coarsest.
+    tile.Bias[0] *= 0.5;
+  }
+  double toRelative[16];
+  const double negEye[3] = { -eye[0], -eye[1], -eye[2] };
+  vsh_mat4_translation(negEye, toRelative);
+  vsh_mat4_multiply(tile.View.world_to_clip, toRelative, tile.Absolute);
+}
 }
 
 struct vtkCascadedShadowMapPass::Internals
@@ -91,8 +115,16 @@ struct vtkCascadedShadowMapPass::Internals
   int TileGrid[2] = { 1, 1 };
   std::vector<Tile> Tiles;
   // What each atlas slot last held, to skip re-rendering unchanged maps.
-  std::vector<std::vector<double>> RenderedMatrix;
-  std::vector<vtkMTimeType> RenderedCasterTime;
+  // What each atlas tile holds: the view it was rendered with (relative to
+  // the camera position then), so a later frame can reuse it.
+  struct RenderedTile
+  {
+    bool Valid = false;
+    Tile Map;
+    double Origin[3] = { 0, 0, 0 };
+    vtkMTimeType CasterTime = 0;
+  };
+  std::vector<RenderedTile> Rendered;
   // Per-light shader data in the mapper's numbering.
   int LightCount = 0;
   int Kind[MaxLights] = { 0 };
@@ -129,6 +161,7 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
   , CastHeadlightShadows(false)
   , UsedResolution(0)
   , NumberOfMapsRendered(0)
+  , NumberOfMapsReused(0)
   , TotalMapsRendered(0)
   , Impl(new Internals)
 {
@@ -420,6 +453,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
             tile.View.texel_world = 0.0;
             tile.View.depth_extent = 1.0;
           }
+          tile.Near = splits[c];
           tile.Far = splits[c + 1];
           tile.TexelPixels =
             vsh_csm_texel_pixels(tile.View.texel_world, splits[c], cam.view_angle, size[1]);
@@ -505,23 +539,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   // Bias and absolute matrices per tile.
   for (Tile& tile : impl.Tiles)
   {
-    double texel = tile.View.texel_world;
-    if (tile.View.perspective)
-    {
-      // Texel size at the middle of the depth range (per unit distance x distance).
-      texel *= 0.5 * (tile.View.near_far[0] + tile.View.near_far[1]);
-    }
-    vsh_csm_bias(texel, tile.View.depth_extent, this->BiasScale, &tile.Bias[0], &tile.Bias[1]);
-    if (tile.View.perspective)
-    {
-      // Perspective depth is not linear: express the bias as a fraction of
-      // the depth range near the far plane, where it is coarsest.
-      tile.Bias[0] *= 0.5;
-    }
-    double toRelative[16];
-    const double negEye[3] = { -cam.position[0], -cam.position[1], -cam.position[2] };
-    vsh_mat4_translation(negEye, toRelative);
-    vsh_mat4_multiply(tile.View.world_to_clip, toRelative, tile.Absolute);
+    ComputeBiasAndAbsolute(tile, cam.position, this->BiasScale);
   }
 
   // The atlas: a grid of resolution^2 tiles, clamped to the GL's limit.
@@ -560,30 +578,66 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     impl.Atlas->AllocateDepth(atlasW, atlasH, vtkTextureObject::Float32);
     impl.AtlasSize[0] = atlasW;
     impl.AtlasSize[1] = atlasH;
-    impl.RenderedMatrix.clear();
-    impl.RenderedCasterTime.clear();
+    impl.Rendered.clear();
   }
   impl.TileGrid[0] = columns;
   impl.TileGrid[1] = rows;
-  impl.RenderedMatrix.resize(tiles);
-  impl.RenderedCasterTime.resize(tiles, 0);
+  impl.Rendered.resize(tiles);
 
-  // Render the maps that changed.
+  // Render the maps that changed. A cascade whose map from an earlier frame
+  // still covers every lookup of this frame keeps that map (and its matrix
+  // and bias): a stable cascade is a square around its slice's bounding
+  // sphere, so small camera moves rarely leave it.
   std::vector<int> dirty;
+  this->NumberOfMapsReused = 0;
+  const double reach = 2.0 + this->BiasScale * 2.0 +
+    (this->Filter == PCF ? 0.5 * this->PCFSize + 1.0
+                         : this->Filter == POISSON ? this->PoissonRadius + 1.0 : 1.0);
   for (int t = 0; t < tiles; ++t)
   {
-    const std::vector<double> m(impl.Tiles[t].Absolute, impl.Tiles[t].Absolute + 16);
-    bool same = impl.RenderedMatrix[t].size() == 16 && impl.RenderedCasterTime[t] == casterTime;
+    Tile& tile = impl.Tiles[t];
+    Internals::RenderedTile& held = impl.Rendered[t];
+    bool same = held.Valid && held.CasterTime == casterTime && held.Map.Light == tile.Light &&
+      held.Map.View.perspective == tile.View.perspective;
     for (int k = 0; same && k < 16; ++k)
     {
-      const double a = m[k], b = impl.RenderedMatrix[t][k];
+      const double a = tile.Absolute[k], b = held.Map.Absolute[k];
       same = std::abs(a - b) <= 1e-12 * std::max(1.0, std::max(std::abs(a), std::abs(b)));
+    }
+    if (!same && held.Valid && held.CasterTime == casterTime && held.Map.Light == tile.Light &&
+      this->Stable && !tile.View.perspective && tile.View.texel_world > 0.0 &&
+      !held.Map.View.perspective && held.Map.View.texel_world > 0.0 && tile.Near > 0.0)
+    {
+      double region[6];
+      const double lookupNear = tile.Near * (1.0 - (tile.Near > depthRange[0] ? this->BlendBand : 0.0));
+      if (vsh_csm_lookup_region(&cam, aspect, lookupNear, tile.Far, &receiverBounds, &casterBounds,
+            &tile.View, region) == 0 &&
+        vsh_csm_view_covers(&held.Map.View, held.Origin, &tile.View, cam.position, region, resolution,
+          reach))
+      {
+        // Sample the held map: its view, re-expressed relative to this
+        // frame's camera position (a small shift, exact enough in double).
+        const double shift[3] = { cam.position[0] - held.Origin[0],
+          cam.position[1] - held.Origin[1], cam.position[2] - held.Origin[2] };
+        double toHeld[16];
+        vsh_mat4_translation(shift, toHeld);
+        const double far = tile.Far, near = tile.Near, pixels = tile.TexelPixels;
+        tile = held.Map;
+        vsh_mat4_multiply(held.Map.View.world_to_clip, toHeld, tile.View.world_to_clip);
+        tile.Near = near;
+        tile.Far = far;
+        tile.TexelPixels = pixels;
+        ++this->NumberOfMapsReused;
+        same = true;
+      }
     }
     if (!same)
     {
       dirty.push_back(t);
-      impl.RenderedMatrix[t] = m;
-      impl.RenderedCasterTime[t] = casterTime;
+      held.Valid = true;
+      held.Map = tile;
+      std::copy_n(cam.position, 3, held.Origin);
+      held.CasterTime = casterTime;
     }
   }
   if (!dirty.empty())
@@ -830,8 +884,7 @@ void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
     impl.FBO->ReleaseGraphicsResources(w);
   }
   impl.AtlasSize[0] = impl.AtlasSize[1] = 0;
-  impl.RenderedMatrix.clear();
-  impl.RenderedCasterTime.clear();
+  impl.Rendered.clear();
   for (auto& entry : impl.Casters)
   {
     entry.second->ReleaseGraphicsResources(w);
@@ -866,5 +919,6 @@ void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
   os << indent << "UsedResolution: " << this->UsedResolution << "\n";
   os << indent << "NumberOfMapsRendered: " << this->NumberOfMapsRendered << "\n";
+  os << indent << "NumberOfMapsReused: " << this->NumberOfMapsReused << "\n";
   os << indent << "TotalMapsRendered: " << this->TotalMapsRendered << "\n";
 }

@@ -173,6 +173,8 @@ public:
   double GetCascadeTexelPixels(int light, int cascade) const;
   vtkGetMacro(UsedResolution, int);
   vtkGetMacro(NumberOfMapsRendered, int);
+  /** Cascades whose earlier map still covered every lookup of the last frame. */
+  vtkGetMacro(NumberOfMapsReused, int);
   vtkGetMacro(TotalMapsRendered, int);
   long long GetMemoryBytes() const;
 
@@ -210,6 +212,7 @@ protected:
   bool CastHeadlightShadows;
   int UsedResolution;
   int NumberOfMapsRendered;
+  int NumberOfMapsReused;
   int TotalMapsRendered;
 
 private:

@@ -312,7 +312,8 @@ std::string vtkShadowTechnique::GetStatsJSON(vtkRenderer* renderer) const
   {
     out << "{" << prefix;
     out << "\"resolution\": " << csm->GetUsedResolution()
-        << ", \"maps_rendered_total\": " << csm->GetTotalMapsRendered() << ", \"lights\": [";
+        << ", \"maps_rendered_total\": " << csm->GetTotalMapsRendered()
+        << ", \"maps_reused_last_frame\": " << csm->GetNumberOfMapsReused() << ", \"lights\": [";
     const int lights = renderer->GetLights()->GetNumberOfItems();
     for (int l = 0; l < lights; ++l)
     {
