@@ -36,7 +36,7 @@ const char* RenderUsage()
   return "usage: vtkshadow-render SCENE --technique T --image OUT.png\n"
          "         [--visibility V.png] [--mask M.png] [--light K] [--stats S.json]\n"
          "         [--frames N] [--map-resolution R] [--size WxH] [--set KEY=VALUE]...\n"
-         "         [--quiet]\n"
+         "         [--max-error E | --max-error Npx] [--quiet]\n"
          "\n"
          "Render SCENE (a vtkshadow scene file) with shadow technique T.\n"
          "  --technique T        one of the known techniques (default none)\n"
@@ -50,13 +50,16 @@ const char* RenderUsage()
          "  --size WxH           override the scene's image size\n"
          "  --set KEY=VALUE      a technique setting, e.g. cascades=4, filter=1,\n"
          "                       bias_scale=0.5 (see docs/cascaded-shadow-maps.md)\n"
+         "  --max-error E        auto only: the error target, wrong_pct E (percent of\n"
+         "                       the pixels, default 0.5), or Npx: an on-screen\n"
+         "                       shadow-map texel size of N pixels\n"
          "  --quiet              no progress output\n"
          "Exit status: 0 success, 1 rendering failure, 2 bad input.\n";
 }
 
 int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::string& error)
 {
-  bool techniqueGiven = false;
+  bool techniqueGiven = false, maxErrorGiven = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -143,6 +146,25 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::stri
       }
       options.Settings.emplace_back(std::string(v, eq), number);
     }
+    else if (arg == "--max-error")
+    {
+      const char* v = value("--max-error");
+      if (!v)
+        return 2;
+      char* end = nullptr;
+      const double number = std::strtod(v, &end);
+      const bool pixels = end && std::strcmp(end, "px") == 0;
+      if (end == v || !end || (*end != '\0' && !pixels) || !std::isfinite(number) ||
+        number < 0.0 || (!pixels && number > 100.0) || (pixels && number <= 0.0))
+      {
+        error = std::string("--max-error: expected a wrong_pct in [0, 100] or a texel size "
+                            "such as 2px (got \"") +
+          v + "\")";
+        return 2;
+      }
+      options.Settings.emplace_back(pixels ? "max_texel_px" : "max_error", number);
+      maxErrorGiven = true;
+    }
     else if (arg == "--quiet")
     {
       options.Quiet = true;
@@ -177,6 +199,12 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::stri
   {
     error = "--technique: unknown technique \"" + options.Technique +
       "\" (known: " + vtkShadowTechnique::GetKnownTechniques() + ")";
+    return 2;
+  }
+  if (maxErrorGiven && options.Technique != "auto")
+  {
+    error = "--max-error: only --technique auto chooses by an error target (got --technique " +
+      options.Technique + "; for csm use --set max_texel_px=N)";
     return 2;
   }
   {

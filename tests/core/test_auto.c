@@ -64,5 +64,34 @@ int main(void)
   CHECK(vsh_auto_on_lit_side(floor, (double[4]){0, 0, -5, 1}, (double[3]){0, 0, -2}, 1) == 1);
   CHECK(vsh_auto_on_lit_side(floor, (double[4]){1, 0, 0, 0}, (double[3]){0, 0, 2}, 1) == 0);
   CHECK(vsh_auto_on_lit_side((double[4]){0, 0, 0, 1}, sun, (double[3]){0, 0, 2}, 1) == 0);
+  /* Texel target from an error target: closed form, monotone, bad input. */
+  CHECK_NEAR(vsh_auto_texel_target(0.0, 120000, 1400, 1.0, 1.0), 2.0, 1e-15); /* band only */
+  CHECK_NEAR(vsh_auto_texel_target(0.5, 120000, 1400, 1.0, 1.0), 2.0 * (1.0 + 600.0 / 1400.0),
+             1e-12);
+  CHECK(vsh_auto_texel_target(1.0, 120000, 1400, 1.0, 1.0) >
+        vsh_auto_texel_target(0.5, 120000, 1400, 1.0, 1.0));
+  CHECK(vsh_auto_texel_target(0.5, 120000, 2800, 1.0, 1.0) <
+        vsh_auto_texel_target(0.5, 120000, 1400, 1.0, 1.0));
+  /* A stretch of 2 is the same as an edge twice as long. */
+  CHECK_NEAR(vsh_auto_texel_target(0.5, 120000, 1400, 2.0, 1.0),
+             vsh_auto_texel_target(0.5, 120000, 2800, 1.0, 1.0), 1e-12);
+  /* A grazing light (85 degrees, stretch 11.5) leaves little beyond the band. */
+  CHECK(vsh_auto_texel_target(0.5, 120000, 1400, 1.0 / cos(85.0 * 3.14159265358979 / 180.0), 1.0) <
+        2.1);
+  CHECK(vsh_auto_texel_target(0.5, 120000, 1400, 0.5, 1.0) == 0.0); /* stretch < 1 */
+  CHECK(vsh_auto_texel_target(0.5, 120000, 1400, NAN, 1.0) == 0.0);
+  /* Its prediction met exactly: an edge of L px at that texel size gives
+   * L * (t/2 - band) wrong px = the allowed share of the frame. */
+  {
+    const double t = vsh_auto_texel_target(0.25, 1e6, 5000, 1.0, 1.0);
+    CHECK_NEAR(5000 * (t / 2 - 1.0) / 1e6 * 100.0, 0.25, 1e-12);
+  }
+  CHECK(vsh_auto_texel_target(-0.1, 120000, 1400, 1.0, 1.0) == 0.0);
+  CHECK(vsh_auto_texel_target(NAN, 120000, 1400, 1.0, 1.0) == 0.0);
+  CHECK(vsh_auto_texel_target(0.5, 0.0, 1400, 1.0, 1.0) == 0.0);
+  CHECK(vsh_auto_texel_target(0.5, 120000, 0.0, 1.0, 1.0) == 0.0);
+  CHECK(vsh_auto_texel_target(0.5, 120000, 1400, 1.0, -1.0) == 0.0);
+  CHECK(vsh_auto_texel_target(0.5, INFINITY, 1400, 1.0, 1.0) == 0.0);
+  CHECK(vsh_auto_texel_target(1e308, 1e308, 1e-308, 1.0, 1.0) == 0.0); /* overflow */
   return vsh_check_report("core.auto");
 }

@@ -39,3 +39,13 @@ foreach(case IN LISTS _csm_cases)
             --technique auto --reference all --max-wrong-pct 0.5)
   set_tests_properties(render.auto.${case} PROPERTIES LABELS "render" TIMEOUT 300)
 endforeach()
+
+# auto's choice per light (mixed planar + csm in one frame, a light with no
+# visible shadow, a receiver out of view, the --max-error target), each
+# light's shadows against the exact answer (tests/render/test_auto_choice.py).
+foreach(case mixed idle-light out-of-view max-error)
+  add_test(NAME render.auto_choice.${case}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_auto_choice.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/auto_choice --case ${case})
+  set_tests_properties(render.auto_choice.${case} PROPERTIES LABELS "render" TIMEOUT 300)
+endforeach()

@@ -105,3 +105,15 @@ int vsh_auto_on_lit_side(const double plane[4], const double light[4], const dou
   const double distance = sign * (vsh_vec3_dot(plane, b) + plane[3]) / n_len;
   return distance >= rb ? 1 : 0;
 }
+
+double vsh_auto_texel_target(double max_wrong_pct, double pixels, double edge_length_px,
+                             double stretch, double band_px)
+{
+  if (!isfinite(max_wrong_pct) || !isfinite(pixels) || !isfinite(edge_length_px) ||
+      !isfinite(band_px) || !isfinite(stretch) || max_wrong_pct < 0.0 || band_px < 0.0 ||
+      !(pixels > 0.0) || !(edge_length_px > 0.0) || !(stretch >= 1.0))
+    return 0.0;
+  const double t =
+      2.0 * (band_px + max_wrong_pct / 100.0 * pixels / (edge_length_px * stretch));
+  return isfinite(t) ? t : 0.0;
+}

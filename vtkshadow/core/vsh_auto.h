@@ -35,6 +35,20 @@ int vsh_auto_box_may_shadow(const double amin[3], const double amax[3], const do
 int vsh_auto_on_lit_side(const double plane[4], const double light[4], const double b[3],
                          double rb);
 
+/* The largest on-screen shadow-map texel size (pixels) whose predicted
+ * wrong_pct stays at most `max_wrong_pct` (percent of `pixels`): a hard
+ * shadow edge drawn from a map whose texels cover t pixels on screen is off
+ * by up to t / 2 pixels; wrong_pct ignores a band of `band_px` pixels around
+ * the true edge, so an edge `edge_length_px` pixels long adds at most
+ * edge_length_px * (t / 2 - band_px) wrong pixels. Light reaching a
+ * receiver at a grazing angle stretches the shadow (and its boundary) by
+ * `stretch` = 1 / cos(incidence) >= 1, so the boundary is that much longer:
+ *   t = 2 * (band_px + max_wrong_pct / 100 * pixels / (edge_length_px * stretch)).
+ * 0 for bad input (non-finite, negative error or band, pixels or edge length
+ * <= 0, stretch < 1): the caller then keeps its own default. */
+double vsh_auto_texel_target(double max_wrong_pct, double pixels, double edge_length_px,
+                             double stretch, double band_px);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,5 +1,7 @@
 #include "vtkAutoShadowPass.h"
 
+#include "vtkCamera.h"
+
 #include "vtkActor.h"
 #include "vtkDataObject.h"
 #include "vtkMapper.h"
@@ -16,6 +18,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
+#include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkRenderer.h"
 
@@ -41,7 +44,16 @@ struct Sphere
   double Bounds[6];
   bool Flat;       // a receiver with a plane
   double Plane[4];
+  bool InView;     // its bounding sphere meets the view frustum
 };
+
+std::string Centre(const char* what, const Sphere& o)
+{
+  std::ostringstream out;
+  out << what << " (bounds centre " << o.Center[0] << ", " << o.Center[1] << ", " << o.Center[2]
+      << ")";
+  return out.str();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -51,6 +63,10 @@ vtkAutoShadowPass::vtkAutoShadowPass()
   , PlainPass(vtkRenderStepsPass::New())
   , Choice("none")
   , Reason("not rendered yet")
+  , MaxError(0.5)
+  , MaxTexelPixels(0.0)
+  , UsedTexelTarget(0.0)
+  , UsedStretch(1.0)
 {
   // One scene pipeline for all three, so switching keeps VTK's passes.
   this->PlanarPass->SetDelegatePass(this->PlainPass);
@@ -69,8 +85,10 @@ vtkAutoShadowPass::~vtkAutoShadowPass()
 void vtkAutoShadowPass::Decide(const vtkRenderState* s)
 {
   vtkRenderer* renderer = s->GetRenderer();
+  double frustum[24];
+  renderer->GetActiveCamera()->GetFrustumPlanes(renderer->GetTiledAspectRatio(), frustum);
   std::vector<Sphere> objects;
-  bool anyReceiver = false, anyCaster = false;
+  bool anyCaster = false;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
@@ -88,8 +106,18 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     Sphere sphere{ actor, { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) },
       0.5 * std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
               (b[5] - b[4]) * (b[5] - b[4])),
-      vtkshadow::HasFlag(actor, vtkPlanarShadowPass::RECEIVER()), !vtkshadow::HasFlag(actor, vtkPlanarShadowPass::NO_CAST()),
-      { b[0], b[1], b[2], b[3], b[4], b[5] }, false, { 0, 0, 0, 0 } };
+      vtkshadow::HasFlag(actor, vtkPlanarShadowPass::RECEIVER()),
+      !vtkshadow::HasFlag(actor, vtkPlanarShadowPass::NO_CAST()),
+      { b[0], b[1], b[2], b[3], b[4], b[5] }, false, { 0, 0, 0, 0 }, true };
+    // Frustum planes point inwards: a sphere wholly outside one is not seen.
+    for (int p = 0; p < 6 && sphere.InView; ++p)
+    {
+      const double* plane = frustum + 4 * p;
+      const double n = std::sqrt(plane[0] * plane[0] + plane[1] * plane[1] + plane[2] * plane[2]);
+      sphere.InView = plane[0] * sphere.Center[0] + plane[1] * sphere.Center[1] +
+          plane[2] * sphere.Center[2] + plane[3] >=
+        -sphere.Radius * n;
+    }
     if (sphere.Receiver)
     {
       // Planes are recomputed only when the actor, its mapper or data change.
@@ -107,52 +135,16 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
       sphere.Flat = cached.Flat;
       std::copy_n(cached.Plane, 4, sphere.Plane);
     }
-    anyReceiver = anyReceiver || sphere.Receiver;
     anyCaster = anyCaster || sphere.Casts;
     objects.push_back(sphere);
   }
-  std::vector<std::vector<double>> lights;
-  vtkLightCollection* collection = renderer->GetLights();
-  vtkCollectionSimpleIterator it;
-  collection->InitTraversal(it);
-  int index = -1;
-  std::vector<int> lightIndex;
-  while (vtkLight* light = collection->GetNextLight(it))
-  {
-    if (!light->GetSwitch())
-    {
-      continue;
-    }
-    ++index;
-    if (light->LightTypeIsHeadlight())
-    {
-      continue; // its shadows hide behind the casters
-    }
-    double p[3], f[3];
-    light->GetTransformedPosition(p);
-    light->GetTransformedFocalPoint(f);
-    lights.push_back(light->GetPositional()
-        ? std::vector<double>{ p[0], p[1], p[2], 1.0 }
-        : std::vector<double>{ p[0] - f[0], p[1] - f[1], p[2] - f[2], 0.0 });
-    lightIndex.push_back(index);
-  }
-  if (lights.empty() || !anyCaster)
-  {
-    this->Choice = "none";
-    this->Reason = lights.empty() ? "no light casts shadows" : "nothing casts shadows";
-    return;
-  }
-  if (!anyReceiver)
-  {
-    this->Choice = "csm";
-    this->Reason = "no plane receivers: shadows may fall on any surface";
-    return;
-  }
+
   // Self-shadowing: planar puts nothing on casters themselves, which is only
   // right for convex ones (their own shadow is the lighting's terminator).
+  const Sphere* concave = nullptr;
   for (const Sphere& o : objects)
   {
-    if (o.Receiver || !o.Casts)
+    if (o.Receiver || !o.Casts || !o.InView)
     {
       continue;
     }
@@ -170,62 +162,150 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     }
     if (!cached.second)
     {
-      std::ostringstream why;
-      why << "an object that is not convex (bounds centre " << o.Center[0] << ", " << o.Center[1]
-          << ", " << o.Center[2] << ") may shadow itself";
-      this->Choice = "csm";
-      this->Reason = why.str();
-      return;
+      concave = &o;
+      break;
     }
   }
-  for (size_t l = 0; l < lights.size(); ++l)
+
+  // Each switched-on light, in the mapper's numbering.
+  this->LightChoices.clear();
+  this->LightReasons.clear();
+  double stretch = 1.0;
+  for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
   {
-    for (const Sphere& a : objects)
+    std::string choice = "none", reason;
+    if (light->LightTypeIsHeadlight())
     {
-      if (!a.Casts)
+      reason = "the headlight: its shadows hide behind the casters";
+    }
+    else if (!anyCaster)
+    {
+      reason = "nothing casts shadows";
+    }
+    else if (concave)
+    {
+      choice = "csm";
+      reason = Centre("an object that is not convex", *concave) + " may shadow itself";
+    }
+    else
+    {
+      double p[3], f[3];
+      light->GetTransformedPosition(p);
+      light->GetTransformedFocalPoint(f);
+      const double homogeneous[4] = { light->GetPositional() ? p[0] : p[0] - f[0],
+        light->GetPositional() ? p[1] : p[1] - f[1], light->GetPositional() ? p[2] : p[2] - f[2],
+        light->GetPositional() ? 1.0 : 0.0 };
+      bool anyShadow = false;
+      for (const Sphere& a : objects)
       {
-        continue;
+        for (const Sphere& b : objects)
+        {
+          if (!a.Casts || &a == &b || !b.InView ||
+            (a.Flat && vsh_auto_on_lit_side(a.Plane, homogeneous, b.Center, b.Radius)))
+          {
+            continue; // a plane receiver only blocks light from what lies behind it
+          }
+          bool may;
+          if (homogeneous[3] == 0.0)
+          {
+            const double amin[3] = { a.Bounds[0], a.Bounds[2], a.Bounds[4] };
+            const double amax[3] = { a.Bounds[1], a.Bounds[3], a.Bounds[5] };
+            const double bmin[3] = { b.Bounds[0], b.Bounds[2], b.Bounds[4] };
+            const double bmax[3] = { b.Bounds[1], b.Bounds[3], b.Bounds[5] };
+            may = vsh_auto_box_may_shadow(amin, amax, bmin, bmax, homogeneous) != 0;
+          }
+          else
+          {
+            may = vsh_auto_may_shadow(a.Center, a.Radius, b.Center, b.Radius, homogeneous) != 0;
+          }
+          if (!may)
+          {
+            continue;
+          }
+          anyShadow = true;
+          if (!(b.Receiver && b.Flat))
+          {
+            choice = "csm";
+            reason = Centre("an object", a) + " may shadow " +
+              Centre(b.Receiver ? "a receiver that is not a plane" : "a non-receiver", b);
+            break;
+          }
+        }
+        if (choice == "csm")
+        {
+          break;
+        }
       }
-      for (const Sphere& b : objects)
+      if (choice != "csm")
       {
-        if (&a == &b || b.Receiver)
+        choice = anyShadow ? "planar" : "none";
+        reason = anyShadow ? "every shadow falls on plane receivers: planar is exact and cheapest"
+                           : "no caster can shadow a visible object";
+      }
+    }
+    if (choice == "csm" && !light->LightTypeIsHeadlight())
+    {
+      // Light at a grazing angle to a plane receiver stretches shadows, and
+      // their boundaries, by 1 / cos(incidence) (at the receiver's centre).
+      double p[3], f[3];
+      light->GetTransformedPosition(p);
+      light->GetTransformedFocalPoint(f);
+      for (const Sphere& r : objects)
+      {
+        if (!r.Flat || !r.InView)
         {
           continue;
         }
-        const double* light = lights[l].data();
-        // A plane receiver only blocks light from what lies behind it.
-        if (a.Flat && vsh_auto_on_lit_side(a.Plane, light, b.Center, b.Radius))
+        double towards[3];
+        for (int k = 0; k < 3; ++k)
         {
-          continue;
+          towards[k] = light->GetPositional() ? p[k] - r.Center[k] : p[k] - f[k];
         }
-        bool may;
-        if (light[3] == 0.0)
+        const double len = vtkMath::Norm(towards), n = vtkMath::Norm(r.Plane);
+        if (len > 0.0 && n > 0.0)
         {
-          const double amin[3] = { a.Bounds[0], a.Bounds[2], a.Bounds[4] };
-          const double amax[3] = { a.Bounds[1], a.Bounds[3], a.Bounds[5] };
-          const double bmin[3] = { b.Bounds[0], b.Bounds[2], b.Bounds[4] };
-          const double bmax[3] = { b.Bounds[1], b.Bounds[3], b.Bounds[5] };
-          may = vsh_auto_box_may_shadow(amin, amax, bmin, bmax, light) != 0;
-        }
-        else
-        {
-          may = vsh_auto_may_shadow(a.Center, a.Radius, b.Center, b.Radius, light) != 0;
-        }
-        if (may)
-        {
-          std::ostringstream why;
-          why << "light " << lightIndex[l] << ": an object (bounds centre " << a.Center[0] << ", "
-              << a.Center[1] << ", " << a.Center[2] << ") may shadow a non-receiver (centre "
-              << b.Center[0] << ", " << b.Center[1] << ", " << b.Center[2] << ")";
-          this->Choice = "csm";
-          this->Reason = why.str();
-          return;
+          const double c = std::abs(vtkMath::Dot(towards, r.Plane)) / (len * n);
+          stretch = std::max(stretch, 1.0 / std::max(c, 1.0 / 64.0));
         }
       }
     }
+    this->LightChoices.push_back(choice);
+    this->LightReasons.push_back(reason);
   }
-  this->Choice = "planar";
-  this->Reason = "every shadow falls on plane receivers: planar is exact and cheapest";
+
+  // One frame for all lights: each pass skips the lights the other one has.
+  unsigned int planarLights = 0, csmLights = 0;
+  for (size_t l = 0; l < this->LightChoices.size() && l < 32; ++l)
+  {
+    planarLights |= (this->LightChoices[l] == "planar" ? 1u : 0u) << l;
+    csmLights |= (this->LightChoices[l] == "csm" ? 1u : 0u) << l;
+  }
+  this->PlanarPass->SetSkippedLights(~planarLights);
+  this->CascadedPass->SetSkippedLights(~csmLights);
+  const int* size = renderer->GetSize();
+  this->UsedTexelTarget = this->MaxTexelPixels > 0.0
+    ? this->MaxTexelPixels
+    // A shadow boundary as long as the viewport's perimeter, one-pixel band.
+    : vsh_auto_texel_target(this->MaxError, static_cast<double>(size[0]) * size[1],
+        2.0 * (size[0] + size[1]), stretch, 1.0);
+  this->UsedStretch = stretch;
+  this->CascadedPass->SetMaxTexelPixels(this->UsedTexelTarget);
+  this->Choice = planarLights && csmLights ? "planar+csm"
+    : planarLights                         ? "planar"
+    : csmLights                            ? "csm"
+                                           : "none";
+  if (this->LightChoices.empty())
+  {
+    this->Reason = "no light is switched on";
+    return;
+  }
+  std::ostringstream why;
+  for (size_t l = 0; l < this->LightChoices.size(); ++l)
+  {
+    why << (l ? "; " : "") << "light " << l << ": " << this->LightChoices[l] << " ("
+        << this->LightReasons[l] << ")";
+  }
+  this->Reason = why.str();
 }
 
 //------------------------------------------------------------------------------
@@ -234,24 +314,60 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   const std::string previous = this->Choice;
   this->Decide(s);
-  if (!previous.empty() && previous != this->Choice)
+  const bool planar = this->Choice.find("planar") != std::string::npos;
+  const bool csm = this->Choice.find("csm") != std::string::npos;
+  // A pass no longer used keeps no GL memory.
+  vtkWindow* window = s->GetRenderer()->GetRenderWindow();
+  if (!planar && previous.find("planar") != std::string::npos)
   {
-    // The pass no longer used keeps no GL memory.
-    vtkWindow* window = s->GetRenderer()->GetRenderWindow();
-    if (previous == "planar")
-    {
-      this->PlanarPass->ReleaseGraphicsResources(window);
-    }
-    else if (previous == "csm")
-    {
-      this->CascadedPass->ReleaseGraphicsResources(window);
-    }
+    this->PlanarPass->ReleaseGraphicsResources(window);
   }
-  vtkRenderPass* chosen = this->Choice == "planar" ? static_cast<vtkRenderPass*>(this->PlanarPass)
-    : this->Choice == "csm"                        ? static_cast<vtkRenderPass*>(this->CascadedPass)
-                                                   : static_cast<vtkRenderPass*>(this->PlainPass);
+  if (!csm && previous.find("csm") != std::string::npos)
+  {
+    this->CascadedPass->ReleaseGraphicsResources(window);
+  }
+  vtkRenderPass* chosen = this->PlainPass;
+  if (csm)
+  {
+    this->CascadedPass->SetDelegatePass(
+      planar ? static_cast<vtkRenderPass*>(this->PlanarPass) : this->PlainPass);
+    chosen = this->CascadedPass;
+  }
+  else if (planar)
+  {
+    chosen = this->PlanarPass;
+  }
   chosen->Render(s);
   this->NumberOfRenderedProps = chosen->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkAutoShadowPass::GetLightChoice(int light) const
+{
+  return light >= 0 && light < this->GetNumberOfLightChoices() ? this->LightChoices[light].c_str()
+                                                                : nullptr;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkAutoShadowPass::GetLightReason(int light) const
+{
+  return light >= 0 && light < this->GetNumberOfLightChoices() ? this->LightReasons[light].c_str()
+                                                                : nullptr;
+}
+
+//------------------------------------------------------------------------------
+long long vtkAutoShadowPass::GetMemoryBytes() const
+{
+  long long bytes = 0;
+  if (this->Choice.find("planar") != std::string::npos)
+  {
+    bytes += this->PlanarPass->GetMemoryBytes();
+  }
+  if (this->Choice.find("csm") != std::string::npos)
+  {
+    bytes += this->CascadedPass->GetMemoryBytes();
+  }
+  return bytes;
 }
 
 //------------------------------------------------------------------------------
@@ -266,6 +382,10 @@ void vtkAutoShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 void vtkAutoShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaxError: " << this->MaxError << "\n";
+  os << indent << "MaxTexelPixels: " << this->MaxTexelPixels << "\n";
+  os << indent << "UsedTexelTarget: " << this->UsedTexelTarget << "\n";
+  os << indent << "UsedStretch: " << this->UsedStretch << "\n";
   os << indent << "Choice: " << this->Choice << "\n";
   os << indent << "Reason: " << this->Reason << "\n";
 }

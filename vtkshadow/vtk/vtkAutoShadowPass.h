@@ -1,19 +1,30 @@
 /**
  * @class   vtkAutoShadowPass
- * @brief   Chooses the cheapest exact-enough shadow technique for the scene.
+ * @brief   Chooses, per light, the cheapest shadow technique whose predicted
+ *          error meets a target.
  *
- * Every frame (cheaply, from bounds) vtkAutoShadowPass models only what the
- * scene needs:
- * - no light that casts, or nothing that casts: no shadow work at all;
- * - every shadow falls on plane receivers (no caster can shadow another
- *   object that is not a receiver, by a conservative bounding-sphere test
- *   per light from vtkshadow's core): vtkPlanarShadowPass, exact and the
- *   cheapest;
- * - otherwise vtkCascadedShadowMapPass, which itself uses one fitted map when
- *   the visible depth ratio is small and more cascades when it is large
- *   (and, with MaxTexelPixels, the resolution that keeps the on-screen
- *   texel size under a target).
- * GetChoice() and GetReason() say what was chosen and why.
+ * Every frame (cheaply, from bounds, with vtkshadow's core tests) each light
+ * that is switched on gets one of:
+ * - "none": no caster can shadow anything visible under it (a
+ *   conservative bounding-box / bounding-sphere test against every other
+ *   object inside the view frustum, and every caster is convex, so none
+ *   shadows itself), or it is the headlight: no shadow work for it at all;
+ * - "planar": every shadow it casts falls on plane receivers and every
+ *   non-receiver caster is convex: vtkPlanarShadowPass, exact and cheapest;
+ * - "csm": otherwise vtkCascadedShadowMapPass, which uses one fitted map
+ *   when the visible depth ratio is small and more cascades when it is
+ *   large, with the map resolution and count chosen by the core's error
+ *   estimate so that the on-screen texel size meets the target.
+ * Lights of both kinds in one scene are drawn in one frame: the cascaded
+ * pass delegates to the planar pass, each skipping the other's lights
+ * (SkippedLights), and both multiply their factor into the lighting.
+ *
+ * The target is MaxError (wrong_pct, the percentage of pixels whose shadow
+ * state is wrong outside a one-pixel band; default 0.5), turned into an
+ * on-screen texel size by vsh_auto_texel_target (allowing for shadows
+ * stretched by grazing light on plane receivers), or MaxTexelPixels directly
+ * when it is > 0. GetChoice(), GetReason() and, per light,
+ * GetLightChoice(i) / GetLightReason(i) say what was chosen and why.
  */
 #ifndef vtkAutoShadowPass_h
 #define vtkAutoShadowPass_h
@@ -24,6 +35,7 @@
 #include <map>    // for std::map
 #include <string> // for std::string
 #include <utility> // for std::pair
+#include <vector>  // for std::vector
 
 class vtkCascadedShadowMapPass;
 class vtkPlanarShadowPass;
@@ -45,10 +57,38 @@ public:
   vtkGetObjectMacro(CascadedPass, vtkCascadedShadowMapPass);
 
   /**
-   * "none", "planar" or "csm" for the last frame, and why.
+   * The error target: wrong_pct (percent of the frame's pixels; default
+   * 0.5), or, when MaxTexelPixels > 0 (default 0), the on-screen size of a
+   * shadow-map texel in pixels.
+   */
+  vtkSetClampMacro(MaxError, double, 0.0, 100.0);
+  vtkGetMacro(MaxError, double);
+  vtkSetClampMacro(MaxTexelPixels, double, 0.0, 1e6);
+  vtkGetMacro(MaxTexelPixels, double);
+
+  /**
+   * "none", "planar", "csm" or "planar+csm" for the last frame, and why;
+   * per light (mapper numbering: switched-on lights in order) "none",
+   * "planar" or "csm" and why.
    */
   const char* GetChoice() const { return this->Choice.c_str(); }
   const char* GetReason() const { return this->Reason.c_str(); }
+  int GetNumberOfLightChoices() const { return static_cast<int>(this->LightChoices.size()); }
+  const char* GetLightChoice(int light) const;
+  const char* GetLightReason(int light) const;
+
+  /**
+   * The texel target the cascaded pass was given in the last frame (pixels),
+   * and the shadow stretch it allowed for: 1 / cos of the steepest incidence
+   * of a map light on a plane receiver in view (at most 64).
+   */
+  vtkGetMacro(UsedTexelTarget, double);
+  vtkGetMacro(UsedStretch, double);
+
+  /**
+   * GL memory of the passes in use, as of the last frame.
+   */
+  long long GetMemoryBytes() const;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -62,6 +102,12 @@ protected:
   vtkRenderStepsPass* PlainPass;
   std::string Choice;
   std::string Reason;
+  std::vector<std::string> LightChoices;
+  std::vector<std::string> LightReasons;
+  double MaxError;
+  double MaxTexelPixels;
+  double UsedTexelTarget;
+  double UsedStretch;
   // Receiver planes by actor, with the time they were computed at.
   struct CachedPlane
   {

@@ -85,19 +85,13 @@ struct Tile
 // and the absolute world -> clip matrix (for caching).
 void ComputeBiasAndAbsolute(Tile& tile, const double eye[3], double biasScale)
 {
-  double texel = tile.View.texel_world;
-  if (tile.View.perspective)
-  {
-    // Texel size at the middle of the depth range (per unit distance x distance).
-    texel *= 0.5 * (tile.View.near_far[0] + tile.View.near_far[1]);
-  }
-  vsh_csm_bias(texel, tile.View.depth_extent, biasScale, &tile.Bias[0], &tile.Bias[1]);
-  if (tile.View.perspective)
-  {
-    // Perspective depth is not linear: express the bias as a fraction of
-    // the depth range near the far plane, where it is coarsest.
-    tile.Bias[0] *= 0.5;
-  }
+  // A perspective map's texels grow with the distance from the light, and
+  // its depth is not linear: both biases are per unit of distance there, and
+  // the shader scales them by the fragment's distance and applies the depth
+  // bias in linear depth (a constant offset in the map's depth would swamp
+  // the depth differences far from a light whose near plane is close).
+  vsh_csm_bias(tile.View.texel_world, tile.View.perspective ? 1.0 : tile.View.depth_extent,
+    biasScale, &tile.Bias[0], &tile.Bias[1]);
   double toRelative[16];
   const double negEye[3] = { -eye[0], -eye[1], -eye[2] };
   vsh_mat4_translation(negEye, toRelative);
@@ -159,6 +153,7 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
   , FadeFraction(0.1)
   , DebugCascades(false)
   , CastHeadlightShadows(false)
+  , SkippedLights(0)
   , UsedResolution(0)
   , NumberOfMapsRendered(0)
   , NumberOfMapsReused(0)
@@ -209,6 +204,7 @@ void vtkCascadedShadowMapPass::CopySettings(vtkCascadedShadowMapPass* o)
   this->FadeFraction = o->FadeFraction;
   this->DebugCascades = o->DebugCascades;
   this->CastHeadlightShadows = o->CastHeadlightShadows;
+  this->SkippedLights = o->SkippedLights;
   this->Modified();
 }
 
@@ -406,15 +402,8 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   impl.Tiles.clear();
   impl.LightCount = 0;
   {
-    vtkLightCollection* collection = renderer->GetLights();
-    vtkCollectionSimpleIterator it;
-    collection->InitTraversal(it);
-    while (vtkLight* light = collection->GetNextLight(it))
+    for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
     {
-      if (!light->GetSwitch())
-      {
-        continue;
-      }
       const int l = impl.LightCount++;
       if (l >= MaxLights)
       {
@@ -423,7 +412,8 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
       impl.Kind[l] = NoShadow;
       impl.First[l] = static_cast<int>(impl.Tiles.size());
       impl.Count[l] = 0;
-      if (!haveScene || (light->LightTypeIsHeadlight() && !this->CastHeadlightShadows))
+      if (!haveScene || (light->LightTypeIsHeadlight() && !this->CastHeadlightShadows) ||
+        ((this->SkippedLights >> l) & 1u))
       {
         continue;
       }
@@ -827,7 +817,8 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
   }
   // Per map: view coordinates -> map clip space (camera-relative, double),
   // its atlas rectangle, bias and far depth.
-  std::vector<float> matrices(16 * tiles), rects(4 * tiles), bias(2 * tiles), fars(tiles);
+  std::vector<float> matrices(16 * tiles), rects(4 * tiles), bias(2 * tiles), fars(tiles),
+    depth(2 * tiles, 0.0f);
   double viewToRelative[16];
   {
     // vshViewToWorld holds the transposed view rotation as floats; rebuild
@@ -857,11 +848,19 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
     bias[2 * t + 0] = static_cast<float>(tile.Bias[0]);
     bias[2 * t + 1] = static_cast<float>(tile.Bias[1]);
     fars[t] = static_cast<float>(tile.Far);
+    if (tile.View.perspective)
+    {
+      // The projection's depth terms: ndc z = -a + b / distance.
+      const double n = tile.View.near_far[0], f = tile.View.near_far[1];
+      depth[2 * t + 0] = static_cast<float>(-(f + n) / (f - n));
+      depth[2 * t + 1] = static_cast<float>(-2.0 * f * n / (f - n));
+    }
   }
   program->SetUniformMatrix4x4v("vshTileMatrix", tiles, matrices.data());
   program->SetUniform4fv("vshTileRect", tiles, rects.data());
   program->SetUniform2fv("vshTileBias", tiles, bias.data());
   program->SetUniform1fv("vshTileFar", tiles, fars.data());
+  program->SetUniform2fv("vshTileDepth", tiles, depth.data());
   return true;
 }
 
@@ -917,6 +916,7 @@ void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FadeFraction: " << this->FadeFraction << "\n";
   os << indent << "DebugCascades: " << this->DebugCascades << "\n";
   os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
+  os << indent << "SkippedLights: " << this->SkippedLights << "\n";
   os << indent << "UsedResolution: " << this->UsedResolution << "\n";
   os << indent << "NumberOfMapsRendered: " << this->NumberOfMapsRendered << "\n";
   os << indent << "NumberOfMapsReused: " << this->NumberOfMapsReused << "\n";

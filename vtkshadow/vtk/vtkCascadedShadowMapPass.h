@@ -155,6 +155,15 @@ public:
   vtkBooleanMacro(CastHeadlightShadows, bool);
 
   /**
+   * Lights this pass leaves unshadowed, as bits: bit i for light i in the
+   * mapper's numbering (the renderer's switched-on lights, in order).
+   * Default 0, every light casts. vtkAutoShadowPass uses it to give each
+   * light its own technique, or none when it casts no visible shadow.
+   */
+  vtkSetMacro(SkippedLights, unsigned int);
+  vtkGetMacro(SkippedLights, unsigned int);
+
+  /**
    * Copy every setting (not the delegate, not the GL state) from `other`.
    */
   void CopySettings(vtkCascadedShadowMapPass* other);
@@ -210,6 +219,7 @@ protected:
   double FadeFraction;
   bool DebugCascades;
   bool CastHeadlightShadows;
+  unsigned int SkippedLights;
   int UsedResolution;
   int NumberOfMapsRendered;
   int NumberOfMapsReused;

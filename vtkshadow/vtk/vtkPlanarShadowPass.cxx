@@ -149,6 +149,7 @@ vtkPlanarShadowPass::vtkPlanarShadowPass()
   : DelegatePass(nullptr)
   , PlaneTolerance(1e-5)
   , CastHeadlightShadows(false)
+  , SkippedLights(0)
   , NumberOfShadowPairs(0)
   , NumberOfMaskTriangles(0)
   , NumberOfGeometryBuilds(0)
@@ -280,15 +281,8 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   vtkshadow::UpdateLights(renderer);
   std::vector<LightInfo> lights;
   {
-    vtkLightCollection* collection = renderer->GetLights();
-    vtkCollectionSimpleIterator it;
-    collection->InitTraversal(it);
-    while (vtkLight* light = collection->GetNextLight(it))
+    for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
     {
-      if (!light->GetSwitch())
-      {
-        continue;
-      }
       LightInfo info;
       double p[3], f[3];
       light->GetTransformedPosition(p);
@@ -308,7 +302,9 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
         info.Homogeneous[2] = p[2] - f[2];
         info.Homogeneous[3] = 0.0;
       }
-      info.Casts = !light->LightTypeIsHeadlight() || this->CastHeadlightShadows;
+      const size_t index = lights.size();
+      info.Casts = (!light->LightTypeIsHeadlight() || this->CastHeadlightShadows) &&
+        !(index < 32 && (this->SkippedLights >> index) & 1u);
       lights.push_back(info);
     }
   }
@@ -877,6 +873,7 @@ void vtkPlanarShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReceiverPlanes: " << this->Impl->Planes.size() << "\n";
   os << indent << "PlaneTolerance: " << this->PlaneTolerance << "\n";
   os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
+  os << indent << "SkippedLights: " << this->SkippedLights << "\n";
   os << indent << "NumberOfShadowPairs: " << this->NumberOfShadowPairs << "\n";
   os << indent << "NumberOfMaskTriangles: " << this->NumberOfMaskTriangles << "\n";
   os << indent << "NumberOfGeometryBuilds: " << this->NumberOfGeometryBuilds << "\n";

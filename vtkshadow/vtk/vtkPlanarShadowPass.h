@@ -84,6 +84,15 @@ public:
   vtkBooleanMacro(CastHeadlightShadows, bool);
 
   /**
+   * Lights this pass leaves unshadowed, as bits: bit i for light i in the
+   * mapper's numbering (the renderer's switched-on lights, in order).
+   * Default 0, every light casts. vtkAutoShadowPass uses it to give each
+   * light its own technique, or none when it casts no visible shadow.
+   */
+  vtkSetMacro(SkippedLights, unsigned int);
+  vtkGetMacro(SkippedLights, unsigned int);
+
+  /**
    * The pass that renders the scene (default: a vtkRenderStepsPass).
    */
   virtual void SetDelegatePass(vtkRenderPass* pass);
@@ -125,6 +134,7 @@ protected:
   vtkRenderPass* DelegatePass;
   double PlaneTolerance;
   bool CastHeadlightShadows;
+  unsigned int SkippedLights;
   int NumberOfShadowPairs;
   vtkIdType NumberOfMaskTriangles;
   int NumberOfGeometryBuilds;

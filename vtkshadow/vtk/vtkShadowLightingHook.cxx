@@ -1,10 +1,12 @@
 #include "vtkShadowLightingHook.h"
 
+#include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 
 #include <algorithm>
+#include <cctype>
 
 namespace vtkshadow
 {
@@ -17,9 +19,29 @@ void UpdateLights(vtkRenderer* renderer)
   renderer->UpdateLightsGeometryToFollowCamera();
 }
 
+std::vector<vtkLight*> SwitchedOnLights(vtkRenderer* renderer)
+{
+  std::vector<vtkLight*> lights;
+  vtkLightCollection* collection = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    if (light->GetSwitch())
+    {
+      lights.push_back(light);
+    }
+  }
+  return lights;
+}
+
 bool InjectLightFactors(std::string& fs, const std::string& factor, const std::string& prepare,
   int maxLights)
 {
+  // Each term is found by its head ("diffuse += (df * lightColor3") followed
+  // by anything but a digit, and the factor goes right after the head: so a
+  // second pass (cascaded maps around planar, say) multiplies its own factor
+  // into a term the first one already changed.
   size_t first = std::string::npos;
   for (int i = 0; i < maxLights; ++i)
   {
@@ -29,16 +51,20 @@ bool InjectLightFactors(std::string& fs, const std::string& factor, const std::s
     {
       f.replace(at, 2, n);
     }
-    const std::string terms[3][2] = {
-      { "diffuse += (df * lightColor" + n + ");", "diffuse += (df * lightColor" + n + " * " + f + ");" },
-      { "specular += (sf * lightColor" + n + ");",
-        "specular += (sf * lightColor" + n + " * " + f + ");" },
-      { "radiance = lightColor" + n + ";", "radiance = lightColor" + n + " * " + f + ";" }
-    };
-    for (const auto& term : terms)
+    const std::string heads[3] = { "diffuse += (df * lightColor" + n,
+      "specular += (sf * lightColor" + n, "radiance = lightColor" + n };
+    for (const std::string& head : heads)
     {
-      first = std::min(first, fs.find(term[0]));
-      vtkShaderProgram::Substitute(fs, term[0], term[1], true);
+      for (size_t at = fs.find(head); at != std::string::npos; at = fs.find(head, at + 1))
+      {
+        const size_t end = at + head.size();
+        if (end < fs.size() && std::isdigit(static_cast<unsigned char>(fs[end])))
+        {
+          continue; // lightColor1 is not the head of lightColor12
+        }
+        first = std::min(first, at);
+        fs.insert(end, " * " + f);
+      }
     }
   }
   if (first == std::string::npos)

@@ -4,11 +4,26 @@
 #define vtkShadowLightingHook_h
 
 #include <string>
+#include <vector>
 
+class vtkLight;
 class vtkRenderer;
 
 namespace vtkshadow
 {
+/**
+ * Bring lights that follow the camera (and the automatic headlight) up to
+ * date before shadow work: VTK's lights pass does it only inside the
+ * delegate, after the shadows, which would make them lag a frame.
+ */
+void UpdateLights(vtkRenderer* renderer);
+
+/**
+ * The renderer's switched-on lights in order: the numbering VTK's mappers
+ * give the lights (lightColor0, lightColor1, ...) and every shadow pass uses.
+ */
+std::vector<vtkLight*> SwitchedOnLights(vtkRenderer* renderer);
+
 /**
  * VTK 9.1's mapper adds each light I as
  *   diffuse += (df * lightColorI);   specular += (sf * lightColorI);
@@ -20,12 +35,6 @@ namespace vtkshadow
  * Returns false (shader unchanged) when the shader has no light terms, e.g.
  * for actors with lighting off.
  */
-/**
- * Bring lights that follow the camera (and the automatic headlight) up to
- * date before shadow work: VTK's lights pass does it only inside the
- * delegate, after the shadows, which would make them lag a frame.
- */
-void UpdateLights(vtkRenderer* renderer);
 
 bool InjectLightFactors(std::string& fragmentShader, const std::string& factor,
   const std::string& prepare, int maxLights = 16);

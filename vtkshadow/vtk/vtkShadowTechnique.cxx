@@ -32,6 +32,7 @@ const char* const KnownTechniques[] = { "none", "vtk", "planar", "csm", "auto" }
 vtkShadowTechnique::vtkShadowTechnique()
   : Name(nullptr)
   , MapResolution(2048)
+  , MaxError(0.5)
   , CascadedSettings(vtkCascadedShadowMapPass::New())
 {
   this->SetName("none");
@@ -109,6 +110,9 @@ vtkRenderPass* vtkShadowTechnique::CreatePass()
     vtkAutoShadowPass* automatic = vtkAutoShadowPass::New();
     automatic->GetCascadedPass()->CopySettings(this->CascadedSettings);
     automatic->GetCascadedPass()->SetMapResolution(this->MapResolution);
+    // auto meets an error target: a texel size given directly, or wrong_pct.
+    automatic->SetMaxTexelPixels(this->CascadedSettings->GetMaxTexelPixels());
+    automatic->SetMaxError(this->MaxError);
     return automatic;
   }
   // "vtk": VTK's own shadow maps, assembled as in VTK's TestShadowMapPass.
@@ -160,10 +164,7 @@ long long vtkShadowTechnique::GetShadowMapMemory(vtkRenderer* renderer) const
   vtkRenderPass* pass = gl ? gl->GetPass() : nullptr;
   if (auto* automatic = vtkAutoShadowPass::SafeDownCast(pass))
   {
-    const std::string choice = automatic->GetChoice();
-    pass = choice == "planar" ? static_cast<vtkRenderPass*>(automatic->GetPlanarPass())
-      : choice == "csm"       ? static_cast<vtkRenderPass*>(automatic->GetCascadedPass())
-                              : nullptr;
+    return automatic->GetMemoryBytes();
   }
   if (auto* planar = vtkPlanarShadowPass::SafeDownCast(pass))
   {
@@ -234,6 +235,10 @@ bool vtkShadowTechnique::SetOption(const char* key, double v)
   {
     c->SetStable(v != 0);
   }
+  else if (k == "max_error" && in(0, 100))
+  {
+    this->MaxError = v;
+  }
   else if (k == "max_texel_px" && in(0, 1e6))
   {
     c->SetMaxTexelPixels(v);
@@ -299,9 +304,21 @@ std::string vtkShadowTechnique::GetStatsJSON(vtkRenderer* renderer) const
       reason.insert(at, "\\");
     }
     prefix = "\"choice\": \"" + choice + "\", \"reason\": \"" + reason + "\"";
-    pass = choice == "planar" ? static_cast<vtkRenderPass*>(automatic->GetPlanarPass())
-      : choice == "csm"       ? static_cast<vtkRenderPass*>(automatic->GetCascadedPass())
-                              : nullptr;
+    std::ostringstream perLight;
+    perLight.precision(6);
+    perLight << ", \"texel_target_px\": " << automatic->GetUsedTexelTarget()
+             << ", \"texel_stretch\": " << automatic->GetUsedStretch()
+             << ", \"light_choices\": [";
+    for (int l = 0; l < automatic->GetNumberOfLightChoices(); ++l)
+    {
+      perLight << (l ? ", " : "") << "\"" << automatic->GetLightChoice(l) << "\"";
+    }
+    prefix += perLight.str() + "]";
+    // Details of the map pass when there is one, else of the planar pass.
+    pass = choice.find("csm") != std::string::npos
+      ? static_cast<vtkRenderPass*>(automatic->GetCascadedPass())
+      : choice == "planar" ? static_cast<vtkRenderPass*>(automatic->GetPlanarPass())
+                           : nullptr;
     if (!pass)
     {
       return "{" + prefix + "}";
@@ -349,4 +366,5 @@ void vtkShadowTechnique::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Name: " << (this->Name ? this->Name : "(null)") << "\n";
   os << indent << "MapResolution: " << this->MapResolution << "\n";
+  os << indent << "MaxError: " << this->MaxError << "\n";
 }

@@ -68,7 +68,8 @@ public:
    * (0 uniform, 1 log, 2 practical, 3 explicit), lambda, split_fraction_<i>,
    * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
    * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
-   * fade, debug_cascades. Returns false for an unknown key or a value out of
+   * fade, debug_cascades; for "auto": max_error (its wrong_pct target,
+   * default 0.5) and max_texel_px (a texel-size target instead). Returns false for an unknown key or a value out of
    * range (nothing is changed then).
    */
   bool SetOption(const char* key, double value);
@@ -115,6 +116,7 @@ protected:
 
   char* Name;
   int MapResolution;
+  double MaxError; // auto's wrong_pct target
   vtkCascadedShadowMapPass* CascadedSettings;
 
 private:

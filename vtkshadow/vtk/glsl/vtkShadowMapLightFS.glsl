@@ -14,7 +14,9 @@ uniform int vshShadowCount[8];       // number of cascades (kind 1)
 uniform vec3 vshShadowLightVC[8];    // light position in view coordinates (kind 3)
 uniform mat4 vshTileMatrix[24];      // view coordinates -> map clip space
 uniform vec4 vshTileRect[24];        // atlas rectangle: offset.xy, size.zw
-uniform vec2 vshTileBias[24];        // depth bias (0..1 depth), normal offset (world)
+uniform vec2 vshTileBias[24];        // depth bias, normal offset: 0..1 depth and world
+                                     // units (orthographic); per unit distance (perspective)
+uniform vec2 vshTileDepth[24];       // perspective: ndc z = -x + y / distance
 uniform float vshTileFar[24];        // far depth of each cascade (kind 1)
 uniform mat3 vshViewToWorld;         // view -> world rotation (cube face choice)
 uniform float vshPoissonRadius;
@@ -35,10 +37,17 @@ const vec2 vshPoissonDisc[16] = vec2[](
   vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590),
   vec2(0.19984126, 0.78641367), vec2(0.14383161, -0.14100790));
 
-// Fraction of the light reaching the fragment according to map `tile`.
-float vshShadowSample(int tile, vec3 posVC, vec3 normalVC)
+// Fraction of the light reaching the fragment according to map `tile`
+// (perspective: a spot or point-light map, whose texels grow with distance).
+float vshShadowSample(int tile, vec3 posVC, vec3 normalVC, bool perspective)
 {
-  vec3 p = posVC + normalVC * vshTileBias[tile].y;
+  vec2 bias = vshTileBias[tile];
+  float reach = 1.0;
+  if (perspective)
+  {
+    reach = max((vshTileMatrix[tile] * vec4(posVC, 1.0)).w, 0.0);
+  }
+  vec3 p = posVC + normalVC * (bias.y * reach);
   vec4 clip = vshTileMatrix[tile] * vec4(p, 1.0);
   if (clip.w <= 0.0)
   {
@@ -54,7 +63,17 @@ float vshShadowSample(int tile, vec3 posVC, vec3 normalVC)
   // Stay half a texel inside the tile: filtering must not read a neighbour.
   vec2 lo = rect.xy + 0.5 * vshAtlasTexel;
   vec2 hi = rect.xy + rect.zw - 0.5 * vshAtlasTexel;
-  float ref = clamp(ndc.z * 0.5 + 0.5 - vshTileBias[tile].x, 0.0, 1.0);
+  float ref;
+  if (perspective)
+  {
+    // Towards the light by a fraction of the distance, in linear depth.
+    vec2 pz = vshTileDepth[tile];
+    ref = clamp((-pz.x + pz.y / (clip.w * (1.0 - bias.x))) * 0.5 + 0.5, 0.0, 1.0);
+  }
+  else
+  {
+    ref = clamp(ndc.z * 0.5 + 0.5 - bias.x, 0.0, 1.0);
+  }
 #if VSH_FILTER == 0
   return texture(vshShadowAtlas, vec3(clamp(uv, lo, hi), ref));
 #elif VSH_FILTER == 1
@@ -98,7 +117,7 @@ float vshShadowCascades(int l, float depth, vec3 posVC, vec3 normalVC)
   {
     vshShadowCascadeShown = c;
   }
-  float lit = vshShadowSample(first + c, posVC, normalVC);
+  float lit = vshShadowSample(first + c, posVC, normalVC, false);
   if (c < count - 1 && vshBlendBand > 0.0)
   {
     float nearD = c == 0 ? 0.0 : vshTileFar[first + c - 1];
@@ -106,7 +125,7 @@ float vshShadowCascades(int l, float depth, vec3 posVC, vec3 normalVC)
     float w = smoothstep(farD - vshBlendBand * (farD - nearD), farD, depth);
     if (w > 0.0)
     {
-      lit = mix(lit, vshShadowSample(first + c + 1, posVC, normalVC), w);
+      lit = mix(lit, vshShadowSample(first + c + 1, posVC, normalVC, false), w);
     }
   }
   return lit;
@@ -114,7 +133,7 @@ float vshShadowCascades(int l, float depth, vec3 posVC, vec3 normalVC)
 
 float vshShadowSpot(int l, vec3 posVC, vec3 normalVC)
 {
-  return vshShadowSample(vshShadowFirst[l], posVC, normalVC);
+  return vshShadowSample(vshShadowFirst[l], posVC, normalVC, true);
 }
 
 // Point light `l`: the cube face of the direction's major axis.
@@ -125,7 +144,7 @@ float vshShadowPoint(int l, vec3 posVC, vec3 normalVC)
   int face = (a.x >= a.y && a.x >= a.z) ? (d.x >= 0.0 ? 0 : 1)
     : (a.y >= a.z)                      ? (d.y >= 0.0 ? 2 : 3)
                                         : (d.z >= 0.0 ? 4 : 5);
-  return vshShadowSample(vshShadowFirst[l] + face, posVC, normalVC);
+  return vshShadowSample(vshShadowFirst[l] + face, posVC, normalVC, true);
 }
 
 float vshShadowFade(float depth)

@@ -1,0 +1,153 @@
+"""auto's per-light choices, checked on scenes built so that the right answer
+is known, and each light's shadows checked against the exact ray-cast answer.
+
+  test_auto_choice.py --bin BUILD/bin --out DIR --case CASE
+
+Cases:
+  mixed       light 0 (sun from straight above) shadows only the floor:
+              planar; light 1 (a point light low on the left) throws the
+              sphere's shadow onto a second sphere: csm. One frame draws
+              both (choice planar+csm); each light's visibility must meet
+              wrong_pct <= 0.5 against the exact answer.
+  idle-light  light 1 shines almost horizontally (its shadows end beyond the floor): no caster's shadow can reach
+              another object, so it gets no shadow work (none), while
+              light 0 still gets planar; both exact.
+  out-of-view light 0 is the only light, the receiver it would shadow is
+              behind the camera: none.
+  max-error   --max-error 2px gives the cascaded pass a texel target of
+              exactly 2; --max-error 0.5 the closed form of
+              vsh_auto_texel_target for the window and the map light's
+              incidence on the floor; a larger error target
+              never asks for more map memory; --max-error with another
+              technique is bad input (exit 2).
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from test_planar import S43, floor, run_case, sphere  # noqa: E402
+
+CAMERA = {"position": [0, -8, 5], "focal_point": [0.5, 0, 0.5], "view_up": [0, 0, 1],
+          "view_angle": 35}
+SUN = {"type": "directional", "direction": [0, 0, -1]}
+
+
+def scene(lights, objects, camera=CAMERA):
+    return {"description": "auto choice test", "size": list(S43), "camera": camera,
+            "lights": lights, "objects": objects}
+
+
+def mixed():
+    return scene([SUN, {"type": "point", "position": [-3, 0, 0.9]}],
+                 [sphere([0, 0, 1.2], 0.5), sphere([2.5, 0, 0.5], 0.5), floor(5)])
+
+
+def idle_light():
+    return scene([SUN, {"type": "directional", "direction": [1, 0, -0.05]}],
+                 [sphere([0, 0, 1.2], 0.5), floor(5)])
+
+
+def out_of_view():
+    camera = {"position": [0, -8, 5], "focal_point": [0, -20, 5], "view_up": [0, 0, 1],
+              "view_angle": 30}
+    return scene([SUN], [sphere([0, 0, 1.2], 0.5), floor(5)], camera)
+
+
+def stats(bin_dir, out, name, sc, extra=()):
+    path = os.path.join(out, name + ".json")
+    with open(path, "w") as f:
+        json.dump(sc, f)
+    st = os.path.join(out, name + "-stats.json")
+    run = subprocess.run([os.path.join(bin_dir, "vtkshadow-render"), path, "--technique", "auto",
+                          "--image", os.path.join(out, name + ".png"), "--stats", st,
+                          "--frames", "2", "--quiet", *extra], capture_output=True, text=True)
+    if run.returncode != 0:
+        sys.exit(f"{name}: vtkshadow-render failed ({run.returncode}): {run.stderr}")
+    with open(st) as f:
+        s = json.load(f)
+    return s["technique_stats"], s["shadow_map_bytes"]
+
+
+class Checks:
+    def __init__(self):
+        self.failed = 0
+
+    def check(self, ok, what):
+        print(("ok   " if ok else "FAIL ") + what)
+        self.failed += 0 if ok else 1
+
+
+def choice_case(c, args, name, builder, want_choice, want_lights):
+    ts, _ = stats(args.bin, args.out, name, builder())
+    c.check(ts.get("choice") == want_choice and ts.get("light_choices") == want_lights,
+            f"{name}: choice {ts.get('choice')} {ts.get('light_choices')} (want {want_choice} "
+            f"{want_lights}); reason: {ts.get('reason')}")
+    for light in range(len(want_lights)):
+        failed, _, m = run_case(args.bin, args.out, name, builder(), light, "auto", "all", 0.5,
+                                99.9, 0)
+        c.check(not failed, f"{name}: light {light} ({want_lights[light]}) against the exact "
+                            f"answer: wrong_pct {m['wrong_pct']:.4f} (bound 0.5)")
+
+
+def max_error_case(c, args):
+    sc = mixed()
+    w, h = sc["size"]
+    ts, _ = stats(args.bin, args.out, "max-error-2px", sc, ["--max-error", "2px"])
+    c.check(abs(ts.get("texel_target_px", 0) - 2.0) < 1e-9,
+            f"--max-error 2px: texel target {ts.get('texel_target_px')}")
+    ts, mem_tight = stats(args.bin, args.out, "max-error-0.5", sc, ["--max-error", "0.5"])
+    # Light 1 (the map light) at (-3, 0, 0.9) reaches the floor's centre at
+    # cos = 0.9 / |(-3, 0, 0.9)|: shadows there are 1 / cos longer.
+    stretch = math.sqrt(3 * 3 + 0.9 * 0.9) / 0.9
+    c.check(abs(ts.get("texel_stretch", 0) - stretch) < 1e-4 * stretch,
+            f"stretch for the map light {ts.get('texel_stretch')} (1 / cos = {stretch:.6f})")
+    want = 2.0 * (1.0 + 0.005 * w * h / (2.0 * (w + h) * stretch))
+    c.check(abs(ts.get("texel_target_px", 0) - want) < 1e-4 * want,
+            f"--max-error 0.5 at {w}x{h}: texel target {ts.get('texel_target_px')} (closed form "
+            f"{want:.6f})")
+    ts, mem_loose = stats(args.bin, args.out, "max-error-5", sc, ["--max-error", "5"])
+    c.check(mem_loose <= mem_tight and ts.get("texel_target_px", 0) > want,
+            f"--max-error 5: texel target {ts.get('texel_target_px')}, memory {mem_loose} <= "
+            f"{mem_tight} at 0.5")
+    path = os.path.join(args.out, "max-error-2px.json")
+    for tech, value in (("csm", "0.5"), ("auto", "-1"), ("auto", "abc"), ("auto", "0px"),
+                        ("auto", "101")):
+        run = subprocess.run([os.path.join(args.bin, "vtkshadow-render"), path, "--technique", tech,
+                              "--image", os.path.join(args.out, "never.png"), "--max-error",
+                              value], capture_output=True, text=True)
+        c.check(run.returncode == 2 and "--max-error" in run.stderr and
+                not os.path.exists(os.path.join(args.out, "never.png")),
+                f"--technique {tech} --max-error {value}: exit {run.returncode}, "
+                f"{run.stderr.strip()[:120]}")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--bin", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--case", required=True,
+                    choices=["mixed", "idle-light", "out-of-view", "max-error"])
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    c = Checks()
+    if args.case == "mixed":
+        choice_case(c, args, "mixed", mixed, "planar+csm", ["planar", "csm"])
+    elif args.case == "idle-light":
+        choice_case(c, args, "idle-light", idle_light, "planar", ["planar", "none"])
+    elif args.case == "out-of-view":
+        ts, mem = stats(args.bin, args.out, "out-of-view", out_of_view())
+        c.check(ts.get("choice") == "none" and ts.get("light_choices") == ["none"] and mem == 0,
+                f"out-of-view: choice {ts.get('choice')} {ts.get('light_choices')}, memory {mem}; "
+                f"reason: {ts.get('reason')}")
+    else:
+        max_error_case(c, args)
+    print(f"{args.case}: {'FAILED (%d checks)' % c.failed if c.failed else 'passed'}")
+    sys.exit(1 if c.failed else 0)
+
+
+if __name__ == "__main__":
+    main()
