@@ -31,6 +31,12 @@ DIR/<scene>/<config>/ (visibility, mask, stats, metrics of each run),
 DIR/<scene>.png (gnuplot: wrong_pct, log, floored at 1e-3, against
 ms_per_frame, log; one series per technique family; Pareto front drawn),
 DIR/summary.md (tables, auto's position against the Pareto front, goals).
+With --peers PREFIXES, scenes whose key starts with one of them also get
+Blender EEVEE rows (technique eevee, settings default / best) from
+vtkshadow-compare --renderers povray,eevee,eevee-best, scored against the
+same POV-Ray reference; their ms_per_frame is Blender's own seconds per
+frame (offline, not comparable to an interactive frame), so peers are
+plotted but are not on the Pareto front.
 Progress lines go to stderr.
 """
 
@@ -51,7 +57,7 @@ WRONG_FLOOR = 1e-3
 COLUMNS = ["scene", "technique", "settings", "ms_per_frame", "overhead_ms",
            "unshadowed_ms", "ratio", "raw_ms", "memory_bytes", "wrong_pct",
            "vis_mae", "edge_px", "false_shadow_pct", "false_light_pct",
-           "auto_choice", "texel_px"]
+           "auto_choice", "texel_px", "auto_reason"]
 
 
 def log(msg):
@@ -112,16 +118,55 @@ def config_dir(tech, settings):
     return tech if s in ("-", "default") and tech != "csm" else tech + "_" + s
 
 
-def ensure_refs(scenes, out, scale):
-    refs = os.path.join(out, "refs")
+def run_compare(scenes, out, scale, renderers, name):
+    """vtkshadow-compare into DIR/<name>, sharing one reference cache."""
+    dest = os.path.join(out, name)
     cmd = [os.path.join(BIN, "vtkshadow-compare")] + scenes + [
-        "--out", refs, "--scale", repr(scale), "--renderers", "povray", "--no-report"]
-    log("POV-Ray references (cached): " + " ".join(cmd))
-    with open(os.path.join(out, "refs.log"), "w") as logf:
+        "--out", dest, "--cache", os.path.join(out, "cache"), "--scale", repr(scale),
+        "--renderers", renderers, "--no-report"]
+    log("%s (cached): %s" % (renderers, " ".join(cmd)))
+    with open(os.path.join(out, name + ".log"), "w") as logf:
         rc = subprocess.call(cmd, stdout=logf, stderr=subprocess.STDOUT)
     if rc != 0:
-        log("warning: vtkshadow-compare exited %d (see %s/refs.log)" % (rc, out))
-    return refs
+        log("warning: vtkshadow-compare exited %d (see %s/%s.log)" % (rc, out, name))
+    return dest
+
+
+def ensure_refs(scenes, out, scale):
+    return run_compare(scenes, out, scale, "povray", "refs")
+
+
+PEERS = (("eevee", "default"), ("eevee-best", "best"))
+
+
+def peer_rows(scenes, out, scale, light):
+    """Blender EEVEE (default and best settings) through the same harness,
+    scored against the same POV-Ray reference. Its time is Blender's own
+    seconds per frame (an offline renderer: 64 samples, shadow maps rebuilt
+    every frame), so it goes on the plots but not into the Pareto front."""
+    dest = run_compare(scenes, out, scale, "povray,eevee,eevee-best", "peers")
+    try:
+        with open(os.path.join(dest, "results.json")) as f:
+            doc = json.load(f)
+    except (OSError, ValueError) as e:
+        log("peers: no results (%s)" % e)
+        return {}
+    rows = {}
+    for sc in doc.get("scenes", []):
+        key = sc.get("scene", "").replace("/", "-")
+        seconds = sc.get("frame_seconds") or {}
+        for test, label in PEERS:
+            hit = [r for r in sc.get("results", []) if r.get("test") == test
+                   and r.get("light") == light and r.get("reference") == "povray"]
+            row = {c: None for c in COLUMNS}
+            row.update(scene=key, technique="eevee", settings=label)
+            if test in seconds:
+                row["ms_per_frame"] = 1000.0 * seconds[test]
+            if hit:
+                for k in ("wrong_pct", "vis_mae", "edge_px", "false_shadow_pct", "false_light_pct"):
+                    row[k] = hit[0].get(k)
+            rows.setdefault(key, []).append(row)
+    return rows
 
 
 def run_render(scene, args, size, light, frames, d, want_images):
@@ -219,13 +264,14 @@ def bench_scene(scene, a, refs):
             row["memory_bytes"] = st.get("shadow_map_bytes")
             ts = st.get("technique_stats") or {}
             if tech == "auto":
-                ch = ts.get("choice")
-                if isinstance(ts.get("lights"), list) and ch is None:
-                    ch = ";".join(str(l.get("choice")) for l in ts["lights"])
-                row["auto_choice"] = "%s (%s)" % (ch, ts.get("reason", "")) if ts.get("reason") else (
-                    ch if ch is not None else json.dumps(ts, sort_keys=True)[:200])
+                lc = ts.get("light_choices") or []
+                row["auto_choice"] = "%s [%s]%s" % (
+                    ts.get("choice"), ", ".join(lc),
+                    " texel <= %.2f px" % ts["texel_target_px"]
+                    if "csm" in str(ts.get("choice")) and ts.get("texel_target_px") else "")
+                row["auto_reason"] = ts.get("reason")
             lights = ts.get("lights")
-            if tech in ("csm",) and isinstance(lights, list) and len(lights) > a.light:
+            if tech in ("csm", "auto") and isinstance(lights, list) and len(lights) > a.light:
                 tp = lights[a.light].get("texel_px")
                 if tp:
                     row["texel_px"] = "/".join("%.2f" % v for v in tp)
@@ -279,7 +325,7 @@ def plot(key, rows, front, out):
     png = os.path.join(out, key + ".png")
     styles = {"none": "pt 6 ps 1.5 lc rgb '#777777'", "vtk": "pt 5 ps 1.5 lc rgb '#d62728'",
               "planar": "pt 9 ps 1.5 lc rgb '#2ca02c'", "csm": "pt 7 ps 1.5 lc rgb '#1f77b4'",
-              "auto": "pt 3 ps 2.5 lc rgb '#000000'"}
+              "auto": "pt 3 ps 2.5 lc rgb '#000000'", "eevee": "pt 11 ps 1.5 lc rgb '#9467bd'"}
     plots = ["'%s' using 1:2 with linespoints dt 2 lw 1.5 lc rgb '#ff7f0e' pt 1 title 'Pareto front'"
              % os.path.join(ddir, "plot_front.dat")]
     for f in fams:
@@ -400,6 +446,9 @@ def main():
     p.add_argument("--grid", choices=("small", "full"), default="small")
     p.add_argument("--rounds", type=int, default=2)
     p.add_argument("--light", type=int, default=0)
+    p.add_argument("--peers", default="",
+                   help="comma-separated scene-key prefixes (e.g. basic,scivis,cad) that also get "
+                        "Blender EEVEE rows at its default and best settings")
     a = p.parse_args()
     if a.frames < 30:
         p.error("--frames must be >= 30")
@@ -417,12 +466,16 @@ def main():
         if not os.access(os.path.join(BIN, x), os.X_OK):
             p.error("missing %s (build first)" % os.path.join(BIN, x))
     refs = ensure_refs(scenes, a.out, a.scale)
+    prefixes = [x for x in a.peers.split(",") if x]
+    peer_scenes = [s for s in scenes if any(scene_key(s).startswith(x) for x in prefixes)]
+    peers = peer_rows(peer_scenes, a.out, a.scale, a.light) if peer_scenes else {}
     log("timings: techniques interleaved in %d rounds; compare ratios within a run, "
         "not absolute times" % a.rounds)
     results, allrows = [], []
     for s in scenes:
         key, size, rows = bench_scene(s, a, refs)
-        front = pareto(rows)
+        front = pareto(rows)  # peers have no same-run ratio: never on the front
+        rows += peers.get(key, [])
         for f in os.listdir(os.path.join(a.out, key)) if os.path.isdir(os.path.join(a.out, key)) else []:
             if f.startswith("plot_") and f.endswith(".dat"):
                 os.remove(os.path.join(a.out, key, f))

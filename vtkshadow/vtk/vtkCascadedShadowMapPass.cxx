@@ -589,7 +589,14 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     Internals::RenderedTile& held = impl.Rendered[t];
     bool same = held.Valid && held.CasterTime == casterTime && held.Map.Light == tile.Light &&
       held.Map.View.perspective == tile.View.perspective;
-    for (int k = 0; same && k < 16; ++k)
+    // Two empty maps (nothing in front of a cube face, no receiver in a
+    // slice) are the same whatever their placeholder matrices say.
+    const bool empty = tile.View.texel_world <= 0.0;
+    if (same && empty)
+    {
+      same = held.Map.View.texel_world <= 0.0;
+    }
+    for (int k = 0; same && !empty && k < 16; ++k)
     {
       const double a = tile.Absolute[k], b = held.Map.Absolute[k];
       same = std::abs(a - b) <= 1e-12 * std::max(1.0, std::max(std::abs(a), std::abs(b)));
