@@ -9,8 +9,8 @@ tests/gl-run.sh when no X display is set.)
 
 For each scene (light K, default 0) it runs build/bin/vtkshadow-render with:
 none; vtk at map 1024, 2048, 4096; planar when the scene has a receiver;
-csm at its defaults and over a grid (small: cascades 1,2,4 x map 1024,2048 x
-filter 0 (hardware); full: cascades 1..4 x map 512..4096 x filter 0,1,2);
+csm at its defaults and over a grid (small: cascades 1,2,4 x map 512,1024,2048
+x filter 0 (hardware); full: cascades 1..4 x map 512..4096 x filter 0,1,2);
 auto. Each render gives the visibility and mask of light K (scored with
 build/bin/vtkshadow-metrics against the POV-Ray reference of
 build/bin/vtkshadow-compare --renderers povray, cached in DIR/refs) and
@@ -100,7 +100,7 @@ def configs_for(receivers, grid):
         out.append(("planar", "-", []))
     out.append(("csm", "default", []))
     if grid == "small":
-        cascades, maps, filters = (1, 2, 4), (1024, 2048), (0,)
+        cascades, maps, filters = (1, 2, 4), (512, 1024, 2048), (0,)
     else:
         cascades, maps, filters = (1, 2, 3, 4), (512, 1024, 2048, 4096), (0, 1, 2)
     for c in cascades:

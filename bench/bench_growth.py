@@ -1,0 +1,147 @@
+"""How each technique's frame time grows with triangle count and with pixel count.
+
+  tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py --out DIR
+                  [--frames 30] [--rounds 2]
+
+Scenes (written to DIR, in the vtkshadow scene format): a sphere over a floor
+lit by one directional light, the sphere tessellated to about 10k, 100k and
+1M triangles, at 640x480; and the 100k scene at 320x240, 640x480 and
+1280x960. Each scene is rendered with none, vtk (map 2048), planar, csm and
+auto by vtkshadow-render --stats (the same camera orbit for every technique;
+frames interleaved per round, the order rotated each round). For each row:
+the median ms per frame, and the ratio to none of the same rounds (the
+figure to compare: the machine is shared and noisy).
+
+Writes DIR/growth.json and DIR/growth.md (a Markdown section). Progress
+lines go to stderr.
+"""
+import argparse
+import json
+import os
+import statistics
+import sys
+
+import vtkshadow
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtkshadow_bench import log, run_render  # noqa: E402
+
+TECHNIQUES = ["none", "vtk", "planar", "csm", "auto"]
+TRIANGLES = [10_000, 100_000, 1_000_000]
+SIZES = [(320, 240), (640, 480), (1280, 960)]
+
+
+def scene(resolution, size):
+    return {"description": "bench_growth: sphere over a floor, one directional light",
+            "size": list(size),
+            "camera": {"position": [0, -8, 5], "focal_point": [0, 0, 0.5], "view_up": [0, 0, 1],
+                       "view_angle": 30},
+            "lights": [{"type": "directional", "direction": [-3, -2, -6]}],
+            "objects": [{"sphere": {"center": [0, 0, 1.2], "radius": 0.5,
+                                    "resolution": resolution}},
+                        {"plane": {"origin": [-5, -5, 0], "point1": [5, -5, 0],
+                                   "point2": [-5, 5, 0]}, "receiver": True}]}
+
+
+def triangles(path):
+    s = vtkshadow.vtkShadowScene()
+    if not s.Load(path):
+        sys.exit(f"bench_growth: {path}: {s.GetErrorMessage()}")
+    return sum(s.GetObjectPolyData(i).GetNumberOfPolys() for i in range(s.GetNumberOfObjects()))
+
+
+def write_scene(out, name, resolution, size):
+    path = os.path.join(out, name + ".json")
+    with open(path, "w") as f:
+        json.dump(scene(resolution, size), f, indent=1)
+    return path
+
+
+def resolution_for(out, target):
+    """The sphere resolution whose triangle count is nearest `target`."""
+    lo, hi = 3, 4096
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if triangles(write_scene(out, "probe", mid, SIZES[1])) < target:
+            lo = mid
+        else:
+            hi = mid
+    counts = {r: triangles(write_scene(out, "probe", r, SIZES[1])) for r in (lo, hi)}
+    os.remove(os.path.join(out, "probe.json"))
+    best = min(counts, key=lambda r: abs(counts[r] - target))
+    return best, counts[best]
+
+
+def measure(cases, a):
+    """cases: [(label, path, size)] -> {label: {technique: (ms, ratio)}}"""
+    results = {}
+    for label, path, size in cases:
+        times = {t: [] for t in TECHNIQUES}
+        ratios = {t: [] for t in TECHNIQUES}
+        for rnd in range(a.rounds):
+            k = rnd % len(TECHNIQUES)
+            order = TECHNIQUES[k:] + TECHNIQUES[:k]
+            for t in order:
+                d = os.path.join(a.out, "runs", label.replace(" ", "_"), t)
+                st = run_render(path, ["--technique", t], size, 0, a.frames, d, want_images=False)
+                if st is None:
+                    sys.exit(f"bench_growth: {label} {t}: vtkshadow-render failed (see {d})")
+                times[t].append(st["shadowed_ms"]["median"])
+                ratios[t].append(st["shadowed_ms"]["median"] / st["unshadowed_ms"]["median"])
+                log(f"growth {label}: round {rnd + 1}/{a.rounds} {t}: "
+                    f"{st['shadowed_ms']['median']:.1f} ms")
+        results[label] = {t: (statistics.median(times[t]), statistics.median(ratios[t]))
+                          for t in TECHNIQUES}
+    return results
+
+
+def table(title, results, labels):
+    lines = [f"| {title} | " + " | ".join(f"{t} ms (x none)" for t in TECHNIQUES) + " |",
+             "|---|" + "---:|" * len(TECHNIQUES)]
+    for label in labels:
+        r = results[label]
+        lines.append(f"| {label} | " + " | ".join(
+            f"{r[t][0]:.1f} ({r[t][1] / r['none'][1]:.2f})" for t in TECHNIQUES) + " |")
+    return lines
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--frames", type=int, default=30)
+    ap.add_argument("--rounds", type=int, default=2)
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    tri_cases, size_cases = [], []
+    res_100k = None
+    for target in TRIANGLES:
+        res, count = resolution_for(a.out, target)
+        label = f"{count:,} triangles"
+        tri_cases.append((label, write_scene(a.out, f"tri-{target}", res, SIZES[1]), SIZES[1]))
+        if target == 100_000:
+            res_100k = (res, count)
+        log(f"growth: {target:,} triangles -> sphere resolution {res} ({count:,} triangles)")
+    for w, h in SIZES:
+        label = f"{w}x{h} ({w * h:,} px)"
+        size_cases.append((label, write_scene(a.out, f"px-{w}x{h}", res_100k[0], (w, h)), (w, h)))
+    results = measure(tri_cases + size_cases, a)
+    with open(os.path.join(a.out, "growth.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    cmd = (f"tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py --out {a.out} "
+           f"--frames {a.frames} --rounds {a.rounds}")
+    lines = ["## How cost grows with triangles and pixels", "",
+             f"Produced by `{cmd}` (also run by `sh scripts/results.sh`). A sphere over a floor, "
+             f"one directional light, camera orbit of vtkshadow-render; {a.rounds} interleaved "
+             f"rounds of {a.frames} frames. Each cell: median ms per frame, and in brackets the "
+             "median over rounds of (technique / unshadowed) divided by the same for none, i.e. "
+             "the cost relative to the unshadowed frame of the same run.", ""]
+    lines += table("triangles, 640x480", results, [c[0] for c in tri_cases]) + [""]
+    lines += table(f"pixels, {res_100k[1]:,} triangles", results, [c[0] for c in size_cases])
+    lines.append("")
+    with open(os.path.join(a.out, "growth.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
