@@ -18,7 +18,7 @@ window.WaitForCompletion(). The table reports the median over every timed
 frame of a technique. Progress goes to stderr, one line per round.
 
 The result is written to the section "## Planar shadows: overhead against
-none" of docs/results.md (other sections are kept). --investigate adds
+none" of docs/performance.md (other sections are kept). --investigate adds
 diagnostic variants of the 1M-triangle scene (receiver off, small caster,
 fewer triangles, shadow off the receiver, 3 lights, no-op clip planes on the
 main pass) to explain where the planar time goes.
@@ -435,7 +435,7 @@ def main():
     ap.add_argument("--investigate", action="store_true",
                     help="add diagnostic variants of the 1M-triangle scene")
     ap.add_argument("--only", default="", help="comma-separated config keys to run (debugging)")
-    ap.add_argument("--output", default=os.path.join(REPO, "docs", "results.md"))
+    ap.add_argument("--output", default=os.path.join(REPO, "docs", "performance.md"))
     ap.add_argument("--no-write", action="store_true")
     ap.add_argument("--profile", metavar="TECHNIQUE",
                     help="render only the 1M-triangle scene with TECHNIQUE for --frames frames "

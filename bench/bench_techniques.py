@@ -1,6 +1,6 @@
 """Frame time of every technique on scene files, interleaved, from
 vtkshadow-render --stats (same camera orbit for all), written as a section of
-docs/results.md.
+docs/performance.md.
 
   tests/gl-run.sh build/bin/vtkshadow-python bench/bench_techniques.py \
       [--frames 20] [--rounds 3] [--size 800x600] SCENE...
@@ -41,7 +41,7 @@ def main():
     ap.add_argument("--frames", type=int, default=20)
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--size", default="800x600")
-    ap.add_argument("--output", default=os.path.join(REPO, "docs", "results.md"))
+    ap.add_argument("--output", default=os.path.join(REPO, "docs", "performance.md"))
     args = ap.parse_args()
     rows = []
     with tempfile.TemporaryDirectory() as out:
