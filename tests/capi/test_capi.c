@@ -77,6 +77,23 @@ int main(int argc, char **argv)
   printf("mean visibility: none %.6f, vtk %.6f over %ld valid pixels\n", mean_none, mean_vtk,
          valid_vtk);
 
+  /* Settings by name: auto's error target, with bad keys and values refused. */
+  vtkshadow_technique *automatic = vtkshadow_technique_new("auto", error, sizeof error);
+  CHECK(automatic != NULL);
+  CHECK(vtkshadow_technique_set_option(automatic, "max_error", 1.0, error, sizeof error) == 0);
+  CHECK(vtkshadow_technique_set_option(automatic, "max_error", -1.0, error, sizeof error) != 0);
+  CHECK_STR_CONTAINS(error, "max_error");
+  CHECK(vtkshadow_technique_set_option(automatic, "no_such_key", 1.0, error, sizeof error) != 0);
+  CHECK_STR_CONTAINS(error, "no_such_key");
+  CHECK(vtkshadow_technique_set_option(NULL, "max_error", 1.0, error, sizeof error) != 0);
+  CHECK(vtkshadow_technique_set_option(automatic, NULL, 1.0, error, sizeof error) != 0);
+  double mean_auto = 0.0;
+  CHECK(vtkshadow_visibility(scene, automatic, 0, NULL, &mean_auto, NULL, error,
+                             sizeof error) == 0);
+  /* Light 0's shadow falls on the floor only: auto draws it (planar). */
+  CHECK(mean_auto < 0.99 && mean_auto > 0.5);
+
+  vtkshadow_technique_free(automatic);
   vtkshadow_technique_free(none);
   vtkshadow_technique_free(vtk);
   vtkshadow_scene_free(scene);

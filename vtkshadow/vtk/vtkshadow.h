@@ -51,6 +51,13 @@ VTKSHADOW_EXPORT const char *vtkshadow_technique_name(const vtkshadow_technique 
 /* Shadow-map edge length in texels (16..16384) for map-based techniques. */
 VTKSHADOW_EXPORT int vtkshadow_technique_set_map_resolution(vtkshadow_technique *technique,
                                                             int resolution);
+/* A technique setting by name, as vtkShadowTechnique::SetOption: e.g.
+ * "cascades", "filter" for csm, "max_error" (wrong_pct) or "max_texel_px"
+ * for auto. Returns 0, or 1 for an unknown key or a value out of range
+ * (nothing changed; the message names both). Set before install. */
+VTKSHADOW_EXPORT int vtkshadow_technique_set_option(vtkshadow_technique *technique,
+                                                    const char *key, double value, char *error,
+                                                    size_t error_size);
 /* Switch the technique on for a vtkOpenGLRenderer (passed as void*). */
 VTKSHADOW_EXPORT int vtkshadow_technique_install(vtkshadow_technique *technique,
                                                  void *vtk_renderer, char *error,

@@ -132,6 +132,20 @@ extern "C"
     return 0;
   }
 
+  int vtkshadow_technique_set_option(
+    vtkshadow_technique* technique, const char* key, double value, char* error, size_t error_size)
+  {
+    if (!technique || !key || !technique->Technique->SetOption(key, value))
+    {
+      std::ostringstream message;
+      message << "vtkshadow_technique_set_option: unknown key or value out of range: "
+              << (key ? key : "(null)") << " = " << value;
+      SetError(error, error_size, message.str());
+      return 1;
+    }
+    return 0;
+  }
+
   int vtkshadow_technique_install(
     vtkshadow_technique* technique, void* vtk_renderer, char* error, size_t error_size)
   {
