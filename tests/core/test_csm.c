@@ -1413,6 +1413,37 @@ static void test_choose(void) {
         1);
 }
 
+static void test_perspective_resolution(void) {
+  /* Closed form: a 45-degree half angle, light 10 away, seen at depth 10
+   * with a 90-degree view on 512 px, target 1 px: need 512. */
+  CHECK(vsh_csm_perspective_resolution(45.0, 10.0, 10.0, 90.0, 512, 1.0, 16, 8192) == 512);
+  CHECK(vsh_csm_perspective_resolution(45.0, 10.0, 10.0, 90.0, 513, 1.0, 16, 8192) == 1024);
+  CHECK(vsh_csm_perspective_resolution(45.0, 10.0, 10.0, 90.0, 512, 2.0, 16, 8192) == 256);
+  /* The result meets the target, and half of it does not (when above min). */
+  for (int i = 0; i < 200; ++i) {
+    const double half = rnd(5.0, 80.0), dist = rnd(0.1, 100.0), depth = rnd(0.1, 100.0);
+    const double fov = rnd(10.0, 120.0), target = rnd(0.5, 5.0);
+    const int h = (int)rnd(100.0, 2000.0);
+    const int res = vsh_csm_perspective_resolution(half, dist, depth, fov, h, target, 64, 8192);
+    const double px = 2.0 * tan(half * PI / 180.0) * dist / res /
+                      (2.0 * depth * tan(fov * PI / 360.0) / h);
+    CHECK(res >= 64 && res <= 8192);
+    CHECK(px <= target * (1 + 1e-12) || res == 8192);
+    if (res > 64) {
+      CHECK(2.0 * px > target * (1 - 1e-12));
+    }
+  }
+  /* Bad input: min_res back. */
+  CHECK(vsh_csm_perspective_resolution(90.0, 1.0, 1.0, 60.0, 100, 1.0, 256, 4096) == 256);
+  CHECK(vsh_csm_perspective_resolution(45.0, 0.0, 1.0, 60.0, 100, 1.0, 256, 4096) == 256);
+  CHECK(vsh_csm_perspective_resolution(45.0, 1.0, NAN, 60.0, 100, 1.0, 256, 4096) == 256);
+  CHECK(vsh_csm_perspective_resolution(45.0, 1.0, 1.0, 60.0, 0, 1.0, 256, 4096) == 256);
+  CHECK(vsh_csm_perspective_resolution(45.0, 1.0, 1.0, 60.0, 100, 0.0, 256, 4096) == 256);
+  CHECK(vsh_csm_perspective_resolution(45.0, 1.0, 1.0, 60.0, 100, 1.0, 512, 256) == 512);
+  /* Far beyond reach: max_res. */
+  CHECK(vsh_csm_perspective_resolution(45.0, 1e9, 1e-3, 60.0, 1000, 1.0, 16, 4096) == 4096);
+}
+
 int main(void) {
   test_splits_closed_forms();
   test_splits_bad_input();
@@ -1434,5 +1465,6 @@ int main(void) {
   test_texel_pixels();
   test_bias();
   test_choose();
+  test_perspective_resolution();
   return vsh_check_report("core.csm");
 }

@@ -33,3 +33,13 @@ add_test(NAME render.planar.two-lights
           ${CMAKE_CURRENT_SOURCE_DIR}/render/test_planar_two_lights.py
           --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/planar --technique planar)
 set_tests_properties(render.planar.two-lights PROPERTIES LABELS "render" TIMEOUT 120)
+
+# 36 (receiver, light) pairs: more than one 32-bit mask channel; light 2's
+# bits are in the second channel.
+foreach(_light 0 2)
+  add_test(NAME render.planar.many-receivers-light${_light}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_planar.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/planar --case many-receivers
+            --light ${_light} --technique planar --max-wrong-pct 0.05 --min-mask-agreement 99.9)
+  set_tests_properties(render.planar.many-receivers-light${_light} PROPERTIES LABELS "render" TIMEOUT 120)
+endforeach()

@@ -14,6 +14,10 @@ Cases:
               light 0 still gets planar; both exact.
   out-of-view light 0 is the only light, the receiver it would shadow is
               behind the camera: none.
+  box         a box over the floor (a convex mesh whose corners repeat per
+              face): planar, exact.
+  concave     an L-shaped prism whose tall arm shadows its low arm: csm,
+              because planar cannot draw a shadow on its own caster.
   max-error   --max-error 2px gives the cascaded pass a texel target of
               exactly 2; --max-error 0.5 the closed form of
               vsh_auto_texel_target for the window and the map light's
@@ -55,6 +59,33 @@ def out_of_view():
     camera = {"position": [0, -8, 5], "focal_point": [0, -20, 5], "view_up": [0, 0, 1],
               "view_angle": 30}
     return scene([SUN], [sphere([0, 0, 1.2], 0.5), floor(5)], camera)
+
+
+def box_scene():
+    return scene([{"type": "directional", "direction": [-3, -2, -6]}],
+                 [{"box": {"min": [-0.5, -0.5, 0.3], "max": [0.5, 0.5, 1.0]}}, floor(5)])
+
+
+def l_prism(path):
+    """A closed L-shaped prism, outward-wound: its cross-section in (x, z),
+    extruded along y. The fan from the reflex corner D triangulates the caps."""
+    ring = [(0, 0), (2, 0), (2, 0.5), (0.5, 0.5), (0.5, 2), (0, 2)]
+    with open(path, "w") as f:
+        for y in (-0.5, 0.5):
+            for x, z in ring:
+                f.write(f"v {x} {y} {z}\n")
+        b = lambda i: i % 6 + 1
+        t = lambda i: i % 6 + 7
+        for i in range(6):  # sides
+            f.write(f"f {b(i + 1)} {b(i)} {t(i)}\nf {b(i + 1)} {t(i)} {t(i + 1)}\n")
+        for a, c in ((4, 5), (5, 0), (0, 1), (1, 2)):  # caps, fan from D = 3
+            f.write(f"f {b(3)} {b(a)} {b(c)}\nf {t(3)} {t(c)} {t(a)}\n")
+
+
+def concave_scene(out):
+    mesh = os.path.join(out, "l-prism.obj")
+    l_prism(mesh)
+    return scene([{"type": "directional", "direction": [1, 0.2, -1]}], [{"mesh": mesh}, floor(5)])
 
 
 def stats(bin_dir, out, name, sc, extra=()):
@@ -130,7 +161,8 @@ def main():
     ap.add_argument("--bin", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True,
-                    choices=["mixed", "idle-light", "out-of-view", "max-error"])
+                    choices=["mixed", "idle-light", "out-of-view", "box", "concave",
+                             "max-error"])
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     c = Checks()
@@ -143,6 +175,13 @@ def main():
         c.check(ts.get("choice") == "none" and ts.get("light_choices") == ["none"] and mem == 0,
                 f"out-of-view: choice {ts.get('choice')} {ts.get('light_choices')}, memory {mem}; "
                 f"reason: {ts.get('reason')}")
+    elif args.case == "box":
+        choice_case(c, args, "box", box_scene, "planar", ["planar"])
+    elif args.case == "concave":
+        ts, _ = stats(args.bin, args.out, "concave", concave_scene(args.out))
+        c.check(ts.get("choice") == "csm" and "not convex" in str(ts.get("reason")),
+                f"concave: choice {ts.get('choice')} {ts.get('light_choices')}; reason: "
+                f"{ts.get('reason')}")
     else:
         max_error_case(c, args)
     print(f"{args.case}: {'FAILED (%d checks)' % c.failed if c.failed else 'passed'}")

@@ -266,6 +266,23 @@ def two_lights(size):
     }
 
 
+def many_receivers(size):
+    """12 floor strips, each its own receiver, under 3 lights: 36 (receiver,
+    light) pairs, more than one 32-bit mask channel holds, so the pass uses
+    all four; the spot light's pairs (index 3 r + 2) reach the second."""
+    strips = [floor(5, y0=-5 + k * 10 / 12, y1=-5 + (k + 1) * 10 / 12) for k in range(12)]
+    return {
+        "description": "planar test: 12 receiver strips x 3 lights = 36 pairs",
+        "size": list(size),
+        "camera": {"position": [0, -8, 5], "focal_point": [0, 0, 0.5], "view_up": [0, 0, 1],
+                   "view_angle": 30},
+        "lights": [SPHERE_FLOOR_LIGHTS["directional"], SPHERE_FLOOR_LIGHTS["point"],
+                   {"type": "spot", "position": [-1, 3, 6], "focal_point": [0, 0, 0],
+                    "cone_angle": 30}],
+        "objects": [sphere([0, 0, 1.2], 0.5)] + strips,
+    }
+
+
 def moved(scene, offset=0.0, scale=1.0):
     """The scene with every position p -> scale * p + offset and every length
     scaled (objects without transforms only); directions stay."""
@@ -314,6 +331,7 @@ CASES = {
     "offset-1e6": (lambda: moved(sphere_floor("directional", S43), offset=1e6), 2000),
     "scale-1e-6": (lambda: moved(sphere_floor("directional", S43), scale=1e-6), 2000),
     "two-lights": (lambda: two_lights(S43), 2000),
+    "many-receivers": (lambda: many_receivers(S43), 1500),
     "big-floor-200": (lambda: big_floor(S43), 2000),
     "thin-plate": (lambda: thin_plate(S43), 500),
 }

@@ -137,6 +137,18 @@ int vsh_csm_choose(double near_depth, double far_depth, double view_angle_deg, d
                    int min_res, int max_res, int max_count, int *out_resolution,
                    int *out_count, double *out_texel_px);
 
+/* The resolution (a power of two in [min_res, max_res]) a perspective map
+ * of half angle `half_angle_deg` needs so that one of its texels, at
+ * `light_distance` from the light, covers at most `max_texel_px` pixels of
+ * a viewport `viewport_height` pixels high that sees it at view depth
+ * `view_depth` with vertical angle `view_angle_deg`:
+ *   res >= tan(half) * light_distance * viewport_height /
+ *          (max_texel_px * view_depth * tan(view_angle / 2)).
+ * max_res when even that is not enough; min_res for bad input. */
+int vsh_csm_perspective_resolution(double half_angle_deg, double light_distance,
+                                   double view_depth, double view_angle_deg, int viewport_height,
+                                   double max_texel_px, int min_res, int max_res);
+
 #ifdef __cplusplus
 }
 #endif

@@ -130,3 +130,22 @@ int vsh_csm_choose(double near_depth, double far_depth, double view_angle_deg, d
     *out_texel_px = isfinite(best_px) ? best_px : 0.0;
   return found ? 0 : 1;
 }
+
+int vsh_csm_perspective_resolution(double half_angle_deg, double light_distance,
+                                   double view_depth, double view_angle_deg, int viewport_height,
+                                   double max_texel_px, int min_res, int max_res)
+{
+  if (min_res < 1 || max_res < min_res || !(half_angle_deg > 0.0 && half_angle_deg < 90.0) ||
+      !(light_distance > 0.0) || !isfinite(light_distance) || !(view_depth > 0.0) ||
+      !isfinite(view_depth) || !(view_angle_deg > 0.0 && view_angle_deg < 180.0) ||
+      viewport_height < 1 || !(max_texel_px > 0.0) || !isfinite(max_texel_px))
+    return min_res > 0 ? min_res : 1;
+  const double need = tan(half_angle_deg * VSH_PI / 180.0) * light_distance * viewport_height /
+                      (max_texel_px * view_depth * tan(view_angle_deg * 0.5 * VSH_PI / 180.0));
+  long long res = 1;
+  while (res < min_res)
+    res *= 2;
+  while (res < need && res * 2 <= max_res)
+    res *= 2;
+  return (int)(res > max_res ? max_res : res);
+}

@@ -148,7 +148,9 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     {
       continue;
     }
-    vtkMTimeType t = std::max(o.Actor->GetMapper()->GetMTime(), o.Actor->GetMTime());
+    // Convexity survives every affine placement, so only the mesh matters
+    // (not the actor's MTime, which VTK's pass machinery bumps).
+    vtkMTimeType t = o.Actor->GetMapper()->GetMTime();
     if (vtkDataObject* data = o.Actor->GetMapper()->GetInputDataObject(0, 0))
     {
       t = std::max(t, data->GetMTime());

@@ -27,6 +27,7 @@
 
 #include "vsh_bounds.h"
 #include "vsh_camera.h"
+#include "vsh_vec3.h"
 #include "vsh_csm.h"
 #include "vsh_mat4.h"
 
@@ -80,6 +81,16 @@ struct Tile
   double Bias[2] = { 0, 0 }; // depth bias, normal offset
   int Light = -1;
 };
+
+// Half angle of a positional light's map: the spot's cone a little wider
+// (so its edge is inside the map), or a cube face, a little over 45 degrees
+// (so the face a direction's major axis picks always contains it).
+const double CubeFaceHalfAngle = 45.5;
+double MapHalfAngle(vtkLight* light)
+{
+  return light->GetConeAngle() < 90.0 ? std::min(light->GetConeAngle() * 1.02 + 0.5, 89.0)
+                                      : CubeFaceHalfAngle;
+}
 
 // Depth bias and normal offset from the map's texel size and depth range,
 // and the absolute world -> clip matrix (for caching).
@@ -377,10 +388,51 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     : vsh_csm_default_count(depthRange[0], depthRange[1], this->RatioPerCascade);
   if (this->MaxTexelPixels > 0.0)
   {
+    // Fewest cascades first: every cascade re-renders every caster, so on
+    // any renderer a second cascade costs more than a larger map. Then the
+    // least memory for that count.
+    const int maxCount = this->CascadeCount > 0 ? this->CascadeCount : 8;
     double predicted = 0.0;
-    vsh_csm_choose(depthRange[0], depthRange[1], cam.view_angle, aspect, size[1],
-      this->MaxTexelPixels, this->MemoryBudget, 256, 8192, this->CascadeCount > 0 ? this->CascadeCount : 8,
-      &resolution, &count, &predicted);
+    for (int k = this->CascadeCount > 0 ? maxCount : 1; k <= maxCount; ++k)
+    {
+      if (vsh_csm_choose(depthRange[0], depthRange[1], cam.view_angle, aspect, size[1],
+            this->MaxTexelPixels, this->MemoryBudget, 256, 8192, k, &resolution, &count,
+            &predicted) == 0)
+      {
+        break;
+      }
+    }
+    // Spot and point-light maps share the atlas resolution: raise it to what
+    // they need where the scene's centre is seen.
+    double centre[3];
+    vsh_bounds everything = casterBounds;
+    vsh_bounds_merge(&everything, &receiverBounds);
+    if (haveScene && vsh_bounds_center(&everything, centre) == 0)
+    {
+      double forward[3], r[3], u[3];
+      vsh_camera_basis(&cam, r, u, forward);
+      const double rel[3] = { centre[0] - cam.position[0], centre[1] - cam.position[1],
+        centre[2] - cam.position[2] };
+      const double depth = std::max(vsh_vec3_dot(rel, forward), depthRange[0]);
+      int l = 0;
+      for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
+      {
+        const bool skipped = ((this->SkippedLights >> l) & 1u) != 0;
+        ++l;
+        if (skipped || !light->GetPositional() ||
+          (light->LightTypeIsHeadlight() && !this->CastHeadlightShadows))
+        {
+          continue;
+        }
+        double p[3];
+        light->GetTransformedPosition(p);
+        const double half = MapHalfAngle(light);
+        const double toCentre[3] = { centre[0] - p[0], centre[1] - p[1], centre[2] - p[2] };
+        resolution = std::max(resolution,
+          vsh_csm_perspective_resolution(half, vsh_vec3_length(toCentre), depth, cam.view_angle,
+            size[1], this->MaxTexelPixels, 256, 8192));
+      }
+    }
   }
   double splits[VSH_CSM_MAX_CASCADES + 1];
   if (vsh_csm_splits(static_cast<vsh_split_scheme>(this->SplitScheme), count, depthRange[0],
@@ -460,7 +512,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
       else if (light->GetConeAngle() < 90.0)
       {
         Tile tile;
-        const double half = std::min(light->GetConeAngle() * 1.02 + 0.5, 89.0);
+        const double half = MapHalfAngle(light);
         if (impl.Tiles.size() < MaxTiles &&
           vsh_csm_fit_perspective(p, travel, half, &everything, cam.position, resolution, &tile.View) == 0)
         {
@@ -480,7 +532,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
           Tile tile;
           double axis[3];
           vsh_csm_cube_face_direction(face, axis);
-          if (vsh_csm_fit_perspective(p, axis, 45.5, &everything, cam.position, resolution, &tile.View) != 0)
+          if (vsh_csm_fit_perspective(p, axis, CubeFaceHalfAngle, &everything, cam.position, resolution, &tile.View) != 0)
           {
             // Nothing in front of this face: a map that covers nothing.
             vsh_mat4_identity(tile.View.world_to_clip);

@@ -124,6 +124,7 @@ struct vtkPlanarShadowPass::Internals
   vtkSmartPointer<vtkOpenGLVertexArrayObject> QuadVAO;
   vtkShaderProgram* QuadProgram = nullptr;
   int MaskSize[2] = { 0, 0 };
+  int MaskChannels = 4; // 32-bit channels: 1 up to 32 pairs, else 4
   int MaskOrigin[2] = { 0, 0 };
 
   // Per-frame values for SetShaderParameters.
@@ -226,7 +227,8 @@ void vtkPlanarShadowPass::RemoveAllReceivers()
 //------------------------------------------------------------------------------
 vtkIdType vtkPlanarShadowPass::GetMemoryBytes() const
 {
-  vtkIdType bytes = static_cast<vtkIdType>(this->Impl->MaskSize[0]) * this->Impl->MaskSize[1] * 16;
+  vtkIdType bytes = static_cast<vtkIdType>(this->Impl->MaskSize[0]) * this->Impl->MaskSize[1] * 4 *
+    this->Impl->MaskChannels;
   for (const auto& entry : this->Impl->Casters)
   {
     bytes += entry.second->Geometry.GetNumberOfBytes();
@@ -435,18 +437,25 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   }
   impl.Mask->SetContext(window);
   impl.FBO->SetContext(window);
-  if (impl.MaskSize[0] != size[0] || impl.MaskSize[1] != size[1] || !impl.Mask->GetHandle())
+  // One 32-bit channel while the pairs fit in it: clearing, writing and
+  // reading a quarter of the bytes is most of the pass's per-pixel cost on a
+  // software rasterizer. Up to 128 pairs need all four channels. (The
+  // lighting code reads .x for pairs 0..31 either way.)
+  const int maskChannels = static_cast<int>(receivers.size()) * impl.LightCount <= 32 ? 1 : 4;
+  if (impl.MaskSize[0] != size[0] || impl.MaskSize[1] != size[1] || !impl.Mask->GetHandle() ||
+    impl.MaskChannels != maskChannels)
   {
     impl.Mask->ReleaseGraphicsResources(window);
     impl.Mask->SetRequireTextureInteger(true);
-    impl.Mask->SetInternalFormat(GL_RGBA32UI);
-    impl.Mask->SetFormat(GL_RGBA_INTEGER);
+    impl.Mask->SetInternalFormat(maskChannels == 1 ? GL_R32UI : GL_RGBA32UI);
+    impl.Mask->SetFormat(maskChannels == 1 ? GL_RED_INTEGER : GL_RGBA_INTEGER);
     impl.Mask->SetDataType(GL_UNSIGNED_INT);
     impl.Mask->SetMinificationFilter(vtkTextureObject::Nearest);
     impl.Mask->SetMagnificationFilter(vtkTextureObject::Nearest);
-    impl.Mask->Allocate2D(size[0], size[1], 4, VTK_UNSIGNED_INT);
+    impl.Mask->Allocate2D(size[0], size[1], maskChannels, VTK_UNSIGNED_INT);
     impl.MaskSize[0] = size[0];
     impl.MaskSize[1] = size[1];
+    impl.MaskChannels = maskChannels;
   }
 
   state->PushFramebufferBindings();

@@ -444,12 +444,23 @@ void vtkShadowCasterGeometry::Analyse()
     parent[find(v[1])] = find(v[0]);
     parent[find(v[2])] = find(v[0]);
   }
+  // Only vertices the welded triangles use count: a point welded into
+  // another (a box's corner repeated per face) is not a component.
+  std::vector<char> used(n, 0);
+  for (unsigned int v : this->Welded)
+  {
+    used[v] = 1;
+  }
   this->Component.assign(n, 0);
   std::vector<unsigned int> label(n, ~0u);
   this->ComponentCount = 0;
   for (size_t i = 0; i < n; ++i)
   {
-    const unsigned int root = find(static_cast<unsigned int>(i));
+    if (!used[canonical[i]])
+    {
+      continue;
+    }
+    const unsigned int root = find(canonical[i]);
     if (label[root] == ~0u)
     {
       label[root] = this->ComponentCount++;
@@ -490,6 +501,19 @@ bool vtkShadowCasterGeometry::IsConvex()
   }
   // Float positions: allow their rounding (relative 1e-5 of the size).
   const double tolerance = 1e-5 * size;
+  // Which way the triangles face: a closed mesh wound inwards has a negative
+  // signed volume, and then every edge of a convex body looks reflex.
+  double volume = 0.0;
+  for (size_t t = 0; t + 2 < this->Welded.size(); t += 3)
+  {
+    const float* a = p + 3 * this->Welded[t];
+    const float* b = p + 3 * this->Welded[t + 1];
+    const float* c = p + 3 * this->Welded[t + 2];
+    volume += static_cast<double>(a[0]) * (static_cast<double>(b[1]) * c[2] - static_cast<double>(b[2]) * c[1]) +
+      static_cast<double>(a[1]) * (static_cast<double>(b[2]) * c[0] - static_cast<double>(b[0]) * c[2]) +
+      static_cast<double>(a[2]) * (static_cast<double>(b[0]) * c[1] - static_cast<double>(b[1]) * c[0]);
+  }
+  const double outwards = volume < 0.0 ? -1.0 : 1.0;
   for (size_t e = 0; e < this->EdgeA.size(); ++e)
   {
     const unsigned int* t = &this->Welded[3 * this->EdgeLeft[e]];
@@ -513,7 +537,7 @@ bool vtkShadowCasterGeometry::IsConvex()
     const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
       e1[0] * e2[1] - e1[1] * e2[0] };
     const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (length > 0.0 && (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / length > tolerance)
+    if (length > 0.0 && outwards * (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / length > tolerance)
     {
       return false; // a reflex edge: the surface folds back on itself
     }
