@@ -20,8 +20,10 @@ Cases:
               because planar cannot draw a shadow on its own caster.
   max-error   --max-error 2px gives the cascaded pass a texel target of
               exactly 2; --max-error 0.5 the closed form of
-              vsh_auto_texel_target for the window and the map light's
-              incidence on the floor; a larger error target
+              vsh_auto_texel_target for the window, the casters'
+              silhouette length seen from the map light (against the
+              spheres' silhouette circles) and the light's incidence on
+              the floor; a larger error target
               never asks for more map memory; --max-error with another
               technique is bad input (exit 2).
 """
@@ -136,7 +138,24 @@ def max_error_case(c, args):
     stretch = math.sqrt(3 * 3 + 0.9 * 0.9) / 0.9
     c.check(abs(ts.get("texel_stretch", 0) - stretch) < 1e-4 * stretch,
             f"stretch for the map light {ts.get('texel_stretch')} (1 / cos = {stretch:.6f})")
-    want = 2.0 * (1.0 + 0.005 * w * h / (2.0 * (w + h) * stretch))
+    # The shadow outline the map light must draw: both spheres' silhouettes
+    # from the point light (circles of radius r sqrt(1 - r^2 / D^2)), in
+    # pixels at each sphere's depth from the camera.
+    eye, focal = CAMERA["position"], CAMERA["focal_point"]
+    fwd = [f - e for f, e in zip(focal, eye)]
+    n = math.sqrt(sum(x * x for x in fwd))
+    fwd = [x / n for x in fwd]
+    light = sc["lights"][1]["position"]
+    outline = 0.0
+    for centre, r in (([0, 0, 1.2], 0.5), ([2.5, 0, 0.5], 0.5)):
+        d_light = math.dist(centre, light)
+        depth = sum((c - e) * f for c, e, f in zip(centre, eye, fwd))
+        pixel = 2.0 * depth * math.tan(math.radians(CAMERA["view_angle"]) / 2) / h
+        outline += 2 * math.pi * r * math.sqrt(1 - r * r / (d_light * d_light)) / pixel
+    got = ts.get("edge_length_px", 0)
+    c.check(abs(got - outline) < 0.03 * outline,
+            f"shadow outline {got:.1f} px (two silhouette circles from the light: {outline:.1f})")
+    want = 2.0 * (1.0 + 0.005 * w * h / (got * stretch))
     c.check(abs(ts.get("texel_target_px", 0) - want) < 1e-4 * want,
             f"--max-error 0.5 at {w}x{h}: texel target {ts.get('texel_target_px')} (closed form "
             f"{want:.6f})")

@@ -6,6 +6,7 @@
 #include "vtkDataObject.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
@@ -30,6 +31,44 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkAutoShadowPass);
+
+struct vtkAutoShadowPass::Internals
+{
+  struct Caster
+  {
+    vtkShadowCasterGeometry Geometry;
+    vtkMTimeType MeshTime = 0;
+    bool Convex = false;
+    // Silhouette length (data units) per light, with the light (data
+    // coordinates) it was computed for.
+    std::map<int, std::pair<std::vector<double>, double>> Silhouette;
+  };
+  std::map<vtkProp*, std::unique_ptr<Caster>> Casters;
+
+  // The caster's mesh analysis, redone only when the mesh changes: its
+  // convexity and silhouettes survive every affine placement, so the
+  // actor's own MTime (which VTK's pass machinery bumps) does not count.
+  Caster& For(vtkActor* actor)
+  {
+    auto& caster = this->Casters[actor];
+    if (!caster)
+    {
+      caster.reset(new Caster);
+    }
+    vtkMTimeType t = actor->GetMapper()->GetMTime();
+    if (vtkDataObject* data = actor->GetMapper()->GetInputDataObject(0, 0))
+    {
+      t = std::max(t, data->GetMTime());
+    }
+    if (caster->MeshTime != t || t == 0)
+    {
+      caster->MeshTime = t;
+      caster->Convex = caster->Geometry.Update(actor) && caster->Geometry.IsConvex();
+      caster->Silhouette.clear();
+    }
+    return *caster;
+  }
+};
 
 namespace
 {
@@ -67,6 +106,8 @@ vtkAutoShadowPass::vtkAutoShadowPass()
   , MaxTexelPixels(0.0)
   , UsedTexelTarget(0.0)
   , UsedStretch(1.0)
+  , UsedEdgeLength(0.0)
+  , Impl(new Internals)
 {
   // One scene pipeline for all three, so switching keeps VTK's passes.
   this->PlanarPass->SetDelegatePass(this->PlainPass);
@@ -148,21 +189,7 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     {
       continue;
     }
-    // Convexity survives every affine placement, so only the mesh matters
-    // (not the actor's MTime, which VTK's pass machinery bumps).
-    vtkMTimeType t = o.Actor->GetMapper()->GetMTime();
-    if (vtkDataObject* data = o.Actor->GetMapper()->GetInputDataObject(0, 0))
-    {
-      t = std::max(t, data->GetMTime());
-    }
-    auto& cached = this->Convex[o.Actor];
-    if (cached.first != t || t == 0)
-    {
-      vtkShadowCasterGeometry geometry;
-      cached.first = t;
-      cached.second = geometry.Update(o.Actor) && geometry.IsConvex();
-    }
-    if (!cached.second)
+    if (!this->Impl->For(o.Actor).Convex)
     {
       concave = &o;
       break;
@@ -172,7 +199,7 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   // Each switched-on light, in the mapper's numbering.
   this->LightChoices.clear();
   this->LightReasons.clear();
-  double stretch = 1.0;
+  double stretch = 1.0, edgeLength = 0.0;
   for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
   {
     std::string choice = "none", reason;
@@ -247,6 +274,18 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     }
     if (choice == "csm" && !light->LightTypeIsHeadlight())
     {
+      // The outline of every shadow this light's map must draw: the
+      // silhouettes of the (non-receiver) casters in view, in pixels.
+      double outline = 0.0;
+      const int index = static_cast<int>(this->LightChoices.size());
+      for (const Sphere& o : objects)
+      {
+        if (o.Casts && !o.Receiver && o.InView)
+        {
+          outline += this->OutlinePixels(o.Actor, light, index, o.Center, o.Radius, renderer);
+        }
+      }
+      edgeLength = std::max(edgeLength, outline);
       // Light at a grazing angle to a plane receiver stretches shadows, and
       // their boundaries, by 1 / cos(incidence) (at the receiver's centre).
       double p[3], f[3];
@@ -289,8 +328,9 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     ? this->MaxTexelPixels
     // A shadow boundary as long as the viewport's perimeter, one-pixel band.
     : vsh_auto_texel_target(this->MaxError, static_cast<double>(size[0]) * size[1],
-        2.0 * (size[0] + size[1]), stretch, 1.0);
+        std::max(edgeLength, 1.0), stretch, 1.0);
   this->UsedStretch = stretch;
+  this->UsedEdgeLength = edgeLength;
   this->CascadedPass->SetMaxTexelPixels(this->UsedTexelTarget);
   this->Choice = planarLights && csmLights ? "planar+csm"
     : planarLights                         ? "planar"
@@ -344,6 +384,65 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, vtkLight* light, int index,
+  const double center[3], double radius, vtkRenderer* renderer)
+{
+  // One pixel's world size at the caster's distance from the camera.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double eye[3], focal[3], clip[2];
+  camera->GetPosition(eye);
+  camera->GetFocalPoint(focal);
+  camera->GetClippingRange(clip);
+  double forward[3] = { focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2] };
+  vtkMath::Normalize(forward);
+  const double toCenter[3] = { center[0] - eye[0], center[1] - eye[1], center[2] - eye[2] };
+  const double depth = std::max(vtkMath::Dot(toCenter, forward), clip[0]);
+  const int height = std::max(renderer->GetSize()[1], 1);
+  const double pixel =
+    2.0 * depth * std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0) / height;
+  if (!(pixel > 0.0))
+  {
+    return 0.0;
+  }
+  // The silhouette seen from the light, in the mesh's own coordinates
+  // (cached per light while the light and mesh stay put), then to world
+  // units by the actor's scale. A mesh that is not closed has no defined
+  // silhouette: its bounding sphere's great circle stands in.
+  double world = 2.0 * vtkMath::Pi() * radius;
+  Internals::Caster& caster = this->Impl->For(actor);
+  double p[3], f[3];
+  light->GetTransformedPosition(p);
+  light->GetTransformedFocalPoint(f);
+  const bool positional = light->GetPositional() != 0;
+  const double inWorld[4] = { positional ? p[0] : p[0] - f[0], positional ? p[1] : p[1] - f[1],
+    positional ? p[2] : p[2] - f[2], positional ? 1.0 : 0.0 };
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(actor->GetMatrix(), inverse);
+  double inData[4];
+  inverse->MultiplyPoint(inWorld, inData);
+  auto& cached = caster.Silhouette[index];
+  const std::vector<double> key(inData, inData + 4);
+  if (cached.first != key)
+  {
+    cached.first = key;
+    cached.second = caster.Geometry.GetSilhouetteLength(inData);
+  }
+  if (cached.second >= 0.0)
+  {
+    double linear[3][3];
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        linear[r][c] = actor->GetMatrix()->GetElement(r, c);
+      }
+    }
+    world = cached.second * std::cbrt(std::abs(vtkMath::Determinant3x3(linear)));
+  }
+  return world / pixel;
+}
+
+//------------------------------------------------------------------------------
 const char* vtkAutoShadowPass::GetLightChoice(int light) const
 {
   return light >= 0 && light < this->GetNumberOfLightChoices() ? this->LightChoices[light].c_str()
@@ -388,6 +487,7 @@ void vtkAutoShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxTexelPixels: " << this->MaxTexelPixels << "\n";
   os << indent << "UsedTexelTarget: " << this->UsedTexelTarget << "\n";
   os << indent << "UsedStretch: " << this->UsedStretch << "\n";
+  os << indent << "UsedEdgeLength: " << this->UsedEdgeLength << "\n";
   os << indent << "Choice: " << this->Choice << "\n";
   os << indent << "Reason: " << this->Reason << "\n";
 }

@@ -21,7 +21,8 @@
  *
  * The target is MaxError (wrong_pct, the percentage of pixels whose shadow
  * state is wrong outside a one-pixel band; default 0.5), turned into an
- * on-screen texel size by vsh_auto_texel_target (allowing for shadows
+ * on-screen texel size by vsh_auto_texel_target (for the casters' own
+ * shadow outline length, from their silhouettes, and allowing for shadows
  * stretched by grazing light on plane receivers), or MaxTexelPixels directly
  * when it is > 0. GetChoice(), GetReason() and, per light,
  * GetLightChoice(i) / GetLightReason(i) say what was chosen and why.
@@ -33,11 +34,15 @@
 #include "vtkshadowModule.h" // for export macro
 
 #include <map>    // for std::map
+#include <memory> // for std::unique_ptr
 #include <string> // for std::string
 #include <utility> // for std::pair
 #include <vector>  // for std::vector
 
+class vtkActor;
 class vtkCascadedShadowMapPass;
+class vtkLight;
+class vtkRenderer;
 class vtkPlanarShadowPass;
 class vtkProp;
 class vtkRenderStepsPass;
@@ -84,6 +89,12 @@ public:
    */
   vtkGetMacro(UsedTexelTarget, double);
   vtkGetMacro(UsedStretch, double);
+  /**
+   * The shadow-boundary length the texel target assumed, in pixels: the
+   * casters' silhouettes seen from the map lights, at their distance from
+   * the camera (the longest over the map lights).
+   */
+  vtkGetMacro(UsedEdgeLength, double);
 
   /**
    * GL memory of the passes in use, as of the last frame.
@@ -108,6 +119,7 @@ protected:
   double MaxTexelPixels;
   double UsedTexelTarget;
   double UsedStretch;
+  double UsedEdgeLength;
   // Receiver planes by actor, with the time they were computed at.
   struct CachedPlane
   {
@@ -116,14 +128,18 @@ protected:
     double Plane[4] = { 0, 0, 0, 0 };
   };
   std::map<vtkProp*, CachedPlane> Planes;
-  // Convexity of non-receivers (a non-convex object may shadow itself).
-  std::map<vtkProp*, std::pair<vtkMTimeType, bool>> Convex;
+  // Casters' meshes (convexity, silhouettes), kept between frames.
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
 
 private:
   vtkAutoShadowPass(const vtkAutoShadowPass&) = delete;
   void operator=(const vtkAutoShadowPass&) = delete;
 
   void Decide(const vtkRenderState* s);
+  // Pixels of shadow outline `actor` throws under `light` (number `index`).
+  double OutlinePixels(vtkActor* actor, vtkLight* light, int index, const double center[3],
+    double radius, vtkRenderer* renderer);
 };
 
 #endif

@@ -547,6 +547,72 @@ bool vtkShadowCasterGeometry::IsConvex()
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowCasterGeometry::ComputeFacing(const double light[4], std::vector<char>& facing) const
+{
+  const float* p = this->Positions.data();
+  const size_t triangles = this->Welded.size() / 3;
+  facing.assign(triangles, 0);
+  for (size_t t = 0; t < triangles; ++t)
+  {
+    const unsigned int* v = &this->Welded[3 * t];
+    double a[3], e1[3], e2[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      a[k] = p[3 * v[0] + k];
+      e1[k] = p[3 * v[1] + k] - a[k];
+      e2[k] = p[3 * v[2] + k] - a[k];
+    }
+    const double nrm[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+      e1[0] * e2[1] - e1[1] * e2[0] };
+    const double to[3] = { light[0] - light[3] * a[0], light[1] - light[3] * a[1],
+      light[2] - light[3] * a[2] };
+    facing[t] = (nrm[0] * to[0] + nrm[1] * to[1] + nrm[2] * to[2]) > 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkShadowCasterGeometry::GetSilhouetteLength(const double lightInData[4])
+{
+  if (!this->IsClosed())
+  {
+    return -1.0;
+  }
+  const double light[4] = { lightInData[0] - lightInData[3] * this->Shift[0],
+    lightInData[1] - lightInData[3] * this->Shift[1],
+    lightInData[2] - lightInData[3] * this->Shift[2], lightInData[3] };
+  std::vector<char> facing;
+  this->ComputeFacing(light, facing);
+  const float* p = this->Positions.data();
+  double length = 0.0;
+  for (size_t e = 0; e < this->EdgeA.size(); ++e)
+  {
+    if ((facing[this->EdgeLeft[e]] != 0) != (facing[this->EdgeRight[e]] != 0))
+    {
+      const float* a = p + 3 * this->EdgeA[e];
+      const float* b = p + 3 * this->EdgeB[e];
+      double d[3], u[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        d[k] = static_cast<double>(b[k]) - a[k];
+        // Towards the light from the edge's middle.
+        u[k] = light[k] - light[3] * 0.5 * (static_cast<double>(a[k]) + b[k]);
+      }
+      // As the light sees it: a mesh's silhouette zig-zags along the light
+      // direction across the smooth terminator, and that part of each edge
+      // does not lengthen the shadow's outline.
+      const double uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+      const double along = uu > 0.0 ? (d[0] * u[0] + d[1] * u[1] + d[2] * u[2]) / uu : 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        d[k] -= along * u[k];
+      }
+      length += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+  }
+  return length;
+}
+
+//------------------------------------------------------------------------------
 bool vtkShadowCasterGeometry::DrawSilhouetteFans(
   vtkShaderProgram* program, const double lightInData[4])
 {
@@ -562,24 +628,8 @@ bool vtkShadowCasterGeometry::DrawSilhouetteFans(
   {
     std::copy_n(light, 4, this->FanLight);
     const float* p = this->Positions.data();
-    const size_t triangles = this->Welded.size() / 3;
-    std::vector<char> facing(triangles);
-    for (size_t t = 0; t < triangles; ++t)
-    {
-      const unsigned int* v = &this->Welded[3 * t];
-      double a[3], e1[3], e2[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        a[k] = p[3 * v[0] + k];
-        e1[k] = p[3 * v[1] + k] - a[k];
-        e2[k] = p[3 * v[2] + k] - a[k];
-      }
-      const double nrm[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-        e1[0] * e2[1] - e1[1] * e2[0] };
-      const double to[3] = { light[0] - light[3] * a[0], light[1] - light[3] * a[1],
-        light[2] - light[3] * a[2] };
-      facing[t] = (nrm[0] * to[0] + nrm[1] * to[1] + nrm[2] * to[2]) > 0.0;
-    }
+    std::vector<char> facing;
+    this->ComputeFacing(light, facing);
     // Silhouette edges, oriented as in their light-facing triangle, fanned
     // from one silhouette vertex: the fan's winding number is the coverage.
     this->FanData.clear();

@@ -74,6 +74,14 @@ public:
    */
   bool IsConvex();
   bool DrawSilhouetteFans(vtkShaderProgram* program, const double lightInData[4]);
+  /**
+   * Total length (data units) of the silhouette edges as the light sees
+   * them (each edge without its component along the ray to the light; same
+   * light convention as DrawSilhouetteFans): the length of the outline of
+   * the shadow this caster throws on a surface facing the light. -1 for
+   * casters that are not closed.
+   */
+  double GetSilhouetteLength(const double lightInData[4]);
   vtkIdType GetNumberOfSilhouetteTriangles() const { return this->FanTriangles; }
 
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -116,6 +124,8 @@ private:
   bool FanNeedsUpload = false;
   std::vector<float> FanData;
   void Analyse();
+  // Per welded triangle: does it face `light` (homogeneous, stored positions)?
+  void ComputeFacing(const double light[4], std::vector<char>& facing) const;
 };
 
 #endif

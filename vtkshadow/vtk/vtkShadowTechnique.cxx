@@ -308,6 +308,7 @@ std::string vtkShadowTechnique::GetStatsJSON(vtkRenderer* renderer) const
     perLight.precision(6);
     perLight << ", \"texel_target_px\": " << automatic->GetUsedTexelTarget()
              << ", \"texel_stretch\": " << automatic->GetUsedStretch()
+             << ", \"edge_length_px\": " << automatic->GetUsedEdgeLength()
              << ", \"light_choices\": [";
     for (int l = 0; l < automatic->GetNumberOfLightChoices(); ++l)
     {
