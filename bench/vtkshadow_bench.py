@@ -3,6 +3,11 @@
 
     bench/vtkshadow-bench SCENE... --out DIR [--scale F] [--frames N]
                           [--grid small|full] [--rounds R] [--light K]
+                          [--peers PREFIXES]
+
+SCENE may be a folder (every scene file under it). --scale F multiplies
+each scene's image size (renders and references alike; scripts/results.sh
+uses 0.5).
 
 (bench/vtkshadow-bench runs this file with build/bin/vtkshadow-python under
 tests/gl-run.sh when no X display is set.)
@@ -441,7 +446,8 @@ def main():
     p = argparse.ArgumentParser(prog="vtkshadow-bench", description=__doc__.split("\n\n")[0])
     p.add_argument("scenes", nargs="+")
     p.add_argument("--out", required=True)
-    p.add_argument("--scale", type=float, default=1.0)
+    p.add_argument("--scale", type=float, default=1.0,
+                   help="multiply each scene's image size (renders and references)")
     p.add_argument("--frames", type=int, default=30)
     p.add_argument("--grid", choices=("small", "full"), default="small")
     p.add_argument("--rounds", type=int, default=2)

@@ -39,7 +39,7 @@ const char* RenderUsage()
          "         [--max-error E | --max-error Npx] [--quiet]\n"
          "\n"
          "Render SCENE (a vtkshadow scene file) with shadow technique T.\n"
-         "  --technique T        one of the known techniques (default none)\n"
+         "  --technique T        one of the known techniques (required)\n"
          "  --image OUT.png      colour image with every light (required)\n"
          "  --visibility V.png   16-bit visibility of light K (65535 lit, 0 blocked)\n"
          "  --mask M.png         8-bit mask, 255 where light K reaches a visible surface\n"

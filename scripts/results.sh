@@ -3,9 +3,11 @@
 # scene in scenes/ (bench/vtkshadow-bench, with POV-Ray references and the
 # Blender EEVEE peer through vtkshadow-compare), how cost grows with triangles
 # and pixels (bench/bench_growth.py), assembled by bench/make_results.py.
-# About 45 minutes on 2 cores; progress goes to stderr. Run from anywhere,
-# after `sh scripts/build.sh` (or the README's main command).
-# OUT (default out/results) keeps the raw runs: bench.csv, plots, stats.
+# About 25 minutes on 2 cores; progress goes to stderr. Run from anywhere,
+# after the README's main command (`sh scripts/main.sh`: it installs
+# POV-Ray, Blender and gnuplot, which this needs, and builds).
+# OUT (default out/results) keeps the raw runs: bench.csv, plots, stats. It
+# is emptied first, so every reference is rendered fresh.
 set -eu
 cd "$(dirname "$0")/.."
 OUT=${OUT:-out/results}

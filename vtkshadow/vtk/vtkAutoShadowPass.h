@@ -56,7 +56,9 @@ public:
 
   /**
    * The passes it chooses between (configure them directly, e.g.
-   * GetCascadedPass()->SetMaxTexelPixels(2)).
+   * GetCascadedPass()->SetFilter(1)). auto itself sets the cascaded pass's
+   * MaxTexelPixels (use this class's SetMaxError / SetMaxTexelPixels), both
+   * passes' SkippedLights and the cascaded pass's delegate every frame.
    */
   vtkGetObjectMacro(PlanarPass, vtkPlanarShadowPass);
   vtkGetObjectMacro(CascadedPass, vtkCascadedShadowMapPass);

@@ -16,7 +16,9 @@
  *           vtkPlanarShadowPass::RECEIVER() (vtkShadowScene marks the scene's
  *           "receiver": true planes).
  *
- * Later techniques ("csm", "auto") plug in here.
+ * - "csm":    vtkCascadedShadowMapPass (cascaded, spot and cube maps).
+ * - "auto":   vtkAutoShadowPass: per light none, planar or csm, chosen by an
+ *           error target (option max_error, or max_texel_px).
  *
  * @code{.py}
  * technique = vtkshadow.vtkShadowTechnique()
@@ -64,7 +66,7 @@ public:
 
   /**
    * Set a technique setting by name (command lines, the C API). Keys:
-   * map_resolution, and for "csm": cascades, ratio_per_cascade, split
+   * map_resolution, and for "csm" (and auto's cascaded pass): cascades, ratio_per_cascade, split
    * (0 uniform, 1 log, 2 practical, 3 explicit), lambda, split_fraction_<i>,
    * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
    * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
@@ -77,7 +79,10 @@ public:
   /**
    * Technique details of the last frame rendered on `renderer` as a JSON
    * object (cascades and their on-screen texel sizes for "csm", shadow pairs
-   * and caster triangles for "planar"), "{}" otherwise.
+   * and caster triangles for "planar"; for "auto" its choice, reason,
+   * light_choices, texel_target_px, texel_stretch and edge_length_px, then
+   * the details of the cascaded pass if it is used, else of the planar
+   * pass), "{}" otherwise.
    */
   std::string GetStatsJSON(vtkRenderer* renderer) const;
 
