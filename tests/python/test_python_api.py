@@ -66,6 +66,54 @@ check(lo == 0.0 and hi == 1.0, f"visibility spans [0, 1] (got [{lo}, {hi}])")
 visibility.SetLight(7)
 check(not visibility.Compute() and "out of range" in visibility.GetErrorMessage(),
       "an out-of-range light is an error")
+# vtkAutoShadowPass as docs/auto.md uses it, on hand-built actors: a
+# sphere over a floor marked as a receiver, one sun. Its shadow falls on the
+# floor only, so auto chooses planar; with no receiver marked it needs maps.
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper  # noqa: E402
+
+
+def auto_choice(mark_floor):
+    win = vtkRenderWindow()
+    win.SetOffScreenRendering(1)
+    win.SetSize(96, 72)
+    ren = vtkRenderer()
+    win.AddRenderer(ren)
+    actors = []
+    for src in (vtkSphereSource(), vtkPlaneSource()):
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(src.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        ren.AddActor(actor)
+        actors.append(actor)
+    actors[0].SetPosition(0, 0, 1.2)
+    actors[1].SetScale(10, 10, 1)
+    if mark_floor:
+        from vtkmodules.vtkCommonCore import vtkInformation
+        keys = vtkInformation()
+        keys.Set(vtkshadow.vtkPlanarShadowPass.RECEIVER(), 1)
+        actors[1].SetPropertyKeys(keys)
+    sun = vtkLight()
+    sun.SetPositional(0)
+    sun.SetPosition(1, 1, 4)
+    sun.SetFocalPoint(0, 0, 0)
+    ren.AddLight(sun)
+    ren.GetActiveCamera().SetPosition(0, -8, 5)
+    ren.GetActiveCamera().SetFocalPoint(0, 0, 0.5)
+    ren.ResetCameraClippingRange()
+    automatic = vtkshadow.vtkAutoShadowPass()
+    automatic.SetMaxError(0.25)
+    ren.SetPass(automatic)
+    win.Render()
+    lights = [automatic.GetLightChoice(i) for i in range(automatic.GetNumberOfLightChoices())]
+    return automatic.GetChoice(), lights, automatic.GetReason()
+
+
+choice, lights, reason = auto_choice(True)
+check(choice == "planar" and lights == ["planar"], f"auto with a receiver: {choice} {lights} ({reason})")
+choice, lights, reason = auto_choice(False)
+check(choice == "csm" and lights == ["csm"], f"auto without a receiver: {choice} {lights} ({reason})")
 print(str(technique)[:40].replace("\n", " "), "...")
 print("python.api:", "FAILED" if failures else "ok", f"({len(failures)} failures)")
 sys.exit(1 if failures else 0)
