@@ -9,8 +9,8 @@ lit by one directional light, the sphere tessellated to about 10k, 100k and
 1280x960. Each scene is rendered with none, vtk (map 2048), planar, csm and
 auto by vtkshadow-render --stats (the same camera orbit for every technique;
 frames interleaved per round, the order rotated each round). For each row:
-the median ms per frame, and the ratio to none of the same rounds (the
-figure to compare: the machine is shared and noisy).
+the median ms per frame, and the median over rounds of its ratio to none of
+the same round (the figure to compare: the machine is shared and noisy).
 
 Writes DIR/growth.json and DIR/growth.md (a Markdown section). Progress
 lines go to stderr.
@@ -81,15 +81,18 @@ def measure(cases, a):
         for rnd in range(a.rounds):
             k = rnd % len(TECHNIQUES)
             order = TECHNIQUES[k:] + TECHNIQUES[:k]
+            this_round = {}
             for t in order:
                 d = os.path.join(a.out, "runs", label.replace(" ", "_"), t)
                 st = run_render(path, ["--technique", t], size, 0, a.frames, d, want_images=False)
                 if st is None:
                     sys.exit(f"bench_growth: {label} {t}: vtkshadow-render failed (see {d})")
-                times[t].append(st["shadowed_ms"]["median"])
-                ratios[t].append(st["shadowed_ms"]["median"] / st["unshadowed_ms"]["median"])
-                log(f"growth {label}: round {rnd + 1}/{a.rounds} {t}: "
-                    f"{st['shadowed_ms']['median']:.1f} ms")
+                this_round[t] = st["shadowed_ms"]["median"]
+                times[t].append(this_round[t])
+                log(f"growth {label}: round {rnd + 1}/{a.rounds} {t}: {this_round[t]:.1f} ms")
+            # Paired: each technique against none of the same round.
+            for t in TECHNIQUES:
+                ratios[t].append(this_round[t] / this_round["none"])
         results[label] = {t: (statistics.median(times[t]), statistics.median(ratios[t]))
                           for t in TECHNIQUES}
     return results
@@ -101,7 +104,7 @@ def table(title, results, labels):
     for label in labels:
         r = results[label]
         lines.append(f"| {label} | " + " | ".join(
-            f"{r[t][0]:.1f} ({r[t][1] / r['none'][1]:.2f})" for t in TECHNIQUES) + " |")
+            f"{r[t][0]:.1f} ({r[t][1]:.2f})" for t in TECHNIQUES) + " |")
     return lines
 
 
@@ -132,9 +135,9 @@ def main():
     lines = ["## How cost grows with triangles and pixels", "",
              f"Produced by `{cmd}` (also run by `sh scripts/results.sh`). A sphere over a floor, "
              f"one directional light, camera orbit of vtkshadow-render; {a.rounds} interleaved "
-             f"rounds of {a.frames} frames. Each cell: median ms per frame, and in brackets the "
-             "median over rounds of (technique / unshadowed) divided by the same for none, i.e. "
-             "the cost relative to the unshadowed frame of the same run.", ""]
+             f"rounds of {a.frames} frames (techniques interleaved, order rotated). Each cell: "
+             "median ms per frame, and in brackets the median over rounds of (technique / none "
+             "of the same round).", ""]
     lines += table("triangles, 640x480", results, [c[0] for c in tri_cases]) + [""]
     lines += table(f"pixels, {res_100k[1]:,} triangles", results, [c[0] for c in size_cases])
     lines.append("")

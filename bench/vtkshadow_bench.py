@@ -3,7 +3,7 @@
 
     bench/vtkshadow-bench SCENE... --out DIR [--scale F] [--frames N]
                           [--grid small|full] [--rounds R] [--light K]
-                          [--peers PREFIXES]
+                          [--peers PREFIXES] [--cache DIR]
 
 SCENE may be a folder (every scene file under it). --scale F multiplies
 each scene's image size (renders and references alike; scripts/results.sh
@@ -127,7 +127,7 @@ def run_compare(scenes, out, scale, renderers, name):
     """vtkshadow-compare into DIR/<name>, sharing one reference cache."""
     dest = os.path.join(out, name)
     cmd = [os.path.join(BIN, "vtkshadow-compare")] + scenes + [
-        "--out", dest, "--cache", os.path.join(out, "cache"), "--scale", repr(scale),
+        "--out", dest, "--cache", CACHE or os.path.join(out, "cache"), "--scale", repr(scale),
         "--renderers", renderers, "--no-report"]
     log("%s (cached): %s" % (renderers, " ".join(cmd)))
     with open(os.path.join(out, name + ".log"), "w") as logf:
@@ -142,6 +142,7 @@ def ensure_refs(scenes, out, scale):
 
 
 PEERS = (("eevee", "default"), ("eevee-best", "best"))
+CACHE = None  # --cache: reference renders shared between runs
 
 
 def peer_rows(scenes, out, scale, light):
@@ -452,10 +453,15 @@ def main():
     p.add_argument("--grid", choices=("small", "full"), default="small")
     p.add_argument("--rounds", type=int, default=2)
     p.add_argument("--light", type=int, default=0)
+    p.add_argument("--cache", default=None,
+                   help="reference cache of vtkshadow-compare (default DIR/cache); keyed by scene "
+                        "content, renderer version and settings, so it can be kept between runs")
     p.add_argument("--peers", default="",
                    help="comma-separated scene-key prefixes (e.g. basic,scivis,cad) that also get "
                         "Blender EEVEE rows at its default and best settings")
     a = p.parse_args()
+    global CACHE
+    CACHE = os.path.abspath(a.cache) if a.cache else None
     if a.frames < 30:
         p.error("--frames must be >= 30")
     scenes = []

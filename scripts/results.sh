@@ -3,11 +3,12 @@
 # scene in scenes/ (bench/vtkshadow-bench, with POV-Ray references and the
 # Blender EEVEE peer through vtkshadow-compare), how cost grows with triangles
 # and pixels (bench/bench_growth.py), assembled by bench/make_results.py.
-# About 25 minutes on 2 cores; progress goes to stderr. Run from anywhere,
+# About 40 minutes on 2 cores (less with the reference cache); progress goes to stderr. Run from anywhere,
 # after the README's main command (`sh scripts/main.sh`: it installs
 # POV-Ray, Blender and gnuplot, which this needs, and builds).
-# OUT (default out/results) keeps the raw runs: bench.csv, plots, stats. It
-# is emptied first, so every reference is rendered fresh.
+# OUT (default out/results) keeps the raw runs: bench.csv, plots, stats; it
+# is emptied first. The POV-Ray references are cached in out/results-cache
+# (keyed by scene content, renderer version and settings).
 set -eu
 cd "$(dirname "$0")/.."
 OUT=${OUT:-out/results}
@@ -19,10 +20,13 @@ for tool in build/bin/vtkshadow-render build/bin/vtkshadow-compare build/bin/vtk
 done
 rm -rf "$OUT"
 mkdir -p "$OUT"
+# EEVEE's seconds per frame are measured only when it renders, so its cache
+# entries go; POV-Ray's references stay cached.
+rm -rf out/results-cache/eevee out/results-cache/eevee-best
 sh tests/gl-run.sh build/bin/vtkshadow-python bench/vtkshadow_bench.py scenes \
-  --out "$OUT/bench" --scale 0.5 --frames 30 --grid small --rounds 1 \
-  --peers basic,scivis,cad > "$OUT/bench.txt"
+  --out "$OUT/bench" --scale 0.5 --frames 30 --grid small --rounds 2 \
+  --peers basic,scivis,cad --cache out/results-cache > "$OUT/bench.txt"
 sh tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py \
-  --out "$OUT/growth" --frames 30 --rounds 2 > "$OUT/growth.txt"
+  --out "$OUT/growth" --frames 30 --rounds 3 > "$OUT/growth.txt"
 /usr/bin/python3 bench/make_results.py --bench "$OUT/bench" --growth "$OUT/growth" \
   --command "sh scripts/results.sh" --output docs/results.md
