@@ -130,20 +130,10 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   renderer->GetActiveCamera()->GetFrustumPlanes(renderer->GetTiledAspectRatio(), frustum);
   std::vector<Sphere> objects;
   bool anyCaster = false;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(s))
   {
-    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
-      actor->HasTranslucentPolygonalGeometry())
-    {
-      continue;
-    }
-    double b[6];
-    actor->GetBounds(b);
-    if (!vtkMath::AreBoundsInitialized(b))
-    {
-      continue;
-    }
+    vtkActor* actor = shadowActor.Actor;
+    const double* b = shadowActor.Bounds;
     Sphere sphere{ actor, { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) },
       0.5 * std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
               (b[5] - b[4]) * (b[5] - b[4])),
@@ -203,6 +193,8 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
   {
     std::string choice = "none", reason;
+    double homogeneous[4];
+    vtkshadow::LightHomogeneous(light, homogeneous);
     if (light->LightTypeIsHeadlight())
     {
       reason = "the headlight: its shadows hide behind the casters";
@@ -218,12 +210,6 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     }
     else
     {
-      double p[3], f[3];
-      light->GetTransformedPosition(p);
-      light->GetTransformedFocalPoint(f);
-      const double homogeneous[4] = { light->GetPositional() ? p[0] : p[0] - f[0],
-        light->GetPositional() ? p[1] : p[1] - f[1], light->GetPositional() ? p[2] : p[2] - f[2],
-        light->GetPositional() ? 1.0 : 0.0 };
       bool anyShadow = false;
       for (const Sphere& a : objects)
       {
@@ -282,15 +268,13 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
       {
         if (o.Casts && !o.Receiver && o.InView)
         {
-          outline += this->OutlinePixels(o.Actor, light, index, o.Center, o.Radius, renderer);
+          outline +=
+            this->OutlinePixels(o.Actor, homogeneous, index, o.Center, o.Radius, renderer);
         }
       }
       edgeLength = std::max(edgeLength, outline);
       // Light at a grazing angle to a plane receiver stretches shadows, and
       // their boundaries, by 1 / cos(incidence) (at the receiver's centre).
-      double p[3], f[3];
-      light->GetTransformedPosition(p);
-      light->GetTransformedFocalPoint(f);
       for (const Sphere& r : objects)
       {
         if (!r.Flat || !r.InView)
@@ -300,7 +284,7 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
         double towards[3];
         for (int k = 0; k < 3; ++k)
         {
-          towards[k] = light->GetPositional() ? p[k] - r.Center[k] : p[k] - f[k];
+          towards[k] = homogeneous[k] - homogeneous[3] * r.Center[k];
         }
         const double len = vtkMath::Norm(towards), n = vtkMath::Norm(r.Plane);
         if (len > 0.0 && n > 0.0)
@@ -384,7 +368,7 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, vtkLight* light, int index,
+double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, const double light[4], int index,
   const double center[3], double radius, vtkRenderer* renderer)
 {
   // One pixel's world size at the caster's distance from the camera.
@@ -410,16 +394,10 @@ double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, vtkLight* light, int in
   // silhouette: its bounding sphere's great circle stands in.
   double world = 2.0 * vtkMath::Pi() * radius;
   Internals::Caster& caster = this->Impl->For(actor);
-  double p[3], f[3];
-  light->GetTransformedPosition(p);
-  light->GetTransformedFocalPoint(f);
-  const bool positional = light->GetPositional() != 0;
-  const double inWorld[4] = { positional ? p[0] : p[0] - f[0], positional ? p[1] : p[1] - f[1],
-    positional ? p[2] : p[2] - f[2], positional ? 1.0 : 0.0 };
   vtkNew<vtkMatrix4x4> inverse;
   vtkMatrix4x4::Invert(actor->GetMatrix(), inverse);
   double inData[4];
-  inverse->MultiplyPoint(inWorld, inData);
+  inverse->MultiplyPoint(light, inData);
   auto& cached = caster.Silhouette[index];
   const std::vector<double> key(inData, inData + 4);
   if (cached.first != key)

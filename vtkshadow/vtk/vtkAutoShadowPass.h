@@ -41,7 +41,6 @@
 
 class vtkActor;
 class vtkCascadedShadowMapPass;
-class vtkLight;
 class vtkRenderer;
 class vtkPlanarShadowPass;
 class vtkProp;
@@ -139,9 +138,10 @@ private:
   void operator=(const vtkAutoShadowPass&) = delete;
 
   void Decide(const vtkRenderState* s);
-  // Pixels of shadow outline `actor` throws under `light` (number `index`).
-  double OutlinePixels(vtkActor* actor, vtkLight* light, int index, const double center[3],
-    double radius, vtkRenderer* renderer);
+  // Pixels of shadow outline `actor` throws under light number `index`
+  // (`light` homogeneous, world coordinates).
+  double OutlinePixels(vtkActor* actor, const double light[4], int index,
+    const double center[3], double radius, vtkRenderer* renderer);
 };
 
 #endif

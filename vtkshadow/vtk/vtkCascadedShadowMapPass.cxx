@@ -306,22 +306,11 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   vsh_bounds_init_empty(&casterBounds);
   vsh_bounds_init_empty(&receiverBounds);
   vtkMTimeType casterTime = 0;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(s))
   {
-    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
-      actor->HasTranslucentPolygonalGeometry())
-    {
-      continue;
-    }
-    double b[6];
-    actor->GetBounds(b);
-    if (!vtkMath::AreBoundsInitialized(b))
-    {
-      continue;
-    }
+    vtkActor* actor = shadowActor.Actor;
     vsh_bounds ab;
-    vsh_bounds_from_vtk(&ab, b);
+    vsh_bounds_from_vtk(&ab, shadowActor.Bounds);
     vsh_bounds_merge(&receiverBounds, &ab);
     if (!vtkshadow::HasFlag(actor, vtkPlanarShadowPass::NO_CAST()))
     {
@@ -381,6 +370,20 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     impl.MaxDistance = 0.0f;
   }
 
+  // Lights that follow the camera (and the automatic headlight) are updated
+  // by VTK's lights pass inside the delegate, after our shadow work: bring
+  // them up to date now, or their shadows (and the resolution they ask
+  // for) lag one frame behind.
+  vtkshadow::UpdateLights(renderer);
+  // Light `l` (mapper numbering) gets maps in this frame.
+  auto castsShadows = [&](vtkLight* light, int l) {
+    return haveScene && (!light->LightTypeIsHeadlight() || this->CastHeadlightShadows) &&
+      !(l < 32 && ((this->SkippedLights >> l) & 1u));
+  };
+  // Perspective maps are fitted to everything that casts or receives.
+  vsh_bounds everything = casterBounds;
+  vsh_bounds_merge(&everything, &receiverBounds);
+
   // Resolution and cascade count.
   int resolution = this->MapResolution;
   int count = this->CascadeCount > 0
@@ -405,8 +408,6 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     // Spot and point-light maps share the atlas resolution: raise it to what
     // they need where the scene's centre is seen.
     double centre[3];
-    vsh_bounds everything = casterBounds;
-    vsh_bounds_merge(&everything, &receiverBounds);
     if (haveScene && vsh_bounds_center(&everything, centre) == 0)
     {
       double forward[3], r[3], u[3];
@@ -417,10 +418,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
       int l = 0;
       for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
       {
-        const bool skipped = ((this->SkippedLights >> l) & 1u) != 0;
-        ++l;
-        if (skipped || !light->GetPositional() ||
-          (light->LightTypeIsHeadlight() && !this->CastHeadlightShadows))
+        if (!castsShadows(light, l++) || !light->GetPositional())
         {
           continue;
         }
@@ -447,10 +445,6 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   }
 
   // Lights in the mapper's numbering and their maps.
-  // Lights that follow the camera (and the automatic headlight) are updated
-  // by VTK's lights pass inside the delegate, after our shadow work: bring
-  // them up to date now, or their shadows lag one frame behind.
-  vtkshadow::UpdateLights(renderer);
   impl.Tiles.clear();
   impl.LightCount = 0;
   {
@@ -464,8 +458,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
       impl.Kind[l] = NoShadow;
       impl.First[l] = static_cast<int>(impl.Tiles.size());
       impl.Count[l] = 0;
-      if (!haveScene || (light->LightTypeIsHeadlight() && !this->CastHeadlightShadows) ||
-        ((this->SkippedLights >> l) & 1u))
+      if (!castsShadows(light, l))
       {
         continue;
       }
@@ -473,8 +466,6 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
       light->GetTransformedPosition(p);
       light->GetTransformedFocalPoint(f);
       const double travel[3] = { f[0] - p[0], f[1] - p[1], f[2] - p[2] };
-      vsh_bounds everything = casterBounds;
-      vsh_bounds_merge(&everything, &receiverBounds);
       if (!light->GetPositional())
       {
         int made = 0;

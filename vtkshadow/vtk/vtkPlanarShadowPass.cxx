@@ -286,24 +286,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
     {
       LightInfo info;
-      double p[3], f[3];
-      light->GetTransformedPosition(p);
-      light->GetTransformedFocalPoint(f);
-      if (light->GetPositional())
-      {
-        info.Homogeneous[0] = p[0];
-        info.Homogeneous[1] = p[1];
-        info.Homogeneous[2] = p[2];
-        info.Homogeneous[3] = 1.0;
-      }
-      else
-      {
-        // Towards the light: from the focal point back to the position.
-        info.Homogeneous[0] = p[0] - f[0];
-        info.Homogeneous[1] = p[1] - f[1];
-        info.Homogeneous[2] = p[2] - f[2];
-        info.Homogeneous[3] = 0.0;
-      }
+      vtkshadow::LightHomogeneous(light, info.Homogeneous);
       const size_t index = lights.size();
       info.Casts = (!light->LightTypeIsHeadlight() || this->CastHeadlightShadows) &&
         !(index < 32 && (this->SkippedLights >> index) & 1u);

@@ -1,14 +1,20 @@
-// vtkShadowActorFlags.h - read and set the integer shadow flags that
-// actors carry in their property keys (vtkPlanarShadowPass::RECEIVER(),
-// NO_CAST()); shared by every pass and the C API.
+// vtkShadowActorFlags.h - which actors take part in shadows, and the
+// integer shadow flags they carry in their property keys
+// (vtkPlanarShadowPass::RECEIVER(), NO_CAST()); shared by every pass and the
+// C API.
 #ifndef vtkShadowActorFlags_h
 #define vtkShadowActorFlags_h
 
 #include "vtkActor.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
+#include "vtkMapper.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkProp.h"
+#include "vtkRenderState.h"
+
+#include <vector>
 
 namespace vtkshadow
 {
@@ -29,6 +35,38 @@ inline void SetFlag(vtkActor* actor, vtkInformationIntegerKey* key, int value)
   }
   actor->GetPropertyKeys()->Set(key, value);
   actor->Modified();
+}
+
+// An actor that takes part in the shadows of a frame, with its world bounds
+// (VTK order).
+struct ShadowActor
+{
+  vtkActor* Actor;
+  double Bounds[6];
+};
+
+// The render state's actors that can cast or receive: visible, with a
+// mapper, opaque (translucent geometry neither blocks nor shows shadows
+// here) and with initialised bounds.
+inline std::vector<ShadowActor> ShadowActors(const vtkRenderState* s)
+{
+  std::vector<ShadowActor> out;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
+      actor->HasTranslucentPolygonalGeometry())
+    {
+      continue;
+    }
+    ShadowActor a{ actor, { 0, 0, 0, 0, 0, 0 } };
+    actor->GetBounds(a.Bounds);
+    if (vtkMath::AreBoundsInitialized(a.Bounds))
+    {
+      out.push_back(a);
+    }
+  }
+  return out;
 }
 }
 

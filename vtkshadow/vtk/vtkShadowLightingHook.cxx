@@ -35,6 +35,19 @@ std::vector<vtkLight*> SwitchedOnLights(vtkRenderer* renderer)
   return lights;
 }
 
+void LightHomogeneous(vtkLight* light, double out[4])
+{
+  double p[3], f[3];
+  light->GetTransformedPosition(p);
+  light->GetTransformedFocalPoint(f);
+  const bool positional = light->GetPositional() != 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = positional ? p[k] : p[k] - f[k];
+  }
+  out[3] = positional ? 1.0 : 0.0;
+}
+
 bool InjectLightFactors(std::string& fs, const std::string& factor, const std::string& prepare,
   int maxLights)
 {

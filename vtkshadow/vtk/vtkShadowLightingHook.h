@@ -25,6 +25,13 @@ void UpdateLights(vtkRenderer* renderer);
 std::vector<vtkLight*> SwitchedOnLights(vtkRenderer* renderer);
 
 /**
+ * The light as a homogeneous point in world coordinates: (position, 1) for
+ * point and spot lights, (direction towards the light, 0) for directional
+ * ones (from the focal point back to the position).
+ */
+void LightHomogeneous(vtkLight* light, double out[4]);
+
+/**
  * VTK 9.1's mapper adds each light I as
  *   diffuse += (df * lightColorI);   specular += (sf * lightColorI);
  * (Phong and Gouraud) or sets `radiance = lightColorI;` (PBR). Multiply
