@@ -8,6 +8,7 @@
  * force search. Every degenerate input the header names is included: light
  * parallel to the view direction, zero-volume bounds, empty scenes. */
 #include "vsh_check.h"
+#include "vsh_random.h"
 #include "vsh_csm.h"
 #include "vsh_mat4.h"
 #include "vsh_vec3.h"
@@ -22,26 +23,6 @@
 
 /* ---- helpers ------------------------------------------------------------ */
 
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull; /* fixed seed: reproducible */
-
-static double rnd(double lo, double hi) { /* xorshift64*, 53-bit uniform */
-  rng_state ^= rng_state >> 12;
-  rng_state ^= rng_state << 25;
-  rng_state ^= rng_state >> 27;
-  const uint64_t r = rng_state * 0x2545F4914F6CDD1Dull;
-  return lo + (hi - lo) * ((double)(r >> 11) * (1.0 / 9007199254740992.0));
-}
-
-static void rnd_unit(double out[3]) {
-  double v[3];
-  do {
-    v[0] = rnd(-1, 1);
-    v[1] = rnd(-1, 1);
-    v[2] = rnd(-1, 1);
-  } while (vsh_vec3_length(v) < 0.1 || vsh_vec3_length(v) > 1);
-  vsh_vec3_normalize(v, out);
-}
-
 static vsh_camera make_camera(double ex, double ey, double ez, double fx, double fy, double fz,
                               double ux, double uy, double uz, double angle) {
   vsh_camera c = {{ex, ey, ez}, {fx, fy, fz}, {ux, uy, uz}, angle};
@@ -52,7 +33,7 @@ static vsh_camera make_camera(double ex, double ey, double ez, double fx, double
 static vsh_camera camera_looking(const double E[3], const double dir[3], double angle) {
   double up[3];
   do {
-    rnd_unit(up);
+    vsh_test_rnd_unit(up);
   } while (vsh_vec3_parallel(up, dir, 0.2));
   return make_camera(E[0], E[1], E[2], E[0] + dir[0], E[1] + dir[1], E[2] + dir[2], up[0], up[1],
                      up[2], angle);
@@ -176,9 +157,9 @@ static void test_splits_closed_forms(void) {
   for (int i = 1; i < 8; ++i) CHECK_NEAR(s[i], 1 + 100 * fr8[i - 1], 1e-13);
   /* Seeded random lambdas: monotone and between log and uniform. */
   for (int k = 0; k < 500; ++k) {
-    const double n = exp(rnd(log(1e-3), log(10))), f = n * exp(rnd(0.01, log(1e6)));
-    const int c = 1 + (int)rnd(0, 8);
-    const double lam = rnd(0, 1);
+    const double n = exp(vsh_test_rnd(log(1e-3), log(10))), f = n * exp(vsh_test_rnd(0.01, log(1e6)));
+    const int c = 1 + (int)vsh_test_rnd(0, 8);
+    const double lam = vsh_test_rnd(0, 1);
     double p[VSH_CSM_MAX_CASCADES + 1];
     CHECK(vsh_csm_splits(VSH_SPLIT_PRACTICAL, c, n, f, lam, NULL, p) == 0);
     check_split_invariants(p, c, n, f);
@@ -484,13 +465,13 @@ static void test_visible_depth_sampled(void) {
   int visible_cases = 0;
   for (int s = 0; s < 300; ++s) {
     double E[3], dir[3];
-    for (int k = 0; k < 3; ++k) E[k] = rnd(-5, 5);
-    rnd_unit(dir);
-    const vsh_camera c = camera_looking(E, dir, rnd(20, 120));
-    const double aspect = rnd(0.5, 2.5), cn = rnd(0.05, 1), cf = cn * rnd(5, 100);
+    for (int k = 0; k < 3; ++k) E[k] = vsh_test_rnd(-5, 5);
+    vsh_test_rnd_unit(dir);
+    const vsh_camera c = camera_looking(E, dir, vsh_test_rnd(20, 120));
+    const double aspect = vsh_test_rnd(0.5, 2.5), cn = vsh_test_rnd(0.05, 1), cf = cn * vsh_test_rnd(5, 100);
     double lo[3], hi[3];
     for (int k = 0; k < 3; ++k) {
-      const double a = rnd(-15, 15), w = rnd(0, 1) < 0.2 ? 0 : rnd(0, 10);
+      const double a = vsh_test_rnd(-15, 15), w = vsh_test_rnd(0, 1) < 0.2 ? 0 : vsh_test_rnd(0, 10);
       lo[k] = a;
       hi[k] = a + w;
     }
@@ -653,27 +634,27 @@ static void test_directional_random(void) {
   int fitted = 0, skipped = 0;
   for (int s = 0; s < 2000; ++s) {
     double E[3], dir[3], L[3];
-    for (int k = 0; k < 3; ++k) E[k] = rnd(-50, 50);
-    rnd_unit(dir);
-    rnd_unit(L);
-    const vsh_camera c = camera_looking(E, dir, rnd(20, 110));
-    const double aspect = rnd(0.5, 2.5), n = rnd(0.1, 10), f = n * rnd(1.2, 100);
+    for (int k = 0; k < 3; ++k) E[k] = vsh_test_rnd(-50, 50);
+    vsh_test_rnd_unit(dir);
+    vsh_test_rnd_unit(L);
+    const vsh_camera c = camera_looking(E, dir, vsh_test_rnd(20, 110));
+    const double aspect = vsh_test_rnd(0.5, 2.5), n = vsh_test_rnd(0.1, 10), f = n * vsh_test_rnd(1.2, 100);
     const int stable = s & 1;
     static const int resolutions[] = {2, 64, 256, 1024, 2048, 4096};
-    const int res = resolutions[(int)rnd(0, 6)];
+    const int res = resolutions[(int)vsh_test_rnd(0, 6)];
     vsh_bounds rec, cas;
     const vsh_bounds *rp = NULL, *cp = NULL;
-    if (rnd(0, 1) < 0.7) {
+    if (vsh_test_rnd(0, 1) < 0.7) {
       for (int k = 0; k < 3; ++k) {
-        const double a = E[k] + rnd(-60, 60), w = rnd(0, 1) < 0.3 ? 0 : rnd(0, 80);
+        const double a = E[k] + vsh_test_rnd(-60, 60), w = vsh_test_rnd(0, 1) < 0.3 ? 0 : vsh_test_rnd(0, 80);
         rec.min[k] = a;
         rec.max[k] = a + w;
       }
       rp = &rec;
     }
-    if (rnd(0, 1) < 0.7) {
+    if (vsh_test_rnd(0, 1) < 0.7) {
       for (int k = 0; k < 3; ++k) {
-        const double a = E[k] + rnd(-100, 100), w = rnd(0, 100);
+        const double a = E[k] + vsh_test_rnd(-100, 100), w = vsh_test_rnd(0, 100);
         cas.min[k] = a;
         cas.max[k] = a + w;
       }
@@ -736,7 +717,7 @@ static void test_directional_stable_tight_radius(void) {
   double worst = 0;
   int covered = 1, finite = 1;
   for (int s = 0; s < 600; ++s) {
-    const double E[3] = {rnd(-3, 3), rnd(-3, 3), rnd(-3, 3)};
+    const double E[3] = {vsh_test_rnd(-3, 3), vsh_test_rnd(-3, 3), vsh_test_rnd(-3, 3)};
     const vsh_camera c = make_camera(E[0], E[1], E[2], E[0] + fw[0], E[1] + fw[1], E[2] + fw[2],
                                      up[0], up[1], up[2], 90);
     vsh_shadow_view v;
@@ -1011,18 +992,18 @@ static void test_perspective(void) {
   for (int s = 0; s < 500; ++s) {
     double P[3], D[3], O[3];
     for (int k = 0; k < 3; ++k) {
-      P[k] = rnd(-20, 20);
-      O[k] = P[k] + rnd(-30, 30);
+      P[k] = vsh_test_rnd(-20, 20);
+      O[k] = P[k] + vsh_test_rnd(-30, 30);
     }
-    rnd_unit(D);
-    const double half = rnd(5, 85);
+    vsh_test_rnd_unit(D);
+    const double half = vsh_test_rnd(5, 85);
     const int res = 512;
     /* Bounds: a box in front of the light. */
     double Cn[3];
-    const double dist = rnd(2, 50);
+    const double dist = vsh_test_rnd(2, 50);
     for (int k = 0; k < 3; ++k) Cn[k] = P[k] + dist * D[k];
-    const double w = rnd(0, 0.5) * dist;
-    vsh_bounds b = box(Cn[0] - w, Cn[0] + w, Cn[1] - w, Cn[1] + w * rnd(0, 1), Cn[2] - w,
+    const double w = vsh_test_rnd(0, 0.5) * dist;
+    vsh_bounds b = box(Cn[0] - w, Cn[0] + w, Cn[1] - w, Cn[1] + w * vsh_test_rnd(0, 1), Cn[2] - w,
                        Cn[2] + w);
     const int st = vsh_csm_fit_perspective(P, D, half, &b, O, res, &v);
     double corners[8][3];
@@ -1066,10 +1047,10 @@ static void test_perspective(void) {
      * |y| = 1 along the map's axes). */
     for (int j = 0; j < 4; ++j) {
       double e[3], tmp[3], a[3], p[3];
-      rnd_unit(a);
+      vsh_test_rnd_unit(a);
       vsh_vec3_cross(D, a, tmp);
       if (vsh_vec3_normalize(tmp, e) == 0) continue;
-      const double dd = rnd(1, 40), tn = tan(half * PI / 180);
+      const double dd = vsh_test_rnd(1, 40), tn = tan(half * PI / 180);
       for (int k = 0; k < 3; ++k) p[k] = P[k] + dd * (D[k] + tn * e[k]);
       const double wp = clip_world(v.world_to_clip, O, p, q);
       CHECK(wp > 0);
@@ -1187,9 +1168,9 @@ static void test_cube_faces(void) {
       u[2] = (s & 4) ? 1 : -1;
       vsh_vec3_normalize(u, u);
     } else {
-      rnd_unit(u);
+      vsh_test_rnd_unit(u);
     }
-    const double dist = rnd(0.5, 8);
+    const double dist = vsh_test_rnd(0.5, 8);
     for (int k = 0; k < 3; ++k) p[k] = L[k] + dist * u[k];
     int covered = 0;
     for (int f = 0; f < 6; ++f) {
@@ -1214,8 +1195,8 @@ static void test_texel_pixels(void) {
   /* 90 degrees, H = 2: pixel world size at depth 1 is 1. */
   CHECK_NEAR(vsh_csm_texel_pixels(1, 1, 90, 2), 1, 1e-15);
   for (int s = 0; s < 200; ++s) {
-    const double tw = exp(rnd(-8, 3)), d = exp(rnd(-3, 8)), a = rnd(1, 170);
-    const int H = 1 + (int)rnd(0, 4000);
+    const double tw = exp(vsh_test_rnd(-8, 3)), d = exp(vsh_test_rnd(-3, 8)), a = vsh_test_rnd(1, 170);
+    const int H = 1 + (int)vsh_test_rnd(0, 4000);
     const double w = tw * H / (2 * d * tan(a * PI / 360));
     const double got = vsh_csm_texel_pixels(tw, d, a, H);
     CHECK_NEAR(got, w, 1e-13 * w);
@@ -1370,10 +1351,10 @@ static void test_choose(void) {
   check_choose(0.1, 1e4, 60, 1.6, 1080, 1, 1LL << 34, 256, 8192, 20);
   /* Random cases. */
   for (int s = 0; s < 40; ++s) {
-    const double n = exp(rnd(log(0.01), log(5))), f = n * exp(rnd(1, log(1e5)));
-    const int minr = 1 << (int)rnd(6, 10), maxr = minr << (int)rnd(0, 5);
-    check_choose(n, f, rnd(30, 100), rnd(0.75, 2.5), 400 + (int)rnd(0, 2000), rnd(0.3, 8),
-                 (long long)exp(rnd(log(1e5), log(1e10))), minr, maxr, 1 + (int)rnd(0, 8));
+    const double n = exp(vsh_test_rnd(log(0.01), log(5))), f = n * exp(vsh_test_rnd(1, log(1e5)));
+    const int minr = 1 << (int)vsh_test_rnd(6, 10), maxr = minr << (int)vsh_test_rnd(0, 5);
+    check_choose(n, f, vsh_test_rnd(30, 100), vsh_test_rnd(0.75, 2.5), 400 + (int)vsh_test_rnd(0, 2000), vsh_test_rnd(0.3, 8),
+                 (long long)exp(vsh_test_rnd(log(1e5), log(1e10))), minr, maxr, 1 + (int)vsh_test_rnd(0, 8));
   }
   /* Bad input: 1 with finite, usable outputs. */
   struct {
@@ -1421,9 +1402,9 @@ static void test_perspective_resolution(void) {
   CHECK(vsh_csm_perspective_resolution(45.0, 10.0, 10.0, 90.0, 512, 2.0, 16, 8192) == 256);
   /* The result meets the target, and half of it does not (when above min). */
   for (int i = 0; i < 200; ++i) {
-    const double half = rnd(5.0, 80.0), dist = rnd(0.1, 100.0), depth = rnd(0.1, 100.0);
-    const double fov = rnd(10.0, 120.0), target = rnd(0.5, 5.0);
-    const int h = (int)rnd(100.0, 2000.0);
+    const double half = vsh_test_rnd(5.0, 80.0), dist = vsh_test_rnd(0.1, 100.0), depth = vsh_test_rnd(0.1, 100.0);
+    const double fov = vsh_test_rnd(10.0, 120.0), target = vsh_test_rnd(0.5, 5.0);
+    const int h = (int)vsh_test_rnd(100.0, 2000.0);
     const int res = vsh_csm_perspective_resolution(half, dist, depth, fov, h, target, 64, 8192);
     const double px = 2.0 * tan(half * PI / 180.0) * dist / res /
                       (2.0 * depth * tan(fov * PI / 360.0) / h);

@@ -11,6 +11,7 @@
  * near the world origin and 1e6 away from it, together with the known
  * answers and every bad input. */
 #include "vsh_check.h"
+#include "vsh_random.h"
 #include "vsh_csm.h"
 #include "vsh_mat4.h"
 #include "vsh_vec3.h"
@@ -21,16 +22,6 @@
 
 #define PI 3.14159265358979323846
 #define RES 1024
-
-static uint64_t rng_state = 0x2545F4914F6CDD1Dull; /* fixed seed: reproducible */
-
-static double rnd(double lo, double hi) {
-  rng_state ^= rng_state >> 12;
-  rng_state ^= rng_state << 25;
-  rng_state ^= rng_state >> 27;
-  const uint64_t x = rng_state * 0x2545F4914F6CDD1Dull;
-  return lo + (hi - lo) * ((double)(x >> 11) / 9007199254740992.0);
-}
 
 typedef struct scene {
   vsh_camera camera;
@@ -43,7 +34,7 @@ typedef struct scene {
  * it, a camera looking down at it from a random side, a light from above. */
 static scene random_scene(const double offset[3], double size) {
   scene s;
-  const double az = rnd(0.0, 2.0 * PI), el = rnd(0.2, 1.2), dist = rnd(0.8, 1.5) * size;
+  const double az = vsh_test_rnd(0.0, 2.0 * PI), el = vsh_test_rnd(0.2, 1.2), dist = vsh_test_rnd(0.8, 1.5) * size;
   for (int k = 0; k < 3; ++k)
     s.camera.focal_point[k] = offset[k];
   s.camera.position[0] = offset[0] + dist * cos(el) * cos(az);
@@ -52,9 +43,9 @@ static scene random_scene(const double offset[3], double size) {
   s.camera.view_up[0] = 0.0;
   s.camera.view_up[1] = 0.0;
   s.camera.view_up[2] = 1.0;
-  s.camera.view_angle = rnd(20.0, 60.0);
-  s.light[0] = rnd(-0.6, 0.6);
-  s.light[1] = rnd(-0.6, 0.6);
+  s.camera.view_angle = vsh_test_rnd(20.0, 60.0);
+  s.light[0] = vsh_test_rnd(-0.6, 0.6);
+  s.light[1] = vsh_test_rnd(-0.6, 0.6);
   s.light[2] = -1.0;
   const vsh_bounds floor = {{offset[0] - size, offset[1] - size, offset[2] - 0.01 * size},
                             {offset[0] + size, offset[1] + size, offset[2]}};
@@ -95,7 +86,7 @@ static int lookup_point(const scene *s, const vsh_camera *camera, double out[3])
   vsh_camera_basis(camera, r, u, f);
   const double t = tan(camera->view_angle * PI / 360.0);
   for (int tries = 0; tries < 200; ++tries) {
-    const double d = rnd(s->near, s->far), x = rnd(-1, 1), y = rnd(-1, 1);
+    const double d = vsh_test_rnd(s->near, s->far), x = vsh_test_rnd(-1, 1), y = vsh_test_rnd(-1, 1);
     for (int k = 0; k < 3; ++k)
       out[k] = camera->position[k] + d * (f[k] + x * t * (4.0 / 3.0) * r[k] + y * t * u[k]);
     int inside = 1;
@@ -125,8 +116,8 @@ static void test_property(const double offset[3], double size, int *yes_small, i
       continue;
     const int small = trial % 3 != 0;
     const vsh_camera next =
-        small ? moved(&s.camera, rnd(-1.0, 1.0), rnd(-0.01, 0.01))
-              : moved(&s.camera, rnd(-40.0, 40.0), rnd(-0.3, 0.3));
+        small ? moved(&s.camera, vsh_test_rnd(-1.0, 1.0), vsh_test_rnd(-0.01, 0.01))
+              : moved(&s.camera, vsh_test_rnd(-40.0, 40.0), vsh_test_rnd(-0.3, 0.3));
     if (fit(&s, &next, &needed) != 0)
       continue;
     double region[6];
@@ -308,6 +299,7 @@ static void test_bad_input(void) {
 }
 
 int main(void) {
+  vsh_test_seed(0x2545F4914F6CDD1Dull);
   test_known_answers();
   test_lookup_region();
   test_bad_input();

@@ -3,6 +3,7 @@
  * clipping (w <= 0, caster behind the receiver) and the precision of the
  * camera-relative form at 1e6 / 1e12 offsets and 1e-6 scale. */
 #include "vsh_check.h"
+#include "vsh_random.h"
 #include "vsh_planar.h"
 #include "vsh_mat4.h"
 #include "vsh_vec3.h"
@@ -13,26 +14,6 @@
 #include <string.h>
 
 /* ---- helpers ------------------------------------------------------------ */
-
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull; /* fixed seed: reproducible */
-
-static double rnd(double lo, double hi) { /* xorshift64*, 53-bit uniform */
-  rng_state ^= rng_state >> 12;
-  rng_state ^= rng_state << 25;
-  rng_state ^= rng_state >> 27;
-  const uint64_t r = rng_state * 0x2545F4914F6CDD1Dull;
-  return lo + (hi - lo) * ((double)(r >> 11) * (1.0 / 9007199254740992.0));
-}
-
-static void rnd_unit(double out[3]) {
-  double v[3];
-  do {
-    v[0] = rnd(-1, 1);
-    v[1] = rnd(-1, 1);
-    v[2] = rnd(-1, 1);
-  } while (vsh_vec3_length(v) < 0.1 || vsh_vec3_length(v) > 1);
-  vsh_vec3_normalize(v, out);
-}
 
 static int all_zero(const double *m, int n) {
   for (int k = 0; k < n; ++k)
@@ -109,17 +90,17 @@ static void test_random_point_lights(void) {
   double worst_rel = 0, worst_on_plane = 0;
   for (int s = 0; s < 2000; ++s) {
     double N[3], E[3], L[3], P[3], M[16], got[3], want[3];
-    rnd_unit(N);
-    for (int k = 0; k < 3; ++k) E[k] = rnd(-10, 10);
+    vsh_test_rnd_unit(N);
+    for (int k = 0; k < 3; ++k) E[k] = vsh_test_rnd(-10, 10);
     const double d = -vsh_vec3_dot(N, E);
-    const double scale = rnd(0.5, 3); /* pass an unnormalized plane */
+    const double scale = vsh_test_rnd(0.5, 3); /* pass an unnormalized plane */
     const double plane[4] = {N[0] * scale, N[1] * scale, N[2] * scale, d * scale};
-    const double h = rnd(0.5, 20);
-    for (int k = 0; k < 3; ++k) L[k] = E[k] + rnd(-5, 5) + h * N[k];
+    const double h = vsh_test_rnd(0.5, 20);
+    for (int k = 0; k < 3; ++k) L[k] = E[k] + vsh_test_rnd(-5, 5) + h * N[k];
     if (plane_eval((double[4]){N[0], N[1], N[2], d}, L) < 0.1) continue;
     const double light[4] = {L[0], L[1], L[2], 1};
     CHECK(vsh_planar_shadow_matrix(plane, light, M) == VSH_PLANAR_OK);
-    for (int k = 0; k < 3; ++k) P[k] = rnd(-15, 15);
+    for (int k = 0; k < 3; ++k) P[k] = vsh_test_rnd(-15, 15);
     const double hl = plane_eval((double[4]){N[0], N[1], N[2], d}, L);
     const double hp = plane_eval((double[4]){N[0], N[1], N[2], d}, P);
     const int projected = vsh_planar_project_point(M, P, got);
@@ -144,16 +125,16 @@ static void test_random_directional(void) {
   double worst_rel = 0, worst_on_plane = 0;
   for (int s = 0; s < 2000; ++s) {
     double N[3], E[3], D[3], P[3], M[16], got[3], want[3];
-    rnd_unit(N);
-    rnd_unit(D);
+    vsh_test_rnd_unit(N);
+    vsh_test_rnd_unit(D);
     if (vsh_vec3_dot(D, N) > -0.05) continue; /* must travel toward the lit face */
-    for (int k = 0; k < 3; ++k) E[k] = rnd(-10, 10);
+    for (int k = 0; k < 3; ++k) E[k] = vsh_test_rnd(-10, 10);
     const double d = -vsh_vec3_dot(N, E);
     const double plane[4] = {N[0], N[1], N[2], d};
-    const double len = rnd(0.1, 10);
+    const double len = vsh_test_rnd(0.1, 10);
     const double light[4] = {-D[0] * len, -D[1] * len, -D[2] * len, 0};
     CHECK(vsh_planar_shadow_matrix(plane, light, M) == VSH_PLANAR_OK);
-    for (int k = 0; k < 3; ++k) P[k] = rnd(-15, 15);
+    for (int k = 0; k < 3; ++k) P[k] = vsh_test_rnd(-15, 15);
     CHECK(vsh_planar_project_point(M, P, got) == 1); /* w constant > 0 */
     closed_form_dir(N, E, D, P, want);
     const double size = fmax(1, vsh_vec3_length(want));
