@@ -1394,6 +1394,37 @@ static void test_choose(void) {
         1);
 }
 
+static void test_perspective_depth_terms(void) {
+  /* The near plane maps to ndc -1, the far plane to +1, as the fitted
+   * matrix does; anything but a perspective view with a depth range gives
+   * zeros. */
+  const double pos[3] = {0, 0, 10}, down[3] = {0, 0, -1}, origin[3] = {1, 2, 3};
+  const vsh_bounds b = box(-1, 1, -1, 1, 0, 2);
+  vsh_shadow_view v;
+  CHECK(vsh_csm_fit_perspective(pos, down, 30.0, &b, origin, 512, &v) == 0);
+  double t[2];
+  vsh_csm_perspective_depth_terms(&v, t);
+  CHECK_NEAR(-t[0] + t[1] / v.near_far[0], -1.0, 1e-12);
+  CHECK_NEAR(-t[0] + t[1] / v.near_far[1], 1.0, 1e-12);
+  /* The same as the matrix: a point on the axis at distance d. */
+  for (double d = v.near_far[0]; d <= v.near_far[1]; d += 0.25) {
+    const double p[3] = {pos[0] - origin[0], pos[1] - origin[1], pos[2] - d - origin[2]};
+    double q[3];
+    clip_of(v.world_to_clip, p, q);
+    CHECK_NEAR(q[2], -t[0] + t[1] / d, 1e-12);
+  }
+  vsh_shadow_view flat = v;
+  flat.perspective = 0;
+  vsh_csm_perspective_depth_terms(&flat, t);
+  CHECK(t[0] == 0.0 && t[1] == 0.0);
+  flat = v;
+  flat.near_far[1] = flat.near_far[0];
+  vsh_csm_perspective_depth_terms(&flat, t);
+  CHECK(t[0] == 0.0 && t[1] == 0.0);
+  vsh_csm_perspective_depth_terms(NULL, t);
+  CHECK(t[0] == 0.0 && t[1] == 0.0);
+}
+
 static void test_perspective_resolution(void) {
   /* Closed form: a 45-degree half angle, light 10 away, seen at depth 10
    * with a 90-degree view on 512 px, target 1 px: need 512. */
@@ -1447,5 +1478,6 @@ int main(void) {
   test_bias();
   test_choose();
   test_perspective_resolution();
+  test_perspective_depth_terms();
   return vsh_check_report("core.csm");
 }

@@ -108,6 +108,13 @@ int vsh_csm_fit_perspective(const double position[3], const double direction[3],
                             double half_angle_deg, const vsh_bounds *bounds,
                             const double origin[3], int resolution, vsh_shadow_view *out);
 
+/* The depth terms of a perspective view's projection, for turning a
+ * distance d along its axis into its normalised device depth:
+ * ndc z = -out[0] + out[1] / d (the projection's [2][2] and [2][3]
+ * entries, from near_far). Both 0 for a view that is not perspective or
+ * whose depth range is empty. */
+void vsh_csm_perspective_depth_terms(const vsh_shadow_view *view, double out[2]);
+
 /* The direction of cube face `face` (0..5: +x -x +y -y +z -z). */
 void vsh_csm_cube_face_direction(int face, double out[3]);
 

@@ -261,16 +261,30 @@ int vsh_csm_fit_perspective(const double position[3], const double direction[3],
   memset(proj, 0, sizeof proj);
   proj[0] = cot;
   proj[5] = cot;
-  proj[10] = -(far_d + near_d) / (far_d - near_d);
-  proj[11] = -2.0 * far_d * near_d / (far_d - near_d);
+  out->perspective = 1;
+  out->near_far[0] = near_d;
+  out->near_far[1] = far_d;
+  double terms[2];
+  vsh_csm_perspective_depth_terms(out, terms);
+  proj[10] = terms[0];
+  proj[11] = terms[1];
   proj[14] = -1.0;
   vsh_mat4_multiply(proj, view, out->world_to_clip);
   out->texel_world = 2.0 / (cot * resolution); /* at distance 1 */
-  out->perspective = 1;
   out->depth_extent = far_d - near_d;
-  out->near_far[0] = near_d;
-  out->near_far[1] = far_d;
   return 0;
+}
+
+void vsh_csm_perspective_depth_terms(const vsh_shadow_view *view, double out[2])
+{
+  out[0] = out[1] = 0.0;
+  if (!view || !view->perspective)
+    return;
+  const double n = view->near_far[0], f = view->near_far[1];
+  if (!(f > n) || !isfinite(n) || !isfinite(f))
+    return;
+  out[0] = -(f + n) / (f - n);
+  out[1] = -2.0 * f * n / (f - n);
 }
 
 void vsh_csm_cube_face_direction(int face, double out[3])

@@ -630,8 +630,10 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   {
     Tile& tile = impl.Tiles[t];
     Internals::RenderedTile& held = impl.Rendered[t];
-    bool same = held.Valid && held.CasterTime == casterTime && held.Map.Light == tile.Light &&
-      held.Map.View.perspective == tile.View.perspective;
+    // A map of the same light and casters: the same one, or perhaps reusable.
+    const bool comparable =
+      held.Valid && held.CasterTime == casterTime && held.Map.Light == tile.Light;
+    bool same = comparable && held.Map.View.perspective == tile.View.perspective;
     // Two empty maps (nothing in front of a cube face, no receiver in a
     // slice) are the same whatever their placeholder matrices say.
     const bool empty = tile.View.texel_world <= 0.0;
@@ -644,9 +646,8 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
       const double a = tile.Absolute[k], b = held.Map.Absolute[k];
       same = std::abs(a - b) <= 1e-12 * std::max(1.0, std::max(std::abs(a), std::abs(b)));
     }
-    if (!same && held.Valid && held.CasterTime == casterTime && held.Map.Light == tile.Light &&
-      this->Stable && !tile.View.perspective && tile.View.texel_world > 0.0 &&
-      !held.Map.View.perspective && held.Map.View.texel_world > 0.0 && tile.Near > 0.0)
+    // (The core refuses perspective and empty maps itself.)
+    if (!same && comparable && this->Stable && tile.Near > 0.0)
     {
       double region[6];
       const double lookupNear = tile.Near * (1.0 - (tile.Near > depthRange[0] ? this->BlendBand : 0.0));
@@ -900,10 +901,10 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
     fars[t] = static_cast<float>(tile.Far);
     if (tile.View.perspective)
     {
-      // The projection's depth terms: ndc z = -a + b / distance.
-      const double n = tile.View.near_far[0], f = tile.View.near_far[1];
-      depth[2 * t + 0] = static_cast<float>(-(f + n) / (f - n));
-      depth[2 * t + 1] = static_cast<float>(-2.0 * f * n / (f - n));
+      double terms[2];
+      vsh_csm_perspective_depth_terms(&tile.View, terms);
+      depth[2 * t + 0] = static_cast<float>(terms[0]);
+      depth[2 * t + 1] = static_cast<float>(terms[1]);
     }
   }
   program->SetUniformMatrix4x4v("vshTileMatrix", tiles, matrices.data());
