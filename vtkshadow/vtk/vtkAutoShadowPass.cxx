@@ -55,11 +55,7 @@ struct vtkAutoShadowPass::Internals
     {
       caster.reset(new Caster);
     }
-    vtkMTimeType t = actor->GetMapper()->GetMTime();
-    if (vtkDataObject* data = actor->GetMapper()->GetInputDataObject(0, 0))
-    {
-      t = std::max(t, data->GetMTime());
-    }
+    const vtkMTimeType t = vtkshadow::MeshTime(actor);
     if (caster->MeshTime != t || t == 0)
     {
       caster->MeshTime = t;
@@ -153,11 +149,7 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     {
       // Planes are recomputed only when the actor, its mapper or data change.
       CachedPlane& cached = this->Planes[actor];
-      vtkMTimeType t = std::max(actor->GetMatrix()->GetMTime(), actor->GetMapper()->GetMTime());
-      if (vtkDataObject* data = actor->GetMapper()->GetInputDataObject(0, 0))
-      {
-        t = std::max(t, data->GetMTime());
-      }
+      const vtkMTimeType t = std::max(actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor));
       if (t > cached.Time || cached.Time == 0)
       {
         cached.Time = t;

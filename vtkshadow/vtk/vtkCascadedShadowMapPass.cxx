@@ -318,12 +318,8 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
       vsh_bounds_merge(&casterBounds, &ab);
       // The actor's placement, not its own MTime: VTK's pass machinery gives
       // actors property keys during the first frame, which bumps it.
-      casterTime = std::max(casterTime, actor->GetMatrix()->GetMTime());
-      if (auto* data = actor->GetMapper()->GetInputDataObject(0, 0))
-      {
-        casterTime = std::max(casterTime, data->GetMTime());
-      }
-      casterTime = std::max(casterTime, actor->GetMapper()->GetMTime());
+      casterTime =
+        std::max({ casterTime, actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor) });
     }
   }
   casterTime += casters.size(); // a caster leaving the scene changes it too

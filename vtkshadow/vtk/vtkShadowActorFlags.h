@@ -6,6 +6,7 @@
 #define vtkShadowActorFlags_h
 
 #include "vtkActor.h"
+#include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkMapper.h"
@@ -14,6 +15,7 @@
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace vtkshadow
@@ -35,6 +37,19 @@ inline void SetFlag(vtkActor* actor, vtkInformationIntegerKey* key, int value)
   }
   actor->GetPropertyKeys()->Set(key, value);
   actor->Modified();
+}
+
+// When the actor's mesh last changed: its mapper or the mapper's input.
+// (Not the actor's own MTime: VTK's pass machinery bumps it when it gives
+// actors property keys. The placement is actor->GetMatrix()->GetMTime().)
+inline vtkMTimeType MeshTime(vtkActor* actor)
+{
+  vtkMTimeType t = actor->GetMapper()->GetMTime();
+  if (vtkDataObject* data = actor->GetMapper()->GetInputDataObject(0, 0))
+  {
+    t = std::max(t, data->GetMTime());
+  }
+  return t;
 }
 
 // An actor that takes part in the shadows of a frame, with its world bounds
