@@ -14,19 +14,13 @@ import json
 import os
 import platform
 import shutil
+import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-FLOOR = 1e-3
-
-
-def fmt(v, nd=3):
-    if v is None:
-        return "-"
-    if v != 0 and abs(v) < 10 ** -nd:
-        return "%.1e" % v
-    return ("%." + str(nd) + "f") % v
+sys.path.insert(0, HERE)
+from vtkshadow_bench import WRONG_FLOOR, fmt, front_position, goal_figures  # noqa: E402
 
 
 def by_scene(rows):
@@ -41,20 +35,6 @@ def pick(rows, tech, settings):
                  and (r.get("wrong_pct") is not None)), None)
 
 
-def front_verdict(rows):
-    """auto's time against the fastest manual configuration (same run, same
-    scene) with wrong_pct <= auto's: the same rule as vtkshadow-bench."""
-    a = next((r for r in rows if r["technique"] == "auto" and r.get("ratio")), None)
-    if not a or a.get("wrong_pct") is None:
-        return None, None
-    others = [r for r in rows if r["technique"] not in ("auto", "eevee") and r.get("ratio")
-              and r.get("wrong_pct") is not None and r["wrong_pct"] <= a["wrong_pct"] + 1e-9]
-    if not others:
-        return 1.0, "lowest error of all"
-    best = min(others, key=lambda r: r["ratio"])
-    return a["ratio"] / best["ratio"], "%s %s" % (best["technique"], best["settings"])
-
-
 def goals_table(scenes):
     lines = ["| scene | csm wrong_pct | vtk 2048 wrong_pct | error ratio (goal >= 10) | "
              "csm / vtk time (goal <= 1.2) | planar overhead (goal <= 15%) | auto chose | "
@@ -63,29 +43,26 @@ def goals_table(scenes):
     tally = {"err": [0, 0], "time": [0, 0], "planar": [0, 0], "auto": [0, 0]}
     for key in sorted(scenes):
         rows = scenes[key]
-        csm, vtk = pick(rows, "csm", "default"), pick(rows, "vtk", "map=2048")
-        planar, auto = pick(rows, "planar", "-"), pick(rows, "auto", "default")
+        g = goal_figures(rows)
+        csm, vtk, auto = g["csm"], g["vtk"], pick(rows, "auto", "default")
         hard = key.startswith("hard-")
-        err = time_ratio = None
-        if csm and vtk:
-            err = vtk["wrong_pct"] / max(csm["wrong_pct"], FLOOR)
-            time_ratio = csm["ratio"] / vtk["ratio"]
+        err, time_ratio, ov = g["error_ratio"], g["time_ratio"], g["planar_overhead"]
+        if err is not None:
             if not hard:
                 tally["err"][0] += err >= 10
                 tally["err"][1] += 1
                 tally["time"][0] += time_ratio <= 1.2
                 tally["time"][1] += 1
-        ov = planar["ratio"] - 1.0 if planar else None
         if ov is not None and not hard:
             tally["planar"][0] += ov <= 0.15
             tally["planar"][1] += 1
-        rel, _ = front_verdict(rows)
+        _, _, rel = front_position(rows)
         if rel is not None:
             tally["auto"][0] += rel <= 1.10
             tally["auto"][1] += 1
         lines.append("| %s%s | %s | %s | %s | %s | %s | %s | %s |" % (
-            key, " (hard)" if hard else "", fmt(csm and csm["wrong_pct"]),
-            fmt(vtk and vtk["wrong_pct"]), "-" if err is None else "%.1fx" % err,
+            key, " (hard)" if hard else "", fmt(csm and csm["wrong_pct"], 3),
+            fmt(vtk and vtk["wrong_pct"], 3), "-" if err is None else "%.1fx" % err,
             "-" if time_ratio is None else "%.2fx" % time_ratio,
             "-" if ov is None else "%.0f%%" % (100 * ov),
             (auto or {}).get("auto_choice") or "-", "-" if rel is None else "%.2fx" % rel))
@@ -106,7 +83,7 @@ def peers_table(scenes):
         for r in peers + [m for m in mine if m]:
             n += 1
             lines.append("| %s | %s %s | %s | %s | %s | %s |" % (
-                key, r["technique"], r["settings"], fmt(r.get("wrong_pct")),
+                key, r["technique"], r["settings"], fmt(r.get("wrong_pct"), 3),
                 fmt(r.get("vis_mae"), 4), fmt(r.get("edge_px"), 2),
                 fmt(r["ms_per_frame"] / 1000.0, 2) if r["technique"] == "eevee"
                 and r.get("ms_per_frame") else "-"))
@@ -154,7 +131,8 @@ def main():
            "Analysis and history: [performance.md](performance.md).", "",
            "Run %s on %s (%s), 2 cores, no GPU: Mesa llvmpipe under Xvfb. The machine is shared, "
            "so compare techniques within a scene as ratios measured in the same run." % (
-               time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), platform.node() or "?", platform.machine()), "",
+               time.strftime("%Y-%m-%d %H:%M UTC",
+                             time.gmtime(os.path.getmtime(os.path.join(a.bench, "bench.json")))), platform.node() or "?", platform.machine()), "",
            "## Goals", "",
            "From issue #6, on every non-hard scene: `csm` at its defaults has at least 10x lower "
            "wrong_pct than `vtk` (2048) at no more than 1.2x its frame time; `planar` costs at most "
@@ -167,7 +145,7 @@ def main():
            "Error ratio: vtk wrong_pct / csm wrong_pct (csm floored at %g). Times: the ratio of "
            "shadowed to unshadowed frame of the same vtkshadow-render process. *auto / front*: "
            "auto's time over that of the fastest manual configuration with wrong_pct no higher "
-           "than auto's." % FLOOR, ""] + goals + [""]
+           "than auto's." % WRONG_FLOOR, ""] + goals + [""]
     if peers:
         out += ["## Peer: Blender EEVEE", "",
                 "EEVEE (Blender's rasterizer with cascaded soft shadow maps) renders the same "
