@@ -2,6 +2,7 @@
 
 #include "vtkNew.h"
 #include "vtkShadowTechnique.h"
+#include "vtkShadowTechniqueRegistry.h"
 
 #include <cerrno>
 #include <cmath>
@@ -31,9 +32,19 @@ bool ParseInt(const char* text, long low, long high, int& out)
 }
 }
 
+void PrintTechniques(std::ostream& out)
+{
+  for (int i = 0; i < vtkShadowTechniqueRegistry::GetNumberOfTechniques(); ++i)
+  {
+    out << vtkShadowTechniqueRegistry::GetName(i) << "\t"
+        << vtkShadowTechniqueRegistry::GetDescription(i) << "\n";
+  }
+}
+
 const char* RenderUsage()
 {
   return "usage: vtkshadow-render SCENE --technique T --image OUT.png\n"
+         "       vtkshadow-render --list-techniques\n"
          "         [--visibility V.png] [--mask M.png] [--light K] [--stats S.json]\n"
          "         [--frames N] [--map-resolution R] [--size WxH] [--set KEY=VALUE]...\n"
          "         [--max-error E | --max-error Npx] [--quiet]\n"
@@ -54,6 +65,7 @@ const char* RenderUsage()
          "                       the pixels, default 0.5), or Npx: an on-screen\n"
          "                       shadow-map texel size of N pixels\n"
          "  --quiet              no progress output\n"
+         "  --list-techniques    print each technique with its description and exit\n"
          "Exit status: 0 success, 1 rendering failure, 2 bad input.\n";
 }
 
@@ -74,6 +86,11 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::stri
     if (arg == "-h" || arg == "--help")
     {
       std::cout << RenderUsage();
+      return -1;
+    }
+    else if (arg == "--list-techniques")
+    {
+      PrintTechniques(std::cout);
       return -1;
     }
     else if (arg == "--technique")

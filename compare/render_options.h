@@ -3,6 +3,7 @@
 #ifndef vtkshadow_render_options_h
 #define vtkshadow_render_options_h
 
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,9 @@ struct RenderOptions
 // Parse argv. Returns 0 when the program should go on, 2 on a usage error
 // (message in `error`), and -1 after printing --help.
 int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::string& error);
+
+// Each registered technique, "name<TAB>description" per line.
+void PrintTechniques(std::ostream& out);
 
 // The usage text.
 const char* RenderUsage();

@@ -42,6 +42,10 @@ add_test(NAME install.downstream
 add_test(NAME cli.bad_input
   COMMAND ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_bad_input.py
           --bin ${VTKSHADOW_BIN} --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/cli)
+# --list-techniques prints the registry, name and description per line.
+add_test(NAME cli.list_techniques
+  COMMAND ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_list_techniques.py
+          --bin ${VTKSHADOW_BIN})
 # ... and a good scene writes image, visibility, mask and stats.
 add_test(NAME cli.outputs
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_outputs.py

@@ -32,6 +32,18 @@ int main(int argc, char **argv)
   CHECK_STR_CONTAINS(error, "/nonexistent/scene.json");
   CHECK(vtkshadow_technique_new("bogus", error, sizeof error) == NULL);
   CHECK_STR_CONTAINS(error, "bogus");
+  /* The registry, read through the C API: every name makes a technique. */
+  CHECK(vtkshadow_technique_count() >= 5);
+  for (int i = 0; i < vtkshadow_technique_count(); ++i) {
+    const char *name = vtkshadow_technique_name_at(i);
+    CHECK(name != NULL && vtkshadow_technique_description_at(i) != NULL);
+    vtkshadow_technique *made = name ? vtkshadow_technique_new(name, error, sizeof error) : NULL;
+    CHECK(made != NULL);
+    vtkshadow_technique_free(made);
+  }
+  CHECK(vtkshadow_technique_name_at(vtkshadow_technique_count()) == NULL);
+  CHECK(vtkshadow_technique_name_at(-1) == NULL);
+  CHECK(vtkshadow_technique_description_at(-1) == NULL);
 
   vtkshadow_scene *scene = vtkshadow_scene_load(argv[1], error, sizeof error);
   CHECK(scene != NULL);

@@ -41,6 +41,30 @@ check(technique.IsValid() and technique.GetMapResolution() == 2048, "vtk at 2048
 check(vtkshadow.vtkShadowTechnique.IsKnownTechnique("vtk"), "static lookup")
 check(not vtkshadow.vtkShadowTechnique.IsKnownTechnique("bogus"), "unknown name")
 
+# The registry is the one list of techniques: names, descriptions, passes.
+registry = vtkshadow.vtkShadowTechniqueRegistry
+names = [registry.GetName(i) for i in range(registry.GetNumberOfTechniques())]
+check(names[:5] == ["none", "vtk", "planar", "csm", "auto"], f"registry order {names}")
+check(" ".join(names) == vtkshadow.vtkShadowTechnique.GetKnownTechniques(), "known = registry")
+check(registry.GetName(len(names)) is None and registry.GetName(-1) is None, "out of range")
+for i, name in enumerate(names):
+    check(len(registry.GetDescription(i)) > 20, f"{name} has a description")
+    made = registry.CreatePass(name)
+    check(made is not None and made.IsA("vtkShadowPassBase"), f"{name} makes a vtkShadowPassBase")
+    check(registry.FindTechnique(name) == i, f"find {name}")
+check(registry.CreatePass("bogus") is None and registry.FindTechnique("bogus") == -1, "bogus")
+# Settings are checked by the named technique's pass.
+csm = vtkshadow.vtkShadowTechnique()
+csm.SetName("csm")
+check(csm.SetOption("cascades", 3) and not csm.SetOption("cascades", 9), "csm cascades range")
+planar = vtkshadow.vtkShadowTechnique()
+planar.SetName("planar")
+check(not planar.SetOption("cascades", 3), "planar has no cascades")
+check(planar.SetOption("plane_tolerance", 1e-4) and planar.SetOption("map_resolution", 1024),
+      "planar takes plane_tolerance and the technique-wide map_resolution")
+check(planar.SetOption("cast_headlight", 1) and not planar.SetOption("cast_headlight", 2),
+      "every pass takes cast_headlight 0/1")
+
 window = vtkRenderWindow()
 window.SetOffScreenRendering(1)
 window.SetSize(96, 96)
@@ -50,8 +74,9 @@ check(scene.Populate(renderer), "populate")
 check(renderer.GetActors().GetNumberOfItems() == 2, "two actors")
 check(renderer.GetLights().GetNumberOfItems() == 3, "three lights in the renderer")
 check(technique.Install(renderer), "install the vtk technique")
-check(technique.GetShadowMapMemory(renderer) > 0, "the vtk maps take memory")
+check(technique.GetShadowMapMemory(renderer) == 0, "no maps before the first frame")
 window.Render()
+check(technique.GetShadowMapMemory(renderer) > 0, "the vtk maps take memory after a frame")
 
 visibility = vtkshadow.vtkShadowVisibility()
 visibility.SetScene(scene)

@@ -117,10 +117,10 @@ def flicker_pct(states, masks):
 def techniques():
     stable = vtkshadow.vtkShadowTechnique()
     stable.SetName("csm")
-    stable.GetCascadedSettings().SetStable(True)
+    stable.SetOption("stable", 1)
     unstable = vtkshadow.vtkShadowTechnique()
     unstable.SetName("csm")
-    unstable.GetCascadedSettings().SetStable(False)
+    unstable.SetOption("stable", 0)
     vtk = vtkshadow.vtkShadowTechnique()
     vtk.SetName("vtk")
     return {"csm stable": stable, "csm unstable": unstable, "vtk": vtk,

@@ -95,7 +95,6 @@ std::string Centre(const char* what, const Sphere& o)
 vtkAutoShadowPass::vtkAutoShadowPass()
   : PlanarPass(vtkPlanarShadowPass::New())
   , CascadedPass(vtkCascadedShadowMapPass::New())
-  , PlainPass(vtkRenderStepsPass::New())
   , Choice("none")
   , Reason("not rendered yet")
   , MaxError(0.5)
@@ -105,9 +104,6 @@ vtkAutoShadowPass::vtkAutoShadowPass()
   , UsedEdgeLength(0.0)
   , Impl(new Internals)
 {
-  // One scene pipeline for all three, so switching keeps VTK's passes.
-  this->PlanarPass->SetDelegatePass(this->PlainPass);
-  this->CascadedPass->SetDelegatePass(this->PlainPass);
 }
 
 //------------------------------------------------------------------------------
@@ -115,7 +111,6 @@ vtkAutoShadowPass::~vtkAutoShadowPass()
 {
   this->PlanarPass->Delete();
   this->CascadedPass->Delete();
-  this->PlainPass->Delete();
 }
 
 //------------------------------------------------------------------------------
@@ -133,8 +128,8 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     Sphere sphere{ actor, { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) },
       0.5 * std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
               (b[5] - b[4]) * (b[5] - b[4])),
-      vtkshadow::HasFlag(actor, vtkPlanarShadowPass::RECEIVER()),
-      !vtkshadow::HasFlag(actor, vtkPlanarShadowPass::NO_CAST()),
+      vtkshadow::HasFlag(actor, vtkShadowPassBase::RECEIVER()),
+      !vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()),
       { b[0], b[1], b[2], b[3], b[4], b[5] }, false, { 0, 0, 0, 0 }, true };
     // Frustum planes point inwards: a sphere wholly outside one is not seen.
     for (int p = 0; p < 6 && sphere.InView; ++p)
@@ -344,19 +339,22 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   {
     this->CascadedPass->ReleaseGraphicsResources(window);
   }
-  vtkRenderPass* chosen = this->PlainPass;
-  if (csm)
+  // The chosen passes in a chain in front of the one scene pipeline (this
+  // pass's delegate), so switching keeps VTK's passes: each does its shadow
+  // work for its lights, then renders through the next.
+  vtkRenderPass* next = this->EnsureDelegatePass();
+  vtkShadowPassBase* const candidates[] = { this->PlanarPass, this->CascadedPass };
+  const bool used[] = { planar, csm };
+  for (int i = 0; i < 2; ++i)
   {
-    this->CascadedPass->SetDelegatePass(
-      planar ? static_cast<vtkRenderPass*>(this->PlanarPass) : this->PlainPass);
-    chosen = this->CascadedPass;
+    if (used[i])
+    {
+      candidates[i]->SetDelegatePass(next);
+      next = candidates[i];
+    }
   }
-  else if (planar)
-  {
-    chosen = this->PlanarPass;
-  }
-  chosen->Render(s);
-  this->NumberOfRenderedProps = chosen->GetNumberOfRenderedProps();
+  next->Render(s);
+  this->NumberOfRenderedProps = next->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
@@ -446,7 +444,7 @@ void vtkAutoShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->PlanarPass->ReleaseGraphicsResources(w);
   this->CascadedPass->ReleaseGraphicsResources(w);
-  this->PlainPass->ReleaseGraphicsResources(w);
+  this->Superclass::ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
@@ -460,4 +458,60 @@ void vtkAutoShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UsedEdgeLength: " << this->UsedEdgeLength << "\n";
   os << indent << "Choice: " << this->Choice << "\n";
   os << indent << "Reason: " << this->Reason << "\n";
+}
+
+//------------------------------------------------------------------------------
+bool vtkAutoShadowPass::SetOption(const char* key, double value)
+{
+  if (!key || !std::isfinite(value))
+  {
+    return false;
+  }
+  const std::string k = key;
+  if (k == "max_error" && value >= 0.0 && value <= 100.0)
+  {
+    this->SetMaxError(value);
+    return true;
+  }
+  if (k == "max_texel_px" && value >= 0.0 && value <= 1e6)
+  {
+    this->SetMaxTexelPixels(value);
+    return true;
+  }
+  if (k == "max_error" || k == "max_texel_px")
+  {
+    return false;
+  }
+  return this->CascadedPass->SetOption(key, value) || this->PlanarPass->SetOption(key, value);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAutoShadowPass::GetStatsJSON(vtkRenderer* renderer) const
+{
+  std::string reason = this->Reason;
+  for (size_t at = reason.find('"'); at != std::string::npos; at = reason.find('"', at + 2))
+  {
+    reason.insert(at, "\\");
+  }
+  std::ostringstream out;
+  out.precision(6);
+  out << "\"choice\": \"" << this->Choice << "\", \"reason\": \"" << reason << "\""
+      << ", \"texel_target_px\": " << this->UsedTexelTarget
+      << ", \"texel_stretch\": " << this->UsedStretch
+      << ", \"edge_length_px\": " << this->UsedEdgeLength << ", \"light_choices\": [";
+  for (size_t l = 0; l < this->LightChoices.size(); ++l)
+  {
+    out << (l ? ", " : "") << "\"" << this->LightChoices[l] << "\"";
+  }
+  out << "]";
+  // Details of the map pass when there is one, else of the planar pass.
+  const vtkShadowPassBase* details = this->Choice.find("csm") != std::string::npos
+    ? static_cast<vtkShadowPassBase*>(this->CascadedPass)
+    : this->Choice == "planar" ? static_cast<vtkShadowPassBase*>(this->PlanarPass)
+                               : nullptr;
+  if (details)
+  {
+    out << ", " << details->GetStatsJSON(renderer);
+  }
+  return out.str();
 }

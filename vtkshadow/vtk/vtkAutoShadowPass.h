@@ -30,7 +30,7 @@
 #ifndef vtkAutoShadowPass_h
 #define vtkAutoShadowPass_h
 
-#include "vtkRenderPass.h"
+#include "vtkShadowPassBase.h"
 #include "vtkshadowModule.h" // for export macro
 
 #include <map>    // for std::map
@@ -44,20 +44,20 @@ class vtkCascadedShadowMapPass;
 class vtkRenderer;
 class vtkPlanarShadowPass;
 class vtkProp;
-class vtkRenderStepsPass;
 
-class VTKSHADOW_EXPORT vtkAutoShadowPass : public vtkRenderPass
+class VTKSHADOW_EXPORT vtkAutoShadowPass : public vtkShadowPassBase
 {
 public:
   static vtkAutoShadowPass* New();
-  vtkTypeMacro(vtkAutoShadowPass, vtkRenderPass);
+  vtkTypeMacro(vtkAutoShadowPass, vtkShadowPassBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
    * The passes it chooses between (configure them directly, e.g.
    * GetCascadedPass()->SetFilter(1)). auto itself sets the cascaded pass's
    * MaxTexelPixels (use this class's SetMaxError / SetMaxTexelPixels), both
-   * passes' SkippedLights and the cascaded pass's delegate every frame.
+   * passes' SkippedLights and their delegates every frame: the chosen
+   * passes are chained in front of this pass's own delegate.
    */
   vtkGetObjectMacro(PlanarPass, vtkPlanarShadowPass);
   vtkGetObjectMacro(CascadedPass, vtkCascadedShadowMapPass);
@@ -100,7 +100,21 @@ public:
   /**
    * GL memory of the passes in use, as of the last frame.
    */
-  long long GetMemoryBytes() const;
+  long long GetMemoryBytes() const override;
+
+  /**
+   * max_error, max_texel_px; any other key goes to the cascaded pass (its
+   * settings, e.g. filter, cascades, map_resolution) or else the planar
+   * pass (plane_tolerance).
+   */
+  bool SetOption(const char* key, double value) override;
+
+  /**
+   * choice, reason, texel_target_px, texel_stretch, edge_length_px and
+   * light_choices, then the details of the cascaded pass when it is used,
+   * else of the planar pass.
+   */
+  std::string GetStatsJSON(vtkRenderer* renderer) const override;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -111,7 +125,6 @@ protected:
 
   vtkPlanarShadowPass* PlanarPass;
   vtkCascadedShadowMapPass* CascadedPass;
-  vtkRenderStepsPass* PlainPass;
   std::string Choice;
   std::string Reason;
   std::vector<std::string> LightChoices;

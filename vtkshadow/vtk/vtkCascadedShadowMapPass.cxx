@@ -39,11 +39,11 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkCascadedShadowMapPass);
-vtkCxxSetObjectMacro(vtkCascadedShadowMapPass, DelegatePass, vtkRenderPass);
 
 namespace
 {
@@ -139,15 +139,13 @@ struct vtkCascadedShadowMapPass::Internals
   float ViewToWorld[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   float FadeStart = 0.0f;
   float MaxDistance = 0.0f;
-  vtkMTimeType ShaderTime = 0;
   std::string ShaderSignature; // kinds, filter: what the generated code depends on
 
 };
 
 //------------------------------------------------------------------------------
 vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
-  : DelegatePass(nullptr)
-  , CascadeCount(0)
+  : CascadeCount(0)
   , RatioPerCascade(8.0)
   , SplitScheme(PRACTICAL)
   , SplitLambda(0.75)
@@ -163,17 +161,12 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
   , MaxShadowDistance(0.0)
   , FadeFraction(0.1)
   , DebugCascades(false)
-  , CastHeadlightShadows(false)
-  , SkippedLights(0)
   , UsedResolution(0)
   , NumberOfMapsRendered(0)
   , NumberOfMapsReused(0)
   , TotalMapsRendered(0)
   , Impl(new Internals)
 {
-  vtkTimeStamp t;
-  t.Modified();
-  this->Impl->ShaderTime = t.GetMTime();
 }
 
 //------------------------------------------------------------------------------
@@ -187,7 +180,6 @@ vtkCascadedShadowMapPass::~vtkCascadedShadowMapPass()
   {
     this->Impl->FBO->Delete();
   }
-  this->SetDelegatePass(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -281,23 +273,10 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     vtkErrorMacro("vtkCascadedShadowMapPass needs an OpenGL render window");
     return;
   }
-  if (!this->DelegatePass)
-  {
-    vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
-    this->SetDelegatePass(steps);
-    steps->Delete();
-  }
   Internals& impl = *this->Impl;
 
   int size[2], origin[2];
-  if (s->GetFrameBuffer() == nullptr)
-  {
-    renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
-  }
-  else
-  {
-    s->GetWindowSize(size);
-  }
+  GetViewport(s, size, origin);
   const double aspect = size[1] > 0 ? static_cast<double>(size[0]) / size[1] : 1.0;
 
   // Casters and receivers (every visible opaque actor receives).
@@ -312,7 +291,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     vsh_bounds ab;
     vsh_bounds_from_vtk(&ab, shadowActor.Bounds);
     vsh_bounds_merge(&receiverBounds, &ab);
-    if (!vtkshadow::HasFlag(actor, vtkPlanarShadowPass::NO_CAST()))
+    if (!vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()))
     {
       casters.push_back(actor);
       vsh_bounds_merge(&casterBounds, &ab);
@@ -373,8 +352,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   vtkshadow::UpdateLights(renderer);
   // Light `l` (mapper numbering) gets maps in this frame.
   auto castsShadows = [&](vtkLight* light, int l) {
-    return haveScene && (!light->LightTypeIsHeadlight() || this->CastHeadlightShadows) &&
-      !(l < 32 && ((this->SkippedLights >> l) & 1u));
+    return haveScene && this->LightCasts(light, l);
   };
   // Perspective maps are fitted to everything that casts or receives.
   vsh_bounds everything = casterBounds;
@@ -559,9 +537,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     if (signature != impl.ShaderSignature)
     {
       impl.ShaderSignature = signature;
-      vtkTimeStamp t;
-      t.Modified();
-      impl.ShaderTime = t.GetMTime();
+      this->BumpShaderTime();
     }
   }
 
@@ -763,10 +739,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
 
   // The scene, with every receiver's lighting reading the maps.
   impl.Atlas->Activate();
-  this->PreRender(s);
-  this->DelegatePass->Render(s);
-  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
-  this->PostRender(s);
+  this->RenderDelegateWithShaderHooks(s);
   impl.Atlas->Deactivate();
 }
 
@@ -912,12 +885,6 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
 }
 
 //------------------------------------------------------------------------------
-vtkMTimeType vtkCascadedShadowMapPass::GetShaderStageMTime()
-{
-  return this->Impl->ShaderTime;
-}
-
-//------------------------------------------------------------------------------
 void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& impl = *this->Impl;
@@ -936,10 +903,7 @@ void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
     entry.second->ReleaseGraphicsResources(w);
   }
   impl.Casters.clear();
-  if (this->DelegatePass)
-  {
-    this->DelegatePass->ReleaseGraphicsResources(w);
-  }
+  this->Superclass::ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
@@ -962,10 +926,123 @@ void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxShadowDistance: " << this->MaxShadowDistance << "\n";
   os << indent << "FadeFraction: " << this->FadeFraction << "\n";
   os << indent << "DebugCascades: " << this->DebugCascades << "\n";
-  os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
-  os << indent << "SkippedLights: " << this->SkippedLights << "\n";
   os << indent << "UsedResolution: " << this->UsedResolution << "\n";
   os << indent << "NumberOfMapsRendered: " << this->NumberOfMapsRendered << "\n";
   os << indent << "NumberOfMapsReused: " << this->NumberOfMapsReused << "\n";
   os << indent << "TotalMapsRendered: " << this->TotalMapsRendered << "\n";
+}
+
+//------------------------------------------------------------------------------
+bool vtkCascadedShadowMapPass::SetOption(const char* key, double v)
+{
+  if (!key || !std::isfinite(v))
+  {
+    return false;
+  }
+  const std::string k = key;
+  auto in = [&](double lo, double hi) { return v >= lo && v <= hi; };
+  auto integral = [&](double lo, double hi) { return in(lo, hi) && v == std::floor(v); };
+  const bool splitFraction = k.rfind("split_fraction_", 0) == 0 && k.size() == 16 &&
+    k[15] >= '0' && k[15] <= '6';
+  if (k == "map_resolution" && integral(16, 16384))
+  {
+    this->SetMapResolution(static_cast<int>(v));
+  }
+  else if (k == "cascades" && integral(0, 8))
+  {
+    this->SetCascadeCount(static_cast<int>(v));
+  }
+  else if (k == "ratio_per_cascade" && in(1.5, 1e6))
+  {
+    this->SetRatioPerCascade(v);
+  }
+  else if (k == "split" && integral(0, 3))
+  {
+    this->SetSplitScheme(static_cast<int>(v));
+  }
+  else if (k == "lambda" && in(0, 1))
+  {
+    this->SetSplitLambda(v);
+  }
+  else if (splitFraction && v > 0 && v < 1)
+  {
+    this->SetSplitFraction(k[15] - '0', v);
+  }
+  else if (k == "stable" && integral(0, 1))
+  {
+    this->SetStable(v != 0);
+  }
+  else if (k == "max_texel_px" && in(0, 1e6))
+  {
+    this->SetMaxTexelPixels(v);
+  }
+  else if (k == "memory_budget" && in(1 << 16, 1e12))
+  {
+    this->SetMemoryBudget(static_cast<long long>(v));
+  }
+  else if (k == "bias_scale" && in(0, 100))
+  {
+    this->SetBiasScale(v);
+  }
+  else if (k == "filter" && integral(0, 2))
+  {
+    this->SetFilter(static_cast<int>(v));
+  }
+  else if (k == "pcf_size" && integral(1, 9))
+  {
+    this->SetPCFSize(static_cast<int>(v));
+  }
+  else if (k == "poisson_radius" && in(0, 16))
+  {
+    this->SetPoissonRadius(v);
+  }
+  else if (k == "blend_band" && in(0, 0.5))
+  {
+    this->SetBlendBand(v);
+  }
+  else if (k == "max_distance" && in(0, 1e300))
+  {
+    this->SetMaxShadowDistance(v);
+  }
+  else if (k == "fade" && in(0, 1))
+  {
+    this->SetFadeFraction(v);
+  }
+  else if (k == "debug_cascades" && integral(0, 1))
+  {
+    this->SetDebugCascades(v != 0);
+  }
+  else
+  {
+    return this->Superclass::SetOption(key, v);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
+{
+  std::ostringstream out;
+  out.precision(6);
+  out << "\"resolution\": " << this->UsedResolution
+      << ", \"maps_rendered_total\": " << this->TotalMapsRendered
+      << ", \"maps_reused_last_frame\": " << this->NumberOfMapsReused << ", \"lights\": [";
+  const int lights = renderer ? renderer->GetLights()->GetNumberOfItems() : 0;
+  for (int l = 0; l < lights; ++l)
+  {
+    const int cascades = this->GetNumberOfCascades(l);
+    out << (l ? ", " : "") << "{\"cascades\": " << cascades << ", \"far\": [";
+    for (int c = 0; c < cascades; ++c)
+    {
+      out << (c ? ", " : "") << this->GetCascadeFar(l, c);
+    }
+    out << "], \"texel_px\": [";
+    for (int c = 0; c < cascades; ++c)
+    {
+      out << (c ? ", " : "") << this->GetCascadeTexelPixels(l, c);
+    }
+    out << "]}";
+  }
+  out << "]";
+  return out.str();
 }

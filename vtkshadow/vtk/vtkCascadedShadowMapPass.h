@@ -33,18 +33,16 @@
 #ifndef vtkCascadedShadowMapPass_h
 #define vtkCascadedShadowMapPass_h
 
-#include "vtkOpenGLRenderPass.h"
+#include "vtkShadowPassBase.h"
 #include "vtkshadowModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
-class vtkRenderPass;
-
-class VTKSHADOW_EXPORT vtkCascadedShadowMapPass : public vtkOpenGLRenderPass
+class VTKSHADOW_EXPORT vtkCascadedShadowMapPass : public vtkShadowPassBase
 {
 public:
   static vtkCascadedShadowMapPass* New();
-  vtkTypeMacro(vtkCascadedShadowMapPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkCascadedShadowMapPass, vtkShadowPassBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum SplitSchemes
@@ -148,28 +146,24 @@ public:
   vtkBooleanMacro(DebugCascades, bool);
 
   /**
-   * Whether the headlight casts (default off).
-   */
-  vtkSetMacro(CastHeadlightShadows, bool);
-  vtkGetMacro(CastHeadlightShadows, bool);
-  vtkBooleanMacro(CastHeadlightShadows, bool);
-
-  /**
-   * Lights this pass leaves unshadowed, as bits: bit i for light i in the
-   * mapper's numbering (the renderer's switched-on lights, in order).
-   * Default 0, every light casts. vtkAutoShadowPass uses it to give each
-   * light its own technique, or none when it casts no visible shadow.
-   */
-  vtkSetMacro(SkippedLights, unsigned int);
-  vtkGetMacro(SkippedLights, unsigned int);
-
-  /**
    * Copy every setting (not the delegate, not the GL state) from `other`.
    */
   void CopySettings(vtkCascadedShadowMapPass* other);
 
-  virtual void SetDelegatePass(vtkRenderPass* pass);
-  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  /**
+   * Settings by name: map_resolution, cascades, ratio_per_cascade, split
+   * (0 uniform, 1 log, 2 practical, 3 explicit), lambda, split_fraction_<i>,
+   * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
+   * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
+   * fade, debug_cascades, and the base's cast_headlight.
+   */
+  bool SetOption(const char* key, double value) override;
+
+  /**
+   * resolution, maps rendered (total) and reused (last frame), and per
+   * light its cascades, their far depths and on-screen texel sizes.
+   */
+  std::string GetStatsJSON(vtkRenderer* renderer) const override;
 
   /**
    * What the last frame used: cascades of directional light `light`
@@ -185,7 +179,7 @@ public:
   /** Cascades whose earlier map still covered every lookup of the last frame. */
   vtkGetMacro(NumberOfMapsReused, int);
   vtkGetMacro(TotalMapsRendered, int);
-  long long GetMemoryBytes() const;
+  long long GetMemoryBytes() const override;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -195,13 +189,11 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
-  vtkMTimeType GetShaderStageMTime() override;
 
 protected:
   vtkCascadedShadowMapPass();
   ~vtkCascadedShadowMapPass() override;
 
-  vtkRenderPass* DelegatePass;
   int CascadeCount;
   double RatioPerCascade;
   int SplitScheme;
@@ -218,8 +210,6 @@ protected:
   double MaxShadowDistance;
   double FadeFraction;
   bool DebugCascades;
-  bool CastHeadlightShadows;
-  unsigned int SkippedLights;
   int UsedResolution;
   int NumberOfMapsRendered;
   int NumberOfMapsReused;

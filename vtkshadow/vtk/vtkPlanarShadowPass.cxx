@@ -45,8 +45,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkPlanarShadowPass);
-vtkInformationKeyMacro(vtkPlanarShadowPass, RECEIVER, Integer);
-vtkInformationKeyMacro(vtkPlanarShadowPass, NO_CAST, Integer);
 
 namespace
 {
@@ -134,7 +132,6 @@ struct vtkPlanarShadowPass::Internals
   float PlaneVC[4 * MaxExplicitPlanes] = {};
   int PlaneReceiver[MaxExplicitPlanes] = {};
   float PlaneTolerance[MaxExplicitPlanes] = {};
-  vtkMTimeType ShaderTime = 0;
   std::vector<vtkProp*> Receiving; // sorted (from the map)
   bool EveryoneReceives = false;
 
@@ -147,18 +144,12 @@ struct vtkPlanarShadowPass::Internals
 
 //------------------------------------------------------------------------------
 vtkPlanarShadowPass::vtkPlanarShadowPass()
-  : DelegatePass(nullptr)
-  , PlaneTolerance(1e-5)
-  , CastHeadlightShadows(false)
-  , SkippedLights(0)
+  : PlaneTolerance(1e-5)
   , NumberOfShadowPairs(0)
   , NumberOfMaskTriangles(0)
   , NumberOfGeometryBuilds(0)
   , Impl(new Internals)
 {
-  vtkTimeStamp t;
-  t.Modified();
-  this->Impl->ShaderTime = t.GetMTime();
 }
 
 //------------------------------------------------------------------------------
@@ -172,10 +163,7 @@ vtkPlanarShadowPass::~vtkPlanarShadowPass()
   {
     this->Impl->FBO->Delete();
   }
-  this->SetDelegatePass(nullptr);
 }
-
-vtkCxxSetObjectMacro(vtkPlanarShadowPass, DelegatePass, vtkRenderPass);
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::AddReceiverActor(vtkActor* actor)
@@ -225,9 +213,9 @@ void vtkPlanarShadowPass::RemoveAllReceivers()
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkPlanarShadowPass::GetMemoryBytes() const
+long long vtkPlanarShadowPass::GetMemoryBytes() const
 {
-  vtkIdType bytes = static_cast<vtkIdType>(this->Impl->MaskSize[0]) * this->Impl->MaskSize[1] * 4 *
+  long long bytes = static_cast<long long>(this->Impl->MaskSize[0]) * this->Impl->MaskSize[1] * 4 *
     this->Impl->MaskChannels;
   for (const auto& entry : this->Impl->Casters)
   {
@@ -249,25 +237,12 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     vtkErrorMacro("vtkPlanarShadowPass needs an OpenGL render window");
     return;
   }
-  if (!this->DelegatePass)
-  {
-    vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
-    this->SetDelegatePass(steps);
-    steps->Delete();
-  }
   Internals& impl = *this->Impl;
   ++impl.Frame;
 
   // Viewport of this renderer in the target: the mask matches it pixel for pixel.
-  int size[2], origin[2] = { 0, 0 };
-  if (s->GetFrameBuffer() == nullptr)
-  {
-    renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
-  }
-  else
-  {
-    s->GetWindowSize(size);
-  }
+  int size[2], origin[2];
+  GetViewport(s, size, origin);
   impl.MaskOrigin[0] = origin[0];
   impl.MaskOrigin[1] = origin[1];
 
@@ -287,9 +262,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     {
       LightInfo info;
       vtkshadow::LightHomogeneous(light, info.Homogeneous);
-      const size_t index = lights.size();
-      info.Casts = (!light->LightTypeIsHeadlight() || this->CastHeadlightShadows) &&
-        !(index < 32 && (this->SkippedLights >> index) & 1u);
+      info.Casts = this->LightCasts(light, static_cast<int>(lights.size()));
       lights.push_back(info);
     }
   }
@@ -367,9 +340,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     {
       impl.Receiving = receiving;
       impl.EveryoneReceives = everyone;
-      vtkTimeStamp t;
-      t.Modified();
-      impl.ShaderTime = t.GetMTime();
+      this->BumpShaderTime();
     }
   }
   for (const auto& p : impl.Planes)
@@ -749,10 +720,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
 
   // The scene, with the receivers' lighting reading the mask.
   impl.Mask->Activate();
-  this->PreRender(s);
-  this->DelegatePass->Render(s);
-  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
-  this->PostRender(s);
+  this->RenderDelegateWithShaderHooks(s);
   impl.Mask->Deactivate();
 }
 
@@ -813,13 +781,6 @@ bool vtkPlanarShadowPass::SetShaderParameters(
 }
 
 //------------------------------------------------------------------------------
-vtkMTimeType vtkPlanarShadowPass::GetShaderStageMTime()
-{
-  // The shader code never changes; only uniforms do.
-  return this->Impl->ShaderTime;
-}
-
-//------------------------------------------------------------------------------
 void vtkPlanarShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& impl = *this->Impl;
@@ -851,10 +812,7 @@ void vtkPlanarShadowPass::ReleaseGraphicsResources(vtkWindow* w)
     entry.second->Geometry.ReleaseGraphicsResources(w);
   }
   impl.Casters.clear();
-  if (this->DelegatePass)
-  {
-    this->DelegatePass->ReleaseGraphicsResources(w);
-  }
+  this->Superclass::ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
@@ -864,18 +822,30 @@ void vtkPlanarShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReceiverActors: " << this->Impl->ReceiverActors.size() << "\n";
   os << indent << "ReceiverPlanes: " << this->Impl->Planes.size() << "\n";
   os << indent << "PlaneTolerance: " << this->PlaneTolerance << "\n";
-  os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
-  os << indent << "SkippedLights: " << this->SkippedLights << "\n";
   os << indent << "NumberOfShadowPairs: " << this->NumberOfShadowPairs << "\n";
   os << indent << "NumberOfMaskTriangles: " << this->NumberOfMaskTriangles << "\n";
   os << indent << "NumberOfGeometryBuilds: " << this->NumberOfGeometryBuilds << "\n";
-  os << indent << "DelegatePass: ";
-  if (this->DelegatePass)
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlanarShadowPass::SetOption(const char* key, double value)
+{
+  if (key && std::string(key) == "plane_tolerance")
   {
-    this->DelegatePass->PrintSelf(os, indent.GetNextIndent());
+    if (!(value >= 0.0 && value <= 1.0))
+    {
+      return false;
+    }
+    this->SetPlaneTolerance(value);
+    return true;
   }
-  else
-  {
-    os << "(none)\n";
-  }
+  return this->Superclass::SetOption(key, value);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkPlanarShadowPass::GetStatsJSON(vtkRenderer*) const
+{
+  return "\"shadow_pairs\": " + std::to_string(this->NumberOfShadowPairs) +
+    ", \"mask_triangles\": " + std::to_string(this->NumberOfMaskTriangles) +
+    ", \"geometry_builds\": " + std::to_string(this->NumberOfGeometryBuilds);
 }

@@ -30,7 +30,7 @@
 #ifndef vtkPlanarShadowPass_h
 #define vtkPlanarShadowPass_h
 
-#include "vtkOpenGLRenderPass.h"
+#include "vtkShadowPassBase.h"
 #include "vtkshadowModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
@@ -41,22 +41,12 @@ class vtkProp;
 class vtkRenderPass;
 class vtkTextureObject;
 
-class VTKSHADOW_EXPORT vtkPlanarShadowPass : public vtkOpenGLRenderPass
+class VTKSHADOW_EXPORT vtkPlanarShadowPass : public vtkShadowPassBase
 {
 public:
   static vtkPlanarShadowPass* New();
-  vtkTypeMacro(vtkPlanarShadowPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkPlanarShadowPass, vtkShadowPassBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /**
-   * Property key: an actor with RECEIVER() = 1 is a receiver.
-   */
-  static vtkInformationIntegerKey* RECEIVER();
-
-  /**
-   * Property key: an actor with NO_CAST() = 1 casts no planar shadow.
-   */
-  static vtkInformationIntegerKey* NO_CAST();
 
   /**
    * Receivers given as actors with flat geometry.
@@ -76,29 +66,6 @@ public:
   vtkGetMacro(PlaneTolerance, double);
 
   /**
-   * Whether the headlight casts shadows too (default off: they hide behind
-   * the objects that cast them).
-   */
-  vtkSetMacro(CastHeadlightShadows, bool);
-  vtkGetMacro(CastHeadlightShadows, bool);
-  vtkBooleanMacro(CastHeadlightShadows, bool);
-
-  /**
-   * Lights this pass leaves unshadowed, as bits: bit i for light i in the
-   * mapper's numbering (the renderer's switched-on lights, in order).
-   * Default 0, every light casts. vtkAutoShadowPass uses it to give each
-   * light its own technique, or none when it casts no visible shadow.
-   */
-  vtkSetMacro(SkippedLights, unsigned int);
-  vtkGetMacro(SkippedLights, unsigned int);
-
-  /**
-   * The pass that renders the scene (default: a vtkRenderStepsPass).
-   */
-  virtual void SetDelegatePass(vtkRenderPass* pass);
-  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
-
-  /**
    * Number of (receiver, light) pairs that cast in the last frame, and the
    * number of caster triangles drawn into the mask in it.
    */
@@ -114,7 +81,17 @@ public:
   /**
    * Bytes of GPU memory the pass holds (mask texture and caster copies).
    */
-  vtkIdType GetMemoryBytes() const;
+  long long GetMemoryBytes() const override;
+
+  /**
+   * plane_tolerance (0..1), and the base's cast_headlight.
+   */
+  bool SetOption(const char* key, double value) override;
+
+  /**
+   * shadow_pairs, mask_triangles and geometry_builds of the last frame.
+   */
+  std::string GetStatsJSON(vtkRenderer* renderer) const override;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -125,16 +102,12 @@ public:
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
-  vtkMTimeType GetShaderStageMTime() override;
 
 protected:
   vtkPlanarShadowPass();
   ~vtkPlanarShadowPass() override;
 
-  vtkRenderPass* DelegatePass;
   double PlaneTolerance;
-  bool CastHeadlightShadows;
-  unsigned int SkippedLights;
   int NumberOfShadowPairs;
   vtkIdType NumberOfMaskTriangles;
   int NumberOfGeometryBuilds;

@@ -1,6 +1,6 @@
 // vtkShadowActorFlags.h - which actors take part in shadows, and the
 // integer shadow flags they carry in their property keys
-// (vtkPlanarShadowPass::RECEIVER(), NO_CAST()); shared by every pass and the
+// (vtkShadowPassBase::RECEIVER(), NO_CAST()); shared by every pass and the
 // C API.
 #ifndef vtkShadowActorFlags_h
 #define vtkShadowActorFlags_h

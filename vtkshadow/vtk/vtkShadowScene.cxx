@@ -514,8 +514,8 @@ bool vtkShadowScene::Populate(vtkRenderer* renderer, bool lambertian, int onlyLi
     }
     // Tell shadow techniques which objects receive and which do not cast.
     vtkNew<vtkInformation> keys;
-    keys->Set(vtkPlanarShadowPass::RECEIVER(), this->GetObjectIsReceiver(i) ? 1 : 0);
-    keys->Set(vtkPlanarShadowPass::NO_CAST(), this->GetObjectCasts(i) ? 0 : 1);
+    keys->Set(vtkShadowPassBase::RECEIVER(), this->GetObjectIsReceiver(i) ? 1 : 0);
+    keys->Set(vtkShadowPassBase::NO_CAST(), this->GetObjectCasts(i) ? 0 : 1);
     actor->SetPropertyKeys(keys);
     renderer->AddActor(actor);
   }

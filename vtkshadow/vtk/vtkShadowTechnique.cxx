@@ -1,39 +1,21 @@
 #include "vtkShadowTechnique.h"
 
-#include "vtkCameraPass.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkPlanarShadowPass.h"
-#include "vtkAutoShadowPass.h"
-#include "vtkCascadedShadowMapPass.h"
-#include "vtkRenderPassCollection.h"
-#include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkSequencePass.h"
-#include "vtkShadowMapBakerPass.h"
-#include "vtkShadowMapPass.h"
+#include "vtkShadowPassBase.h"
+#include "vtkShadowTechniqueRegistry.h"
+#include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <sstream>
 
 vtkStandardNewMacro(vtkShadowTechnique);
-
-namespace
-{
-const char* const KnownTechniques[] = { "none", "vtk", "planar", "csm", "auto" };
-}
 
 //------------------------------------------------------------------------------
 vtkShadowTechnique::vtkShadowTechnique()
   : Name(nullptr)
   , MapResolution(2048)
-  , MaxError(0.5)
-  , CascadedSettings(vtkCascadedShadowMapPass::New())
 {
   this->SetName("none");
 }
@@ -42,30 +24,12 @@ vtkShadowTechnique::vtkShadowTechnique()
 vtkShadowTechnique::~vtkShadowTechnique()
 {
   this->SetName(nullptr);
-  this->CascadedSettings->Delete();
-}
-
-//------------------------------------------------------------------------------
-vtkCascadedShadowMapPass* vtkShadowTechnique::GetCascadedSettings()
-{
-  return this->CascadedSettings;
 }
 
 //------------------------------------------------------------------------------
 bool vtkShadowTechnique::IsKnownTechnique(const char* name)
 {
-  if (!name)
-  {
-    return false;
-  }
-  for (const char* known : KnownTechniques)
-  {
-    if (std::strcmp(name, known) == 0)
-    {
-      return true;
-    }
-  }
-  return false;
+  return vtkShadowTechniqueRegistry::FindTechnique(name) >= 0;
 }
 
 //------------------------------------------------------------------------------
@@ -77,55 +41,33 @@ bool vtkShadowTechnique::IsValid() const
 //------------------------------------------------------------------------------
 const char* vtkShadowTechnique::GetKnownTechniques()
 {
-  return "none vtk planar csm auto";
+  return vtkShadowTechniqueRegistry::GetNames();
 }
 
 //------------------------------------------------------------------------------
-vtkRenderPass* vtkShadowTechnique::CreatePass()
+vtkShadowPassBase* vtkShadowTechnique::CreatePass()
 {
-  if (!this->IsValid())
+  vtkSmartPointer<vtkShadowPassBase> pass;
+  pass.TakeReference(vtkShadowTechniqueRegistry::CreatePass(this->Name));
+  if (!pass)
   {
     vtkErrorMacro("unknown technique \"" << (this->Name ? this->Name : "(null)")
                                          << "\"; known: " << GetKnownTechniques());
     return nullptr;
   }
-  if (std::strcmp(this->Name, "none") == 0)
+  // Techniques without maps have no map_resolution: nothing to apply then.
+  pass->SetOption("map_resolution", this->MapResolution);
+  for (const auto& option : this->Options)
   {
-    return vtkRenderStepsPass::New();
+    if (!pass->SetOption(option.first.c_str(), option.second))
+    {
+      vtkErrorMacro("technique \"" << this->Name << "\" has no setting " << option.first << "="
+                                   << option.second);
+      return nullptr;
+    }
   }
-  if (std::strcmp(this->Name, "planar") == 0)
-  {
-    // Receivers are the actors marked vtkPlanarShadowPass::RECEIVER().
-    return vtkPlanarShadowPass::New();
-  }
-  if (std::strcmp(this->Name, "csm") == 0)
-  {
-    vtkCascadedShadowMapPass* csm = vtkCascadedShadowMapPass::New();
-    csm->CopySettings(this->CascadedSettings);
-    csm->SetMapResolution(this->MapResolution);
-    return csm;
-  }
-  if (std::strcmp(this->Name, "auto") == 0)
-  {
-    vtkAutoShadowPass* automatic = vtkAutoShadowPass::New();
-    automatic->GetCascadedPass()->CopySettings(this->CascadedSettings);
-    automatic->GetCascadedPass()->SetMapResolution(this->MapResolution);
-    // auto meets an error target: a texel size given directly, or wrong_pct.
-    automatic->SetMaxTexelPixels(this->CascadedSettings->GetMaxTexelPixels());
-    automatic->SetMaxError(this->MaxError);
-    return automatic;
-  }
-  // "vtk": VTK's own shadow maps, assembled as in VTK's TestShadowMapPass.
-  vtkNew<vtkShadowMapPass> shadows;
-  shadows->GetShadowMapBakerPass()->SetResolution(this->MapResolution);
-  vtkNew<vtkRenderPassCollection> passes;
-  passes->AddItem(shadows->GetShadowMapBakerPass());
-  passes->AddItem(shadows);
-  vtkNew<vtkSequencePass> sequence;
-  sequence->SetPasses(passes);
-  vtkCameraPass* camera = vtkCameraPass::New();
-  camera->SetDelegatePass(sequence);
-  return camera;
+  pass->Register(nullptr);
+  return pass;
 }
 
 //------------------------------------------------------------------------------
@@ -154,45 +96,20 @@ bool vtkShadowTechnique::Install(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+vtkShadowPassBase* InstalledPass(vtkRenderer* renderer)
+{
+  auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
+  return gl ? vtkShadowPassBase::SafeDownCast(gl->GetPass()) : nullptr;
+}
+}
+
+//------------------------------------------------------------------------------
 long long vtkShadowTechnique::GetShadowMapMemory(vtkRenderer* renderer) const
 {
-  if (!renderer || !this->Name)
-  {
-    return 0;
-  }
-  auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
-  vtkRenderPass* pass = gl ? gl->GetPass() : nullptr;
-  if (auto* automatic = vtkAutoShadowPass::SafeDownCast(pass))
-  {
-    return automatic->GetMemoryBytes();
-  }
-  if (auto* planar = vtkPlanarShadowPass::SafeDownCast(pass))
-  {
-    // The mask and caster copies of the installed pass, as of its last frame.
-    return planar->GetMemoryBytes();
-  }
-  if (auto* csm = vtkCascadedShadowMapPass::SafeDownCast(pass))
-  {
-    return csm->GetMemoryBytes();
-  }
-  if (std::strcmp(this->Name, "vtk") != 0)
-  {
-    return 0;
-  }
-  // The baker keeps one single-channel float map per shadowing light and
-  // shares one depth attachment of the same size (4 bytes a texel each).
-  long long lights = 0;
-  vtkLightCollection* collection = renderer->GetLights();
-  vtkCollectionSimpleIterator it;
-  collection->InitTraversal(it);
-  while (vtkLight* l = collection->GetNextLight(it))
-  {
-    const bool casts =
-      !l->LightTypeIsHeadlight() && (!l->GetPositional() || l->GetConeAngle() < 90.0);
-    lights += (l->GetSwitch() && casts) ? 1 : 0;
-  }
-  const long long texels = static_cast<long long>(this->MapResolution) * this->MapResolution;
-  return lights > 0 ? (lights + 1) * texels * 4 : 0;
+  vtkShadowPassBase* pass = InstalledPass(renderer);
+  return pass ? pass->GetMemoryBytes() : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -203,86 +120,26 @@ bool vtkShadowTechnique::SetOption(const char* key, double v)
     return false;
   }
   const std::string k = key;
-  vtkCascadedShadowMapPass* c = this->CascadedSettings;
-  auto in = [&](double lo, double hi) { return v >= lo && v <= hi; };
-  auto integral = [&](double lo, double hi) { return in(lo, hi) && v == std::floor(v); };
-  if (k == "map_resolution" && integral(16, 16384))
+  if (k == "map_resolution")
   {
+    if (!(v >= 16 && v <= 16384 && v == std::floor(v)))
+    {
+      return false;
+    }
     this->SetMapResolution(static_cast<int>(v));
+    return true;
   }
-  else if (k == "cascades" && integral(0, 8))
-  {
-    c->SetCascadeCount(static_cast<int>(v));
-  }
-  else if (k == "ratio_per_cascade" && in(1.5, 1e6))
-  {
-    c->SetRatioPerCascade(v);
-  }
-  else if (k == "split" && integral(0, 3))
-  {
-    c->SetSplitScheme(static_cast<int>(v));
-  }
-  else if (k == "lambda" && in(0, 1))
-  {
-    c->SetSplitLambda(v);
-  }
-  else if (k.rfind("split_fraction_", 0) == 0 && k.size() == 16 && k[15] >= '0' && k[15] <= '6' &&
-    v > 0 && v < 1)
-  {
-    c->SetSplitFraction(k[15] - '0', v);
-  }
-  else if (k == "stable" && integral(0, 1))
-  {
-    c->SetStable(v != 0);
-  }
-  else if (k == "max_error" && in(0, 100))
-  {
-    this->MaxError = v;
-  }
-  else if (k == "max_texel_px" && in(0, 1e6))
-  {
-    c->SetMaxTexelPixels(v);
-  }
-  else if (k == "memory_budget" && in(1 << 16, 1e12))
-  {
-    c->SetMemoryBudget(static_cast<long long>(v));
-  }
-  else if (k == "bias_scale" && in(0, 100))
-  {
-    c->SetBiasScale(v);
-  }
-  else if (k == "filter" && integral(0, 2))
-  {
-    c->SetFilter(static_cast<int>(v));
-  }
-  else if (k == "pcf_size" && integral(1, 9))
-  {
-    c->SetPCFSize(static_cast<int>(v));
-  }
-  else if (k == "poisson_radius" && in(0, 16))
-  {
-    c->SetPoissonRadius(v);
-  }
-  else if (k == "blend_band" && in(0, 0.5))
-  {
-    c->SetBlendBand(v);
-  }
-  else if (k == "max_distance" && in(0, 1e300))
-  {
-    c->SetMaxShadowDistance(v);
-  }
-  else if (k == "fade" && in(0, 1))
-  {
-    c->SetFadeFraction(v);
-  }
-  else if (k == "debug_cascades" && integral(0, 1))
-  {
-    c->SetDebugCascades(v != 0);
-  }
-  else
+  // The technique's own pass says which keys and values it takes.
+  vtkSmartPointer<vtkShadowPassBase> probe;
+  probe.TakeReference(vtkShadowTechniqueRegistry::CreatePass(this->Name));
+  if (!probe || !probe->SetOption(key, v))
   {
     return false;
   }
+  auto same = [&](const std::pair<std::string, double>& o) { return o.first == k; };
+  this->Options.erase(
+    std::remove_if(this->Options.begin(), this->Options.end(), same), this->Options.end());
+  this->Options.emplace_back(k, v);
   this->Modified();
   return true;
 }
@@ -290,75 +147,8 @@ bool vtkShadowTechnique::SetOption(const char* key, double v)
 //------------------------------------------------------------------------------
 std::string vtkShadowTechnique::GetStatsJSON(vtkRenderer* renderer) const
 {
-  auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
-  std::ostringstream out;
-  out.precision(6);
-  vtkRenderPass* pass = gl ? gl->GetPass() : nullptr;
-  std::string prefix;
-  if (auto* automatic = vtkAutoShadowPass::SafeDownCast(pass))
-  {
-    const std::string choice = automatic->GetChoice();
-    std::string reason = automatic->GetReason();
-    for (size_t at = reason.find('"'); at != std::string::npos; at = reason.find('"', at + 2))
-    {
-      reason.insert(at, "\\");
-    }
-    prefix = "\"choice\": \"" + choice + "\", \"reason\": \"" + reason + "\"";
-    std::ostringstream perLight;
-    perLight.precision(6);
-    perLight << ", \"texel_target_px\": " << automatic->GetUsedTexelTarget()
-             << ", \"texel_stretch\": " << automatic->GetUsedStretch()
-             << ", \"edge_length_px\": " << automatic->GetUsedEdgeLength()
-             << ", \"light_choices\": [";
-    for (int l = 0; l < automatic->GetNumberOfLightChoices(); ++l)
-    {
-      perLight << (l ? ", " : "") << "\"" << automatic->GetLightChoice(l) << "\"";
-    }
-    prefix += perLight.str() + "]";
-    // Details of the map pass when there is one, else of the planar pass.
-    pass = choice.find("csm") != std::string::npos
-      ? static_cast<vtkRenderPass*>(automatic->GetCascadedPass())
-      : choice == "planar" ? static_cast<vtkRenderPass*>(automatic->GetPlanarPass())
-                           : nullptr;
-    if (!pass)
-    {
-      return "{" + prefix + "}";
-    }
-    prefix += ", ";
-  }
-  if (auto* csm = vtkCascadedShadowMapPass::SafeDownCast(pass))
-  {
-    out << "{" << prefix;
-    out << "\"resolution\": " << csm->GetUsedResolution()
-        << ", \"maps_rendered_total\": " << csm->GetTotalMapsRendered()
-        << ", \"maps_reused_last_frame\": " << csm->GetNumberOfMapsReused() << ", \"lights\": [";
-    const int lights = renderer->GetLights()->GetNumberOfItems();
-    for (int l = 0; l < lights; ++l)
-    {
-      out << (l ? ", " : "") << "{\"cascades\": " << csm->GetNumberOfCascades(l)
-          << ", \"far\": [";
-      for (int c = 0; c < csm->GetNumberOfCascades(l); ++c)
-      {
-        out << (c ? ", " : "") << csm->GetCascadeFar(l, c);
-      }
-      out << "], \"texel_px\": [";
-      for (int c = 0; c < csm->GetNumberOfCascades(l); ++c)
-      {
-        out << (c ? ", " : "") << csm->GetCascadeTexelPixels(l, c);
-      }
-      out << "]}";
-    }
-    out << "]}";
-    return out.str();
-  }
- if (auto* planar = vtkPlanarShadowPass::SafeDownCast(pass))
-  {
-    out << "{" << prefix << "\"shadow_pairs\": " << planar->GetNumberOfShadowPairs()
-        << ", \"mask_triangles\": " << planar->GetNumberOfMaskTriangles()
-        << ", \"geometry_builds\": " << planar->GetNumberOfGeometryBuilds() << "}";
-    return out.str();
-  }
-  return "{}";
+  vtkShadowPassBase* pass = InstalledPass(renderer);
+  return "{" + (pass ? pass->GetStatsJSON(renderer) : std::string()) + "}";
 }
 
 //------------------------------------------------------------------------------
@@ -367,5 +157,8 @@ void vtkShadowTechnique::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Name: " << (this->Name ? this->Name : "(null)") << "\n";
   os << indent << "MapResolution: " << this->MapResolution << "\n";
-  os << indent << "MaxError: " << this->MaxError << "\n";
+  for (const auto& option : this->Options)
+  {
+    os << indent << "Option " << option.first << ": " << option.second << "\n";
+  }
 }

@@ -4,21 +4,10 @@
  *
  * vtkShadowTechnique turns a technique name into the render pass that a
  * vtkOpenGLRenderer runs, so that tools, tests and applications switch
- * techniques without knowing how each is assembled:
- *
- * - "none": VTK's standard passes (vtkRenderStepsPass), no shadows.
- * - "vtk":  VTK 9.1's own vtkShadowMapBakerPass + vtkShadowMapPass under a
- *           vtkCameraPass, as VTK's TestShadowMapPass sets them up, with the
- *           map resolution set by SetMapResolution() (default 2048). This is
- *           the baseline every vtkshadow technique is measured against.
- *
- * - "planar": vtkPlanarShadowPass, exact shadows on the actors marked with
- *           vtkPlanarShadowPass::RECEIVER() (vtkShadowScene marks the scene's
- *           "receiver": true planes).
- *
- * - "csm":    vtkCascadedShadowMapPass (cascaded, spot and cube maps).
- * - "auto":   vtkAutoShadowPass: per light none, planar or csm, chosen by an
- *           error target (option max_error, or max_texel_px).
+ * techniques without knowing how each is assembled. The names, their
+ * descriptions and the passes come from vtkShadowTechniqueRegistry (none,
+ * vtk, planar, csm, auto, ...); settings are passed by name with SetOption
+ * and checked by the technique's own pass (vtkShadowPassBase::SetOption).
  *
  * @code{.py}
  * technique = vtkshadow.vtkShadowTechnique()
@@ -30,12 +19,15 @@
 #define vtkShadowTechnique_h
 
 #include "vtkObject.h"
+#include "vtkShadowPassBase.h" // for CreatePass()
 #include "vtkshadowModule.h" // for export macro
 
-#include <string> // for std::string
+#include <string>  // for std::string
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
 
-class vtkCascadedShadowMapPass;
 class vtkRenderPass;
+
 class vtkRenderer;
 
 class VTKSHADOW_EXPORT vtkShadowTechnique : public vtkObject
@@ -59,30 +51,19 @@ public:
   vtkGetMacro(MapResolution, int);
 
   /**
-   * The settings of the "csm" technique: CreatePass() copies them into each
-   * new vtkCascadedShadowMapPass (MapResolution comes from this object).
-   */
-  vtkCascadedShadowMapPass* GetCascadedSettings();
-
-  /**
-   * Set a technique setting by name (command lines, the C API). Keys:
-   * map_resolution, and for "csm" (and auto's cascaded pass): cascades, ratio_per_cascade, split
-   * (0 uniform, 1 log, 2 practical, 3 explicit), lambda, split_fraction_<i>,
-   * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
-   * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
-   * fade, debug_cascades; for "auto": max_error (its wrong_pct target,
-   * default 0.5) and max_texel_px (a texel-size target instead). Returns false for an unknown key or a value out of
-   * range (nothing is changed then).
+   * Set a technique setting by name (command lines, the C API): the
+   * technique's pass checks the key and range (see each pass's SetOption;
+   * map_resolution is accepted for every technique and used by those with
+   * maps). Returns false for an unknown key or a value out of range
+   * (nothing is changed then). Settings are applied, in the order given, to
+   * every pass CreatePass() makes.
    */
   bool SetOption(const char* key, double value);
 
   /**
    * Technique details of the last frame rendered on `renderer` as a JSON
-   * object (cascades and their on-screen texel sizes for "csm", shadow pairs
-   * and caster triangles for "planar"; for "auto" its choice, reason,
-   * light_choices, texel_target_px, texel_stretch and edge_length_px, then
-   * the details of the cascaded pass if it is used, else of the planar
-   * pass), "{}" otherwise.
+   * object (vtkShadowPassBase::GetStatsJSON of the installed pass), "{}"
+   * when the renderer runs no vtkshadow pass.
    */
   std::string GetStatsJSON(vtkRenderer* renderer) const;
 
@@ -93,15 +74,17 @@ public:
   static bool IsKnownTechnique(const char* name);
 
   /**
-   * The techniques this build provides, separated by spaces.
+   * The techniques this build provides, separated by spaces
+   * (vtkShadowTechniqueRegistry::GetNames()).
    */
   static const char* GetKnownTechniques();
 
   /**
-   * A new pass pipeline for the technique (caller owns it), or nullptr with an
-   * error for an unknown name.
+   * A new pass for the technique with the settings applied (caller owns it),
+   * or nullptr with an error for an unknown name or a setting the technique
+   * does not take.
    */
-  vtkRenderPass* CreatePass();
+  vtkShadowPassBase* CreatePass();
 
   /**
    * Set the technique's pipeline on an OpenGL renderer. Returns false for an
@@ -121,8 +104,7 @@ protected:
 
   char* Name;
   int MapResolution;
-  double MaxError; // auto's wrong_pct target
-  vtkCascadedShadowMapPass* CascadedSettings;
+  std::vector<std::pair<std::string, double>> Options; // in the order set
 
 private:
   vtkShadowTechnique(const vtkShadowTechnique&) = delete;

@@ -43,6 +43,12 @@ VTKSHADOW_EXPORT int vtkshadow_scene_populate(const vtkshadow_scene *scene,
                                               void *vtk_renderer, char *error,
                                               size_t error_size);
 
+/* The registered techniques (vtkShadowTechniqueRegistry): their number, and
+ * the name and one-line description of technique i (NULL out of range). */
+VTKSHADOW_EXPORT int vtkshadow_technique_count(void);
+VTKSHADOW_EXPORT const char *vtkshadow_technique_name_at(int index);
+VTKSHADOW_EXPORT const char *vtkshadow_technique_description_at(int index);
+
 /* A technique by name ("none", "vtk", ...); NULL for an unknown name. */
 VTKSHADOW_EXPORT vtkshadow_technique *vtkshadow_technique_new(const char *name, char *error,
                                                               size_t error_size);

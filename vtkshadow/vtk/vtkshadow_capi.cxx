@@ -12,6 +12,7 @@
 #include "vtkShadowPNG.h"
 #include "vtkShadowScene.h"
 #include "vtkShadowTechnique.h"
+#include "vtkShadowTechniqueRegistry.h"
 #include "vtkShadowVisibility.h"
 #include "vtkSmartPointer.h"
 #include "vtkWindowToImageFilter.h"
@@ -100,6 +101,18 @@ extern "C"
     return scene->Scene->Populate(renderer) ? 0 : 1;
   }
 
+  int vtkshadow_technique_count(void) { return vtkShadowTechniqueRegistry::GetNumberOfTechniques(); }
+
+  const char* vtkshadow_technique_name_at(int index)
+  {
+    return vtkShadowTechniqueRegistry::GetName(index);
+  }
+
+  const char* vtkshadow_technique_description_at(int index)
+  {
+    return vtkShadowTechniqueRegistry::GetDescription(index);
+  }
+
   vtkshadow_technique* vtkshadow_technique_new(const char* name, char* error, size_t error_size)
   {
     if (!vtkShadowTechnique::IsKnownTechnique(name))
@@ -166,7 +179,7 @@ extern "C"
     {
       return 1;
     }
-    vtkshadow::SetFlag(actor, vtkPlanarShadowPass::RECEIVER(), receiver ? 1 : 0);
+    vtkshadow::SetFlag(actor, vtkShadowPassBase::RECEIVER(), receiver ? 1 : 0);
     return 0;
   }
 
@@ -177,7 +190,7 @@ extern "C"
     {
       return 1;
     }
-    vtkshadow::SetFlag(actor, vtkPlanarShadowPass::NO_CAST(), casts ? 0 : 1);
+    vtkshadow::SetFlag(actor, vtkShadowPassBase::NO_CAST(), casts ? 0 : 1);
     return 0;
   }
 

@@ -1,0 +1,58 @@
+/**
+ * @class   vtkBuiltinShadowMapPass
+ * @brief   The "vtk" technique: VTK 9.1's own shadow maps, the baseline.
+ *
+ * VTK's vtkShadowMapBakerPass + vtkShadowMapPass under a vtkCameraPass,
+ * assembled as VTK's TestShadowMapPass does, at MapResolution texels
+ * (default 2048, option map_resolution). Every vtkshadow technique is
+ * measured against it. Its pipeline is its delegate and renders the scene
+ * itself, so SetDelegatePass is not used.
+ */
+#ifndef vtkBuiltinShadowMapPass_h
+#define vtkBuiltinShadowMapPass_h
+
+#include "vtkShadowPassBase.h"
+#include "vtkshadowModule.h" // for export macro
+
+class vtkShadowMapPass;
+
+class VTKSHADOW_EXPORT vtkBuiltinShadowMapPass : public vtkShadowPassBase
+{
+public:
+  static vtkBuiltinShadowMapPass* New();
+  vtkTypeMacro(vtkBuiltinShadowMapPass, vtkShadowPassBase);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Edge length of VTK's maps in texels (default 2048).
+   */
+  void SetMapResolution(int resolution);
+  vtkGetMacro(MapResolution, int);
+
+  /**
+   * VTK's baker keeps one single-channel float map per shadowing light and
+   * one shared depth attachment of the same size, 4 bytes a texel each.
+   */
+  long long GetMemoryBytes() const override;
+
+  /**
+   * map_resolution (16..16384), and the base's options.
+   */
+  bool SetOption(const char* key, double value) override;
+
+  void Render(const vtkRenderState* s) override;
+
+protected:
+  vtkBuiltinShadowMapPass();
+  ~vtkBuiltinShadowMapPass() override;
+
+  vtkShadowMapPass* Shadows;
+  int MapResolution;
+  int ShadowingLights; // in the last frame
+
+private:
+  vtkBuiltinShadowMapPass(const vtkBuiltinShadowMapPass&) = delete;
+  void operator=(const vtkBuiltinShadowMapPass&) = delete;
+};
+
+#endif

@@ -1,0 +1,18 @@
+#include "vtkNoShadowPass.h"
+
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkNoShadowPass);
+
+//------------------------------------------------------------------------------
+void vtkNoShadowPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->RenderDelegate(s);
+}
+
+//------------------------------------------------------------------------------
+void vtkNoShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

@@ -1,0 +1,137 @@
+#include "vtkShadowPassBase.h"
+
+#include "vtkInformationIntegerKey.h"
+#include "vtkLight.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
+
+#include <cmath>
+#include <cstring>
+
+vtkInformationKeyMacro(vtkShadowPassBase, RECEIVER, Integer);
+vtkInformationKeyMacro(vtkShadowPassBase, NO_CAST, Integer);
+vtkCxxSetObjectMacro(vtkShadowPassBase, DelegatePass, vtkRenderPass);
+
+//------------------------------------------------------------------------------
+vtkShadowPassBase::vtkShadowPassBase()
+  : DelegatePass(nullptr)
+  , CastHeadlightShadows(false)
+  , SkippedLights(0)
+  , ShaderTime(0)
+{
+  this->BumpShaderTime();
+}
+
+//------------------------------------------------------------------------------
+vtkShadowPassBase::~vtkShadowPassBase()
+{
+  this->SetDelegatePass(nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowPassBase::LightCasts(vtkLight* light, int index) const
+{
+  const bool skipped = index >= 0 && index < 32 && ((this->SkippedLights >> index) & 1u);
+  return light && !skipped && (!light->LightTypeIsHeadlight() || this->CastHeadlightShadows);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowPassBase::GetStatsJSON(vtkRenderer*) const
+{
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowPassBase::SetOption(const char* key, double value)
+{
+  if (key && std::strcmp(key, "cast_headlight") == 0 && (value == 0.0 || value == 1.0))
+  {
+    this->SetCastHeadlightShadows(value != 0.0);
+    return true;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+vtkRenderPass* vtkShadowPassBase::EnsureDelegatePass()
+{
+  if (!this->DelegatePass)
+  {
+    vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
+    this->SetDelegatePass(steps);
+    steps->Delete();
+  }
+  return this->DelegatePass;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::RenderDelegate(const vtkRenderState* s)
+{
+  vtkRenderPass* delegate = this->EnsureDelegatePass();
+  delegate->Render(s);
+  this->NumberOfRenderedProps += delegate->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::RenderDelegateWithShaderHooks(const vtkRenderState* s)
+{
+  this->PreRender(s);
+  this->RenderDelegate(s);
+  this->PostRender(s);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::GetViewport(const vtkRenderState* s, int size[2], int origin[2])
+{
+  origin[0] = origin[1] = 0;
+  if (s->GetFrameBuffer() == nullptr)
+  {
+    s->GetRenderer()->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  }
+  else
+  {
+    s->GetWindowSize(size);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::BumpShaderTime()
+{
+  vtkTimeStamp t;
+  t.Modified();
+  this->ShaderTime = t.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkShadowPassBase::GetShaderStageMTime()
+{
+  return this->ShaderTime;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::ReleaseGraphicsResources(vtkWindow* w)
+{
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
+  os << indent << "SkippedLights: " << this->SkippedLights << "\n";
+  os << indent << "DelegatePass: ";
+  if (this->DelegatePass)
+  {
+    os << "\n";
+    this->DelegatePass->PrintSelf(os, indent.GetNextIndent());
+  }
+  else
+  {
+    os << "(none)\n";
+  }
+}

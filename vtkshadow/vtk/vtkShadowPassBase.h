@@ -1,0 +1,139 @@
+/**
+ * @class   vtkShadowPassBase
+ * @brief   What every vtkshadow technique's render pass shares.
+ *
+ * Each shadow technique is one render pass deriving from this class and one
+ * line in vtkShadowTechniqueRegistry. The base holds what used to be copied
+ * into every pass:
+ *
+ * - the delegate that renders the scene (a vtkRenderStepsPass unless set);
+ * - which lights cast: SkippedLights (bit i = light i in the mapper's
+ *   numbering) and the headlight rule (CastHeadlightShadows, default off:
+ *   the headlight's shadows hide behind their casters); LightCasts();
+ * - the receiver / no-cast property keys every pass reads;
+ * - the renderer's viewport in the render target (GetViewport);
+ * - the shader-stage time: passes whose generated code changes call
+ *   BumpShaderTime() so VTK's mappers rebuild their shaders;
+ * - virtuals for the GPU memory it holds, the last frame's details as JSON,
+ *   and named options (SetOption), so the CLI, the C API, Python, the
+ *   harness and the bench treat every technique alike.
+ */
+#ifndef vtkShadowPassBase_h
+#define vtkShadowPassBase_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkshadowModule.h" // for export macro
+
+#include <string> // for std::string
+
+class vtkInformationIntegerKey;
+class vtkLight;
+class vtkRenderer;
+
+class VTKSHADOW_EXPORT vtkShadowPassBase : public vtkOpenGLRenderPass
+{
+public:
+  vtkTypeMacro(vtkShadowPassBase, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Property key: an actor with RECEIVER() = 1 receives planar shadows
+   * (vtkShadowScene marks the scene's "receiver": true objects).
+   */
+  static vtkInformationIntegerKey* RECEIVER();
+
+  /**
+   * Property key: an actor with NO_CAST() = 1 casts no shadow.
+   */
+  static vtkInformationIntegerKey* NO_CAST();
+
+  /**
+   * The pass that renders the scene (default: a vtkRenderStepsPass, made on
+   * the first frame).
+   */
+  virtual void SetDelegatePass(vtkRenderPass* pass);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+
+  /**
+   * Whether the headlight casts shadows too (default off: they hide behind
+   * the objects that cast them).
+   */
+  vtkSetMacro(CastHeadlightShadows, bool);
+  vtkGetMacro(CastHeadlightShadows, bool);
+  vtkBooleanMacro(CastHeadlightShadows, bool);
+
+  /**
+   * Lights this pass leaves unshadowed, as bits: bit i for light i in the
+   * mapper's numbering (the renderer's switched-on lights, in order).
+   * Default 0, every light casts. vtkAutoShadowPass uses it to give each
+   * light its own technique, or none when it casts no visible shadow.
+   */
+  vtkSetMacro(SkippedLights, unsigned int);
+  vtkGetMacro(SkippedLights, unsigned int);
+
+  /**
+   * True when switched-on light number `index` (mapper numbering) casts in
+   * this pass: not skipped, and not the headlight unless it is asked to.
+   */
+  bool LightCasts(vtkLight* light, int index) const;
+
+  /**
+   * Bytes of GPU memory the pass holds for shadows, as of its last frame.
+   */
+  virtual long long GetMemoryBytes() const { return 0; }
+
+  /**
+   * Details of the last frame rendered on `renderer` as the members of a
+   * JSON object, without braces ("" when there is nothing to say).
+   */
+  virtual std::string GetStatsJSON(vtkRenderer* renderer) const;
+
+  /**
+   * Set a setting by name (command lines, the C API, vtkShadowTechnique).
+   * Returns false for a key this pass does not have or a value out of its
+   * range; nothing changes then. The base knows cast_headlight (0 or 1).
+   */
+  virtual bool SetOption(const char* key, double value);
+
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  vtkShadowPassBase();
+  ~vtkShadowPassBase() override;
+
+  /**
+   * The delegate, made a vtkRenderStepsPass when none was set.
+   */
+  vtkRenderPass* EnsureDelegatePass();
+
+  /**
+   * Render the scene through the delegate. The shader-hooking form first
+   * registers this pass with the actors (vtkOpenGLRenderPass::PreRender) so
+   * the mappers call its Pre/PostReplaceShaderValues and SetShaderParameters.
+   */
+  void RenderDelegate(const vtkRenderState* s);
+  void RenderDelegateWithShaderHooks(const vtkRenderState* s);
+
+  /**
+   * The renderer's viewport in the render target: its tiled size and origin
+   * when drawing to the window, the target's size (origin 0) for an FBO.
+   */
+  static void GetViewport(const vtkRenderState* s, int size[2], int origin[2]);
+
+  /**
+   * Mark the generated shader code as changed (mappers rebuild).
+   */
+  void BumpShaderTime();
+
+  vtkRenderPass* DelegatePass;
+  bool CastHeadlightShadows;
+  unsigned int SkippedLights;
+  vtkMTimeType ShaderTime;
+
+private:
+  vtkShadowPassBase(const vtkShadowPassBase&) = delete;
+  void operator=(const vtkShadowPassBase&) = delete;
+};
+
+#endif

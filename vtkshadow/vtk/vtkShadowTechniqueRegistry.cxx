@@ -1,0 +1,105 @@
+#include "vtkShadowTechniqueRegistry.h"
+
+#include "vtkAutoShadowPass.h"
+#include "vtkBuiltinShadowMapPass.h"
+#include "vtkCascadedShadowMapPass.h"
+#include "vtkNoShadowPass.h"
+#include "vtkObjectFactory.h"
+#include "vtkPlanarShadowPass.h"
+
+#include <cstring>
+#include <string>
+
+vtkStandardNewMacro(vtkShadowTechniqueRegistry);
+
+namespace
+{
+struct Technique
+{
+  const char* Name;
+  const char* Description;
+  vtkShadowPassBase* (*Create)();
+};
+
+template <class Pass>
+vtkShadowPassBase* Make()
+{
+  return Pass::New();
+}
+
+// The table. Order is the order tools list and run techniques in.
+const Technique Techniques[] = {
+  { "none", "VTK's standard passes, no shadows (the cost and error floor)", &Make<vtkNoShadowPass> },
+  { "vtk", "VTK 9.1's own shadow maps (vtkShadowMapPass) at map_resolution, the baseline",
+    &Make<vtkBuiltinShadowMapPass> },
+  { "planar", "exact projected shadows on plane receivers, every light type",
+    &Make<vtkPlanarShadowPass> },
+  { "csm", "cascaded shadow maps (directional), perspective (spot) and cube (point) maps",
+    &Make<vtkCascadedShadowMapPass> },
+  { "auto", "per light the cheapest technique that meets an error target (max_error)",
+    &Make<vtkAutoShadowPass> },
+};
+constexpr int TechniqueCount = static_cast<int>(sizeof(Techniques) / sizeof(Techniques[0]));
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowTechniqueRegistry::GetNumberOfTechniques()
+{
+  return TechniqueCount;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkShadowTechniqueRegistry::GetName(int index)
+{
+  return index >= 0 && index < TechniqueCount ? Techniques[index].Name : nullptr;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkShadowTechniqueRegistry::GetDescription(int index)
+{
+  return index >= 0 && index < TechniqueCount ? Techniques[index].Description : nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowTechniqueRegistry::FindTechnique(const char* name)
+{
+  for (int i = 0; name && i < TechniqueCount; ++i)
+  {
+    if (std::strcmp(name, Techniques[i].Name) == 0)
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkShadowTechniqueRegistry::GetNames()
+{
+  static const std::string names = [] {
+    std::string all;
+    for (const Technique& t : Techniques)
+    {
+      all += (all.empty() ? "" : " ") + std::string(t.Name);
+    }
+    return all;
+  }();
+  return names.c_str();
+}
+
+//------------------------------------------------------------------------------
+vtkShadowPassBase* vtkShadowTechniqueRegistry::CreatePass(const char* name)
+{
+  const int index = FindTechnique(name);
+  return index < 0 ? nullptr : Techniques[index].Create();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowTechniqueRegistry::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  for (const Technique& t : Techniques)
+  {
+    os << indent << t.Name << ": " << t.Description << "\n";
+  }
+}
