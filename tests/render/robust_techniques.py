@@ -26,9 +26,10 @@ between techniques is written here, one Profile per technique name:
                 receiver, viewport, headlight on)
   work          pass -> cumulative count of rebuilt GPU data (caster geometry,
                 shadow maps): the caching case reads it; None: not observable
-  caching       {event: "none" | "some" | int}: how `work` must change on each
-                event of the caching case (still frames, data changed, light
-                moved, camera orbit)
+  caching       {event: "some" | int}: how `work` must change on each event of
+                the caching case (first frame, still frames, a caster moved,
+                casters' data changed, light moved, camera orbit); an event
+                not listed is not checked
   headlight_on  pass -> None: make the headlight cast (None: the technique has
                 no such option; then only "the headlight casts nothing" is checked)
   settings      [(label, {SetOption key: value}, probe or None)]: configurations
@@ -245,7 +246,7 @@ PROFILES = {
         special={"explicit-plane": planar_explicit_plane}),
     "csm": Profile(
         stats=csm_stats, expect={"viewport": {"cascades": ">=1"}},
-        work=csm_work, caching={"first": "some", "still": 0, "data": "some", "light": "some",
+        work=csm_work, caching={"first": "some", "still": 0, "moved": "some", "data": "some", "light": "some",
                                 "orbit": "some", "small orbit reuses": True},
         headlight_on=lambda p: p.SetCastHeadlightShadows(True),
         settings=csm_settings(), special={"debug-cascades": csm_debug_cascades}),

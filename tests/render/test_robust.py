@@ -779,6 +779,7 @@ def case_caching(run):
     w1 = s.frame("caster moved")
     w2 = s.frame("after the caster moved")
     if w0 is not None:
+        expect_work(c, caching, "moved", w1 - works[-1], "a caster moved")
         expect_work(c, caching, "still", w2 - w1, "still frame after a caster moved")
     after = s.vs_fresh("frame after moving a caster vs a fresh render")
     moved = int((fr.shadowed(*before) ^ fr.shadowed(*after)).sum())
