@@ -6,8 +6,9 @@
 Scenes (written to DIR, in the vtkshadow scene format): a sphere over a floor
 lit by one directional light, the sphere tessellated to about 10k, 100k and
 1M triangles, at 640x480; and the 100k scene at 320x240, 640x480 and
-1280x960. Each scene is rendered with none, vtk (map 2048), planar, csm and
-auto by vtkshadow-render --stats (the same camera orbit for every technique;
+1280x960. Each scene is rendered with every technique of the registry
+(vtkShadowTechnique.GetKnownTechniques(): none, vtk (map 2048), planar, csm,
+auto, ...) by vtkshadow-render --stats (the same camera orbit for every technique;
 frames interleaved per round, the order rotated each round). For each row:
 the median ms per frame, and the median over rounds of its ratio to none of
 the same round (the figure to compare: the machine is shared and noisy).
@@ -26,7 +27,9 @@ import vtkshadow
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vtkshadow_bench import log, run_render  # noqa: E402
 
-TECHNIQUES = ["none", "vtk", "planar", "csm", "auto"]
+# Every registered technique, in registry order ("none" first: the ratios
+# are against it).
+TECHNIQUES = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()
 TRIANGLES = [10_000, 100_000, 1_000_000]
 SIZES = [(320, 240), (640, 480), (1280, 960)]
 

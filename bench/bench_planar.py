@@ -321,6 +321,14 @@ def run_config(cfg, args):
     renderer.SetBackground(0.1, 0.1, 0.12)
     camera = info["camera"]
     techniques = cfg.get("techniques", ["none", "planar", "vtk"])
+    # This bench measures planar against none (vtk for reference): its lists
+    # are its question, not the set of techniques; they must name registered
+    # ones (vtkShadowTechnique.GetKnownTechniques()).
+    known = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()
+    unknown = sorted({n.split(":")[0] for n in techniques} - set(known))
+    if unknown:
+        sys.exit("bench_planar: technique(s) %s not in the registry (%s)" % (
+            ", ".join(unknown), " ".join(known)))
     passes = {}
     toggles = info.get("toggles", {})
 

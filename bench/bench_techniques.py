@@ -18,8 +18,12 @@ import sys
 import tempfile
 import time
 
+import vtkshadow
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TECHNIQUES = ["none", "vtk", "planar", "csm", "auto"]
+# Every registered technique, in registry order ("none" first: the ratios
+# are against it).
+TECHNIQUES = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()
 BEGIN, END = "<!-- bench_techniques begin -->", "<!-- bench_techniques end -->"
 
 

@@ -12,11 +12,13 @@ uses 0.5).
 (bench/vtkshadow-bench runs this file with build/bin/vtkshadow-python under
 tests/gl-run.sh when no X display is set.)
 
-For each scene (light K, default 0) it runs build/bin/vtkshadow-render with:
-none; vtk at map 1024, 2048, 4096; planar when the scene has a receiver;
-csm at its defaults and over a grid (small: cascades 1,2,4 x map 512,1024,2048
-x filter 0 (hardware); full: cascades 1..4 x map 512..4096 x filter 0,1,2);
-auto. Each render gives the visibility and mask of light K (scored with
+For each scene (light K, default 0) it runs build/bin/vtkshadow-render with
+every technique of the registry (vtkShadowTechnique.GetKnownTechniques()), each
+with its settings from SETTINGS below: none; vtk at map 1024, 2048, 4096;
+planar when the scene has a receiver; csm at its defaults and over a grid
+(small: cascades 1,2,4 x map 512,1024,2048 x filter 0 (hardware); full:
+cascades 1..4 x map 512..4096 x filter 0,1,2); auto; a technique with no
+SETTINGS entry once at its defaults. Each render gives the visibility and mask of light K (scored with
 build/bin/vtkshadow-metrics against the POV-Ray reference of
 build/bin/vtkshadow-compare --renderers povray, cached in DIR/refs) and
 --stats timings: the median ms per frame over --frames (>= 30) frames along
@@ -96,14 +98,26 @@ def scene_info(path):
     return size, receivers
 
 
-def configs_for(receivers, grid):
-    """(technique, settings label, extra vtkshadow-render args)."""
-    out = [("none", "-", [])]
-    for r in (1024, 2048, 4096):
-        out.append(("vtk", "map=%d" % r, ["--map-resolution", str(r)]))
-    if receivers:
-        out.append(("planar", "-", []))
-    out.append(("csm", "default", []))
+def registered_techniques():
+    """The technique names of the build's registry, in registry order
+    (vtkShadowTechnique.GetKnownTechniques()). Under plain python3 (no
+    vtkshadow module) build/bin/vtkshadow-python answers."""
+    try:
+        import vtkshadow
+        names = vtkshadow.vtkShadowTechnique.GetKnownTechniques()
+    except ImportError:
+        cmd = [os.path.join(BIN, "vtkshadow-python"), "-c",
+               "import vtkshadow; print(vtkshadow.vtkShadowTechnique.GetKnownTechniques())"]
+        try:
+            names = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+        except (OSError, subprocess.CalledProcessError) as e:
+            sys.exit("vtkshadow-bench: cannot read the technique registry (%s): %s" % (
+                " ".join(cmd), e))
+    return names.split()
+
+
+def _grid_csm(grid):
+    out = [("default", [])]
     if grid == "small":
         cascades, maps, filters = (1, 2, 4), (512, 1024, 2048), (0,)
     else:
@@ -111,10 +125,35 @@ def configs_for(receivers, grid):
     for c in cascades:
         for m in maps:
             for fl in filters:
-                out.append(("csm", "cascades=%d map=%d filter=%d" % (c, m, fl),
+                out.append(("cascades=%d map=%d filter=%d" % (c, m, fl),
                             ["--map-resolution", str(m), "--set", "cascades=%d" % c,
                              "--set", "filter=%d" % fl]))
-    out.append(("auto", "default", []))
+    return out
+
+
+# The settings each technique is benchmarked with, as data: technique ->
+# (needs a receiver in the scene, grid -> [(settings label, extra
+# vtkshadow-render args)]). A registered technique not listed here runs once,
+# as ("default", []).
+SETTINGS = {
+    "none": (False, lambda grid: [("-", [])]),
+    "vtk": (False, lambda grid: [("map=%d" % r, ["--map-resolution", str(r)])
+                                 for r in (1024, 2048, 4096)]),
+    "planar": (True, lambda grid: [("-", [])]),
+    "csm": (False, _grid_csm),
+    "auto": (False, lambda grid: [("default", [])]),
+}
+
+
+def configs_for(receivers, grid, techniques=None):
+    """(technique, settings label, extra vtkshadow-render args) for every
+    registered technique, in registry order."""
+    out = []
+    for tech in techniques if techniques is not None else registered_techniques():
+        needs_receiver, settings = SETTINGS.get(tech, (False, lambda grid: [("default", [])]))
+        if needs_receiver and not receivers:
+            continue
+        out.extend((tech, label, args) for label, args in settings(grid))
     return out
 
 

@@ -66,7 +66,7 @@ add_test(NAME sanitize.unit
           ${CMAKE_BINARY_DIR}/sanitize)
 set_tests_properties(sanitize.unit PROPERTIES TIMEOUT 1200 LABELS "sanitize")
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_tests.cmake)
-include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_robust_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/render/robust_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_extra_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/harness/harness_tests.cmake)

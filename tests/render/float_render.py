@@ -1,5 +1,5 @@
 """Float renders of hand-built VTK scenes, for the render tests that compare a
-variant of a scene against an equivalent reference (test_planar_robust.py).
+variant of a scene against an equivalent reference (test_robust.py).
 
 The measurement is the one vtkShadowVisibility defines (docs/metrics.md):
 white Lambertian materials (ambient 0, diffuse 1, specular 0), one light,

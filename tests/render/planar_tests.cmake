@@ -43,3 +43,11 @@ foreach(_light 0 2)
             --light ${_light} --technique planar --max-wrong-pct 0.05 --min-mask-agreement 99.9)
   set_tests_properties(render.planar.many-receivers-light${_light} PROPERTIES LABELS "render" TIMEOUT 120)
 endforeach()
+
+# The C API with technique "planar" (tests/capi/test_capi_planar.c).
+add_executable(test_capi_planar capi/test_capi_planar.c)
+target_link_libraries(test_capi_planar PRIVATE vtkshadow::vtkshadow)
+vtk_module_autoinit(TARGETS test_capi_planar MODULES VTK::RenderingOpenGL2)
+add_test(NAME capi.c.planar
+  COMMAND ${VTKSHADOW_GL} $<TARGET_FILE:test_capi_planar>
+          ${PROJECT_SOURCE_DIR}/scenes/basic/sphere-plane.json ${VTKSHADOW_TEST_OUT}/capi-planar)

@@ -1,0 +1,13 @@
+# Style rules checked by tools (label unit: they need no GL and run in seconds).
+# No function longer than 120 lines in vtkshadow/ or compare/: universal-ctags
+# gives each function's first and last line (tests/style/check_function_length.py).
+find_package(Python3 COMPONENTS Interpreter REQUIRED)
+find_program(VTKSHADOW_CTAGS NAMES ctags-universal universal-ctags ctags)
+if(NOT VTKSHADOW_CTAGS)
+  # The test still runs and fails with the install hint: never a silent skip.
+  set(VTKSHADOW_CTAGS ctags)
+endif()
+add_test(NAME style.function_length
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_function_length.py
+          --ctags ${VTKSHADOW_CTAGS} --max 120 ${PROJECT_SOURCE_DIR} vtkshadow compare)
+set_tests_properties(style.function_length PROPERTIES LABELS "unit")
