@@ -255,16 +255,6 @@ PROFILES = {
     # the actors are split): planar and csm then differ on shadow-edge pixels.
     "auto": Profile(
         stats=auto_stats, work=auto_work, agreement=99.5,
-        known={
-            ("resize", "resized 640x480 -> 800x450 vs a fresh 800x450 render: visibility agrees"):
-                "found by this suite: after a window resize auto (choice csm) shadows "
-                "~73k px where a fresh window shadows ~7.9k (74 % agreement)",
-            ("caching", "frame after changing 2 casters' data vs a fresh render: visibility agrees"):
-                "found by this suite: after casters' data change auto's frame differs "
-                "from a fresh render (79 % agreement), and stays wrong:",
-            ("caching", "frame after moving the light vs a fresh render: visibility agrees"): "as above",
-            ("caching", "last 5-deg orbit frame vs a fresh render: visibility agrees"): "as above",
-            ("caching", "last 0.25-deg orbit frame vs a fresh render: visibility agrees"): "as above"},
         caching={"first": "some", "still": 0, "data": "some"},
         settings=[("max_error 0.2", {"max_error": 0.2}, None),
                   ("max_texel_px 1.5", {"max_texel_px": 1.5}, None)]),

@@ -118,6 +118,7 @@ struct vtkCascadedShadowMapPass::Internals
   vtkOpenGLFramebufferObject* FBO = nullptr;
   int AtlasSize[2] = { 0, 0 };
   int TileGrid[2] = { 1, 1 };
+  int RenderedResolution = 0; // texels per tile edge of the held maps
   std::vector<Tile> Tiles;
   // What each atlas slot last held, to skip re-rendering unchanged maps.
   // What each atlas tile holds: the view it was rendered with (relative to
@@ -581,12 +582,27 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     impl.Atlas->SetDepthTextureCompare(true);
     impl.Atlas->SetDepthTextureCompareFunction(vtkTextureObject::Lequal);
     impl.Atlas->AllocateDepth(atlasW, atlasH, vtkTextureObject::Float32);
+    // The setters above change nothing the second time, so the texture
+    // object's time is older than its last SendParameters and the new GL
+    // texture would never get the depth compare mode: every lookup would
+    // then read as shadowed (found by the robustness suite: auto re-sizing
+    // its maps after a window resize).
+    impl.Atlas->Modified();
     impl.AtlasSize[0] = atlasW;
     impl.AtlasSize[1] = atlasH;
     impl.Rendered.clear();
   }
+  // A held map is only reusable in the slot and at the texel size it was
+  // rendered with: a new grid or resolution (auto's texel target follows the
+  // window size and the casters) can keep the atlas size but not its layout.
+  if (impl.TileGrid[0] != columns || impl.TileGrid[1] != rows ||
+    impl.RenderedResolution != resolution)
+  {
+    impl.Rendered.clear();
+  }
   impl.TileGrid[0] = columns;
   impl.TileGrid[1] = rows;
+  impl.RenderedResolution = resolution;
   impl.Rendered.resize(tiles);
 
   // Render the maps that changed. A cascade whose map from an earlier frame
