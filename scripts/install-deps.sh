@@ -3,7 +3,8 @@
 # Run as root (or with sudo available). Safe to run again.
 set -eu
 packages="cmake make gcc g++ pkg-config libvtk9-dev python3-vtk9 python3-numpy
-  libcjson-dev libpng-dev xvfb xauth povray blender gnuplot-nox"
+  libcjson-dev libpng-dev xvfb xauth povray blender gnuplot-nox
+  libx11-dev"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
