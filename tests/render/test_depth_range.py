@@ -9,7 +9,7 @@ comes from the visible geometry (vtkShadowScene::ResetCameraClippingRange).
 
   test_depth_range.py --bin BUILD/bin --out DIR --scene SCENE.json
       --technique T --reference all|planar|none --max-wrong-pct P
-      [--size WxH] [--near-object K]
+      [--size WxH] [--near-object K] [--set KEY=VALUE]...
 
 --reference none: the unshadowed answer (what `none` must match exactly);
 planar: shadows only on receiver planes (what planar promises); all: every
@@ -47,6 +47,7 @@ def main():
     ap.add_argument("--max-wrong-pct", type=float, required=True)
     ap.add_argument("--size")
     ap.add_argument("--near-object", type=int)
+    ap.add_argument("--set", action="append", default=[], help="technique setting KEY=VALUE")
     args = ap.parse_args()
     with open(args.scene) as f:
         scene = json.load(f)
@@ -55,9 +56,11 @@ def main():
     if args.size:
         width, height = (int(v) for v in args.size.split("x"))
         size_args = ["--size", args.size]
+    for setting in args.set:
+        size_args += ["--set", setting]
     os.makedirs(args.out, exist_ok=True)
     name = (f"{os.path.splitext(os.path.basename(args.scene))[0]}-{args.technique}"
-            f"-{args.reference}-{width}x{height}")
+            f"-{args.reference}-{width}x{height}" + "".join("-" + s for s in args.set))
     base = os.path.join(args.out, name)
 
     run([os.path.join(args.bin, "vtkshadow-render"), args.scene, "--technique", args.technique,
