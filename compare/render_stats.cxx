@@ -22,7 +22,7 @@ void PlaceCamera(vtkRenderer* renderer, const vtkShadowScene* scene, int i, int 
   camera->Azimuth(5.0 * std::sin(phase));
   camera->Elevation(2.0 * std::cos(phase) - 2.0);
   camera->OrthogonalizeViewUp();
-  renderer->ResetCameraClippingRange();
+  vtkShadowScene::ResetCameraClippingRange(renderer); // near from the visible geometry
 }
 
 std::string Json(const FrameTimes& t)
@@ -79,7 +79,7 @@ FrameTimes TimeFrames(
     ms.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
   }
   scene->ConfigureCamera(renderer->GetActiveCamera());
-  renderer->ResetCameraClippingRange();
+  vtkShadowScene::ResetCameraClippingRange(renderer); // near from the visible geometry
   FrameTimes t;
   std::sort(ms.begin(), ms.end());
   const size_t n = ms.size();

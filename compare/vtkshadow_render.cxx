@@ -6,6 +6,7 @@
 #include "vtkNew.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkRenderWindow.h"
+#include "vtkShadowDisplay.h"
 #include "vtkShadowPNG.h"
 #include "vtkShadowScene.h"
 #include "vtkShadowTechnique.h"
@@ -70,11 +71,12 @@ int main(int argc, char* argv[])
       "--light: light " + std::to_string(options.Light) + " out of range (" + options.Scene +
         " has " + std::to_string(scene->GetNumberOfLights()) + " lights)");
   }
-  // Debian's VTK is built for X only and aborts without a display.
-  const char* display = std::getenv("DISPLAY");
-  if (!display || !*display)
+  // Debian's VTK is built for X only and aborts without a display: open the
+  // process's one connection now (every window below shares it, so Xvfb
+  // never sees its last client leave mid-run) and say what to run if none.
+  if (!vtkShadowDisplay::Open())
   {
-    return Fail(1, "no X display (DISPLAY is not set): run under xvfb-run -a");
+    return Fail(2, vtkShadowDisplay::GetErrorMessage());
   }
 
   const int width = options.Width > 0 ? options.Width : scene->GetWidth();
@@ -112,6 +114,7 @@ int main(int argc, char* argv[])
   // The colour image with every light, then (optionally) the timings.
   progress("colour image with " + options.Technique);
   vtkNew<vtkRenderWindow> window;
+  vtkShadowDisplay::Attach(window); // opened above
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
   window->SetSize(width, height);

@@ -3,7 +3,9 @@
 # Run as root (or with sudo available). Safe to run again.
 set -eu
 packages="cmake make gcc g++ pkg-config libvtk9-dev python3-vtk9 python3-numpy
-  libcjson-dev libpng-dev xvfb xauth povray blender gnuplot-nox universal-ctags"
+  libcjson-dev libpng-dev xvfb xauth povray blender gnuplot-nox
+  universal-ctags
+  libx11-dev"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -1,4 +1,6 @@
 #include "vtkShadowScene.h"
+#include "vtkShadowClippingRange.h"
+#include "vtkShadowDisplay.h"
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
@@ -486,6 +488,13 @@ bool vtkShadowScene::Populate(vtkRenderer* renderer, bool lambertian, int onlyLi
     vtkErrorMacro("Populate: light " << onlyLight << " out of range");
     return false;
   }
+  // Every window of the process shares one X connection (vtkShadowDisplay):
+  // attached before its first render, or VTK opens (and later closes) its own.
+  if (!vtkShadowDisplay::Attach(renderer->GetRenderWindow()))
+  {
+    vtkErrorMacro("Populate: " << vtkShadowDisplay::GetErrorMessage());
+    return false;
+  }
   for (int i = 0; i < this->GetNumberOfObjects(); ++i)
   {
     vtkNew<vtkPolyDataMapper> mapper;
@@ -534,8 +543,14 @@ bool vtkShadowScene::Populate(vtkRenderer* renderer, bool lambertian, int onlyLi
   const double* bg = this->Impl->Scene->background;
   renderer->SetBackground(bg[0], bg[1], bg[2]);
   this->ConfigureCamera(renderer->GetActiveCamera());
-  renderer->ResetCameraClippingRange();
+  vtkShadowScene::ResetCameraClippingRange(renderer);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScene::ResetCameraClippingRange(vtkRenderer* renderer)
+{
+  vtkshadow::ResetClippingRange(renderer);
 }
 
 //------------------------------------------------------------------------------

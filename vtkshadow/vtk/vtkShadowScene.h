@@ -104,6 +104,16 @@ public:
    */
   bool Populate(vtkRenderer* renderer, bool lambertian = false, int onlyLight = -1) const;
 
+  /**
+   * Set the renderer's camera clipping range from the geometry it sees:
+   * near just in front of the nearest visible point of any visible prop,
+   * far just behind the farthest. Use it instead of
+   * vtkRenderer::ResetCameraClippingRange, which keeps near at least 1/1000
+   * of far and so clips close geometry in scenes with a wide depth range.
+   * Call it again whenever the camera or the actors move. Populate() calls it.
+   */
+  static void ResetCameraClippingRange(vtkRenderer* renderer);
+
 protected:
   vtkShadowScene();
   ~vtkShadowScene() override;

@@ -10,6 +10,7 @@
 #include "vtkPointData.h"
 #include "vtkRenderPass.h"
 #include "vtkRenderWindow.h"
+#include "vtkShadowDisplay.h"
 #include "vtkShadowScene.h"
 #include "vtkShadowTechnique.h"
 #include "vtkSmartPointer.h"
@@ -137,6 +138,13 @@ bool vtkShadowVisibility::Compute()
   const int h = this->Size[1] > 0 ? this->Size[1] : this->Scene->GetHeight();
 
   vtkNew<vtkRenderWindow> window;
+  // The process's one X connection: a window opening and closing its own
+  // would leave Xvfb without clients between renders (it then resets).
+  if (!vtkShadowDisplay::Attach(window))
+  {
+    this->SetErrorMessage(vtkShadowDisplay::GetErrorMessage());
+    return false;
+  }
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
   window->SetSize(w, h);

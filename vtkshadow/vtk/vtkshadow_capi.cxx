@@ -7,6 +7,7 @@
 #include "vtkPlanarShadowPass.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
+#include "vtkShadowDisplay.h"
 #include "vtkRenderer.h"
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowPNG.h"
@@ -203,6 +204,12 @@ extern "C"
       return 1;
     }
     vtkNew<vtkRenderWindow> window;
+    // The process's one X connection (vtkShadowDisplay); none: say so, not abort.
+    if (!vtkShadowDisplay::Attach(window))
+    {
+      SetError(error, error_size, std::string("vtkshadow_render_png: ") + vtkShadowDisplay::GetErrorMessage());
+      return 1;
+    }
     window->SetOffScreenRendering(1);
     window->SetSize(scene->Scene->GetWidth(), scene->Scene->GetHeight());
     vtkNew<vtkRenderer> renderer;
