@@ -11,5 +11,9 @@
 #include "vsh_planar.h"
 #include "vsh_csm.h"
 #include "vsh_auto.h"
+#include "vsh_mesh_topology.h"
+#include "vsh_silhouette.h"
+#include "vsh_plane.h"
+#include "vsh_frustum.h"
 
 #endif

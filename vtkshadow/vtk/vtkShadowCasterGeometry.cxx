@@ -27,6 +27,8 @@
 #include "vtk_glew.h"
 
 #include "vsh_mat4.h"
+#include "vsh_mesh_topology.h"
+#include "vsh_silhouette.h"
 
 #include <algorithm>
 #include <cmath>
@@ -298,7 +300,8 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
   this->VertexCount = static_cast<vtkIdType>(vertices.size() / 3);
   // Kept for silhouettes (analysed lazily, only when a planar pass asks).
   this->Positions = vertices;
-  this->Welded = indices;
+  this->Triangles = indices;
+  this->Topology.reset();
   this->Closed = -1;
   this->Convex = -1;
   this->FanValid = false;
@@ -355,119 +358,29 @@ void vtkShadowCasterGeometry::Draw(vtkShaderProgram* program)
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowCasterGeometry::TopologyDeleter::operator()(vsh_mesh_topology* topology) const
+{
+  vsh_mesh_topology_free(topology);
+  delete topology;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowCasterGeometry::Analyse()
 {
-  // Weld vertices that share an exact position (seams duplicate points).
-  const size_t n = this->Positions.size() / 3;
-  std::vector<unsigned int> order(n), canonical(n);
-  for (size_t i = 0; i < n; ++i)
-  {
-    order[i] = static_cast<unsigned int>(i);
-  }
-  const float* p = this->Positions.data();
-  std::sort(order.begin(), order.end(), [p](unsigned int a, unsigned int b) {
-    return std::lexicographical_compare(p + 3 * a, p + 3 * a + 3, p + 3 * b, p + 3 * b + 3);
-  });
-  for (size_t k = 0; k < n; ++k)
-  {
-    const unsigned int i = order[k];
-    canonical[i] = (k > 0 && std::equal(p + 3 * i, p + 3 * i + 3, p + 3 * order[k - 1]))
-      ? canonical[order[k - 1]]
-      : i;
-  }
-  for (unsigned int& v : this->Welded)
-  {
-    v = canonical[v];
-  }
-  // Every directed edge must appear once, and its reverse once: a closed,
-  // consistently oriented 2-manifold (degenerate triangles excluded).
-  struct DirectedEdge
-  {
-    unsigned int From, To, Triangle;
-  };
-  std::vector<DirectedEdge> edges;
-  edges.reserve(this->Welded.size());
-  const size_t triangles = this->Welded.size() / 3;
-  for (size_t t = 0; t < triangles; ++t)
-  {
-    const unsigned int* v = &this->Welded[3 * t];
-    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
-    {
-      this->Closed = 0; // a degenerate triangle: do not trust the topology
-      return;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      edges.push_back({ v[k], v[(k + 1) % 3], static_cast<unsigned int>(t) });
-    }
-  }
-  auto key = [](const DirectedEdge& e) {
-    return std::make_pair(std::min(e.From, e.To), std::max(e.From, e.To));
-  };
-  std::sort(edges.begin(), edges.end(),
-    [&](const DirectedEdge& a, const DirectedEdge& b) { return key(a) < key(b); });
-  this->EdgeA.clear();
-  this->EdgeB.clear();
-  this->EdgeLeft.clear();
-  this->EdgeRight.clear();
-  for (size_t k = 0; k < edges.size(); k += 2)
-  {
-    if (k + 1 >= edges.size() || key(edges[k]) != key(edges[k + 1]) ||
-      (k + 2 < edges.size() && key(edges[k + 2]) == key(edges[k])) ||
-      edges[k].From != edges[k + 1].To)
-    {
-      this->Closed = 0;
-      return;
-    }
-    this->EdgeA.push_back(edges[k].From);
-    this->EdgeB.push_back(edges[k].To);
-    this->EdgeLeft.push_back(edges[k].Triangle);
-    this->EdgeRight.push_back(edges[k + 1].Triangle);
-  }
-  // Connected components (union-find over the welded triangles).
-  std::vector<unsigned int> parent(n);
-  for (size_t i = 0; i < n; ++i)
-  {
-    parent[i] = static_cast<unsigned int>(i);
-  }
-  std::function<unsigned int(unsigned int)> find = [&](unsigned int x) {
-    while (parent[x] != x)
-    {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
-  for (size_t t = 0; t < triangles; ++t)
-  {
-    const unsigned int* v = &this->Welded[3 * t];
-    parent[find(v[1])] = find(v[0]);
-    parent[find(v[2])] = find(v[0]);
-  }
-  // Only vertices the welded triangles use count: a point welded into
-  // another (a box's corner repeated per face) is not a component.
-  std::vector<char> used(n, 0);
-  for (unsigned int v : this->Welded)
-  {
-    used[v] = 1;
-  }
-  this->Component.assign(n, 0);
-  std::vector<unsigned int> label(n, ~0u);
-  this->ComponentCount = 0;
-  for (size_t i = 0; i < n; ++i)
-  {
-    if (!used[canonical[i]])
-    {
-      continue;
-    }
-    const unsigned int root = find(canonical[i]);
-    if (label[root] == ~0u)
-    {
-      label[root] = this->ComponentCount++;
-    }
-    this->Component[i] = label[root];
-  }
-  this->Closed = edges.empty() ? 0 : 1;
+  // Exact welding (tolerance 0): seams duplicate points at the same float
+  // position; a tolerance could join distinct vertices of fine meshes.
+  const std::vector<double> positions(this->Positions.begin(), this->Positions.end());
+  static_assert(sizeof(unsigned int) == sizeof(uint32_t), "triangle indices are 32-bit");
+  this->Topology.reset(new vsh_mesh_topology());
+  const vsh_mesh_status status = vsh_mesh_topology_build(positions.data(),
+    positions.size() / 3, reinterpret_cast<const uint32_t*>(this->Triangles.data()),
+    this->Triangles.size() / 3, 0.0, this->Topology.get());
+  // A mesh that cannot be analysed is treated as not closed: the passes then
+  // draw its triangles, which is always right.
+  this->Closed = status == VSH_MESH_OK && this->Topology->closed ? 1 : 0;
+  // The topology holds what silhouettes need from here on.
+  std::vector<float>().swap(this->Positions);
+  std::vector<unsigned int>().swap(this->Triangles);
 }
 
 //------------------------------------------------------------------------------
@@ -488,86 +401,31 @@ bool vtkShadowCasterGeometry::IsConvex()
     return this->Convex == 1;
   }
   this->Convex = 0;
-  if (!this->IsClosed() || this->ComponentCount != 1)
+  if (!this->IsClosed())
   {
     return false;
   }
-  const float* p = this->Positions.data();
+  const vsh_mesh_topology& topology = *this->Topology;
   double size = 0.0;
-  for (size_t i = 0; i + 2 < this->Positions.size(); i += 3)
+  for (size_t i = 0; i < 3 * topology.vertex_count; ++i)
   {
-    size = std::max({ size, std::abs(static_cast<double>(p[i])),
-      std::abs(static_cast<double>(p[i + 1])), std::abs(static_cast<double>(p[i + 2])) });
+    size = std::max(size, std::abs(topology.positions[i]));
   }
   // Float positions: allow their rounding (relative 1e-5 of the size).
-  const double tolerance = 1e-5 * size;
-  // Which way the triangles face: a closed mesh wound inwards has a negative
-  // signed volume, and then every edge of a convex body looks reflex.
-  double volume = 0.0;
-  for (size_t t = 0; t + 2 < this->Welded.size(); t += 3)
-  {
-    const float* a = p + 3 * this->Welded[t];
-    const float* b = p + 3 * this->Welded[t + 1];
-    const float* c = p + 3 * this->Welded[t + 2];
-    volume += static_cast<double>(a[0]) * (static_cast<double>(b[1]) * c[2] - static_cast<double>(b[2]) * c[1]) +
-      static_cast<double>(a[1]) * (static_cast<double>(b[2]) * c[0] - static_cast<double>(b[0]) * c[2]) +
-      static_cast<double>(a[2]) * (static_cast<double>(b[0]) * c[1] - static_cast<double>(b[1]) * c[0]);
-  }
-  const double outwards = volume < 0.0 ? -1.0 : 1.0;
-  for (size_t e = 0; e < this->EdgeA.size(); ++e)
-  {
-    const unsigned int* t = &this->Welded[3 * this->EdgeLeft[e]];
-    const unsigned int* u = &this->Welded[3 * this->EdgeRight[e]];
-    unsigned int far = u[0];
-    for (int k = 0; k < 3; ++k)
-    {
-      if (u[k] != this->EdgeA[e] && u[k] != this->EdgeB[e])
-      {
-        far = u[k];
-      }
-    }
-    double a[3], e1[3], e2[3], d[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      a[k] = p[3 * t[0] + k];
-      e1[k] = p[3 * t[1] + k] - a[k];
-      e2[k] = p[3 * t[2] + k] - a[k];
-      d[k] = p[3 * far + k] - a[k];
-    }
-    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-      e1[0] * e2[1] - e1[1] * e2[0] };
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (length > 0.0 && outwards * (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / length > tolerance)
-    {
-      return false; // a reflex edge: the surface folds back on itself
-    }
-  }
-  this->Convex = 1;
-  return true;
+  int convex = 0;
+  vsh_mesh_is_convex(&topology, 1e-5 * size, &convex);
+  this->Convex = convex;
+  return convex == 1;
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowCasterGeometry::ComputeFacing(const double light[4], std::vector<char>& facing) const
+void vtkShadowCasterGeometry::ShiftLight(const double lightInData[4], double light[4]) const
 {
-  const float* p = this->Positions.data();
-  const size_t triangles = this->Welded.size() / 3;
-  facing.assign(triangles, 0);
-  for (size_t t = 0; t < triangles; ++t)
+  for (int k = 0; k < 3; ++k)
   {
-    const unsigned int* v = &this->Welded[3 * t];
-    double a[3], e1[3], e2[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      a[k] = p[3 * v[0] + k];
-      e1[k] = p[3 * v[1] + k] - a[k];
-      e2[k] = p[3 * v[2] + k] - a[k];
-    }
-    const double nrm[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-      e1[0] * e2[1] - e1[1] * e2[0] };
-    const double to[3] = { light[0] - light[3] * a[0], light[1] - light[3] * a[1],
-      light[2] - light[3] * a[2] };
-    facing[t] = (nrm[0] * to[0] + nrm[1] * to[1] + nrm[2] * to[2]) > 0.0;
+    light[k] = lightInData[k] - lightInData[3] * this->Shift[k];
   }
+  light[3] = lightInData[3];
 }
 
 //------------------------------------------------------------------------------
@@ -577,39 +435,45 @@ double vtkShadowCasterGeometry::GetSilhouetteLength(const double lightInData[4])
   {
     return -1.0;
   }
-  const double light[4] = { lightInData[0] - lightInData[3] * this->Shift[0],
-    lightInData[1] - lightInData[3] * this->Shift[1],
-    lightInData[2] - lightInData[3] * this->Shift[2], lightInData[3] };
-  std::vector<char> facing;
-  this->ComputeFacing(light, facing);
-  const float* p = this->Positions.data();
+  double light[4];
+  this->ShiftLight(lightInData, light);
+  vsh_silhouette silhouette;
   double length = 0.0;
-  for (size_t e = 0; e < this->EdgeA.size(); ++e)
+  if (vsh_silhouette_build(this->Topology.get(), light, VSH_SILHOUETTE_LIT_FACES, &silhouette) ==
+    VSH_MESH_OK)
   {
-    if ((facing[this->EdgeLeft[e]] != 0) != (facing[this->EdgeRight[e]] != 0))
+    vsh_silhouette_length(this->Topology.get(), &silhouette, light, &length);
+  }
+  vsh_silhouette_free(&silhouette);
+  return length;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowCasterGeometry::BuildFans(const double light[4])
+{
+  // Silhouette edges, oriented as in their light-facing triangle, fanned
+  // from one silhouette vertex per connected component: the fan's winding
+  // number is the coverage, and a local centre keeps its triangles small.
+  this->FanData.clear();
+  const vsh_mesh_topology* topology = this->Topology.get();
+  vsh_silhouette silhouette;
+  if (vsh_silhouette_build(topology, light, VSH_SILHOUETTE_LIT_FACES, &silhouette) == VSH_MESH_OK)
+  {
+    std::vector<uint32_t> fans(3 * silhouette.total_multiplicity);
+    if (vsh_silhouette_fans(topology, &silhouette, fans.data()) == VSH_MESH_OK)
     {
-      const float* a = p + 3 * this->EdgeA[e];
-      const float* b = p + 3 * this->EdgeB[e];
-      double d[3], u[3];
-      for (int k = 0; k < 3; ++k)
+      this->FanData.reserve(3 * fans.size());
+      for (uint32_t v : fans)
       {
-        d[k] = static_cast<double>(b[k]) - a[k];
-        // Towards the light from the edge's middle.
-        u[k] = light[k] - light[3] * 0.5 * (static_cast<double>(a[k]) + b[k]);
+        const double* p = topology->positions + 3 * static_cast<size_t>(v);
+        // Exact: the positions were floats before the analysis.
+        this->FanData.insert(this->FanData.end(),
+          { static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]) });
       }
-      // As the light sees it: a mesh's silhouette zig-zags along the light
-      // direction across the smooth terminator, and that part of each edge
-      // does not lengthen the shadow's outline.
-      const double uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
-      const double along = uu > 0.0 ? (d[0] * u[0] + d[1] * u[1] + d[2] * u[2]) / uu : 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        d[k] -= along * u[k];
-      }
-      length += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     }
   }
-  return length;
+  vsh_silhouette_free(&silhouette);
+  this->FanTriangles = static_cast<vtkIdType>(this->FanData.size() / 9);
 }
 
 //------------------------------------------------------------------------------
@@ -620,42 +484,12 @@ bool vtkShadowCasterGeometry::DrawSilhouetteFans(
   {
     return false;
   }
-  // The light relative to the stored positions (which are data - Shift).
-  const double light[4] = { lightInData[0] - lightInData[3] * this->Shift[0],
-    lightInData[1] - lightInData[3] * this->Shift[1],
-    lightInData[2] - lightInData[3] * this->Shift[2], lightInData[3] };
+  double light[4];
+  this->ShiftLight(lightInData, light);
   if (!this->FanValid || !std::equal(light, light + 4, this->FanLight))
   {
     std::copy_n(light, 4, this->FanLight);
-    const float* p = this->Positions.data();
-    std::vector<char> facing;
-    this->ComputeFacing(light, facing);
-    // Silhouette edges, oriented as in their light-facing triangle, fanned
-    // from one silhouette vertex: the fan's winding number is the coverage.
-    this->FanData.clear();
-    // One centre per connected component: any point works for a closed
-    // loop, and a local one keeps the fan triangles small.
-    std::vector<unsigned int> centreOf(this->ComponentCount, ~0u);
-    for (size_t e = 0; e < this->EdgeA.size(); ++e)
-    {
-      const bool left = facing[this->EdgeLeft[e]] != 0;
-      if (left == (facing[this->EdgeRight[e]] != 0))
-      {
-        continue;
-      }
-      // EdgeA -> EdgeB runs along the left triangle's orientation.
-      const unsigned int from = left ? this->EdgeA[e] : this->EdgeB[e];
-      const unsigned int to = left ? this->EdgeB[e] : this->EdgeA[e];
-      unsigned int& centre = centreOf[this->Component[from]];
-      if (centre == ~0u)
-      {
-        centre = from;
-      }
-      this->FanData.insert(this->FanData.end(), p + 3 * centre, p + 3 * centre + 3);
-      this->FanData.insert(this->FanData.end(), p + 3 * from, p + 3 * from + 3);
-      this->FanData.insert(this->FanData.end(), p + 3 * to, p + 3 * to + 3);
-    }
-    this->FanTriangles = static_cast<vtkIdType>(this->FanData.size() / 9);
+    this->BuildFans(light);
     this->FanValid = true;
     this->FanNeedsUpload = true;
   }

@@ -14,6 +14,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
+#include <memory>
 #include <vector>
 
 class vtkActor;
@@ -23,6 +24,7 @@ class vtkOpenGLVertexArrayObject;
 class vtkPolyData;
 class vtkShaderProgram;
 class vtkWindow;
+struct vsh_mesh_topology;
 
 class vtkShadowCasterGeometry
 {
@@ -55,7 +57,8 @@ public:
   /**
    * Silhouette fans for closed casters (planar shadows). When the caster is
    * a closed, consistently oriented triangle mesh (vertices welded by exact
-   * position), the shadow it casts from a light is the region where the
+   * position; the topology and silhouettes are vtkshadow_core's
+   * vsh_mesh_topology and vsh_silhouette), the shadow it casts from a light is the region where the
    * winding number of its projected silhouette loops is non-zero: every
    * point of the shadow is covered by the light-facing triangles as many
    * times as the silhouette winds around it. DrawSilhouetteFans() draws one
@@ -68,9 +71,10 @@ public:
    */
   bool IsClosed();
   /**
-   * Closed, one connected component, and convex along every edge (the
-   * neighbouring triangle's far vertex never in front of a triangle's plane):
-   * such a surface is convex, so it cannot shadow itself.
+   * Closed, one connected component of a sphere's topology, and convex
+   * along every edge (the neighbouring triangle's far vertex never in front
+   * of a triangle's plane): such a surface is convex, so it cannot shadow
+   * itself (vsh_mesh_is_convex).
    */
   bool IsConvex();
   bool DrawSilhouetteFans(vtkShaderProgram* program, const double lightInData[4]);
@@ -104,15 +108,18 @@ private:
   bool NeedsUpload = false;
   std::vector<float> PendingVertices;
   std::vector<unsigned int> PendingIndices;
-  // CPU copies for silhouettes: positions (relative to Shift) and welded
-  // triangles; each edge's two triangles; -1 = not analysed yet.
+  // CPU copies for silhouettes, kept only until the topology is analysed
+  // (lazily, when a pass first asks): positions relative to Shift, triangles.
   std::vector<float> Positions;
-  std::vector<unsigned int> Welded;
-  std::vector<unsigned int> EdgeA, EdgeB, EdgeLeft, EdgeRight; // left: a->b in it
-  // Connected component of each vertex: fans are centred per component, so
-  // fan triangles stay as small as the part (10,000 glyphs, not one field).
-  std::vector<unsigned int> Component;
-  unsigned int ComponentCount = 0;
+  std::vector<unsigned int> Triangles;
+  // The mesh topology from vtkshadow_core (welded vertices, edges with the
+  // faces using them, components): silhouettes, closedness and convexity
+  // are computed there; this class only adapts VTK data and draws.
+  struct TopologyDeleter
+  {
+    void operator()(vsh_mesh_topology* topology) const;
+  };
+  std::unique_ptr<vsh_mesh_topology, TopologyDeleter> Topology;
   int Closed = -1;
   int Convex = -1;
   double FanLight[4] = { 0, 0, 0, 0 };
@@ -124,8 +131,10 @@ private:
   bool FanNeedsUpload = false;
   std::vector<float> FanData;
   void Analyse();
-  // Per welded triangle: does it face `light` (homogeneous, stored positions)?
-  void ComputeFacing(const double light[4], std::vector<char>& facing) const;
+  // The light relative to the stored positions (which are data - Shift).
+  void ShiftLight(const double lightInData[4], double light[4]) const;
+  // Rebuilds FanData (fan triangles, positions) for `light` (shifted).
+  void BuildFans(const double light[4]);
 };
 
 #endif
