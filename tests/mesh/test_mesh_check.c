@@ -61,6 +61,7 @@ static void test_ply(void) {
   BAD(vsh_ply_check_buffer, PLY_HEAD("ascii", "4", "1") PLY_V "3 0 -1 2\n",
       "face 0 refers to vertex -1 but the file has 4");
   BAD(vsh_ply_check_buffer, PLY_HEAD("ascii", "4", "2") PLY_V "3 0 1 2\n", "truncated PLY file");
+  BAD(vsh_ply_check_buffer, PLY_HEAD("ascii", "4", "1") PLY_V "3 0 1 2", "face 0 is not ended by a newline");
   BAD(vsh_ply_check_buffer, PLY_HEAD("ascii", "4", "1") "0 0 0\n1 0\n0 1 0\n0 0 1\n3 0 1 2\n",
       "line 11: vertex 1 has too few values");
   BAD(vsh_ply_check_buffer, PLY_HEAD("ascii", "4", "1") "0 0 0\n\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n",
@@ -83,6 +84,10 @@ static void test_ply(void) {
   BAD(vsh_ply_check_buffer, "ply\nformat ascii 1.0\nelement vertex 1\n", "no end_header");
   BAD(vsh_ply_check_buffer, "ply\nformat xml 1.0\nend_header\n", "unknown PLY format");
   BAD(vsh_ply_check_buffer, "plx\n", "not a PLY file");
+  BAD(vsh_ply_check_buffer, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+      "property float 5y\nproperty float z\nend_header\n0 0 0\n", "lacks one of the properties x, y, z");
+  BAD(vsh_ply_check_buffer, "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "end_header\n3 0 1 2\n", "declares no \"vertex\" element");
   {
     /* binary: little and big endian, index past the end, truncation, inf, negative count */
     static const char head[] = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
@@ -170,6 +175,9 @@ static void test_vtp(void) {
   BAD(vsh_vtp_check_buffer, "<VTKFile type=\"UnstructuredGrid\"></VTKFile>", "not of type PolyData");
   BAD(vsh_vtp_check_buffer, "<VTKFile type=\"PolyData\"><PolyData></PolyData></VTKFile>", "no <Piece>");
   BAD(vsh_vtp_check_buffer, "hello", "not a VTK XML file");
+  BAD(vsh_vtp_check_buffer, "<VTKFile type=\"PolyData\"><PolyData><Piece NumberOfPoints=\"1\">"
+      "<Points><DataArray type=\"Float64\" NumberOfComponents=\"-1\"/></Points></Piece>",
+      "DataArray 1: NumberOfComponents is not a count from 1 to 1024");
   CHECK(vsh_cells_check(&c, "polygon", 4, &tris, err, sizeof err) == 0 && tris == 2);
   c.connectivity = bad_conn;
   CHECK(vsh_cells_check(&c, "polygon", 4, &tris, err, sizeof err) != 0);

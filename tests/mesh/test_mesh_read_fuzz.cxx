@@ -10,7 +10,9 @@
 // The mutated file is WORKDIR/mesh.EXT: after a crash it is the input to look at.
 #include "vtkCellArray.h"
 #include "vtkNew.h"
+#include "vtkLogger.h"
 #include "vtkObject.h"
+#include "vtkOutputWindow.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkShadowScene.h"
@@ -128,6 +130,7 @@ void FuzzSeed(const std::string& dir, const char* seedPath, int index, long iter
   const std::string mesh = dir + "/mesh" + Extension(seedPath);
   const std::string scene = WriteScene(dir, mesh);
   long loaded = 0, refused = 0;
+  std::printf("%s: ", seedPath);
   if (!WriteBytes(mesh, seed, seedLen) || LoadAndCheck(scene, nullptr) != 1)
   {
     std::fprintf(stderr, "%s: the seed itself does not load\n", seedPath);
@@ -151,8 +154,12 @@ void FuzzSeed(const std::string& dir, const char* seedPath, int index, long iter
         message.c_str());
     }
     (rc == 1 ? loaded : refused) += 1;
+    if (it % 1000 == 999)
+    {
+      std::printf("%ld ", it + 1);
+    }
   }
-  std::printf("%s: %ld mutations, %ld loaded, %ld refused\n", seedPath, iterations, loaded,
+  std::printf("%ld mutations, %ld loaded, %ld refused\n", iterations, loaded,
     refused);
   if (loaded == 0 || refused == 0)
   {
@@ -166,7 +173,11 @@ void FuzzSeed(const std::string& dir, const char* seedPath, int index, long iter
 
 int main(int argc, char** argv)
 {
-  vtkObject::GlobalWarningDisplayOff(); // reader complaints become our messages
+  // Quiet, but not GlobalWarningDisplayOff(): VTK 9.1 raises ErrorEvent (how
+  // the loader learns of reader errors) only while warnings are displayed.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  std::setvbuf(stdout, nullptr, _IONBF, 0);  // what ran before a crash is on the log
   if (argc > 3 && std::strcmp(argv[1], "--load") == 0)
   {
     return LoadMode(argc, argv);

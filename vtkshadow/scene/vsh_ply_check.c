@@ -128,6 +128,9 @@ static int ascii_entry(ply_walk *w, vsh__text *text, char *err, size_t n) {
   if ((size_t)(w->line.end - w->line.p) > VSH_MESH_MAX_LINE)
     return vsh__mc_fail(err, n, "line %zu is longer than %d characters", w->line_number,
                         VSH_MESH_MAX_LINE);
+  if (w->line.end == text->end) /* vtkPLY fails on it, then frees twice: a crash */
+    return vsh__mc_fail(err, n, "line %zu: %s %" PRIu64 " is not ended by a newline",
+                        w->line_number, w->e->name, w->entry);
   if (memchr(w->line.p, '\0', (size_t)(w->line.end - w->line.p)))
     return vsh__mc_fail(err, n, "line %zu: NUL byte in an ASCII PLY body", w->line_number);
   return check_entry(w, err, n);

@@ -139,6 +139,30 @@ static int format_line(ply_header *h, vsh__span *rest, size_t line, char *err, s
   return 0;
 }
 
+static int has_property(const ply_element *e, const char *name) {
+  int i;
+  for (i = 0; i < e->property_count; ++i)
+    if (strcmp(e->properties[i].name, name) == 0) return 1;
+  return 0;
+}
+
+/* vtkPLYReader needs vertex x, y, z (without them it frees its file and then
+ * reads it: a crash) and, for faces, vertex_indices. */
+static int check_geometry(const ply_header *h, char *err, size_t n) {
+  int i, vertex = 0;
+  for (i = 0; i < h->element_count; ++i) {
+    const ply_element *e = &h->elements[i];
+    if (e->is_vertex) {
+      vertex = 1;
+      if (!has_property(e, "x") || !has_property(e, "y") || !has_property(e, "z"))
+        return vsh__mc_fail(err, n, "PLY element \"vertex\" lacks one of the properties x, y, z");
+    }
+    if (e->is_face && !has_property(e, "vertex_indices") && !has_property(e, "vertex_index"))
+      return vsh__mc_fail(err, n, "PLY element \"face\" has no vertex_indices list");
+  }
+  return vertex ? 0 : vsh__mc_fail(err, n, "PLY header declares no \"vertex\" element");
+}
+
 int vsh__ply_header(const char *data, size_t size, ply_header *h, char *err, size_t n) {
   vsh__text text = {data, data + size, 0};
   vsh__span line, word;
@@ -157,7 +181,7 @@ int vsh__ply_header(const char *data, size_t size, ply_header *h, char *err, siz
       if (h->format < 0) return vsh__mc_fail(err, n, "PLY header has no format line");
       h->body = (size_t)(text.p - data);
       h->lines = text.line;
-      return 0;
+      return check_geometry(h, err, n);
     }
     if (vsh__span_is(&word, "format")) rc = format_line(h, &line, text.line, err, n);
     else if (vsh__span_is(&word, "element")) rc = element_line(h, &line, text.line, err, n);

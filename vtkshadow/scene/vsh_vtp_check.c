@@ -53,6 +53,31 @@ static int attribute(const char *p, const char *end, const char *name, uint64_t 
   return 0;
 }
 
+/* Every DataArray's NumberOfComponents and NumberOfTuples: VTK 9.1 sizes a
+ * vector from them before reading any data (NumberOfComponents="-1" throws
+ * std::length_error out of the reader). */
+#define VTP_MAX_COMPONENTS 1024
+static int check_arrays(const char *p, const char *end, char *err, size_t err_size) {
+  size_t index = 0;
+  while ((p = find(p, end, "<DataArray")) != NULL) {
+    const char *tag_end = (const char *)memchr(p, '>', (size_t)(end - p));
+    uint64_t v = 0;
+    int rc;
+    if (!tag_end) return vsh__mc_fail(err, err_size, "unterminated <DataArray> element");
+    ++index;
+    rc = attribute(p, tag_end, "NumberOfComponents", &v);
+    if (rc < 0 || (rc > 0 && (v == 0 || v > VTP_MAX_COMPONENTS)))
+      return vsh__mc_fail(err, err_size, "DataArray %zu: NumberOfComponents is not a count from 1 "
+                          "to %d", index, VTP_MAX_COMPONENTS);
+    rc = attribute(p, tag_end, "NumberOfTuples", &v);
+    if (rc < 0 || v > 4ull * VSH_MESH_MAX_TRIANGLES)
+      return vsh__mc_fail(err, err_size, "DataArray %zu: NumberOfTuples is not a count under %llu",
+                          index, 4ull * VSH_MESH_MAX_TRIANGLES);
+    p = tag_end;
+  }
+  return 0;
+}
+
 int vsh_vtp_check_buffer(const char *data, size_t size, char *err, size_t err_size) {
   static const char *const counts[] = {"NumberOfPoints", "NumberOfVerts", "NumberOfLines",
                                        "NumberOfStrips", "NumberOfPolys"};
@@ -84,7 +109,7 @@ int vsh_vtp_check_buffer(const char *data, size_t size, char *err, size_t err_si
     }
   }
   if (pieces == 0) return vsh__mc_fail(err, err_size, "VTP file has no <Piece> element");
-  return 0;
+  return check_arrays(file, end, err, err_size);
 }
 
 int vsh_vtp_check(const char *path, char *err, size_t err_size) {

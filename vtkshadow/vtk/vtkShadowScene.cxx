@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -260,7 +261,17 @@ vtkSmartPointer<vtkPolyData> ReadTriangles(const vsh_object& object, std::string
   onError->SetClientData(&readerError);
   reader->AddObserver(vtkCommand::ErrorEvent, onError);
   reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
-  reader->Update();
+  // Last line of defence: VTK 9.1's readers size containers from header
+  // fields; whatever the checkers missed must not take the process down.
+  try
+  {
+    reader->Update();
+  }
+  catch (const std::exception& e)
+  {
+    error = "unreadable mesh " + got + ": the reader failed: " + e.what() + ")";
+    return nullptr;
+  }
   vtkPolyData* decoded = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!readerError.empty() || !decoded)
   {
