@@ -120,6 +120,16 @@ BAD_MESHES = {
                                    "unreadable mesh"),
 }
 
+
+def zlib_huge_blocks():
+    data = vtp_bytes("zlib", TETRA_POINTS, TETRA_CONN, TETRA_OFFSETS)
+    at = data.index(b"_", data.index(b"<AppendedData")) + 1
+    return data[:at] + struct.pack("<I", 0xFFFFFFFF) + data[at + 4:]
+
+
+BAD_MESHES["vtp-zlib-huge-block-count.vtp"] = (
+    zlib_huge_blocks(), "DataArray 1: compressed data header is inconsistent (4294967295 blocks")
+
 if __name__ == "__main__":
     out = os.path.join(HERE, "meshes", "bad")
     os.makedirs(out, exist_ok=True)
