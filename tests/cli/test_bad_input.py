@@ -102,8 +102,8 @@ expected = bad_scenes + 3 + len(BAD_MESHES) + 7
 if count != expected:
     failures.append("count")
     print(f"FAIL ran {count} cases, expected {expected}")
-if len(BAD_MESHES) < 46:
+if len(BAD_MESHES) < 47:
     failures.append("mesh-table")
-    print(f"FAIL only {len(BAD_MESHES)} malformed mesh cases, expected at least 46")
+    print(f"FAIL only {len(BAD_MESHES)} malformed mesh cases, expected at least 47")
 print(f"cli.bad_input: {count} cases ({len(BAD_MESHES)} malformed meshes), {len(failures)} failed")
 sys.exit(1 if failures else 0)

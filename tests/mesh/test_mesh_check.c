@@ -84,6 +84,7 @@ static void test_ply(void) {
   BAD(vsh_ply_check_buffer, "ply\nformat ascii 1.0\nelement vertex 1\n", "no end_header");
   BAD(vsh_ply_check_buffer, "ply\nformat xml 1.0\nend_header\n", "unknown PLY format");
   BAD(vsh_ply_check_buffer, "plx\n", "not a PLY file");
+  BAD(vsh_ply_check_buffer, "ply\nformat ascii 1.0\n\nelement vertex 1\n", "line 3: blank line in the PLY header");
   BAD(vsh_ply_check_buffer, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
       "property float 5y\nproperty float z\nend_header\n0 0 0\n", "lacks one of the properties x, y, z");
   BAD(vsh_ply_check_buffer, "ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"

@@ -154,7 +154,7 @@ void FuzzSeed(const std::string& dir, const char* seedPath, int index, long iter
         message.c_str());
     }
     (rc == 1 ? loaded : refused) += 1;
-    if (it % 1000 == 999)
+    if (it % 1000 == 999 && it + 1 < iterations)
     {
       std::printf("%ld ", it + 1);
     }

@@ -176,7 +176,8 @@ int vsh__ply_header(const char *data, size_t size, ply_header *h, char *err, siz
       return vsh__mc_fail(err, n, "line %zu: PLY header too long or line too long", text.line);
     if (memchr(line.p, '\0', (size_t)(line.end - line.p)))
       return vsh__mc_fail(err, n, "line %zu: NUL byte in the PLY header", text.line);
-    if (!vsh__span_word(&line, &word)) continue;
+    if (!vsh__span_word(&line, &word)) /* vtkPLY fails on it, then crashes */
+      return vsh__mc_fail(err, n, "line %zu: blank line in the PLY header", text.line);
     if (vsh__span_is(&word, "end_header")) {
       if (h->format < 0) return vsh__mc_fail(err, n, "PLY header has no format line");
       h->body = (size_t)(text.p - data);

@@ -84,6 +84,8 @@ BAD_MESHES = {
                              "unknown type"),
     "ply-no-y.ply": ("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float z\n"
                      "end_header\n0 0\n", "lacks one of the properties x, y, z"),
+    "ply-blank-header-line.ply": (PLY_HEAD.format(fmt="ascii", nv=4, nf=1).replace("property float y\n", "\nproperty float y\n")
+                                  + PLY_V + "3 0 1 2\n", "line 5: blank line in the PLY header"),
     # STL
     "stl-binary-huge-count.stl": (stl_binary(2 ** 31), "header says 2147483648 triangles but the file holds only 4"),
     "stl-binary-short.stl": (b"\xff" * 60, "shorter than the 84-byte header"),
