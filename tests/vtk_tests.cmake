@@ -80,3 +80,16 @@ foreach(test IN LISTS vtkshadow_vtk_tests)
     set_tests_properties(${test} PROPERTIES FIXTURES_REQUIRED xvfb)
   endif()
 endforeach()
+
+# Mesh loading under mutation: checker + VTK reader + decoded-cells check, never
+# a crash (tests/mesh; the seeds are VSH_MESH_SEEDS from tests/mesh/CMakeLists.txt).
+add_executable(test_mesh_read_fuzz mesh/test_mesh_read_fuzz.cxx)
+target_link_libraries(test_mesh_read_fuzz PRIVATE vtkshadow::vtkshadow)
+target_include_directories(test_mesh_read_fuzz PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/mesh)
+file(MAKE_DIRECTORY "${VTKSHADOW_TEST_OUT}/mesh-read-fuzz")
+add_test(NAME mesh.read_fuzz
+  COMMAND test_mesh_read_fuzz ${VTKSHADOW_TEST_OUT}/mesh-read-fuzz ${VSH_MESH_SEEDS})
+# 1000 mutations per seed: about 90 s on a busy 2-core machine;
+# VSH_FUZZ_ITERATIONS=5000 by hand for a longer run.
+set_tests_properties(mesh.read_fuzz PROPERTIES LABELS "unit" TIMEOUT 900
+  ENVIRONMENT VSH_FUZZ_ITERATIONS=1000)

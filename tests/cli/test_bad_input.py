@@ -61,11 +61,29 @@ for path in sorted(glob.glob(os.path.join(bad_dir, "*.json"))):
 
 # Mesh problems found by VTK's readers: field objects[0].mesh and the path.
 data = os.path.join(args.source, "tests/cli/data")
-for name, needle in [("empty-mesh.json", "empty mesh"), ("corrupt-mesh.json", "unreadable mesh"),
+for name, needle in [("empty-mesh.json", "empty mesh"), ("corrupt-mesh.json", "invalid mesh"),
                      ("no-faces-mesh.json", "empty mesh")]:
     path = os.path.join(data, name)
     run_case([path, "--technique", "none"], [f"{path}: objects[0].mesh: ", needle, '(got "meshes/'],
              "mesh-" + name)
+
+# Malformed mesh files, one per input class per format (tests/cli/data/
+# make_bad_meshes.py): the scene that references one names it in objects[0].mesh.
+sys.path.insert(0, data)
+from make_bad_meshes import BAD_MESHES  # noqa: E402
+
+scene_dir = os.path.join(args.out, "bad-mesh-scenes")
+os.makedirs(scene_dir, exist_ok=True)
+for name, (_, needle) in sorted(BAD_MESHES.items()):
+    mesh = os.path.join(data, "meshes", "bad", name)
+    scene = os.path.join(scene_dir, name + ".json")
+    with open(scene, "w") as f:
+        f.write('{"size": [64, 48], "camera": {"position": [2, -3, 2], "focal_point": [0, 0, 0], '
+                '"view_up": [0, 0, 1], "view_angle": 45}, "lights": [{"type": "directional", '
+                '"direction": [0, 0, -1]}], "objects": [{"mesh": "%s"}]}\n' % mesh)
+    run_case([scene, "--technique", "none"],
+             [f"vtkshadow-render: {scene}: objects[0].mesh: ", needle, f'(got "{mesh}"'],
+             "bad-mesh-" + name)
 
 # Bad command lines.
 run_case([good, "--technique", "bogus"], ['unknown technique "bogus"'], "cli-technique")
@@ -78,5 +96,14 @@ run_case([good, "--technique", "vtk", "--bogus"], ['unknown option "--bogus"'], 
 run_case([os.path.join(args.out, "missing.json"), "--technique", "vtk"],
          ["missing.json"], "cli-missing-scene")
 
-print(f"cli.bad_input: {count} cases, {len(failures)} failed")
+# The case count is fixed: a lost glob or table entry must not pass quietly.
+bad_scenes = len(glob.glob(os.path.join(bad_dir, "*.json")))
+expected = bad_scenes + 3 + len(BAD_MESHES) + 7
+if count != expected:
+    failures.append("count")
+    print(f"FAIL ran {count} cases, expected {expected}")
+if len(BAD_MESHES) < 47:
+    failures.append("mesh-table")
+    print(f"FAIL only {len(BAD_MESHES)} malformed mesh cases, expected at least 47")
+print(f"cli.bad_input: {count} cases ({len(BAD_MESHES)} malformed meshes), {len(failures)} failed")
 sys.exit(1 if failures else 0)

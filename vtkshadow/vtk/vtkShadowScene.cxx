@@ -9,6 +9,7 @@
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkFloatArray.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -30,12 +31,13 @@
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
 
-#include "vsh_ply_check.h"
+#include "vsh_mesh_check.h"
 #include "vsh_scene.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -126,56 +128,167 @@ void CollectError(vtkObject*, unsigned long, void* clientData, void* callData)
   }
 }
 
-// Read a mesh file with VTK's reader for its extension, triangulate it,
-// apply the object's transform in double precision and compute normals.
-// Returns nullptr and sets `error` when the file cannot be read or is empty.
-vtkSmartPointer<vtkPolyData> ReadMesh(const vsh_object& object, std::string& error)
+// The checker for a mesh file's format (vsh_mesh_check.h), run on its bytes
+// before VTK's reader: VTK 9.1's readers crash on bad indices, truncated
+// bodies and absurd counts. nullptr for an unsupported extension.
+using MeshCheck = int (*)(const char*, char*, size_t);
+MeshCheck CheckerFor(const std::string& ext)
+{
+  if (ext == ".ply")
+  {
+    return vsh_ply_check;
+  }
+  if (ext == ".obj")
+  {
+    return vsh_obj_check;
+  }
+  if (ext == ".stl")
+  {
+    return vsh_stl_check;
+  }
+  if (ext == ".vtp")
+  {
+    return vsh_vtp_check;
+  }
+  return nullptr;
+}
+
+vtkSmartPointer<vtkAlgorithm> ReaderFor(const std::string& ext, const std::string& path)
+{
+  if (ext == ".ply")
+  {
+    auto reader = vtkSmartPointer<vtkPLYReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
+  if (ext == ".obj")
+  {
+    auto reader = vtkSmartPointer<vtkOBJReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
+  if (ext == ".stl")
+  {
+    auto reader = vtkSmartPointer<vtkSTLReader>::New();
+    reader->SetFileName(path.c_str());
+    return reader;
+  }
+  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  reader->SetFileName(path.c_str());
+  return reader;
+}
+
+// What the reader decoded, checked before any filter walks it: every cell
+// array consistent and inside the points, points finite, under the limits.
+// The byte checkers already guarantee this for OBJ, PLY and STL; for VTP
+// (inline, appended, base64, compressed) this is the check.
+bool CheckDecoded(vtkPolyData* poly, std::string& reason)
+{
+  char why[512] = "";
+  const size_t pointCount = static_cast<size_t>(poly->GetNumberOfPoints());
+  vtkDataArray* coords = poly->GetPoints() ? poly->GetPoints()->GetData() : nullptr;
+  if (auto* d = vtkDoubleArray::SafeDownCast(coords))
+  {
+    if (vsh_points_check_double(d->GetPointer(0), pointCount, why, sizeof why) != 0)
+    {
+      reason = why;
+      return false;
+    }
+  }
+  else if (auto* f = vtkFloatArray::SafeDownCast(coords))
+  {
+    if (vsh_points_check_float(f->GetPointer(0), pointCount, why, sizeof why) != 0)
+    {
+      reason = why;
+      return false;
+    }
+  }
+  const struct
+  {
+    vtkCellArray* cells;
+    const char* what;
+  } arrays[] = { { poly->GetVerts(), "vertex cell" }, { poly->GetLines(), "line" },
+    { poly->GetPolys(), "polygon" }, { poly->GetStrips(), "triangle strip" } };
+  uint64_t triangles = 0;
+  for (const auto& a : arrays)
+  {
+    if (!a.cells)
+    {
+      continue;
+    }
+    vsh_cell_arrays c = {};
+    c.is_64bit = a.cells->IsStorage64Bit() ? 1 : 0;
+    c.offsets = c.is_64bit ? static_cast<const void*>(a.cells->GetOffsetsArray64()->GetPointer(0))
+                           : static_cast<const void*>(a.cells->GetOffsetsArray32()->GetPointer(0));
+    c.connectivity = c.is_64bit
+      ? static_cast<const void*>(a.cells->GetConnectivityArray64()->GetPointer(0))
+      : static_cast<const void*>(a.cells->GetConnectivityArray32()->GetPointer(0));
+    c.offset_count = static_cast<size_t>(a.cells->GetOffsetsArray()->GetNumberOfValues());
+    c.connectivity_count =
+      static_cast<size_t>(a.cells->GetConnectivityArray()->GetNumberOfValues());
+    const bool counts = a.cells == poly->GetPolys() || a.cells == poly->GetStrips();
+    if (vsh_cells_check(&c, a.what, pointCount, counts ? &triangles : nullptr, why, sizeof why))
+    {
+      reason = why;
+      return false;
+    }
+  }
+  return true;
+}
+
+// Check the file's bytes, read it with VTK's reader for its extension, check
+// what was decoded and triangulate. Returns nullptr and sets `error` when the
+// file is invalid, unreadable or has no triangles.
+vtkSmartPointer<vtkPolyData> ReadTriangles(const vsh_object& object, std::string& error)
 {
   const std::string path = object.mesh_resolved_path;
   const std::string ext = LowerExtension(path);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (ext == ".ply")
+  const std::string got = "(got \"" + std::string(object.mesh_path) + "\"";
+  const MeshCheck check = CheckerFor(ext);
+  if (!check)
   {
-    // VTK 9.1's PLY reader crashes on truncated files: check them first.
-    char reason[256];
-    if (vsh_ply_check(path.c_str(), reason, sizeof(reason)) != 0)
-    {
-      error = "unreadable mesh (got \"" + std::string(object.mesh_path) + "\": " + reason + ")";
-      return nullptr;
-    }
-    reader = vtkSmartPointer<vtkPLYReader>::New();
-    vtkPLYReader::SafeDownCast(reader)->SetFileName(path.c_str());
-  }
-  else if (ext == ".obj")
-  {
-    reader = vtkSmartPointer<vtkOBJReader>::New();
-    vtkOBJReader::SafeDownCast(reader)->SetFileName(path.c_str());
-  }
-  else if (ext == ".stl")
-  {
-    reader = vtkSmartPointer<vtkSTLReader>::New();
-    vtkSTLReader::SafeDownCast(reader)->SetFileName(path.c_str());
-  }
-  else if (ext == ".vtp")
-  {
-    reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    vtkXMLPolyDataReader::SafeDownCast(reader)->SetFileName(path.c_str());
-  }
-  else
-  {
-    error = "unsupported mesh format (got \"" + std::string(object.mesh_path) +
-      "\"; expected .ply, .obj, .stl or .vtp)";
+    error = "unsupported mesh format " + got + "; expected .ply, .obj, .stl or .vtp)";
     return nullptr;
   }
+  char reason[512] = "";
+  if (check(path.c_str(), reason, sizeof(reason)) != 0)
+  {
+    error = "invalid mesh " + got + ": " + reason + ")";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkAlgorithm> reader = ReaderFor(ext, path);
   std::string readerError;
   vtkNew<vtkCallbackCommand> onError;
   onError->SetCallback(CollectError);
   onError->SetClientData(&readerError);
   reader->AddObserver(vtkCommand::ErrorEvent, onError);
   reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
+  // Last line of defence: VTK 9.1's readers size containers from header
+  // fields; whatever the checkers missed must not take the process down.
+  try
+  {
+    reader->Update();
+  }
+  catch (const std::exception& e)
+  {
+    error = "unreadable mesh " + got + ": the reader failed: " + e.what() + ")";
+    return nullptr;
+  }
+  vtkPolyData* decoded = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!readerError.empty() || !decoded)
+  {
+    error = "unreadable mesh " + got + ": " + (readerError.empty() ? "no output" : readerError) + ")";
+    return nullptr;
+  }
+  std::string why;
+  if (!CheckDecoded(decoded, why))
+  {
+    error = "invalid mesh " + got + ": " + why + ")";
+    return nullptr;
+  }
 
   vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputConnection(reader->GetOutputPort());
+  triangulate->SetInputData(decoded);
   triangulate->PassVertsOff();
   triangulate->PassLinesOff();
   triangulate->AddObserver(vtkCommand::ErrorEvent, onError);
@@ -183,12 +296,26 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const vsh_object& object, std::string& err
   vtkPolyData* read = triangulate->GetOutput();
   if (!readerError.empty())
   {
-    error = "unreadable mesh (got \"" + std::string(object.mesh_path) + "\": " + readerError + ")";
+    error = "unreadable mesh " + got + ": " + readerError + ")";
     return nullptr;
   }
   if (!read || read->GetNumberOfPoints() == 0 || read->GetNumberOfPolys() == 0)
   {
-    error = "empty mesh, no triangles (got \"" + std::string(object.mesh_path) + "\")";
+    error = "empty mesh, no triangles " + got + ")";
+    return nullptr;
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(read);
+  return out;
+}
+
+// Read a mesh file (ReadTriangles), apply the object's transform in double
+// precision and compute normals.
+vtkSmartPointer<vtkPolyData> ReadMesh(const vsh_object& object, std::string& error)
+{
+  vtkSmartPointer<vtkPolyData> read = ReadTriangles(object, error);
+  if (!read)
+  {
     return nullptr;
   }
 
