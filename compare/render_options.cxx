@@ -69,118 +69,214 @@ const char* RenderUsage()
          "Exit status: 0 success, 1 rendering failure, 2 bad input.\n";
 }
 
+namespace
+{
+// What the checks after parsing need to know about the command line.
+struct ParseState
+{
+  bool TechniqueGiven = false;
+  bool MaxErrorGiven = false;
+};
+
+// --size WxH.
+int ParseSize(const char* v, RenderOptions& options, std::string& error)
+{
+  const char* x = std::strchr(v, 'x');
+  const std::string w = x ? std::string(v, x) : "";
+  if (!x || !ParseInt(w.c_str(), 1, 16384, options.Width) ||
+    !ParseInt(x + 1, 1, 16384, options.Height))
+  {
+    error = std::string("--size: expected WxH with 1..16384 each (got \"") + v + "\")";
+    return 2;
+  }
+  return 0;
+}
+
+// --set KEY=NUMBER (the key is checked against the technique later).
+int ParseSetting(const char* v, RenderOptions& options, std::string& error)
+{
+  const char* eq = std::strchr(v, '=');
+  char* end = nullptr;
+  const double number = eq ? std::strtod(eq + 1, &end) : 0.0;
+  if (!eq || eq == v || !end || end == eq + 1 || *end != '\0' || !std::isfinite(number))
+  {
+    error = std::string("--set: expected KEY=NUMBER (got \"") + v + "\")";
+    return 2;
+  }
+  options.Settings.emplace_back(std::string(v, eq), number);
+  return 0;
+}
+
+// --max-error E (a wrong_pct) or Npx (a texel size): auto's error target.
+int ParseMaxError(const char* v, RenderOptions& options, std::string& error)
+{
+  char* end = nullptr;
+  const double number = std::strtod(v, &end);
+  const bool pixels = end && std::strcmp(end, "px") == 0;
+  if (end == v || !end || (*end != '\0' && !pixels) || !std::isfinite(number) ||
+    number < 0.0 || (!pixels && number > 100.0) || (pixels && number <= 0.0))
+  {
+    error = std::string("--max-error: expected a wrong_pct in [0, 100] or a texel size "
+                        "such as 2px (got \"") +
+      v + "\")";
+    return 2;
+  }
+  options.Settings.emplace_back(pixels ? "max_texel_px" : "max_error", number);
+  return 0;
+}
+
+// --light, --frames, --map-resolution: integers in their ranges.
+int ParseIntegerOption(
+  const std::string& arg, const char* v, RenderOptions& options, std::string& error)
+{
+  int* target = arg == "--light" ? &options.Light
+    : arg == "--frames"          ? &options.Frames
+                                 : &options.MapResolution;
+  const long low = arg == "--light" ? 0 : arg == "--frames" ? 1 : 16;
+  const long high = arg == "--light" ? 1000000 : arg == "--frames" ? 100000 : 16384;
+  if (!ParseInt(v, low, high, *target))
+  {
+    error = arg + ": expected an integer in [" + std::to_string(low) + ", " +
+      std::to_string(high) + "] (got \"" + v + "\")";
+    return 2;
+  }
+  return 0;
+}
+
+// An option that takes a value `v`: 0, 2 on bad input, 1 when `arg` is not
+// such an option.
+int ParseValueOption(const std::string& arg, const char* v, RenderOptions& options,
+  ParseState& state, std::string& error)
+{
+  if (arg == "--technique")
+  {
+    options.Technique = v;
+    state.TechniqueGiven = true;
+    return 0;
+  }
+  if (arg == "--image" || arg == "--visibility" || arg == "--mask" || arg == "--stats")
+  {
+    if (!*v)
+    {
+      error = arg + ": empty path";
+      return 2;
+    }
+    std::string& target = arg == "--image" ? options.Image
+      : arg == "--visibility"             ? options.Visibility
+      : arg == "--mask"                   ? options.Mask
+                                          : options.Stats;
+    target = v;
+    return 0;
+  }
+  if (arg == "--light" || arg == "--frames" || arg == "--map-resolution")
+  {
+    return ParseIntegerOption(arg, v, options, error);
+  }
+  if (arg == "--size")
+  {
+    return ParseSize(v, options, error);
+  }
+  if (arg == "--set")
+  {
+    return ParseSetting(v, options, error);
+  }
+  if (arg == "--max-error")
+  {
+    state.MaxErrorGiven = true;
+    return ParseMaxError(v, options, error);
+  }
+  return 1;
+}
+
+bool TakesValue(const std::string& arg)
+{
+  static const char* const withValue[] = { "--technique", "--image", "--visibility", "--mask",
+    "--stats", "--light", "--frames", "--map-resolution", "--size", "--set", "--max-error" };
+  for (const char* name : withValue)
+  {
+    if (arg == name)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The whole command line is consistent: scene, technique and its settings,
+// image.
+int CheckRenderOptions(const RenderOptions& options, const ParseState& state, std::string& error)
+{
+  if (options.Scene.empty())
+  {
+    error = "missing SCENE";
+    return 2;
+  }
+  if (!state.TechniqueGiven)
+  {
+    error = "missing --technique (known: " + std::string(vtkShadowTechnique::GetKnownTechniques()) +
+      ")";
+    return 2;
+  }
+  if (!vtkShadowTechnique::IsKnownTechnique(options.Technique.c_str()))
+  {
+    error = "--technique: unknown technique \"" + options.Technique +
+      "\" (known: " + vtkShadowTechnique::GetKnownTechniques() + ")";
+    return 2;
+  }
+  if (state.MaxErrorGiven && options.Technique != "auto")
+  {
+    error = "--max-error: only --technique auto chooses by an error target (got --technique " +
+      options.Technique + "; for csm use --set max_texel_px=N)";
+    return 2;
+  }
+  vtkNew<vtkShadowTechnique> probe;
+  probe->SetName(options.Technique.c_str());
+  for (const auto& setting : options.Settings)
+  {
+    if (!probe->SetOption(setting.first.c_str(), setting.second))
+    {
+      error = "--set: technique " + options.Technique + " has no setting \"" + setting.first +
+        "\" or the value is out of range (got \"" + setting.first + "=" +
+        std::to_string(setting.second) + "\"; see docs/techniques.md)";
+      return 2;
+    }
+  }
+  if (options.Image.empty())
+  {
+    error = "missing --image OUT.png";
+    return 2;
+  }
+  return 0;
+}
+}
+
 int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::string& error)
 {
-  bool techniqueGiven = false, maxErrorGiven = false;
+  ParseState state;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    auto value = [&](const char* name) -> const char* {
-      if (i + 1 >= argc)
-      {
-        error = std::string(name) + ": missing value";
-        return nullptr;
-      }
-      return argv[++i];
-    };
     if (arg == "-h" || arg == "--help")
     {
       std::cout << RenderUsage();
       return -1;
     }
-    else if (arg == "--list-techniques")
+    if (arg == "--list-techniques")
     {
       PrintTechniques(std::cout);
       return -1;
     }
-    else if (arg == "--technique")
+    if (TakesValue(arg))
     {
-      const char* v = value("--technique");
-      if (!v)
-        return 2;
-      options.Technique = v;
-      techniqueGiven = true;
-    }
-    else if (arg == "--image" || arg == "--visibility" || arg == "--mask" || arg == "--stats")
-    {
-      const char* v = value(arg.c_str());
-      if (!v)
-        return 2;
-      if (!*v)
+      if (i + 1 >= argc)
       {
-        error = arg + ": empty path";
+        error = arg + ": missing value";
         return 2;
       }
-      std::string& target = arg == "--image" ? options.Image
-        : arg == "--visibility"             ? options.Visibility
-        : arg == "--mask"                   ? options.Mask
-                                            : options.Stats;
-      target = v;
-    }
-    else if (arg == "--light" || arg == "--frames" || arg == "--map-resolution")
-    {
-      const char* v = value(arg.c_str());
-      if (!v)
-        return 2;
-      int* target = arg == "--light" ? &options.Light
-        : arg == "--frames"          ? &options.Frames
-                                     : &options.MapResolution;
-      const long low = arg == "--light" ? 0 : arg == "--frames" ? 1 : 16;
-      const long high = arg == "--light" ? 1000000 : arg == "--frames" ? 100000 : 16384;
-      if (!ParseInt(v, low, high, *target))
+      if (ParseValueOption(arg, argv[++i], options, state, error) != 0)
       {
-        error = arg + ": expected an integer in [" + std::to_string(low) + ", " +
-          std::to_string(high) + "] (got \"" + v + "\")";
         return 2;
       }
-    }
-    else if (arg == "--size")
-    {
-      const char* v = value("--size");
-      if (!v)
-        return 2;
-      const char* x = std::strchr(v, 'x');
-      const std::string w = x ? std::string(v, x) : "";
-      if (!x || !ParseInt(w.c_str(), 1, 16384, options.Width) ||
-        !ParseInt(x + 1, 1, 16384, options.Height))
-      {
-        error = std::string("--size: expected WxH with 1..16384 each (got \"") + v + "\")";
-        return 2;
-      }
-    }
-    else if (arg == "--set")
-    {
-      const char* v = value("--set");
-      if (!v)
-        return 2;
-      const char* eq = std::strchr(v, '=');
-      char* end = nullptr;
-      const double number = eq ? std::strtod(eq + 1, &end) : 0.0;
-      if (!eq || eq == v || !end || end == eq + 1 || *end != '\0' || !std::isfinite(number))
-      {
-        error = std::string("--set: expected KEY=NUMBER (got \"") + v + "\")";
-        return 2;
-      }
-      options.Settings.emplace_back(std::string(v, eq), number);
-    }
-    else if (arg == "--max-error")
-    {
-      const char* v = value("--max-error");
-      if (!v)
-        return 2;
-      char* end = nullptr;
-      const double number = std::strtod(v, &end);
-      const bool pixels = end && std::strcmp(end, "px") == 0;
-      if (end == v || !end || (*end != '\0' && !pixels) || !std::isfinite(number) ||
-        number < 0.0 || (!pixels && number > 100.0) || (pixels && number <= 0.0))
-      {
-        error = std::string("--max-error: expected a wrong_pct in [0, 100] or a texel size "
-                            "such as 2px (got \"") +
-          v + "\")";
-        return 2;
-      }
-      options.Settings.emplace_back(pixels ? "max_texel_px" : "max_error", number);
-      maxErrorGiven = true;
     }
     else if (arg == "--quiet")
     {
@@ -201,46 +297,5 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::stri
       return 2;
     }
   }
-  if (options.Scene.empty())
-  {
-    error = "missing SCENE";
-    return 2;
-  }
-  if (!techniqueGiven)
-  {
-    error = "missing --technique (known: " + std::string(vtkShadowTechnique::GetKnownTechniques()) +
-      ")";
-    return 2;
-  }
-  if (!vtkShadowTechnique::IsKnownTechnique(options.Technique.c_str()))
-  {
-    error = "--technique: unknown technique \"" + options.Technique +
-      "\" (known: " + vtkShadowTechnique::GetKnownTechniques() + ")";
-    return 2;
-  }
-  if (maxErrorGiven && options.Technique != "auto")
-  {
-    error = "--max-error: only --technique auto chooses by an error target (got --technique " +
-      options.Technique + "; for csm use --set max_texel_px=N)";
-    return 2;
-  }
-  {
-    vtkNew<vtkShadowTechnique> probe;
-    probe->SetName(options.Technique.c_str());
-    for (const auto& setting : options.Settings)
-    {
-      if (!probe->SetOption(setting.first.c_str(), setting.second))
-      {
-        error = "--set: unknown key or value out of range (got \"" + setting.first + "=" +
-          std::to_string(setting.second) + "\")";
-        return 2;
-      }
-    }
-  }
-  if (options.Image.empty())
-  {
-    error = "missing --image OUT.png";
-    return 2;
-  }
-  return 0;
+  return CheckRenderOptions(options, state, error);
 }

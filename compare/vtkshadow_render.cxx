@@ -44,32 +44,39 @@ struct WrittenFiles
     }
   }
 };
-}
 
-int main(int argc, char* argv[])
+// The run's inputs once parsed and loaded.
+struct Run
 {
-  RenderOptions options;
-  std::string error;
-  const int parsed = ParseRenderOptions(argc, argv, options, error);
-  if (parsed < 0)
-  {
-    return 0;
-  }
-  if (parsed != 0)
-  {
-    return Fail(2, error + "\n" + RenderUsage());
-  }
+  RenderOptions Options;
+  vtkNew<vtkShadowScene> Scene;
+  vtkNew<vtkShadowTechnique> Technique;
+  int Width = 0;
+  int Height = 0;
 
-  vtkNew<vtkShadowScene> scene;
-  if (!scene->Load(options.Scene.c_str()))
+  void Progress(const std::string& what) const
   {
-    return Fail(2, scene->GetErrorMessage());
+    if (!this->Options.Quiet)
+    {
+      std::cerr << "vtkshadow-render: " << what << "\n";
+    }
   }
-  if (options.Light >= scene->GetNumberOfLights())
+};
+
+// Scene, light index, display and technique: everything that can be bad
+// input is checked here, before anything is rendered or written.
+int Prepare(Run& run)
+{
+  const RenderOptions& options = run.Options;
+  if (!run.Scene->Load(options.Scene.c_str()))
+  {
+    return Fail(2, run.Scene->GetErrorMessage());
+  }
+  if (options.Light >= run.Scene->GetNumberOfLights())
   {
     return Fail(2,
       "--light: light " + std::to_string(options.Light) + " out of range (" + options.Scene +
-        " has " + std::to_string(scene->GetNumberOfLights()) + " lights)");
+        " has " + std::to_string(run.Scene->GetNumberOfLights()) + " lights)");
   }
   // Debian's VTK is built for X only and aborts without a display: open the
   // process's one connection now (every window below shares it, so Xvfb
@@ -78,52 +85,54 @@ int main(int argc, char* argv[])
   {
     return Fail(2, vtkShadowDisplay::GetErrorMessage());
   }
-
-  const int width = options.Width > 0 ? options.Width : scene->GetWidth();
-  const int height = options.Height > 0 ? options.Height : scene->GetHeight();
-  vtkNew<vtkShadowTechnique> technique;
-  technique->SetName(options.Technique.c_str());
-  technique->SetMapResolution(options.MapResolution);
+  run.Width = options.Width > 0 ? options.Width : run.Scene->GetWidth();
+  run.Height = options.Height > 0 ? options.Height : run.Scene->GetHeight();
+  run.Technique->SetName(options.Technique.c_str());
+  run.Technique->SetMapResolution(options.MapResolution);
   for (const auto& setting : options.Settings)
   {
-    technique->SetOption(setting.first.c_str(), setting.second); // checked while parsing
+    run.Technique->SetOption(setting.first.c_str(), setting.second); // checked while parsing
   }
-  auto progress = [&](const std::string& what) {
-    if (!options.Quiet)
-    {
-      std::cerr << "vtkshadow-render: " << what << "\n";
-    }
-  };
+  return 0;
+}
 
-  // Visibility and mask of light K, measured the same way for every technique.
-  vtkNew<vtkShadowVisibility> visibility;
-  if (!options.Visibility.empty() || !options.Mask.empty())
+// Visibility and mask of light K, measured the same way for every technique.
+int ComputeVisibility(const Run& run, vtkShadowVisibility* visibility)
+{
+  const RenderOptions& options = run.Options;
+  if (options.Visibility.empty() && options.Mask.empty())
   {
-    progress("visibility of light " + std::to_string(options.Light) + " with " +
-      options.Technique + " at " + std::to_string(width) + "x" + std::to_string(height));
-    visibility->SetScene(scene);
-    visibility->SetTechnique(technique);
-    visibility->SetLight(options.Light);
-    visibility->SetSize(width, height);
-    if (!visibility->Compute())
-    {
-      return Fail(1, std::string("visibility: ") + visibility->GetErrorMessage());
-    }
+    return 0;
   }
+  run.Progress("visibility of light " + std::to_string(options.Light) + " with " +
+    options.Technique + " at " + std::to_string(run.Width) + "x" + std::to_string(run.Height));
+  visibility->SetScene(run.Scene);
+  visibility->SetTechnique(run.Technique);
+  visibility->SetLight(options.Light);
+  visibility->SetSize(run.Width, run.Height);
+  if (!visibility->Compute())
+  {
+    return Fail(1, std::string("visibility: ") + visibility->GetErrorMessage());
+  }
+  return 0;
+}
 
-  // The colour image with every light, then (optionally) the timings.
-  progress("colour image with " + options.Technique);
+// The colour image with every light into `grab`, then (optionally) the
+// timings, shadowed and unshadowed, as the stats JSON text.
+std::string RenderColourAndStats(const Run& run, vtkWindowToImageFilter* grab)
+{
+  const RenderOptions& options = run.Options;
+  run.Progress("colour image with " + options.Technique);
   vtkNew<vtkRenderWindow> window;
-  vtkShadowDisplay::Attach(window); // opened above
+  vtkShadowDisplay::Attach(window); // opened in Prepare
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
-  window->SetSize(width, height);
+  window->SetSize(run.Width, run.Height);
   vtkNew<vtkOpenGLRenderer> renderer;
   window->AddRenderer(renderer);
-  scene->Populate(renderer);
-  technique->Install(renderer);
+  run.Scene->Populate(renderer);
+  run.Technique->Install(renderer);
   window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
@@ -132,37 +141,46 @@ int main(int argc, char* argv[])
   std::string statsText;
   if (!options.Stats.empty())
   {
-    progress("timing " + std::to_string(options.Frames) + " frames, shadowed and unshadowed");
-    const FrameTimes shadowed = TimeFrames(window, renderer, scene, options.Frames, 3);
+    run.Progress("timing " + std::to_string(options.Frames) + " frames, shadowed and unshadowed");
+    const FrameTimes shadowed = TimeFrames(window, renderer, run.Scene, options.Frames, 3);
     // Memory and details of the technique's pass, before it is replaced.
-    const long long bytes = technique->GetShadowMapMemory(renderer);
+    const long long bytes = run.Technique->GetShadowMapMemory(renderer);
     window->Render(); // the scene camera again, for the details
-    const std::string details = technique->GetStatsJSON(renderer);
+    const std::string details = run.Technique->GetStatsJSON(renderer);
     vtkNew<vtkShadowTechnique> none;
     none->Install(renderer);
-    const FrameTimes unshadowed = TimeFrames(window, renderer, scene, options.Frames, 3);
-    statsText = StatsJson(options.Scene, options.Technique, width, height, options.Frames,
-      shadowed, unshadowed, bytes, details);
+    const FrameTimes unshadowed = TimeFrames(window, renderer, run.Scene, options.Frames, 3);
+    statsText = StatsJson(options.Scene, options.Technique, run.Width, run.Height,
+      options.Frames, shadowed, unshadowed, bytes, details);
   }
-
-  // Free the passes' GL objects while the context still exists.
+  // Free the passes' GL objects while the context still exists; the image
+  // is kept by the filter.
+  grab->SetInput(nullptr);
   renderer->ReleaseGraphicsResources(window);
   renderer->SetPass(nullptr);
+  return statsText;
+}
 
+// Every output, each written atomically; all removed again if one fails.
+int WriteOutputs(const Run& run, vtkImageData* image, vtkShadowVisibility* visibility,
+  const std::string& statsText)
+{
+  const RenderOptions& options = run.Options;
+  std::string error;
   WrittenFiles written;
-  auto writePNG = [&](vtkImageData* image, const std::string& path) {
+  auto writePNG = [&](vtkImageData* data, const std::string& path) {
     if (path.empty())
     {
       return true;
     }
-    if (!vtkshadow::WritePNGAtomically(image, path, error))
+    if (!vtkshadow::WritePNGAtomically(data, path, error))
     {
       return false;
     }
     written.Paths.push_back(path);
     return true;
   };
-  if (!writePNG(grab->GetOutput(), options.Image) ||
+  if (!writePNG(image, options.Image) ||
     !writePNG(visibility->GetVisibility16(), options.Visibility) ||
     !writePNG(visibility->GetMask(), options.Mask))
   {
@@ -177,6 +195,34 @@ int main(int argc, char* argv[])
     written.Paths.push_back(options.Stats);
   }
   written.Keep = true;
-  progress("wrote " + options.Image);
+  run.Progress("wrote " + options.Image);
   return 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Run run;
+  std::string error;
+  const int parsed = ParseRenderOptions(argc, argv, run.Options, error);
+  if (parsed < 0)
+  {
+    return 0;
+  }
+  if (parsed != 0)
+  {
+    return Fail(2, error + "\n" + RenderUsage());
+  }
+  if (const int status = Prepare(run))
+  {
+    return status;
+  }
+  vtkNew<vtkShadowVisibility> visibility;
+  if (const int status = ComputeVisibility(run, visibility))
+  {
+    return status;
+  }
+  vtkNew<vtkWindowToImageFilter> grab;
+  const std::string statsText = RenderColourAndStats(run, grab);
+  return WriteOutputs(run, grab->GetOutput(), visibility, statsText);
 }

@@ -95,10 +95,16 @@ run_case([good, "--technique", "vtk", "--size", "10x"], ["--size", '(got "10x")'
 run_case([good, "--technique", "vtk", "--bogus"], ['unknown option "--bogus"'], "cli-option")
 run_case([os.path.join(args.out, "missing.json"), "--technique", "vtk"],
          ["missing.json"], "cli-missing-scene")
+# Settings are checked by the named technique's pass (the registry's).
+run_case([good, "--technique", "planar", "--set", "cascades=2"],
+         ["technique planar has no setting", '"cascades=2'], "cli-set-other-technique")
+run_case([good, "--technique", "csm", "--set", "cascades=9"],
+         ["technique csm", '"cascades=9'], "cli-set-out-of-range")
+run_case([good, "--technique", "csm", "--set", "bogus=1"], ['"bogus=1'], "cli-set-unknown")
 
 # The case count is fixed: a lost glob or table entry must not pass quietly.
 bad_scenes = len(glob.glob(os.path.join(bad_dir, "*.json")))
-expected = bad_scenes + 3 + len(BAD_MESHES) + 7
+expected = bad_scenes + 3 + len(BAD_MESHES) + 10
 if count != expected:
     failures.append("count")
     print(f"FAIL ran {count} cases, expected {expected}")
