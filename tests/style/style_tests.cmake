@@ -11,3 +11,13 @@ add_test(NAME style.function_length
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_function_length.py
           --ctags ${VTKSHADOW_CTAGS} --max 120 ${PROJECT_SOURCE_DIR} vtkshadow compare)
 set_tests_properties(style.function_length PROPERTIES LABELS "unit")
+
+# The VTK layer and the C++ tools in VTK's clang-format style.
+find_program(VTKSHADOW_CLANG_FORMAT NAMES clang-format clang-format-14)
+if(NOT VTKSHADOW_CLANG_FORMAT)
+  set(VTKSHADOW_CLANG_FORMAT clang-format) # the test fails with the install hint
+endif()
+add_test(NAME style.clang_format
+  COMMAND sh ${CMAKE_CURRENT_LIST_DIR}/check_clang_format.sh ${PROJECT_SOURCE_DIR}
+          ${VTKSHADOW_CLANG_FORMAT})
+set_tests_properties(style.clang_format PROPERTIES LABELS "unit")
