@@ -12,6 +12,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -169,20 +170,28 @@ bool ReadFile(const std::string& path, std::string& out)
 
 bool WriteFileAtomic(const std::string& path, const std::string& data, std::string& err)
 {
+  // Temporary name in the same folder, then rename: a reader (or a later
+  // run) sees the old file or the whole new one, never a part.
   std::string tmp = path + ".tmp" + std::to_string(getpid()) + "_" +
     std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()) % 100000);
   FILE* f = fopen(tmp.c_str(), "wb");
   if (!f)
   {
-    err = tmp + ": " + strerror(errno);
+    err = path + ": cannot create (" + strerror(errno) + ")";
     return false;
   }
-  bool ok = fwrite(data.data(), 1, data.size(), f) == data.size();
-  ok = (fflush(f) == 0) && ok;
-  ok = (fclose(f) == 0) && ok;
-  if (!ok || rename(tmp.c_str(), path.c_str()) != 0)
+  int e = 0;
+  if (fwrite(data.data(), 1, data.size(), f) != data.size())
+    e = errno;
+  if (fflush(f) != 0 && !e)
+    e = errno;
+  if (fclose(f) != 0 && !e)
+    e = errno;
+  if (!e && rename(tmp.c_str(), path.c_str()) != 0)
+    e = errno;
+  if (e)
   {
-    err = path + ": " + strerror(errno);
+    err = path + ": cannot write (" + strerror(e) + ")";
     unlink(tmp.c_str());
     return false;
   }
@@ -203,6 +212,30 @@ bool CopyFileAtomic(const std::string& from, const std::string& to, std::string&
 bool MakeDirs(const std::string& path)
 {
   return vtksys::SystemTools::MakeDirectory(path).IsSuccess();
+}
+
+bool MakeDirs(const std::string& path, std::string& why)
+{
+  vtksys::Status st = vtksys::SystemTools::MakeDirectory(path);
+  if (st.IsSuccess())
+    return true;
+  why = st.GetString();
+  return false;
+}
+
+bool CanWriteIn(const std::string& dir, std::string& why)
+{
+  // One byte is enough to find ENOSPC on a full file system (a new file
+  // needs a block) and EROFS / EACCES on a read-only one.
+  std::string err;
+  const std::string probe = dir + "/.vtkshadow-compare-probe";
+  if (!WriteFileAtomic(probe, "x", err))
+  {
+    why = err;
+    return false;
+  }
+  unlink(probe.c_str());
+  return true;
 }
 
 void RemoveTree(const std::string& path)
@@ -324,6 +357,18 @@ std::string JsonEscape(const std::string& s)
       o += static_cast<char>(c);
   }
   return o;
+}
+
+namespace
+{
+std::mutex g_progress_mutex;
+}
+
+void Progress(const std::string& msg)
+{
+  std::lock_guard<std::mutex> lock(g_progress_mutex);
+  fprintf(stderr, "vtkshadow-compare: %s\n", msg.c_str());
+  fflush(stderr);
 }
 
 std::string Fmt(double v, const char* fmt)

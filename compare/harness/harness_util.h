@@ -35,6 +35,11 @@ bool ReadFile(const std::string& path, std::string& out);
 bool WriteFileAtomic(const std::string& path, const std::string& data, std::string& err);
 bool CopyFileAtomic(const std::string& from, const std::string& to, std::string& err);
 bool MakeDirs(const std::string& path);
+// The same, with the reason of a failure (e.g. "Read-only file system").
+bool MakeDirs(const std::string& path, std::string& why);
+// Whether a file can be created in `dir` (writes and removes a probe file):
+// finds a read-only or full folder before any work is done.
+bool CanWriteIn(const std::string& dir, std::string& why);
 void RemoveTree(const std::string& path);
 bool FileExists(const std::string& path);
 std::string DirName(const std::string& path);
@@ -50,6 +55,10 @@ bool ReadPNGChannel(const std::string& path, std::vector<float>& v, int& w, int&
 std::string HtmlEscape(const std::string& s);
 std::string JsonEscape(const std::string& s);
 std::string Fmt(double v, const char* fmt = "%.17g");
+
+// One progress line on stderr ("vtkshadow-compare: msg"), whole lines even
+// when scenes run in parallel.
+void Progress(const std::string& msg);
 
 } // namespace vsh_harness
 

@@ -6,7 +6,9 @@
 # 320x240), POV-Ray and Cycles rendered fresh (--no-cache), every VTK
 # technique, --check against scenes/thresholds.json.
 # harness.<unit>: cache invalidation, missing / hanging / crashing renderer,
-# hostile scene, unknown renderer name.
+# hostile scene, unknown renderer name, HTML escaping, faults (renderer
+# killed mid-frame, full / read-only output folder, damaged cache entry).
+# harness.check: --check fails for every row it cannot bound.
 # harness.eevee: Blender EEVEE (both presets) as a peer on one small basic
 # scene, wrong_pct against POV-Ray within measured bounds (about 1 min).
 find_program(VTKSHADOW_POVRAY povray)
@@ -25,11 +27,14 @@ foreach(group basic scivis cad hard)
     FIXTURES_REQUIRED xvfb)
 endforeach()
 
-foreach(unit cache missing timeout crash hostile renderers)
+foreach(unit cache missing timeout crash hostile renderers html killed full readonly corruptcache)
   add_test(NAME harness.${unit}
     COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_harness.py ${unit} --bin ${VTKSHADOW_BIN}
             --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/${unit})
-  set_tests_properties(harness.${unit} PROPERTIES TIMEOUT 600 LABELS "harness")
+  # full / readonly need a private mount namespace (root or user
+  # namespaces); without one they report SKIP (77) rather than pass.
+  set_tests_properties(harness.${unit} PROPERTIES TIMEOUT 600 LABELS "harness"
+    SKIP_RETURN_CODE 77)
 endforeach()
 
 # EEVEE renders through OpenGL: it needs the shared X display.
@@ -37,3 +42,9 @@ add_test(NAME harness.eevee
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_harness.py eevee --bin ${VTKSHADOW_BIN}
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/eevee)
 set_tests_properties(harness.eevee PROPERTIES TIMEOUT 600 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# --check itself (issue 18): renders VTK techniques, so it needs the display.
+add_test(NAME harness.check
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_harness.py check --bin ${VTKSHADOW_BIN}
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/check)
+set_tests_properties(harness.check PROPERTIES TIMEOUT 600 LABELS "harness" FIXTURES_REQUIRED xvfb)

@@ -1,6 +1,6 @@
 """Unit-ish tests of vtkshadow-compare (docs/harness.md).
 
-    test_harness.py {cache,missing,timeout,crash,hostile,eevee,renderers} --bin BUILD/bin --source SRC --out DIR
+    test_harness.py {cache,missing,timeout,crash,hostile,eevee,renderers,html,check,killed,full,readonly,corruptcache} --bin BUILD/bin --source SRC --out DIR
 
 cache     a reference is reused only under the same key: editing the scene
           file, a mesh file's bytes, the renderer version or the settings
@@ -20,6 +20,22 @@ eevee     Blender EEVEE as a peer (needs an X display): both presets on
           (exit 1, clear message, no EEVEE image), not a skip.
 renderers an unknown --renderers name: exit 2, a message naming it and the
           known ones, nothing written.
+html      scene strings with tags, quotes and & (description, file names, an
+          error naming a mesh) are escaped in index.html.
+check     (needs an X display) --check fails for a row without a limit, a
+          technique's limits removed, a limit raised to 100 (update_thresholds
+          --verify refuses it too, and refuses to write a 60% row), a row with
+          no valid pixels (passes once thresholds.json says why), and a known
+          failure that passes; limits from update_thresholds pass; a known
+          failure still failing passes and is listed in index.html.
+killed    a POV-Ray killed (SIGKILL) while writing its frame: that scene fails
+          with a clear message, the other finishes, no partial file left.
+full      the bad scene's output folder is a full file system (tmpfs in a
+          private mount namespace): same expectations.
+readonly  the bad scene's output folder is read-only: same; a read-only --out
+          is refused before any render (exit 2).
+corruptcache  damaged cache entries (image overwritten, image deleted) are
+          reported, deleted and rendered again with identical images.
 """
 import argparse
 import glob
@@ -97,6 +113,11 @@ def vis_files(out, renderer):
         glob.glob(os.path.join(out, "*", renderer, "light*_mask.png"))
 
 
+def light_bytes(out, renderer):
+    """{file name: bytes} of every visibility / mask image of a renderer."""
+    return {os.path.relpath(f, out): open(f, "rb").read() for f in vis_files(out, renderer)}
+
+
 def test_cache(a, compare):
     folder = os.path.join(a.out, "scene")
     shutil.rmtree(a.out, ignore_errors=True)
@@ -108,16 +129,28 @@ def test_cache(a, compare):
         e = p.stderr
         return ("povray from cache" not in e, "cycles from cache" not in e)
 
+    def images():
+        return {r: light_bytes(out, r) for r in ("povray", "cycles")}
+
     p = run(a, compare, *base, expect=0)
     if rendered(p) != (True, True):
         fail("first run should render both")
+    fresh = images()
+    if [len(v) for v in fresh.values()] != [2, 2]:
+        fail("first run: expected visibility and mask of both renderers: %s" % fresh.keys())
     p = run(a, compare, *base, expect=0)
     if rendered(p) != (False, False):
         fail("second run should come from the cache")
-    # The cached visibility is the same file as a fresh one.
+    # The cached visibility is byte for byte the fresh one, and so is a new
+    # render (--no-cache): the cache neither changes nor hides anything.
+    if images() != fresh:
+        fail("images from the cache differ from the fresh render")
     p = run(a, compare, *base, "--no-cache", expect=0)
     if rendered(p) != (True, True):
         fail("--no-cache must render")
+    if images() != fresh:
+        fail("a fresh render (--no-cache) differs from the cached images")
+    print("cached and fresh visibility identical: %d files" % sum(len(v) for v in fresh.values()))
     # Mesh bytes change (same scene file): stale, must render again.
     write_scene(folder, ply=PLY.replace("0 0 1.5", "0 0 1.6"))
     p = run(a, compare, *base, expect=0)
@@ -337,6 +370,299 @@ def test_renderers(a, compare):
     print("PASS renderers")
 
 
+# ------------------------------------------------------------------ report
+PAYLOADS = ['<script>alert("x")</script>', '<img src=x onerror=alert(1)>', "'q'", '"dq"',
+            "a & b", "</h2><h1>", "&lt;already&gt;"]
+
+
+def test_html(a, compare):
+    """Every scene string that reaches index.html is escaped: tags, quotes, &."""
+    shutil.rmtree(a.out, ignore_errors=True)
+    folder = os.path.join(a.out, "html")
+    scene = json.loads(json.dumps(SCENE))
+    scene["description"] = " ".join(PAYLOADS)
+    name = '<script>s&"q\'.json'
+    good = write_scene(folder, scene=scene, name=name)
+    # A second scene fails on a mesh whose name is a tag: its error is shown too.
+    bad = json.loads(json.dumps(SCENE))
+    bad["objects"][0] = {"mesh": "<b onmouseover=x>m</b>.ply"}
+    bad_path = os.path.join(folder, "<i>bad<i>.json")
+    with open(bad_path, "w") as f:
+        json.dump(bad, f)
+    out = os.path.join(a.out, "result")
+    run(a, compare, good, bad_path, "--out", out, "--renderers", "povray", "--scale", "0.25",
+        expect=1)
+    html = open(os.path.join(out, "index.html"), encoding="utf-8").read()
+    low = html.lower()
+    for raw in ("<script", "<img src=x", "<b onmouseover", "<i>bad", "</h2><h1>", "onerror=alert"):
+        if raw in low and not (raw == "onerror=alert" and "onerror=alert(1)&gt;" in low):
+            fail("unescaped %r in index.html" % raw)
+    for escaped in ("&lt;script&gt;alert(&quot;x&quot;)&lt;/script&gt;", "&lt;img src=x onerror=alert(1)&gt;",
+                    "&#39;q&#39;", "&quot;dq&quot;", "a &amp; b", "&lt;/h2&gt;&lt;h1&gt;",
+                    "&amp;lt;already&amp;gt;", "&lt;script&gt;s&amp;&quot;q&#39;",
+                    "&lt;b onmouseover=x&gt;m&lt;/b&gt;.ply", "&lt;i&gt;bad&lt;i&gt;"):
+        if escaped not in html:
+            fail("expected the escaped text %r in index.html" % escaped)
+    json.load(open(os.path.join(out, "results.json")))  # still valid JSON
+    print("PASS html")
+
+
+# ------------------------------------------------------------------- check
+def update_thresholds(a, *args, expect):
+    cmd = [sys.executable, os.path.join(a.source, "scenes", "update_thresholds.py")] + list(args)
+    print("$ " + " ".join(cmd), flush=True)
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    sys.stdout.write(p.stderr[-3000:])
+    if p.returncode != expect:
+        fail("update_thresholds: exit status %d, expected %d" % (p.returncode, expect))
+    return p
+
+
+def write_json(path, data):
+    with open(path, "w") as f:
+        json.dump(data, f, indent=1)
+
+
+def expect_check(a, compare, scene, out, status, words, techniques="planar,none"):
+    p = run(a, compare, scene, "--out", out, "--renderers", "vtk,povray", "--techniques", techniques,
+            "--scale", "0.5", "--check", expect=status)
+    for w in words:
+        if w not in p.stderr:
+            fail("expected %r in the --check output" % w)
+    return p
+
+
+def test_check(a, compare):
+    """--check fails for a row without a limit, a limit of 50% or more, a row
+    with no valid pixels and a known failure that passes; update_thresholds
+    writes limits that pass and refuses the ones that bound nothing."""
+    shutil.rmtree(a.out, ignore_errors=True)
+    folder = os.path.join(a.out, "lib")
+    scene = write_scene(folder)
+    th = os.path.join(folder, "thresholds.json")
+    kf = os.path.join(folder, "known-failures.json")
+    write_json(th, {"default": {"cycles": {"wrong_pct": 0.1}}, "scenes": {}})
+    out = os.path.join(a.out, "result")
+    results = os.path.join(out, "results.json")
+    # 1. No limit at all: every row fails, naming itself and the command.
+    expect_check(a, compare, scene, out, 3, ["scene scene, light 0, vtk/planar: no limit",
+                                             "scene scene, light 0, vtk/none: no limit",
+                                             "update_thresholds.py"])
+    # 2. Limits written by update_thresholds pass.
+    update_thresholds(a, results, "--write", th, expect=0)
+    limits = json.load(open(th))["scenes"]["scene"]
+    if set(limits) != {"vtk/planar", "vtk/none"}:
+        fail("update_thresholds wrote limits for %s" % sorted(limits))
+    expect_check(a, compare, scene, out, 0, ["0 failure(s)"])
+    # 3. One technique's limits removed: fails again, naming it.
+    saved = json.load(open(th))
+    edited = json.loads(json.dumps(saved))
+    del edited["scenes"]["scene"]["vtk/planar"]
+    write_json(th, edited)
+    expect_check(a, compare, scene, out, 3, ["light 0, vtk/planar: no limit"])
+    # 4. A limit raised to 100: --check and update_thresholds --verify refuse it.
+    edited = json.loads(json.dumps(saved))
+    edited["scenes"]["scene"]["vtk/planar"]["wrong_pct"] = [100.0]
+    write_json(th, edited)
+    expect_check(a, compare, scene, out, 3, ["vtk/planar: the limit wrong_pct <= 100", "bounds nothing"])
+    p = update_thresholds(a, "--verify", th, results, expect=1)
+    if "limit 100 is 50% or more" not in p.stderr:
+        fail("update_thresholds --verify did not name the 100% limit")
+    # A limit far above the measured value (but under 50) is refused too.
+    edited["scenes"]["scene"]["vtk/planar"]["wrong_pct"] = [40.0]
+    write_json(th, edited)
+    p = update_thresholds(a, "--verify", th, results, expect=1)
+    if "more than the margin above the measured" not in p.stderr:
+        fail("update_thresholds --verify accepted a limit of 40 for a row measuring ~0")
+    # And generation refuses to write a limit of 50% or more (row measured 60%):
+    bad = json.load(open(results))
+    bad["scenes"][0]["results"][0]["wrong_pct"] = 60.0
+    bad_results = os.path.join(a.out, "bad-results.json")
+    write_json(bad_results, bad)
+    write_json(th, saved)
+    before = open(th).read()
+    p = update_thresholds(a, bad_results, "--write", th, expect=2)
+    if "a limit would be" not in p.stderr or open(th).read() != before:
+        fail("update_thresholds should refuse a 60% row and leave the file unchanged")
+    # 5. Known failures: one still failing passes the check and is in the
+    # report; one whose row now passes fails the check.
+    none_wrong = [r["wrong_pct"] for r in json.load(open(results))["scenes"][0]["results"]
+                  if r["test"] == "vtk/none"][0]
+    if not none_wrong > 0.2:
+        fail("setup: vtk/none should miss the shadow (wrong_pct %.4f)" % none_wrong)
+    write_json(kf, {"failures": [
+        {"scene": "scene", "test": "vtk/none", "light": 0, "reason": "no shadows <by design>",
+         "fails_while": {"wrong_pct": 0.1}}]})
+    expect_check(a, compare, scene, out, 0, ["1 known failure(s) still failing"])
+    html = open(os.path.join(out, "index.html"), encoding="utf-8").read()
+    if "Known failures" not in html or "no shadows &lt;by design&gt;" not in html:
+        fail("index.html does not list the known failure with its reason")
+    row = [r for r in json.load(open(results))["scenes"][0]["results"] if r["test"] == "vtk/none"][0]
+    if not row["check"].startswith("known failure"):
+        fail("results.json: the known failure's row says %r" % row["check"])
+    write_json(kf, {"failures": [
+        {"scene": "scene", "test": "vtk/planar", "light": 0, "reason": "pretend it was broken",
+         "fails_while": {"wrong_pct": 5.0}}]})
+    expect_check(a, compare, scene, out, 3, ["vtk/planar: known failure now passes", "remove it from"])
+    os.remove(kf)
+    # 6. No valid pixels: a spot pointing away from everything.
+    empty = json.loads(json.dumps(SCENE))
+    empty["lights"] = [{"type": "spot", "position": [0, 0, 3], "focal_point": [0, 0, 10],
+                        "cone_angle": 10}]
+    empty_scene = write_scene(folder, scene=empty, name="dark.json")
+    out2 = os.path.join(a.out, "result-dark")
+    expect_check(a, compare, empty_scene, out2, 3, ["scene dark, light 0, vtk/planar: no valid pixels"],
+                 techniques="planar")
+    th_data = json.load(open(th))
+    th_data["scenes"]["dark"] = {"no_valid_pixels": {"0": "the spot points away from the scene"}}
+    write_json(th, th_data)
+    expect_check(a, compare, empty_scene, out2, 0, ["0 failure(s)"], techniques="planar")
+    print("PASS check")
+
+
+# ------------------------------------------------------------------ faults
+def two_scenes(a):
+    """bad.json and good.json (same content) in one folder; their output
+    folders are OUT/bad and OUT/good."""
+    folder = os.path.join(a.out, "scenes")
+    other = json.loads(json.dumps(SCENE))
+    other["description"] = "harness unit test: the good twin"  # another cache key
+    return write_scene(folder, name="bad.json"), write_scene(folder, scene=other, name="good.json")
+
+
+def leftovers(out):
+    """Temporary or work files anywhere under out: none may survive a run."""
+    found = []
+    for root, dirs, files in os.walk(out):
+        found += [os.path.join(root, d) for d in dirs if d.startswith(".work")]
+        found += [os.path.join(root, f) for f in files if ".tmp" in f or f.endswith((".pov", ".bin"))]
+    return found
+
+
+def check_good_scene(out, bad_words):
+    res = {s["scene"]: s for s in json.load(open(os.path.join(out, "results.json")))["scenes"]}
+    if not res["bad"]["errors"] or not all(w in " ".join(res["bad"]["errors"]) for w in bad_words):
+        fail("the bad scene's errors should mention %s: %s" % (bad_words, res["bad"]["errors"]))
+    if res["good"]["errors"] or len(res["good"]["results"]) != 1:
+        fail("the good scene should finish with its cycles row: %s" % res["good"])
+    if len(glob.glob(os.path.join(out, "good", "povray", "light0_*.png"))) != 2:
+        fail("the good scene should have its POV-Ray images")
+
+
+def test_killed(a, compare):
+    """A POV-Ray killed (SIGKILL) in the middle of writing its frame."""
+    shutil.rmtree(a.out, ignore_errors=True)
+    bad, good = two_scenes(a)
+    fake = os.path.join(a.out, "povray-killed")
+    fake_povray(fake, 'case "$(/bin/pwd)" in */bad/povray/*)\n'
+                '  for o in "$@"; do case "$o" in +O*) printf "\\211PNG\\r\\n\\032\\n partial" > "${o#+O}";; esac; done\n'
+                '  kill -KILL $$;;\nesac\nexec "%s" "$@"' % shutil.which("povray"))
+    out = os.path.join(a.out, "result")
+    p = run(a, compare, bad, good, "--out", out, "--renderers", "povray,cycles", "--scale", "0.25",
+            "--povray-binary", fake, "--no-cache", expect=1)
+    if "ERROR bad: povray" not in p.stderr or "signal 9" not in p.stderr:
+        fail("no clear message for the killed POV-Ray")
+    check_good_scene(out, ["povray", "signal 9"])
+    if glob.glob(os.path.join(out, "bad", "povray", "*.png")) or leftovers(out):
+        fail("partial files left: %s %s" % (glob.glob(os.path.join(out, "bad", "povray", "*.png")), leftovers(out)))
+    if len(glob.glob(os.path.join(out, "cache", "povray", "*", "complete"))) != 1:
+        fail("only the good scene's POV-Ray render may be cached")
+    print("PASS killed")
+
+
+def in_mount_namespace(a, setup, cmd):
+    """Runs `cmd` after the shell `setup` in a private mount namespace (root:
+    unshare -m; otherwise a user namespace, unshare -rm), so the test's
+    mounts vanish with it. Returns the CompletedProcess, or None when no
+    mount namespace can be had here."""
+    for prefix in (["unshare", "-m"], ["unshare", "-rm"]):
+        probe = subprocess.run(prefix + ["sh", "-c", "mount -t tmpfs tmpfs /mnt 2>/dev/null || mount -t tmpfs tmpfs /tmp"],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        if probe.returncode == 0:
+            break
+    else:
+        return None
+    script = setup + '\n"$@"\nrc=$?\nfind "$VSH_PROBE" -type f | sort > "$VSH_LISTING"\nexit $rc'
+    full = prefix + ["sh", "-c", script, "sh"] + cmd
+    print("$ " + " ".join(full), flush=True)
+    p = subprocess.run(full, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    sys.stdout.write(p.stderr[-4000:])
+    return p
+
+
+def test_fs_fault(a, compare, kind):
+    """kind "full": OUT/bad is a tiny tmpfs filled up; "readonly": OUT/bad is a
+    read-only tmpfs, then OUT itself read-only."""
+    shutil.rmtree(a.out, ignore_errors=True)
+    bad, good = two_scenes(a)
+    out = os.path.join(a.out, "result")
+    badout = os.path.join(out, "bad")
+    os.makedirs(badout)
+    listing = os.path.join(a.out, "listing.txt")
+    os.environ["VSH_PROBE"], os.environ["VSH_LISTING"] = badout, listing
+    if kind == "full":
+        setup = ('mount -t tmpfs -o size=64k tmpfs "$VSH_PROBE" || exit 90\n'
+                 'dd if=/dev/zero of="$VSH_PROBE/fill" bs=4k 2>/dev/null\n')
+        words = ["No space left on device"]
+    else:
+        setup = 'mount -t tmpfs -o ro tmpfs "$VSH_PROBE" || exit 90\n'
+        words = ["Read-only file system"]
+    cmd = [compare, bad, good, "--out", out, "--renderers", "povray,cycles", "--scale", "0.25", "--no-cache"]
+    p = in_mount_namespace(a, setup, cmd)
+    if p is None:
+        print("SKIP: no mount namespace here (needs root or unprivileged user namespaces)")
+        sys.exit(77)
+    if p.returncode != 1:
+        fail("exit status %d, expected 1" % p.returncode)
+    if "ERROR bad:" not in p.stderr or not all(w in p.stderr for w in words):
+        fail("no clear message naming the bad scene and %s" % words)
+    check_good_scene(out, words)
+    inside = open(listing).read().split()
+    if [f for f in inside if not f.endswith("/fill") and not f.endswith(".log")] or leftovers(out):
+        fail("files left in the faulty folder: %s %s" % (inside, leftovers(out)))
+    if kind == "readonly":
+        # The whole output folder read-only: refused before any render (exit 2).
+        shutil.rmtree(out)
+        os.makedirs(out)
+        os.environ["VSH_PROBE"] = out
+        p = in_mount_namespace(a, 'mount -t tmpfs -o ro tmpfs "$VSH_PROBE" || exit 90\n', cmd)
+        if p.returncode != 2 or "cannot write in the output folder" not in p.stderr \
+                or "Read-only file system" not in p.stderr:
+            fail("a read-only --out folder: exit %d, expected 2 and a clear message" % p.returncode)
+    print("PASS " + kind)
+
+
+def test_corrupt_cache(a, compare):
+    """A damaged cache entry (an image overwritten, another deleted) is found
+    by its manifest, reported, deleted and rendered again: same images."""
+    shutil.rmtree(a.out, ignore_errors=True)
+    bad, good = two_scenes(a)
+    out = os.path.join(a.out, "result")
+    base = [bad, good, "--out", out, "--renderers", "povray,cycles", "--scale", "0.25", "--no-report"]
+    run(a, compare, *base, expect=0)
+    fresh = light_bytes(out, "povray")
+    entries = sorted(glob.glob(os.path.join(out, "cache", "povray", "*")))
+    if len(entries) != 2:
+        fail("setup: expected two POV-Ray cache entries: %s" % entries)
+    vis = os.path.join(entries[0], "light0_visibility.png")
+    size = os.path.getsize(vis)
+    with open(vis, "wb") as f:
+        f.write(b"\x89PNG garbage" + b"\0" * (size - 12))
+    os.remove(os.path.join(entries[1], "light0_mask.png"))
+    p = run(a, compare, *base, expect=0)
+    if p.stderr.count("cache entry") != 2 or p.stderr.count("is damaged") != 2 \
+            or "rendering again" not in p.stderr or "povray from cache" in p.stderr:
+        fail("both damaged entries should be reported and rendered again")
+    if light_bytes(out, "povray") != fresh:
+        fail("the images rendered after a damaged entry differ from the first render")
+    if leftovers(out):
+        fail("files left: %s" % leftovers(out))
+    p = run(a, compare, *base, expect=0)
+    if p.stderr.count("povray from cache") != 2:
+        fail("the entries should be rebuilt and used again")
+    print("PASS corruptcache")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("test")
@@ -359,6 +685,16 @@ def main():
         test_eevee(a, compare)
     elif a.test == "renderers":
         test_renderers(a, compare)
+    elif a.test == "html":
+        test_html(a, compare)
+    elif a.test == "check":
+        test_check(a, compare)
+    elif a.test == "killed":
+        test_killed(a, compare)
+    elif a.test in ("full", "readonly"):
+        test_fs_fault(a, compare, a.test)
+    elif a.test == "corruptcache":
+        test_corrupt_cache(a, compare)
     else:
         fail("unknown test " + a.test)
 

@@ -1,0 +1,239 @@
+// compare_options.cxx - command line of vtkshadow-compare.
+#include "compare_options.h"
+
+#include "harness_util.h"
+
+#include "vtkShadowTechnique.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+namespace vsh_harness
+{
+
+bool Options::Has(const std::string& r) const
+{
+  return std::find(renderers.begin(), renderers.end(), r) != renderers.end();
+}
+
+std::vector<std::string> RegisteredTechniques()
+{
+  // TODO(registry): the lead is turning vtkShadowTechnique's list into a
+  // registry; this stays the one place the harness asks for the names.
+  std::vector<std::string> r;
+  std::stringstream known(vtkShadowTechnique::GetKnownTechniques());
+  for (std::string t; known >> t;)
+    r.push_back(t);
+  return r;
+}
+
+const std::vector<std::string>& KnownRenderers()
+{
+  static const std::vector<std::string> r{ "vtk", "povray", "cycles", "eevee", "eevee-best" };
+  return r;
+}
+
+const std::vector<std::string>& BlenderRenderers()
+{
+  static const std::vector<std::string> r{ "cycles", "eevee", "eevee-best" };
+  return r;
+}
+
+const char* Usage()
+{
+  return "usage: vtkshadow-compare SCENE|DIR... --out DIR [options]\n"
+         "  --renderers LIST      any of vtk,povray,cycles,eevee,eevee-best\n"
+         "                        (default vtk,povray,cycles)\n"
+         "  --techniques LIST     VTK techniques (default: all that vtkshadow knows)\n"
+         "  --scale F             image size = scene size * F (default 1)\n"
+         "  --check               compare with thresholds.json; exit 3 on a regression\n"
+         "  --thresholds FILE     thresholds file (default: thresholds.json in the\n"
+         "                        nearest folder above each scene)\n"
+         "  --known-failures FILE known failures (default: known-failures.json beside\n"
+         "                        the thresholds file)\n"
+         "  --jobs N              scenes rendered in parallel (default 1)\n"
+         "  --threads N           threads per ray-tracer render (default: cores / jobs)\n"
+         "  --timeout S           per-render time limit in seconds (default 600)\n"
+         "  --cache DIR           reference cache (default OUT/cache)\n"
+         "  --no-cache            always render POV-Ray, Cycles and EEVEE fresh (no cache read)\n"
+         "  --cycles-samples N    Cycles samples per pixel (default 1, pixel centre)\n"
+         "  --povray-binary P     (default povray)\n"
+         "  --blender-binary P    (default blender)\n"
+         "  --render-binary P     vtkshadow-render (default: next to this program)\n"
+         "  --cycles-script P     Blender script of Cycles and EEVEE\n"
+         "                        (default: compare/blender/render_cycles.py of the source)\n"
+         "  --no-report           skip index.html and the plot\n"
+         "  --keep-work           keep the exported scene.pov / scene.bin (debugging, tests)\n"
+         "Exit status: 0 all good, 1 a render or metric failed (other scenes go on),\n"
+         "2 bad usage, 3 --check found a regression.\n";
+}
+
+std::vector<std::string> SplitList(const std::string& s)
+{
+  std::vector<std::string> r;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty())
+      r.push_back(item);
+  return r;
+}
+
+namespace
+{
+
+bool SetFlag(Options& opt, const std::string& a)
+{
+  if (a == "--check")
+    opt.check = true;
+  else if (a == "--no-cache")
+    opt.no_cache = true;
+  else if (a == "--no-report")
+    opt.report = false;
+  else if (a == "--keep-work")
+    opt.keep_work = true;
+  else
+    return false;
+  return true;
+}
+
+// An option with a value `v`; false with `error` set when it is bad or unknown.
+bool SetValue(Options& opt, const std::string& a, const std::string& v, std::string& error)
+{
+  std::string* text = a == "--out"               ? &opt.out
+    : a == "--thresholds"                        ? &opt.thresholds
+    : a == "--known-failures"                    ? &opt.known_failures
+    : a == "--cache"                             ? &opt.cache
+    : a == "--povray-binary"                     ? &opt.povray
+    : a == "--blender-binary"                    ? &opt.blender
+    : a == "--render-binary"                     ? &opt.render_bin
+    : a == "--cycles-script"                     ? &opt.cycles_script
+                                                 : nullptr;
+  char* end = nullptr;
+  if (text)
+    *text = v;
+  else if (a == "--renderers")
+    opt.renderers = SplitList(v);
+  else if (a == "--techniques")
+    opt.techniques = SplitList(v);
+  else if (a == "--scale" || a == "--timeout")
+  {
+    double d = strtod(v.c_str(), &end);
+    if (*end || !(d > 0) || !std::isfinite(d) || (a == "--scale" && d > 16))
+      error = a + ": expected a positive number (got '" + v + "')";
+    else
+      (a == "--scale" ? opt.scale : opt.timeout) = d;
+  }
+  else if (a == "--jobs" || a == "--threads" || a == "--cycles-samples")
+  {
+    long n = strtol(v.c_str(), &end, 10);
+    if (*end || n < 1 || n > 1024)
+      error = a + ": expected a whole number >= 1 (got '" + v + "')";
+    else
+      (a == "--jobs" ? opt.jobs : a == "--threads" ? opt.threads : opt.cycles_samples) = int(n);
+  }
+  else
+    error = "unknown option " + a;
+  return error.empty();
+}
+
+// The names given are ones the harness knows.
+bool ValidateLists(const Options& opt, std::string& error)
+{
+  if (opt.out.empty())
+    error = "missing required option --out";
+  else if (opt.inputs.empty())
+    error = "no scene given";
+  for (const auto& r : opt.renderers)
+    if (error.empty() &&
+        std::find(KnownRenderers().begin(), KnownRenderers().end(), r) == KnownRenderers().end())
+      error = "--renderers: unknown renderer '" + r +
+        "' (known: vtk, povray, cycles, eevee, eevee-best)";
+  const std::vector<std::string> known = RegisteredTechniques();
+  for (const auto& t : opt.techniques)
+    if (error.empty() && std::find(known.begin(), known.end(), t) == known.end())
+      error = "--techniques: unknown technique '" + t + "' (known: " +
+        vtkShadowTechnique::GetKnownTechniques() + ")";
+  return error.empty();
+}
+
+std::string SelfDir()
+{
+  char buf[4096];
+  ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0)
+    return ".";
+  buf[n] = 0;
+  return DirName(buf);
+}
+
+} // namespace
+
+ParseStatus ParseOptions(int argc, char* argv[], Options& opt, std::string& error)
+{
+  opt.techniques = RegisteredTechniques();
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h")
+      return ParseStatus::Help;
+    if (SetFlag(opt, a))
+      continue;
+    if (a.rfind("--", 0) != 0)
+    {
+      opt.inputs.push_back(a);
+      continue;
+    }
+    if (i + 1 >= argc)
+    {
+      error = a + ": missing value";
+      return ParseStatus::Error;
+    }
+    if (!SetValue(opt, a, argv[++i], error))
+      return ParseStatus::Error;
+  }
+  return ValidateLists(opt, error) ? ParseStatus::Run : ParseStatus::Error;
+}
+
+bool FinishOptions(Options& opt, std::string& error)
+{
+  const std::string self = SelfDir();
+  if (opt.render_bin.empty())
+    opt.render_bin = self + "/vtkshadow-render";
+  if (opt.cycles_script.empty())
+  {
+#ifdef VTKSHADOW_CYCLES_SCRIPT
+    opt.cycles_script = VTKSHADOW_CYCLES_SCRIPT;
+#endif
+    if (!FileExists(opt.cycles_script))
+      opt.cycles_script = self + "/../share/vtkshadow/render_cycles.py";
+  }
+  opt.cycles_script = AbsPath(opt.cycles_script);
+  if (opt.threads == 0)
+    opt.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / opt.jobs);
+  std::string why;
+  if (!MakeDirs(opt.out, why))
+  {
+    error = "cannot create the output folder " + opt.out + ": " + why;
+    return false;
+  }
+  opt.out = AbsPath(opt.out);
+  // A read-only or full output folder is found here, before any render.
+  if (!CanWriteIn(opt.out, why))
+  {
+    error = "cannot write in the output folder " + opt.out + ": " + why;
+    return false;
+  }
+  if (opt.cache.empty())
+    opt.cache = opt.out + "/cache";
+  opt.cache = AbsPath(opt.cache);
+  return true;
+}
+
+} // namespace vsh_harness

@@ -1,0 +1,49 @@
+// harness_results.h - what a vtkshadow-compare run measures: one Row per
+// (scene, light, test) and one SceneResult per scene.
+#ifndef VTKSHADOW_HARNESS_RESULTS_H
+#define VTKSHADOW_HARNESS_RESULTS_H
+
+#include "scene_list.h"
+
+#include "vsh_metrics.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vsh_harness
+{
+
+struct Row
+{
+  std::string scene, test, reference = "povray", light_type, status, error, heatmap;
+  int light = 0, width = 0, height = 0;
+  vsh_metrics m{};
+  // Set by --check: "" (not checked), "ok", "FAILED: why", "known failure: reason".
+  std::string check;
+};
+
+struct SceneResult
+{
+  SceneEntry entry;
+  std::string description;
+  int lights = 0, width = 0, height = 0;
+  std::vector<std::string> light_types;
+  std::vector<std::string> errors; // render failures
+  std::vector<Row> rows;
+  std::map<std::string, double> seconds;       // renderer -> render time
+  std::map<std::string, double> frame_seconds; // Blender renderer -> mean seconds per frame
+  std::map<std::string, bool> cached;
+};
+
+// A metric of a row by name (vis_mae, wrong_pct, edge_px, false_shadow_pct,
+// false_light_pct, and wrong_of_shadow_pct when the metrics library has it).
+// `known` is false for any other name.
+double RowMetric(const vsh_metrics& m, const std::string& name, bool& known);
+
+// Whether the metrics library computes wrong_of_shadow_pct (compare/metrics).
+bool HaveWrongOfShadow();
+
+} // namespace vsh_harness
+
+#endif

@@ -1,0 +1,135 @@
+// reference_renderer.cxx - the cached-run driver shared by POV-Ray, Cycles
+// and EEVEE.
+#include "reference_renderer.h"
+
+#include "harness_util.h"
+#include "reference_cache.h"
+#include "visibility_io.h"
+
+#include <unistd.h>
+
+namespace vsh_harness
+{
+
+namespace
+{
+// Part of every cache key: bump it when the meaning of a cached image changes.
+const char* const kFormatVersion = "vtkshadow-compare reference format 1";
+
+struct DriverState
+{
+  const ReferenceRenderer& r;
+  const Options& opt;
+  const SceneEntry& e;
+  const ExportScene& ex;
+  SceneResult& res;
+  std::string outdir;
+  int lights = 0;
+
+  // Records `msg` as this renderer's error of the scene and leaves no image.
+  bool Fail(const std::string& msg)
+  {
+    res.errors.push_back(r.Name() + ": " + msg);
+    RemoveLightFiles(outdir, lights);
+    return false;
+  }
+};
+
+// Renders in a fresh work folder and writes the visibility of every light.
+bool RenderFresh(DriverState& s, const std::string& exported)
+{
+  const std::string work = AbsPath(s.outdir + "/.work" + std::to_string(getpid()));
+  RemoveTree(work);
+  std::string err;
+  if (!MakeDirs(work, err) || !WriteFileAtomic(work + "/" + s.r.ExportFileName(), exported, err))
+  {
+    RemoveTree(work);
+    return s.Fail("cannot write the exported scene in " + work + ": " + err);
+  }
+  const std::string log = AbsPath(s.outdir + "/" + s.r.LogName());
+  unlink(log.c_str());
+  RenderOutput out;
+  RenderJob job{ s.e, s.ex, work, log };
+  bool ok = s.r.Render(job, out, err);
+  if (ok && out.lights.size() != static_cast<size_t>(s.lights))
+  {
+    ok = false;
+    err = "rendered " + std::to_string(out.lights.size()) + " light(s) of " +
+      std::to_string(s.lights);
+  }
+  for (int k = 0; ok && k < s.lights; ++k)
+  {
+    std::vector<float> v;
+    std::vector<unsigned char> mask;
+    const LightPair& p = out.lights[k];
+    OnOff(p.on, p.off, p.eps, v, mask);
+    ok = WriteVisibility(s.outdir, k, v, mask, s.ex.width, s.ex.height, err);
+  }
+  if (!ok || !s.opt.keep_work)
+    RemoveTree(work);
+  if (!ok)
+    return s.Fail(err);
+  s.res.seconds[s.r.Name()] = out.seconds;
+  if (out.frame_seconds >= 0)
+    s.res.frame_seconds[s.r.Name()] = out.frame_seconds;
+  return true;
+}
+
+} // namespace
+
+bool RunReference(const ReferenceRenderer& r, const Options& opt, const SceneEntry& e,
+                  const ExportScene& ex, const std::string& content_key, SceneResult& res)
+{
+  const std::string name = r.Name();
+  DriverState s{ r, opt, e, ex, res, opt.out + "/" + e.dir_id + "/" + name,
+    static_cast<int>(ex.lights.size()) };
+  std::string why;
+  if (!MakeDirs(s.outdir, why))
+    return s.Fail("cannot create " + s.outdir + ": " + why);
+  RemoveLightFiles(s.outdir, s.lights);
+  if (!r.GetUnusable().empty())
+    return s.Fail(r.GetUnusable());
+  const std::string exported = r.ExportBytes(ex);
+  const std::string keytext = std::string(kFormatVersion) + "\nrenderer " + r.GetVersion() +
+    "\n" + r.KeySettings(ex) + content_key + "export " + MD5Hex(exported) + "\n";
+  const std::string key = MD5Hex(keytext);
+  const std::string cdir = opt.cache + "/" + name + "/" + key;
+  if (!opt.no_cache)
+    switch (CacheLoad(cdir, s.outdir, s.lights, why))
+    {
+      case CacheLoadResult::Hit:
+        Progress(e.id + ": " + name + " from cache " + key);
+        res.cached[name] = true;
+        return true;
+      case CacheLoadResult::Failed:
+        return s.Fail("cannot copy the cached images: " + why);
+      case CacheLoadResult::Corrupt:
+        Progress("WARNING " + e.id + ": " + name + " cache entry " + key + " is damaged (" + why +
+          "); deleted, rendering again");
+        break;
+      case CacheLoadResult::Miss:
+        break;
+    }
+  if (!RenderFresh(s, exported))
+    return false;
+  if (!CacheStore(cdir, s.outdir, s.lights, keytext, why))
+    Progress("WARNING " + e.id + ": " + name + " not cached: " + why);
+  return true;
+}
+
+std::vector<std::unique_ptr<ReferenceRenderer>> MakeReferenceRenderers(const Options& opt)
+{
+  std::vector<std::unique_ptr<ReferenceRenderer>> r;
+  if (opt.Has("povray"))
+    r.push_back(MakePovrayRenderer(opt));
+  if (opt.Has("cycles"))
+    r.push_back(MakeCyclesRenderer(opt));
+  for (const char* preset : { "eevee", "eevee-best" })
+    if (opt.Has(preset))
+      r.push_back(MakeEeveeRenderer(opt, preset));
+  for (auto& x : r)
+    x->Prepare();
+  return r;
+}
+
+} // namespace vsh_harness

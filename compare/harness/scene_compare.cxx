@@ -1,0 +1,119 @@
+// scene_compare.cxx - metrics and heat map of one row.
+#include "scene_compare.h"
+
+#include "harness_util.h"
+
+#include "vsh_metrics.h"
+#include "vsh_png.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vsh_harness
+{
+
+namespace
+{
+// wrong_of_shadow_pct comes from the metrics library (compare/metrics,
+// issue 18); these read it when vsh_metrics has the field and give NaN /
+// false otherwise, so the harness builds before and after that change.
+template <typename M>
+auto WrongOfShadow(const M& m, int) -> decltype(m.wrong_of_shadow_pct, double())
+{
+  return m.wrong_of_shadow_pct;
+}
+template <typename M>
+double WrongOfShadow(const M&, long)
+{
+  return std::nan("");
+}
+template <typename M>
+auto HasWrongOfShadow(const M& m, int) -> decltype(m.wrong_of_shadow_pct, bool())
+{
+  return true;
+}
+template <typename M>
+bool HasWrongOfShadow(const M&, long)
+{
+  return false;
+}
+} // namespace
+
+bool HaveWrongOfShadow()
+{
+  return HasWrongOfShadow(vsh_metrics{}, 0);
+}
+
+double RowMetric(const vsh_metrics& m, const std::string& name, bool& known)
+{
+  known = true;
+  if (name == "vis_mae")
+    return m.vis_mae;
+  if (name == "wrong_pct")
+    return m.wrong_pct;
+  if (name == "edge_px")
+    return m.edge_px;
+  if (name == "false_shadow_pct")
+    return m.false_shadow_pct;
+  if (name == "false_light_pct")
+    return m.false_light_pct;
+  if (name == "wrong_of_shadow_pct" && HaveWrongOfShadow())
+    return WrongOfShadow(m, 0);
+  known = false;
+  return 0;
+}
+
+Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const std::string& test,
+                         const std::string& testdir, const std::string& light_type)
+{
+  Row row;
+  row.scene = e.id;
+  row.light = k;
+  row.light_type = light_type;
+  row.test = test;
+  const std::string base = opt.out + "/" + e.dir_id;
+  const std::string lk = "/light" + std::to_string(k);
+  std::vector<float> ref, mask, tv;
+  int w = 0, h = 0, w2 = 0, h2 = 0, w3 = 0, h3 = 0;
+  std::string err;
+  if (!ReadPNGChannel(base + "/povray" + lk + "_visibility.png", ref, w, h, err) ||
+    !ReadPNGChannel(base + "/povray" + lk + "_mask.png", mask, w2, h2, err) ||
+    !ReadPNGChannel(base + "/" + testdir + lk + "_visibility.png", tv, w3, h3, err))
+    err = err.empty() ? "cannot read an image" : err;
+  else if (w != w2 || w != w3 || h != h2 || h != h3)
+    err = "image sizes differ";
+  std::vector<unsigned char> valid(mask.size());
+  for (size_t i = 0; err.empty() && i < mask.size(); ++i)
+    valid[i] = mask[i] > 0.5f;
+  const int rc = err.empty()
+    ? vsh_metrics_compute(tv.data(), ref.data(), valid.data(), nullptr, w, h, &row.m)
+    : -1;
+  if (rc < 0)
+  {
+    row.status = "error";
+    row.error = err.empty() ? "metrics failed" : err;
+    return row;
+  }
+  row.width = w;
+  row.height = h;
+  row.status = rc == VSH_METRICS_EMPTY ? "empty" : "ok";
+  std::vector<unsigned char> rgb(3 * static_cast<size_t>(w) * h);
+  vsh_error_heatmap_rgb(tv.data(), ref.data(), valid.data(), w, h, rgb.data());
+  std::string tname = test;
+  std::replace(tname.begin(), tname.end(), '/', '-');
+  row.heatmap = e.dir_id + "/heatmap/" + tname + lk.substr(1) + ".png";
+  char e2[1024] = "";
+  std::string why;
+  if (!MakeDirs(base + "/heatmap", why) ||
+    vsh_png_write_rgb8((opt.out + "/" + row.heatmap).c_str(), rgb.data(), w, h, e2, sizeof e2) !=
+      0)
+  {
+    // The metrics stand; the report shows no picture rather than a broken one.
+    row.error = "heat map not written: " + (why.empty() ? std::string(e2) : why);
+    row.heatmap.clear();
+  }
+  return row;
+}
+
+} // namespace vsh_harness
+

@@ -1,0 +1,60 @@
+// vtk_runner.cxx - running vtkshadow-render for each technique and light.
+#include "vtk_runner.h"
+
+#include "harness_util.h"
+#include "visibility_io.h"
+
+#include <unistd.h>
+
+namespace vsh_harness
+{
+
+namespace
+{
+// One technique, every light; false after the first failed light.
+bool RenderTechnique(const Options& opt, const SceneEntry& e, const std::string& t, int w, int h,
+                     int lights, SceneResult& res)
+{
+  const std::string outdir = opt.out + "/" + e.dir_id + "/vtk/" + t;
+  std::string why;
+  if (!MakeDirs(outdir, why))
+  {
+    res.errors.push_back("vtk/" + t + ": cannot create " + outdir + ": " + why);
+    return false;
+  }
+  RemoveLightFiles(outdir, lights);
+  const std::string log = AbsPath(outdir + "/render.log");
+  unlink(log.c_str());
+  double total = 0;
+  for (int k = 0; k < lights; ++k)
+  {
+    const std::vector<std::string> names = LightFileNames(k);
+    std::vector<std::string> argv{ opt.render_bin, AbsPath(e.path), "--technique", t, "--image",
+      AbsPath(outdir + "/image.png"), "--light", std::to_string(k), "--visibility",
+      AbsPath(outdir + "/" + names[0]), "--mask", AbsPath(outdir + "/" + names[1]), "--size",
+      std::to_string(w) + "x" + std::to_string(h), "--quiet" };
+    RunResult r = RunProcess(argv, "", log, opt.timeout);
+    total += r.seconds;
+    Progress(e.id + ": vtk/" + t + " light " + std::to_string(k) + (r.ok() ? "" : " FAILED") +
+      " (" + Fmt(r.seconds, "%.1f") + " s)");
+    if (!r.ok())
+    {
+      res.errors.push_back("vtk/" + t + " light " + std::to_string(k) + ": " + r.error);
+      RemoveLightFiles(outdir, lights);
+      return false;
+    }
+  }
+  res.seconds["vtk/" + t] = total;
+  return true;
+}
+} // namespace
+
+void RenderVtk(const Options& opt, const SceneEntry& e, int w, int h, int lights,
+               SceneResult& res, std::set<std::string>& ok_techniques)
+{
+  for (const std::string& t : opt.techniques)
+    if (RenderTechnique(opt, e, t, w, h, lights, res))
+      ok_techniques.insert(t);
+}
+
+} // namespace vsh_harness
