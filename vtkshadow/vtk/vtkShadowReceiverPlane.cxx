@@ -5,6 +5,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkShadowActorFlags.h"
 
 #include "vsh_mat4.h"
 
@@ -78,5 +79,19 @@ bool ReceiverPlane(vtkActor* actor, double plane[4])
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+ReceiverPlaneCache::Entry& ReceiverPlaneCache::Get(vtkActor* actor)
+{
+  Entry& entry = this->Entries[actor];
+  const vtkMTimeType t = std::max(actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor));
+  if (t > entry.Time || entry.Time == 0)
+  {
+    entry.Time = t;
+    entry.Flat = ReceiverPlane(actor, entry.Plane);
+    entry.Reported = false;
+  }
+  return entry;
 }
 }
