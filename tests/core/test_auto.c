@@ -5,8 +5,121 @@
 
 #include "vsh_check.h"
 
+/* ---- the per-light decision on plain objects ---------------------------- */
+
+static void floor_and_ball(vsh_auto_object objects[3])
+{
+  vsh_auto_object_init(&objects[0], (double[6]){-5, 5, -5, 5, 0, 0}, 1, 1, NULL);
+  objects[0].flat = 1;
+  objects[0].plane[2] = 1.0;
+  vsh_auto_object_init(&objects[1], (double[6]){-0.5, 0.5, -0.5, 0.5, 1, 2}, 0, 1, NULL);
+  /* between the ball and the floor */
+  vsh_auto_object_init(&objects[2], (double[6]){-0.5, 0.5, -0.5, 0.5, 0.2, 0.6}, 0, 1, NULL);
+}
+
+static void test_objects(void)
+{
+  vsh_auto_object o;
+  vsh_auto_object_init(&o, (double[6]){0, 2, 0, 4, 0, 4}, 1, 0, NULL);
+  CHECK(o.center[0] == 1 && o.center[1] == 2 && o.center[2] == 2);
+  CHECK_NEAR(o.radius, 3.0, 1e-15);
+  CHECK(o.receiver == 1 && o.casts == 0 && o.flat == 0 && o.in_view == 1);
+  /* The cube [-1, 1]^3 as 6 inward planes. */
+  const double cube[24] = {1, 0, 0, 1, -1, 0, 0, 1, 0, 1, 0, 1, 0, -1, 0, 1, 0, 0, 1, 1, 0, 0, -1, 1};
+  CHECK(vsh_auto_sphere_in_frustum(cube, (double[3]){0, 0, 0}, 0.1) == 1);
+  CHECK(vsh_auto_sphere_in_frustum(cube, (double[3]){1.5, 0, 0}, 1) == 1);
+  CHECK(vsh_auto_sphere_in_frustum(cube, (double[3]){3, 0, 0}, 1) == 0);
+  CHECK(vsh_auto_sphere_in_frustum(cube, (double[3]){0, 0, -2.5}, 1) == 0);
+  vsh_auto_object_init(&o, (double[6]){2.5, 3.5, -0.5, 0.5, -0.5, 0.5}, 0, 1, cube);
+  CHECK(o.in_view == 0);
+  vsh_auto_object_init(&o, (double[6]){0.5, 1.5, -0.5, 0.5, -0.5, 0.5}, 0, 1, cube);
+  CHECK(o.in_view == 1);
+}
+
+static void test_choose_light(void)
+{
+  const double sun[4] = {0, 0, 1, 0}, lamp[4] = {0, 0, 10, 1};
+  vsh_auto_object objects[3];
+  floor_and_ball(objects);
+  vsh_auto_light_choice c = vsh_auto_choose_light(objects, 2, sun, 0, -1);
+  CHECK(c.technique == VSH_AUTO_PLANAR && c.reason == VSH_AUTO_REASON_PLANES_ONLY);
+  CHECK(c.a == -1 && c.b == -1);
+  c = vsh_auto_choose_light(objects, 2, lamp, 0, -1);
+  CHECK(c.technique == VSH_AUTO_PLANAR && c.reason == VSH_AUTO_REASON_PLANES_ONLY);
+  /* The headlight first, then "no caster", then a concave caster. */
+  c = vsh_auto_choose_light(objects, 2, sun, 1, 1);
+  CHECK(c.technique == VSH_AUTO_NONE && c.reason == VSH_AUTO_REASON_HEADLIGHT);
+  c = vsh_auto_choose_light(objects, 2, sun, 0, 1);
+  CHECK(c.technique == VSH_AUTO_CSM && c.reason == VSH_AUTO_REASON_CONCAVE && c.a == 1);
+  c = vsh_auto_choose_light(objects, 0, sun, 0, -1);
+  CHECK(c.technique == VSH_AUTO_NONE && c.reason == VSH_AUTO_REASON_NO_CASTER);
+  /* A caster over another object that is not a receiver: csm, naming both. */
+  c = vsh_auto_choose_light(objects, 3, sun, 0, -1);
+  CHECK(c.technique == VSH_AUTO_CSM && c.reason == VSH_AUTO_REASON_SHADOWS_OTHER);
+  CHECK(c.a == 1 && c.b == 2);
+  /* ... unless it is out of view, or casts nothing itself and is not shadowed. */
+  objects[2].in_view = 0;
+  c = vsh_auto_choose_light(objects, 3, sun, 0, -1);
+  CHECK(c.technique == VSH_AUTO_PLANAR);
+  objects[2].in_view = 1;
+  objects[1].casts = 0;
+  c = vsh_auto_choose_light(objects, 3, sun, 0, -1);
+  CHECK(c.technique == VSH_AUTO_PLANAR); /* the small box shadows the floor only */
+  objects[1].casts = 1;
+  /* A receiver that is not flat is no plane receiver. */
+  objects[0].flat = 0;
+  c = vsh_auto_choose_light(objects, 2, sun, 0, -1);
+  CHECK(c.technique == VSH_AUTO_CSM && c.reason == VSH_AUTO_REASON_SHADOWS_OTHER);
+  CHECK(c.a == 1 && c.b == 0);
+  /* Nothing under the caster: no shadow to draw. */
+  vsh_auto_object_init(&objects[0], (double[6]){-1, 1, -1, 1, 0, 0}, 1, 1, NULL);
+  objects[0].flat = 1;
+  objects[0].plane[2] = 1.0;
+  vsh_auto_object_init(&objects[1], (double[6]){9.5, 10.5, -0.5, 0.5, 1, 2}, 0, 1, NULL);
+  c = vsh_auto_choose_light(objects, 2, sun, 0, -1);
+  CHECK(c.technique == VSH_AUTO_NONE && c.reason == VSH_AUTO_REASON_NO_SHADOW);
+}
+
+static void test_stretch_masks_target(void)
+{
+  vsh_auto_object objects[3];
+  floor_and_ball(objects);
+  const double pi = 3.14159265358979323846;
+  CHECK_NEAR(vsh_auto_plane_stretch(objects, 3, (double[4]){0, 0, 1, 0}), 1.0, 1e-15);
+  CHECK_NEAR(vsh_auto_plane_stretch(objects, 3, (double[4]){sin(pi / 3), 0, cos(pi / 3), 0}), 2.0,
+             1e-12);
+  CHECK(vsh_auto_plane_stretch(objects, 3, (double[4]){1, 0, 0, 0}) == 64.0); /* grazing */
+  CHECK_NEAR(vsh_auto_plane_stretch(objects, 3, (double[4]){0, 0, 10, 1}), 1.0, 1e-15);
+  /* The light 45 degrees off at the floor's centre (0, 0, 0). */
+  CHECK_NEAR(vsh_auto_plane_stretch(objects, 3, (double[4]){4, 0, 4, 1}), sqrt(2.0), 1e-12);
+  objects[0].in_view = 0;
+  CHECK(vsh_auto_plane_stretch(objects, 3, (double[4]){1, 0, 0, 0}) == 1.0);
+  CHECK(vsh_auto_plane_stretch(objects, 0, (double[4]){1, 0, 0, 0}) == 1.0);
+
+  unsigned int planar = 7, csm = 7;
+  const int four[4] = {VSH_AUTO_PLANAR, VSH_AUTO_CSM, VSH_AUTO_NONE, VSH_AUTO_PLANAR};
+  vsh_auto_light_masks(four, 4, &planar, &csm);
+  CHECK(planar == 9u && csm == 2u);
+  int forty[40];
+  for (int l = 0; l < 40; ++l)
+    forty[l] = VSH_AUTO_PLANAR;
+  vsh_auto_light_masks(forty, 40, &planar, &csm);
+  CHECK(planar == 0xffffffffu && csm == 0u); /* lights past 32 have no bit */
+  vsh_auto_light_masks(four, 0, &planar, &csm);
+  CHECK(planar == 0u && csm == 0u);
+
+  CHECK(vsh_auto_frame_texel_target(3.0, 0.5, 120000, 1400, 1.0) == 3.0);
+  CHECK(vsh_auto_frame_texel_target(0.0, 0.5, 120000, 1400, 2.0) ==
+        vsh_auto_texel_target(0.5, 120000, 1400, 2.0, 1.0));
+  CHECK(vsh_auto_frame_texel_target(0.0, 0.5, 120000, 0.0, 1.0) ==
+        vsh_auto_texel_target(0.5, 120000, 1.0, 1.0, 1.0)); /* at least a pixel of edge */
+}
+
 int main(void)
 {
+  test_objects();
+  test_choose_light();
+  test_stretch_masks_target();
   const double sun[4] = {0, 0, 1, 0}; /* light from straight above */
   const double a[3] = {0, 0, 2}, below[3] = {0, 0, 0}, beside[3] = {5, 0, 0};
   const double above[3] = {0, 0, 4};

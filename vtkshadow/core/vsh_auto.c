@@ -117,3 +117,141 @@ double vsh_auto_texel_target(double max_wrong_pct, double pixels, double edge_le
       2.0 * (band_px + max_wrong_pct / 100.0 * pixels / (edge_length_px * stretch));
   return isfinite(t) ? t : 0.0;
 }
+
+/* ---- the per-light decision --------------------------------------------- */
+
+/* std::max's rule (a NaN b keeps a), which the VTK layer used before. */
+static double max_keep(double a, double b)
+{
+  return a < b ? b : a;
+}
+
+void vsh_auto_object_init(vsh_auto_object *o, const double bounds[6], int receiver, int casts,
+                          const double frustum[24])
+{
+  double diagonal2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double extent = bounds[2 * k + 1] - bounds[2 * k];
+    o->center[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+    diagonal2 += extent * extent;
+  }
+  for (int k = 0; k < 6; ++k)
+    o->bounds[k] = bounds[k];
+  o->radius = 0.5 * sqrt(diagonal2);
+  o->receiver = receiver != 0;
+  o->casts = casts != 0;
+  o->flat = 0;
+  for (int k = 0; k < 4; ++k)
+    o->plane[k] = 0.0;
+  o->in_view = frustum ? vsh_auto_sphere_in_frustum(frustum, o->center, o->radius) : 1;
+}
+
+int vsh_auto_sphere_in_frustum(const double frustum[24], const double center[3], double radius)
+{
+  for (int p = 0; p < 6; ++p) {
+    const double *plane = frustum + 4 * p;
+    const double n = sqrt(plane[0] * plane[0] + plane[1] * plane[1] + plane[2] * plane[2]);
+    if (!(plane[0] * center[0] + plane[1] * center[1] + plane[2] * center[2] + plane[3] >=
+          -radius * n))
+      return 0;
+  }
+  return 1;
+}
+
+/* Whether object a may shadow object b under light (the light's kind picks
+ * the test: boxes are exact for parallel light, spheres bound the cones). */
+static int may_shadow(const vsh_auto_object *a, const vsh_auto_object *b, const double light[4])
+{
+  if (light[3] == 0.0) {
+    const double amin[3] = {a->bounds[0], a->bounds[2], a->bounds[4]};
+    const double amax[3] = {a->bounds[1], a->bounds[3], a->bounds[5]};
+    const double bmin[3] = {b->bounds[0], b->bounds[2], b->bounds[4]};
+    const double bmax[3] = {b->bounds[1], b->bounds[3], b->bounds[5]};
+    return vsh_auto_box_may_shadow(amin, amax, bmin, bmax, light) != 0;
+  }
+  return vsh_auto_may_shadow(a->center, a->radius, b->center, b->radius, light) != 0;
+}
+
+static vsh_auto_light_choice choice(int technique, vsh_auto_reason reason, int a, int b)
+{
+  vsh_auto_light_choice c;
+  c.technique = technique;
+  c.reason = reason;
+  c.a = a;
+  c.b = b;
+  return c;
+}
+
+vsh_auto_light_choice vsh_auto_choose_light(const vsh_auto_object *objects, int count,
+                                            const double light[4], int headlight, int concave)
+{
+  if (headlight)
+    return choice(VSH_AUTO_NONE, VSH_AUTO_REASON_HEADLIGHT, -1, -1);
+  int any_caster = 0;
+  for (int i = 0; i < count; ++i)
+    any_caster = any_caster || objects[i].casts;
+  if (!any_caster)
+    return choice(VSH_AUTO_NONE, VSH_AUTO_REASON_NO_CASTER, -1, -1);
+  if (concave >= 0 && concave < count)
+    return choice(VSH_AUTO_CSM, VSH_AUTO_REASON_CONCAVE, concave, -1);
+  int any_shadow = 0;
+  for (int i = 0; i < count; ++i) {
+    const vsh_auto_object *a = &objects[i];
+    for (int j = 0; j < count; ++j) {
+      const vsh_auto_object *b = &objects[j];
+      if (!a->casts || i == j || !b->in_view ||
+          (a->flat && vsh_auto_on_lit_side(a->plane, light, b->center, b->radius)))
+        continue; /* a plane receiver only blocks light from what lies behind it */
+      if (!may_shadow(a, b, light))
+        continue;
+      any_shadow = 1;
+      if (!(b->receiver && b->flat))
+        return choice(VSH_AUTO_CSM, VSH_AUTO_REASON_SHADOWS_OTHER, i, j);
+    }
+  }
+  return any_shadow ? choice(VSH_AUTO_PLANAR, VSH_AUTO_REASON_PLANES_ONLY, -1, -1)
+                    : choice(VSH_AUTO_NONE, VSH_AUTO_REASON_NO_SHADOW, -1, -1);
+}
+
+double vsh_auto_plane_stretch(const vsh_auto_object *objects, int count, const double light[4])
+{
+  double stretch = 1.0;
+  for (int i = 0; i < count; ++i) {
+    const vsh_auto_object *r = &objects[i];
+    if (!r->flat || !r->in_view)
+      continue;
+    double towards[3];
+    for (int k = 0; k < 3; ++k)
+      towards[k] = light[k] - light[3] * r->center[k];
+    const double len = sqrt(towards[0] * towards[0] + towards[1] * towards[1] +
+                            towards[2] * towards[2]);
+    const double n = sqrt(r->plane[0] * r->plane[0] + r->plane[1] * r->plane[1] +
+                          r->plane[2] * r->plane[2]);
+    if (len > 0.0 && n > 0.0) {
+      const double c = fabs(towards[0] * r->plane[0] + towards[1] * r->plane[1] +
+                            towards[2] * r->plane[2]) /
+                       (len * n);
+      stretch = max_keep(stretch, 1.0 / max_keep(c, 1.0 / 64.0));
+    }
+  }
+  return stretch;
+}
+
+void vsh_auto_light_masks(const int *techniques, int count, unsigned int *planar,
+                          unsigned int *csm)
+{
+  *planar = *csm = 0u;
+  for (int l = 0; l < count && l < 32; ++l) {
+    *planar |= (techniques[l] == VSH_AUTO_PLANAR ? 1u : 0u) << l;
+    *csm |= (techniques[l] == VSH_AUTO_CSM ? 1u : 0u) << l;
+  }
+}
+
+double vsh_auto_frame_texel_target(double max_texel_px, double max_wrong_pct, double pixels,
+                                   double edge_length_px, double stretch)
+{
+  if (max_texel_px > 0.0)
+    return max_texel_px;
+  /* A shadow boundary at least a pixel long, a one-pixel band. */
+  return vsh_auto_texel_target(max_wrong_pct, pixels, max_keep(edge_length_px, 1.0), stretch, 1.0);
+}

@@ -21,6 +21,7 @@
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
+#include "vtkShadowTechniqueSet.h"
 #include "vtkRenderer.h"
 
 #include "vsh_auto.h"
@@ -45,6 +46,14 @@ struct vtkAutoShadowPass::Internals
   };
   std::map<vtkProp*, std::unique_ptr<Caster>> Casters;
 
+  // The frame's objects: plain data for the core's decision, and their actors.
+  std::vector<vsh_auto_object> Objects;
+  std::vector<vtkActor*> Actors;
+
+  // What was chosen: for the frame and per switched-on light.
+  vtkshadow::TechniqueSet Choice = vtkshadow::TechniqueSet::None;
+  std::vector<vtkshadow::TechniqueSet> LightChoices;
+
   // The caster's mesh analysis, redone only when the mesh changes: its
   // convexity and silhouettes survive every affine placement, so the
   // actor's own MTime (which VTK's pass machinery bumps) does not count.
@@ -68,24 +77,10 @@ struct vtkAutoShadowPass::Internals
 
 namespace
 {
-
-struct Sphere
-{
-  vtkActor* Actor;
-  double Center[3];
-  double Radius;
-  bool Receiver;
-  bool Casts;
-  double Bounds[6];
-  bool Flat;       // a receiver with a plane
-  double Plane[4];
-  bool InView;     // its bounding sphere meets the view frustum
-};
-
-std::string Centre(const char* what, const Sphere& o)
+std::string Centre(const char* what, const vsh_auto_object& o)
 {
   std::ostringstream out;
-  out << what << " (bounds centre " << o.Center[0] << ", " << o.Center[1] << ", " << o.Center[2]
+  out << what << " (bounds centre " << o.center[0] << ", " << o.center[1] << ", " << o.center[2]
       << ")";
   return out.str();
 }
@@ -95,7 +90,6 @@ std::string Centre(const char* what, const Sphere& o)
 vtkAutoShadowPass::vtkAutoShadowPass()
   : PlanarPass(vtkPlanarShadowPass::New())
   , CascadedPass(vtkCascadedShadowMapPass::New())
-  , Choice("none")
   , Reason("not rendered yet")
   , MaxError(0.5)
   , MaxTexelPixels(0.0)
@@ -117,206 +111,148 @@ vtkAutoShadowPass::~vtkAutoShadowPass()
 void vtkAutoShadowPass::Decide(const vtkRenderState* s)
 {
   vtkRenderer* renderer = s->GetRenderer();
-  double frustum[24];
-  renderer->GetActiveCamera()->GetFrustumPlanes(renderer->GetTiledAspectRatio(), frustum);
-  std::vector<Sphere> objects;
-  bool anyCaster = false;
-  for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(s))
-  {
-    vtkActor* actor = shadowActor.Actor;
-    const double* b = shadowActor.Bounds;
-    Sphere sphere{ actor, { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) },
-      0.5 * std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-              (b[5] - b[4]) * (b[5] - b[4])),
-      vtkshadow::HasFlag(actor, vtkShadowPassBase::RECEIVER()),
-      !vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()),
-      { b[0], b[1], b[2], b[3], b[4], b[5] }, false, { 0, 0, 0, 0 }, true };
-    // Frustum planes point inwards: a sphere wholly outside one is not seen.
-    for (int p = 0; p < 6 && sphere.InView; ++p)
-    {
-      const double* plane = frustum + 4 * p;
-      const double n = std::sqrt(plane[0] * plane[0] + plane[1] * plane[1] + plane[2] * plane[2]);
-      sphere.InView = plane[0] * sphere.Center[0] + plane[1] * sphere.Center[1] +
-          plane[2] * sphere.Center[2] + plane[3] >=
-        -sphere.Radius * n;
-    }
-    if (sphere.Receiver)
-    {
-      // Planes are recomputed only when the actor, its mapper or data change.
-      CachedPlane& cached = this->Planes[actor];
-      const vtkMTimeType t = std::max(actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor));
-      if (t > cached.Time || cached.Time == 0)
-      {
-        cached.Time = t;
-        cached.Flat = vtkshadow::ReceiverPlane(actor, cached.Plane);
-      }
-      sphere.Flat = cached.Flat;
-      std::copy_n(cached.Plane, 4, sphere.Plane);
-    }
-    anyCaster = anyCaster || sphere.Casts;
-    objects.push_back(sphere);
-  }
-
-  // Self-shadowing: planar puts nothing on casters themselves, which is only
-  // right for convex ones (their own shadow is the lighting's terminator).
-  const Sphere* concave = nullptr;
-  for (const Sphere& o : objects)
-  {
-    if (o.Receiver || !o.Casts || !o.InView)
-    {
-      continue;
-    }
-    if (!this->Impl->For(o.Actor).Convex)
-    {
-      concave = &o;
-      break;
-    }
-  }
-
-  // Each switched-on light, in the mapper's numbering.
-  this->LightChoices.clear();
+  this->GatherObjects(s);
+  const int concave = this->FindConcaveCaster();
+  Internals& impl = *this->Impl;
+  impl.LightChoices.clear();
   this->LightReasons.clear();
   double stretch = 1.0, edgeLength = 0.0;
   for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
   {
-    std::string choice = "none", reason;
     double homogeneous[4];
     vtkshadow::LightHomogeneous(light, homogeneous);
-    if (light->LightTypeIsHeadlight())
+    const vsh_auto_light_choice c =
+      vsh_auto_choose_light(impl.Objects.data(), static_cast<int>(impl.Objects.size()),
+        homogeneous, light->LightTypeIsHeadlight() ? 1 : 0, concave);
+    if (c.technique == VSH_AUTO_CSM)
     {
-      reason = "the headlight: its shadows hide behind the casters";
+      // What the map's texels must resolve: the casters' outlines, and how
+      // far grazing light stretches them on plane receivers.
+      const int index = static_cast<int>(impl.LightChoices.size());
+      edgeLength = std::max(edgeLength, this->MapOutlinePixels(homogeneous, index, renderer));
+      stretch = std::max(stretch,
+        vsh_auto_plane_stretch(
+          impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous));
     }
-    else if (!anyCaster)
-    {
-      reason = "nothing casts shadows";
-    }
-    else if (concave)
-    {
-      choice = "csm";
-      reason = Centre("an object that is not convex", *concave) + " may shadow itself";
-    }
-    else
-    {
-      bool anyShadow = false;
-      for (const Sphere& a : objects)
-      {
-        for (const Sphere& b : objects)
-        {
-          if (!a.Casts || &a == &b || !b.InView ||
-            (a.Flat && vsh_auto_on_lit_side(a.Plane, homogeneous, b.Center, b.Radius)))
-          {
-            continue; // a plane receiver only blocks light from what lies behind it
-          }
-          bool may;
-          if (homogeneous[3] == 0.0)
-          {
-            const double amin[3] = { a.Bounds[0], a.Bounds[2], a.Bounds[4] };
-            const double amax[3] = { a.Bounds[1], a.Bounds[3], a.Bounds[5] };
-            const double bmin[3] = { b.Bounds[0], b.Bounds[2], b.Bounds[4] };
-            const double bmax[3] = { b.Bounds[1], b.Bounds[3], b.Bounds[5] };
-            may = vsh_auto_box_may_shadow(amin, amax, bmin, bmax, homogeneous) != 0;
-          }
-          else
-          {
-            may = vsh_auto_may_shadow(a.Center, a.Radius, b.Center, b.Radius, homogeneous) != 0;
-          }
-          if (!may)
-          {
-            continue;
-          }
-          anyShadow = true;
-          if (!(b.Receiver && b.Flat))
-          {
-            choice = "csm";
-            reason = Centre("an object", a) + " may shadow " +
-              Centre(b.Receiver ? "a receiver that is not a plane" : "a non-receiver", b);
-            break;
-          }
-        }
-        if (choice == "csm")
-        {
-          break;
-        }
-      }
-      if (choice != "csm")
-      {
-        choice = anyShadow ? "planar" : "none";
-        reason = anyShadow ? "every shadow falls on plane receivers: planar is exact and cheapest"
-                           : "no caster can shadow a visible object";
-      }
-    }
-    if (choice == "csm" && !light->LightTypeIsHeadlight())
-    {
-      // The outline of every shadow this light's map must draw: the
-      // silhouettes of the (non-receiver) casters in view, in pixels.
-      double outline = 0.0;
-      const int index = static_cast<int>(this->LightChoices.size());
-      for (const Sphere& o : objects)
-      {
-        if (o.Casts && !o.Receiver && o.InView)
-        {
-          outline +=
-            this->OutlinePixels(o.Actor, homogeneous, index, o.Center, o.Radius, renderer);
-        }
-      }
-      edgeLength = std::max(edgeLength, outline);
-      // Light at a grazing angle to a plane receiver stretches shadows, and
-      // their boundaries, by 1 / cos(incidence) (at the receiver's centre).
-      for (const Sphere& r : objects)
-      {
-        if (!r.Flat || !r.InView)
-        {
-          continue;
-        }
-        double towards[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          towards[k] = homogeneous[k] - homogeneous[3] * r.Center[k];
-        }
-        const double len = vtkMath::Norm(towards), n = vtkMath::Norm(r.Plane);
-        if (len > 0.0 && n > 0.0)
-        {
-          const double c = std::abs(vtkMath::Dot(towards, r.Plane)) / (len * n);
-          stretch = std::max(stretch, 1.0 / std::max(c, 1.0 / 64.0));
-        }
-      }
-    }
-    this->LightChoices.push_back(choice);
-    this->LightReasons.push_back(reason);
+    impl.LightChoices.push_back(static_cast<vtkshadow::TechniqueSet>(c.technique));
+    this->LightReasons.push_back(this->LightReasonText(c.reason, c.a, c.b));
   }
+  this->ApplyLightMasks();
+  this->ChooseTexelTarget(renderer, edgeLength, stretch);
+  this->DescribeChoice();
+}
 
-  // One frame for all lights: each pass skips the lights the other one has.
-  unsigned int planarLights = 0, csmLights = 0;
-  for (size_t l = 0; l < this->LightChoices.size() && l < 32; ++l)
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::GatherObjects(const vtkRenderState* s)
+{
+  vtkRenderer* renderer = s->GetRenderer();
+  double frustum[24];
+  renderer->GetActiveCamera()->GetFrustumPlanes(renderer->GetTiledAspectRatio(), frustum);
+  vtkshadow::ReceiverPlaneCache& planes = this->PlanarPass->GetReceiverPlaneCache();
+  Internals& impl = *this->Impl;
+  impl.Objects.clear();
+  impl.Actors.clear();
+  for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(s))
   {
-    planarLights |= (this->LightChoices[l] == "planar" ? 1u : 0u) << l;
-    csmLights |= (this->LightChoices[l] == "csm" ? 1u : 0u) << l;
+    vtkActor* actor = shadowActor.Actor;
+    vsh_auto_object object;
+    vsh_auto_object_init(&object, shadowActor.Bounds,
+      vtkshadow::HasFlag(actor, vtkShadowPassBase::RECEIVER()) ? 1 : 0,
+      vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()) ? 0 : 1, frustum);
+    if (object.receiver)
+    {
+      const vtkshadow::ReceiverPlaneCache::Entry& plane = planes.Get(actor);
+      object.flat = plane.Flat ? 1 : 0;
+      std::copy_n(plane.Plane, 4, object.plane);
+    }
+    impl.Objects.push_back(object);
+    impl.Actors.push_back(actor);
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkAutoShadowPass::FindConcaveCaster()
+{
+  // Self-shadowing: planar puts nothing on casters themselves, which is only
+  // right for convex ones (their own shadow is the lighting's terminator).
+  Internals& impl = *this->Impl;
+  for (size_t i = 0; i < impl.Objects.size(); ++i)
+  {
+    const vsh_auto_object& o = impl.Objects[i];
+    if (!o.receiver && o.casts && o.in_view && !impl.For(impl.Actors[i]).Convex)
+    {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAutoShadowPass::LightReasonText(int reason, int a, int b) const
+{
+  const std::vector<vsh_auto_object>& objects = this->Impl->Objects;
+  switch (reason)
+  {
+    case VSH_AUTO_REASON_HEADLIGHT:
+      return "the headlight: its shadows hide behind the casters";
+    case VSH_AUTO_REASON_NO_CASTER:
+      return "nothing casts shadows";
+    case VSH_AUTO_REASON_CONCAVE:
+      return Centre("an object that is not convex", objects[a]) + " may shadow itself";
+    case VSH_AUTO_REASON_SHADOWS_OTHER:
+      return Centre("an object", objects[a]) + " may shadow " +
+        Centre(objects[b].receiver ? "a receiver that is not a plane" : "a non-receiver",
+          objects[b]);
+    case VSH_AUTO_REASON_PLANES_ONLY:
+      return "every shadow falls on plane receivers: planar is exact and cheapest";
+    default:
+      return "no caster can shadow a visible object";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ApplyLightMasks()
+{
+  // One frame for all lights: each pass skips the lights the other one has.
+  Internals& impl = *this->Impl;
+  std::vector<int> techniques;
+  for (vtkshadow::TechniqueSet choice : impl.LightChoices)
+  {
+    techniques.push_back(static_cast<int>(choice));
+  }
+  unsigned int planarLights = 0, csmLights = 0;
+  vsh_auto_light_masks(
+    techniques.data(), static_cast<int>(techniques.size()), &planarLights, &csmLights);
   this->PlanarPass->SetSkippedLights(~planarLights);
   this->CascadedPass->SetSkippedLights(~csmLights);
+  impl.Choice = vtkshadow::FromLightMasks(planarLights, csmLights);
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ChooseTexelTarget(
+  vtkRenderer* renderer, double edgeLength, double stretch)
+{
   const int* size = renderer->GetSize();
-  this->UsedTexelTarget = this->MaxTexelPixels > 0.0
-    ? this->MaxTexelPixels
-    // A shadow boundary as long as the viewport's perimeter, one-pixel band.
-    : vsh_auto_texel_target(this->MaxError, static_cast<double>(size[0]) * size[1],
-        std::max(edgeLength, 1.0), stretch, 1.0);
+  this->UsedTexelTarget = vsh_auto_frame_texel_target(this->MaxTexelPixels, this->MaxError,
+    static_cast<double>(size[0]) * size[1], edgeLength, stretch);
   this->UsedStretch = stretch;
   this->UsedEdgeLength = edgeLength;
   this->CascadedPass->SetMaxTexelPixels(this->UsedTexelTarget);
-  this->Choice = planarLights && csmLights ? "planar+csm"
-    : planarLights                         ? "planar"
-    : csmLights                            ? "csm"
-                                           : "none";
-  if (this->LightChoices.empty())
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::DescribeChoice()
+{
+  if (this->LightReasons.empty())
   {
     this->Reason = "no light is switched on";
     return;
   }
   std::ostringstream why;
-  for (size_t l = 0; l < this->LightChoices.size(); ++l)
+  for (size_t l = 0; l < this->LightReasons.size(); ++l)
   {
-    why << (l ? "; " : "") << "light " << l << ": " << this->LightChoices[l] << " ("
-        << this->LightReasons[l] << ")";
+    why << (l ? "; " : "") << "light " << l << ": " << this->GetLightChoice(static_cast<int>(l))
+        << " (" << this->LightReasons[l] << ")";
   }
   this->Reason = why.str();
 }
@@ -325,17 +261,18 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
 void vtkAutoShadowPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
-  const std::string previous = this->Choice;
+  using vtkshadow::TechniqueSet;
+  const TechniqueSet previous = this->Impl->Choice;
   this->Decide(s);
-  const bool planar = this->Choice.find("planar") != std::string::npos;
-  const bool csm = this->Choice.find("csm") != std::string::npos;
+  const bool planar = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Planar);
+  const bool csm = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Cascaded);
   // A pass no longer used keeps no GL memory.
   vtkWindow* window = s->GetRenderer()->GetRenderWindow();
-  if (!planar && previous.find("planar") != std::string::npos)
+  if (!planar && vtkshadow::Has(previous, TechniqueSet::Planar))
   {
     this->PlanarPass->ReleaseGraphicsResources(window);
   }
-  if (!csm && previous.find("csm") != std::string::npos)
+  if (!csm && vtkshadow::Has(previous, TechniqueSet::Cascaded))
   {
     this->CascadedPass->ReleaseGraphicsResources(window);
   }
@@ -355,6 +292,25 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   }
   next->Render(s);
   this->NumberOfRenderedProps = next->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+double vtkAutoShadowPass::MapOutlinePixels(
+  const double light[4], int index, vtkRenderer* renderer)
+{
+  // The outline of every shadow this light's map must draw: the silhouettes
+  // of the (non-receiver) casters in view, in pixels.
+  Internals& impl = *this->Impl;
+  double outline = 0.0;
+  for (size_t i = 0; i < impl.Objects.size(); ++i)
+  {
+    const vsh_auto_object& o = impl.Objects[i];
+    if (o.casts && !o.receiver && o.in_view)
+    {
+      outline += this->OutlinePixels(impl.Actors[i], light, index, o.center, o.radius, renderer);
+    }
+  }
+  return outline;
 }
 
 //------------------------------------------------------------------------------
@@ -411,10 +367,17 @@ double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, const double light[4], 
 }
 
 //------------------------------------------------------------------------------
+const char* vtkAutoShadowPass::GetChoice() const
+{
+  return vtkshadow::TechniqueSetName(this->Impl->Choice);
+}
+
+//------------------------------------------------------------------------------
 const char* vtkAutoShadowPass::GetLightChoice(int light) const
 {
-  return light >= 0 && light < this->GetNumberOfLightChoices() ? this->LightChoices[light].c_str()
-                                                                : nullptr;
+  return light >= 0 && light < this->GetNumberOfLightChoices()
+    ? vtkshadow::TechniqueSetName(this->Impl->LightChoices[light])
+    : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -428,11 +391,11 @@ const char* vtkAutoShadowPass::GetLightReason(int light) const
 long long vtkAutoShadowPass::GetMemoryBytes() const
 {
   long long bytes = 0;
-  if (this->Choice.find("planar") != std::string::npos)
+  if (vtkshadow::Has(this->Impl->Choice, vtkshadow::TechniqueSet::Planar))
   {
     bytes += this->PlanarPass->GetMemoryBytes();
   }
-  if (this->Choice.find("csm") != std::string::npos)
+  if (vtkshadow::Has(this->Impl->Choice, vtkshadow::TechniqueSet::Cascaded))
   {
     bytes += this->CascadedPass->GetMemoryBytes();
   }
@@ -456,7 +419,7 @@ void vtkAutoShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UsedTexelTarget: " << this->UsedTexelTarget << "\n";
   os << indent << "UsedStretch: " << this->UsedStretch << "\n";
   os << indent << "UsedEdgeLength: " << this->UsedEdgeLength << "\n";
-  os << indent << "Choice: " << this->Choice << "\n";
+  os << indent << "Choice: " << this->GetChoice() << "\n";
   os << indent << "Reason: " << this->Reason << "\n";
 }
 
@@ -495,20 +458,21 @@ std::string vtkAutoShadowPass::GetStatsJSON(vtkRenderer* renderer) const
   }
   std::ostringstream out;
   out.precision(6);
-  out << "\"choice\": \"" << this->Choice << "\", \"reason\": \"" << reason << "\""
+  out << "\"choice\": \"" << this->GetChoice() << "\", \"reason\": \"" << reason << "\""
       << ", \"texel_target_px\": " << this->UsedTexelTarget
       << ", \"texel_stretch\": " << this->UsedStretch
       << ", \"edge_length_px\": " << this->UsedEdgeLength << ", \"light_choices\": [";
-  for (size_t l = 0; l < this->LightChoices.size(); ++l)
+  for (int l = 0; l < this->GetNumberOfLightChoices(); ++l)
   {
-    out << (l ? ", " : "") << "\"" << this->LightChoices[l] << "\"";
+    out << (l ? ", " : "") << "\"" << this->GetLightChoice(l) << "\"";
   }
   out << "]";
   // Details of the map pass when there is one, else of the planar pass.
-  const vtkShadowPassBase* details = this->Choice.find("csm") != std::string::npos
+  using vtkshadow::TechniqueSet;
+  const vtkShadowPassBase* details = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Cascaded)
     ? static_cast<vtkShadowPassBase*>(this->CascadedPass)
-    : this->Choice == "planar" ? static_cast<vtkShadowPassBase*>(this->PlanarPass)
-                               : nullptr;
+    : this->Impl->Choice == TechniqueSet::Planar ? static_cast<vtkShadowPassBase*>(this->PlanarPass)
+                                                 : nullptr;
   if (details)
   {
     out << ", " << details->GetStatsJSON(renderer);

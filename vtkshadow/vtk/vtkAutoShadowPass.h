@@ -33,10 +33,8 @@
 #include "vtkShadowPassBase.h"
 #include "vtkshadowModule.h" // for export macro
 
-#include <map>    // for std::map
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
-#include <utility> // for std::pair
 #include <vector>  // for std::vector
 
 class vtkActor;
@@ -77,9 +75,9 @@ public:
    * per light (mapper numbering: switched-on lights in order) "none",
    * "planar" or "csm" and why.
    */
-  const char* GetChoice() const { return this->Choice.c_str(); }
+  const char* GetChoice() const;
   const char* GetReason() const { return this->Reason.c_str(); }
-  int GetNumberOfLightChoices() const { return static_cast<int>(this->LightChoices.size()); }
+  int GetNumberOfLightChoices() const { return static_cast<int>(this->LightReasons.size()); }
   const char* GetLightChoice(int light) const;
   const char* GetLightReason(int light) const;
 
@@ -125,24 +123,15 @@ protected:
 
   vtkPlanarShadowPass* PlanarPass;
   vtkCascadedShadowMapPass* CascadedPass;
-  std::string Choice;
   std::string Reason;
-  std::vector<std::string> LightChoices;
   std::vector<std::string> LightReasons;
   double MaxError;
   double MaxTexelPixels;
   double UsedTexelTarget;
   double UsedStretch;
   double UsedEdgeLength;
-  // Receiver planes by actor, with the time they were computed at.
-  struct CachedPlane
-  {
-    vtkMTimeType Time = 0;
-    bool Flat = false;
-    double Plane[4] = { 0, 0, 0, 0 };
-  };
-  std::map<vtkProp*, CachedPlane> Planes;
-  // Casters' meshes (convexity, silhouettes), kept between frames.
+  // The choices (typed: vtkShadowTechniqueSet.h), the frame's objects and
+  // the casters' meshes (convexity, silhouettes), kept between frames.
   struct Internals;
   std::unique_ptr<Internals> Impl;
 
@@ -150,9 +139,20 @@ private:
   vtkAutoShadowPass(const vtkAutoShadowPass&) = delete;
   void operator=(const vtkAutoShadowPass&) = delete;
 
+  // The stages of a frame's choice: the objects (bounds, receiver planes,
+  // in view), the first caster in view that is not convex, per light the
+  // technique (vsh_auto_choose_light) and for a map light the shadow outline
+  // and stretch, then the passes' light masks and the texel target.
   void Decide(const vtkRenderState* s);
-  // Pixels of shadow outline `actor` throws under light number `index`
-  // (`light` homogeneous, world coordinates).
+  void GatherObjects(const vtkRenderState* s);
+  int FindConcaveCaster();
+  std::string LightReasonText(int reason, int a, int b) const;
+  void ApplyLightMasks();
+  void ChooseTexelTarget(vtkRenderer* renderer, double edgeLength, double stretch);
+  void DescribeChoice();
+  // Pixels of shadow outline the casters in view throw under light number
+  // `index` (`light` homogeneous, world coordinates), and of one actor.
+  double MapOutlinePixels(const double light[4], int index, vtkRenderer* renderer);
   double OutlinePixels(vtkActor* actor, const double light[4], int index,
     const double center[3], double radius, vtkRenderer* renderer);
 };

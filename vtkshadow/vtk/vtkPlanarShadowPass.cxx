@@ -33,6 +33,7 @@
 
 #include "vsh_mat4.h"
 #include "vsh_planar.h"
+#include "vsh_planar_plan.h"
 
 #include "vtkPlanarShadowLightFS.h"
 #include "vtkPlanarShadowMaskFS.h"
@@ -48,7 +49,7 @@ vtkStandardNewMacro(vtkPlanarShadowPass);
 
 namespace
 {
-constexpr int MaxPairs = 128;
+constexpr int MaxPairs = VSH_PLANAR_MAX_PAIRS;
 constexpr int MaxExplicitPlanes = 8;
 
 
@@ -69,21 +70,29 @@ void ToFloat(const double* in, float* out, int n)
   }
 }
 
-// Whether an actor's world bounds lie within 1e-6 of their size of the plane.
+// Whether an actor's world bounds lie in the plane (within 1e-6 of their size).
 bool LiesInPlane(vtkActor* actor, const double plane[4])
 {
   double b[6];
   actor->GetBounds(b);
-  const double size = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4], 1e-300 });
-  for (int k = 0; k < 8; ++k)
+  return vsh_planar_bounds_in_plane(b, plane) != 0;
+}
+
+// The render state's actors that can cast or receive: visible, with a
+// mapper, opaque (translucent geometry neither blocks nor shows shadows).
+std::vector<vtkActor*> OpaqueActors(const vtkRenderState* s)
+{
+  std::vector<vtkActor*> actors;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    const double p[3] = { b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)] };
-    if (std::abs(plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3]) > 1e-6 * size)
+    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    if (actor && actor->GetVisibility() && actor->GetMapper() &&
+      !actor->HasTranslucentPolygonalGeometry())
     {
-      return false;
+      actors.push_back(actor);
     }
   }
-  return true;
+  return actors;
 }
 
 } // namespace
@@ -95,12 +104,6 @@ struct vtkPlanarShadowPass::Internals
     double Origin[3];
     double Normal[3];
   };
-  struct CachedPlane
-  {
-    vtkMTimeType Time = 0;
-    bool Flat = false;
-    double Plane[4] = { 0, 0, 0, 0 };
-  };
   struct Caster
   {
     vtkShadowCasterGeometry Geometry;
@@ -109,7 +112,7 @@ struct vtkPlanarShadowPass::Internals
 
   std::vector<vtkWeakPointer<vtkActor>> ReceiverActors;
   std::vector<ExplicitPlane> Planes;
-  std::map<vtkActor*, CachedPlane> ReceiverPlanes;
+  vtkshadow::ReceiverPlaneCache ReceiverPlanes;
   std::map<vtkActor*, std::unique_ptr<Caster>> Casters;
   vtkMTimeType Frame = 0;
 
@@ -134,6 +137,17 @@ struct vtkPlanarShadowPass::Internals
   float PlaneTolerance[MaxExplicitPlanes] = {};
   std::vector<vtkProp*> Receiving; // sorted (from the map)
   bool EveryoneReceives = false;
+
+  // Marked with RECEIVER() or added with AddReceiverActor().
+  bool IsReceiverActor(vtkActor* actor) const
+  {
+    bool receiver = vtkshadow::HasFlag(actor, RECEIVER());
+    for (const auto& r : this->ReceiverActors)
+    {
+      receiver = receiver || r == actor;
+    }
+    return receiver;
+  }
 
   bool CanReceive(vtkProp* prop) const
   {
@@ -225,6 +239,40 @@ long long vtkPlanarShadowPass::GetMemoryBytes() const
 }
 
 //------------------------------------------------------------------------------
+vtkshadow::ReceiverPlaneCache& vtkPlanarShadowPass::GetReceiverPlaneCache()
+{
+  return this->Impl->ReceiverPlanes;
+}
+
+//------------------------------------------------------------------------------
+// The frame in plain data: what the planning stages gather and the drawing
+// stages read.
+struct vtkPlanarShadowPass::FrameState
+{
+  int Size[2] = { 0, 0 }; // the viewport, and the mask, in pixels
+  // Switched-on lights in the mappers' numbering.
+  std::vector<vsh_planar_light> Lights;
+  // Receivers: an actor (nullptr for an explicit plane) and its plane, 4
+  // doubles per receiver.
+  std::vector<vtkActor*> Receivers;
+  std::vector<double> Planes;
+  std::vector<vtkActor*> Casters;
+  // Camera: position, view rotation, and projection times view rotation
+  // (camera-relative world to clip space), in double.
+  double Eye[3] = { 0, 0, 0 };
+  double View[16];
+  double CameraRelative[16];
+};
+
+// A closed caster drawn as its silhouette fans, counted in the stencil.
+struct vtkPlanarShadowPass::Fan
+{
+  vtkShadowCasterGeometry* Geometry;
+  float MCDC[16];
+  double Light[4]; // in the caster's model coordinates
+};
+
+//------------------------------------------------------------------------------
 void vtkPlanarShadowPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
@@ -239,151 +287,158 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   }
   Internals& impl = *this->Impl;
   ++impl.Frame;
-
+  FrameState frame;
   // Viewport of this renderer in the target: the mask matches it pixel for pixel.
-  int size[2], origin[2];
-  GetViewport(s, size, origin);
-  impl.MaskOrigin[0] = origin[0];
-  impl.MaskOrigin[1] = origin[1];
+  GetViewport(s, frame.Size, impl.MaskOrigin);
 
-  // Lights in the mapper's numbering: every switched-on light, in order.
-  struct LightInfo
-  {
-    double Homogeneous[4];
-    bool Casts;
-  };
+  this->GatherLights(renderer, frame);
+  const std::vector<vtkActor*> actors = OpaqueActors(s);
+  this->GatherReceivers(actors, frame);
+  this->GatherCasters(actors, frame);
+  this->SetUpCamera(renderer, frame);
+  // Which (receiver, light) pairs cast, with their matrices: plain planning.
+  std::vector<vsh_planar_pair> pairs(MaxPairs);
+  const int count = vsh_planar_plan_pairs(frame.Planes.data(),
+    static_cast<int>(frame.Receivers.size()), frame.Lights.data(),
+    static_cast<int>(frame.Lights.size()), frame.Eye, pairs.data(), MaxPairs);
+  pairs.resize(std::max(count, 0));
+  this->DrawMask(window, frame, pairs);
+  this->ForgetRemovedCasters(window);
+
+  // The scene, with the receivers' lighting reading the mask.
+  impl.Mask->Activate();
+  this->RenderDelegateWithShaderHooks(s);
+  impl.Mask->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::GatherLights(vtkRenderer* renderer, FrameState& frame)
+{
   // Lights that follow the camera (and the automatic headlight) are updated
   // by VTK's lights pass inside the delegate, after our shadow work: bring
   // them up to date now, or their shadows lag one frame behind.
   vtkshadow::UpdateLights(renderer);
-  std::vector<LightInfo> lights;
+  for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
   {
-    for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
-    {
-      LightInfo info;
-      vtkshadow::LightHomogeneous(light, info.Homogeneous);
-      info.Casts = this->LightCasts(light, static_cast<int>(lights.size()));
-      lights.push_back(info);
-    }
+    vsh_planar_light info;
+    vtkshadow::LightHomogeneous(light, info.homogeneous);
+    info.casts = this->LightCasts(light, static_cast<int>(frame.Lights.size())) ? 1 : 0;
+    frame.Lights.push_back(info);
   }
-  impl.LightCount = static_cast<int>(lights.size());
+  this->Impl->LightCount = static_cast<int>(frame.Lights.size());
+}
 
-  // Props: receivers and casters.
-  std::vector<vtkActor*> casters;
-  struct ReceiverInfo
-  {
-    vtkActor* Actor;
-    double Plane[4];
-  };
-  std::vector<ReceiverInfo> receivers;
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::GatherReceivers(const std::vector<vtkActor*>& actors, FrameState& frame)
+{
+  Internals& impl = *this->Impl;
   impl.ReceiverIndex.clear();
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  for (vtkActor* actor : actors)
   {
-    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    if (!actor || !actor->GetVisibility() || !actor->GetMapper())
+    if (!impl.IsReceiverActor(actor))
     {
       continue;
     }
-    const bool opaque = !actor->HasTranslucentPolygonalGeometry();
-    bool receiver = vtkshadow::HasFlag(actor, RECEIVER());
-    for (const auto& r : impl.ReceiverActors)
+    vtkshadow::ReceiverPlaneCache::Entry& plane = impl.ReceiverPlanes.Get(actor);
+    if (!plane.Flat)
     {
-      receiver = receiver || r == actor;
+      if (!plane.Reported)
+      {
+        vtkWarningMacro("receiver actor " << actor << " is not flat: it receives no shadow");
+        plane.Reported = true;
+      }
+      continue;
     }
-    if (receiver && opaque)
+    // Every (receiver, light) pair needs a mask bit: at most 128 of them.
+    if (!vsh_planar_receiver_fits(static_cast<int>(frame.Receivers.size()), impl.LightCount))
     {
-      Internals::CachedPlane& cached = impl.ReceiverPlanes[actor];
-      vtkMTimeType t = actor->GetMTime();
-      if (auto* data = actor->GetMapper()->GetInputDataObject(0, 0))
-      {
-        t = std::max(t, data->GetMTime());
-      }
-      t = std::max(t, actor->GetMapper()->GetMTime());
-      if (t > cached.Time)
-      {
-        cached.Time = t;
-        cached.Flat = vtkshadow::ReceiverPlane(actor, cached.Plane);
-        if (!cached.Flat)
-        {
-          vtkWarningMacro("receiver actor " << actor << " is not flat: it receives no shadow");
-        }
-      }
-      // Every (receiver, light) pair needs a mask bit: at most 128 of them.
-      if (cached.Flat && (static_cast<int>(receivers.size()) + 1) * std::max<int>(impl.LightCount, 1) > MaxPairs)
-      {
-        vtkWarningMacro("more receivers than " << MaxPairs << " mask bits allow for "
-                                               << impl.LightCount << " lights: ignoring some");
-      }
-      else if (cached.Flat)
-      {
-        ReceiverInfo info{ actor, {} };
-        std::copy_n(cached.Plane, 4, info.Plane);
-        impl.ReceiverIndex[actor] = static_cast<int>(receivers.size());
-        receivers.push_back(info);
-      }
+      vtkWarningMacro("more receivers than " << MaxPairs << " mask bits allow for "
+                                             << impl.LightCount << " lights: ignoring some");
+      continue;
     }
-    if (opaque && !vtkshadow::HasFlag(actor, NO_CAST()))
-    {
-      casters.push_back(actor);
-    }
+    impl.ReceiverIndex[actor] = static_cast<int>(frame.Receivers.size());
+    frame.Receivers.push_back(actor);
+    frame.Planes.insert(frame.Planes.end(), plane.Plane, plane.Plane + 4);
   }
-  // Only receiving actors get the shadow lookup in their shaders; when the set
-  // changes, VTK's mappers must rebuild their shaders.
-  {
-    std::vector<vtkProp*> receiving;
-    for (const auto& entry : impl.ReceiverIndex)
-    {
-      receiving.push_back(entry.first);
-    }
-    const bool everyone = !impl.Planes.empty();
-    if (receiving != impl.Receiving || everyone != impl.EveryoneReceives)
-    {
-      impl.Receiving = receiving;
-      impl.EveryoneReceives = everyone;
-      this->BumpShaderTime();
-    }
-  }
+  this->UpdateReceivingSet();
+  // Explicit planes receive on every opaque fragment lying on them.
   for (const auto& p : impl.Planes)
   {
-    ReceiverInfo info{ nullptr, { p.Normal[0], p.Normal[1], p.Normal[2],
-                                  -(p.Normal[0] * p.Origin[0] + p.Normal[1] * p.Origin[1] +
-                                    p.Normal[2] * p.Origin[2]) } };
-    receivers.push_back(info);
+    const double plane[4] = { p.Normal[0], p.Normal[1], p.Normal[2],
+      -(p.Normal[0] * p.Origin[0] + p.Normal[1] * p.Origin[1] + p.Normal[2] * p.Origin[2]) };
+    frame.Receivers.push_back(nullptr);
+    frame.Planes.insert(frame.Planes.end(), plane, plane + 4);
   }
+}
 
-  // Camera: projection times the eye-relative view rotation, in double.
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::UpdateReceivingSet()
+{
+  // Only receiving actors get the shadow lookup in their shaders; when the set
+  // changes, VTK's mappers must rebuild their shaders.
+  Internals& impl = *this->Impl;
+  std::vector<vtkProp*> receiving;
+  for (const auto& entry : impl.ReceiverIndex)
+  {
+    receiving.push_back(entry.first);
+  }
+  const bool everyone = !impl.Planes.empty();
+  if (receiving != impl.Receiving || everyone != impl.EveryoneReceives)
+  {
+    impl.Receiving = receiving;
+    impl.EveryoneReceives = everyone;
+    this->BumpShaderTime();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::GatherCasters(const std::vector<vtkActor*>& actors, FrameState& frame)
+{
+  for (vtkActor* actor : actors)
+  {
+    if (!vtkshadow::HasFlag(actor, NO_CAST()))
+    {
+      frame.Casters.push_back(actor);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::SetUpCamera(vtkRenderer* renderer, FrameState& frame)
+{
+  // Projection times the eye-relative view rotation, in double.
   vtkCamera* camera = renderer->GetActiveCamera();
-  const double aspect = size[1] > 0 ? static_cast<double>(size[0]) / size[1] : 1.0;
-  double eye[3];
-  camera->GetPosition(eye);
-  double view[16], projection[16], cameraRelative[16];
-  vtkMatrix4x4::DeepCopy(view, camera->GetViewTransformMatrix());
-  view[3] = view[7] = view[11] = 0.0; // rotation only: inputs are relative to the eye
+  const double aspect =
+    frame.Size[1] > 0 ? static_cast<double>(frame.Size[0]) / frame.Size[1] : 1.0;
+  camera->GetPosition(frame.Eye);
+  double projection[16];
+  vtkMatrix4x4::DeepCopy(frame.View, camera->GetViewTransformMatrix());
+  frame.View[3] = frame.View[7] = frame.View[11] = 0.0; // inputs are relative to the eye
   vtkMatrix4x4::DeepCopy(projection, camera->GetProjectionTransformMatrix(aspect, -1, 1));
-  vsh_mat4_multiply(projection, view, cameraRelative);
+  vsh_mat4_multiply(projection, frame.View, frame.CameraRelative);
 
   // Explicit planes in view coordinates for the receivers' fragment shaders.
+  Internals& impl = *this->Impl;
   impl.PlaneCount = 0;
-  for (size_t r = 0; r < receivers.size(); ++r)
+  for (size_t r = 0; r < frame.Receivers.size(); ++r)
   {
-    if (receivers[r].Actor || impl.PlaneCount >= MaxExplicitPlanes)
+    if (frame.Receivers[r] || impl.PlaneCount >= MaxExplicitPlanes)
     {
       continue;
     }
-    const double* pl = receivers[r].Plane;
-    double nvc[3];
-    vsh_mat4_transform_direction(view, pl, nvc);
-    const double d = pl[3] + pl[0] * eye[0] + pl[1] * eye[1] + pl[2] * eye[2];
-    float* out = impl.PlaneVC + 4 * impl.PlaneCount;
-    ToFloat(nvc, out, 3);
-    out[3] = static_cast<float>(d);
+    double planeVC[4];
+    vsh_planar_plane_to_view(&frame.Planes[4 * r], frame.View, frame.Eye, planeVC);
+    ToFloat(planeVC, impl.PlaneVC + 4 * impl.PlaneCount, 4);
     impl.PlaneReceiver[impl.PlaneCount] = static_cast<int>(r);
     impl.PlaneTolerance[impl.PlaneCount] = static_cast<float>(this->PlaneTolerance);
     ++impl.PlaneCount;
   }
+}
 
-  // The mask target, sized to the viewport.
-  vtkOpenGLState* state = window->GetState();
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const FrameState& frame)
+{
+  Internals& impl = *this->Impl;
   if (!impl.Mask)
   {
     impl.Mask = vtkTextureObject::New();
@@ -395,7 +450,9 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   // reading a quarter of the bytes is most of the pass's per-pixel cost on a
   // software rasterizer. Up to 128 pairs need all four channels. (The
   // lighting code reads .x for pairs 0..31 either way.)
-  const int maskChannels = static_cast<int>(receivers.size()) * impl.LightCount <= 32 ? 1 : 4;
+  const int* size = frame.Size;
+  const int maskChannels =
+    vsh_planar_mask_channels(static_cast<int>(frame.Receivers.size()), impl.LightCount);
   if (impl.MaskSize[0] != size[0] || impl.MaskSize[1] != size[1] || !impl.Mask->GetHandle() ||
     impl.MaskChannels != maskChannels)
   {
@@ -411,11 +468,14 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     impl.MaskSize[1] = size[1];
     impl.MaskChannels = maskChannels;
   }
+}
 
-  state->PushFramebufferBindings();
-  impl.FBO->Bind();
-  impl.FBO->AddColorAttachment(0, impl.Mask);
-  impl.FBO->ActivateDrawBuffers(1);
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::AttachStencil(const FrameState& frame)
+{
+  // Stencil (with depth, unused) for the fans' winding numbers.
+  Internals& impl = *this->Impl;
+  const int* size = frame.Size;
   if (!impl.Stencil || impl.StencilSize[0] != size[0] || impl.StencilSize[1] != size[1])
   {
     if (!impl.Stencil)
@@ -428,7 +488,22 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     impl.StencilSize[0] = size[0];
     impl.StencilSize[1] = size[1];
   }
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, impl.Stencil);
+  glFramebufferRenderbuffer(
+    GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, impl.Stencil);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const FrameState& frame,
+  const std::vector<vsh_planar_pair>& pairs)
+{
+  Internals& impl = *this->Impl;
+  this->AllocateMask(window, frame);
+  vtkOpenGLState* state = window->GetState();
+  state->PushFramebufferBindings();
+  impl.FBO->Bind();
+  impl.FBO->AddColorAttachment(0, impl.Mask);
+  impl.FBO->ActivateDrawBuffers(1);
+  this->AttachStencil(frame);
   {
     vtkOpenGLState::ScopedglViewport viewport(state);
     vtkOpenGLState::ScopedglScissor scissorBox(state);
@@ -438,7 +513,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
     vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
     vtkOpenGLState::ScopedglColorMask colorMask(state);
-    state->vtkglViewport(0, 0, size[0], size[1]);
+    state->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDisable(GL_BLEND);
     state->vtkglDisable(GL_CULL_FACE);
@@ -447,9 +522,8 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     const GLuint zero[4] = { 0, 0, 0, 0 };
     glClearBufferuiv(GL_COLOR, 0, zero);
 
-    const int pairs = static_cast<int>(receivers.size()) * impl.LightCount;
     vtkShaderProgram* program = nullptr;
-    if (pairs > 0)
+    if (!frame.Receivers.empty() && impl.LightCount > 0)
     {
       program = window->GetShaderCache()->ReadyShaderProgram(
         vtkPlanarShadowMaskVS, vtkPlanarShadowMaskFS, "");
@@ -461,239 +535,9 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
       glLogicOp(GL_OR);
       glEnable(GL_CLIP_DISTANCE0);
       glEnable(GL_CLIP_DISTANCE1);
-      for (size_t r = 0; r < receivers.size(); ++r)
+      for (const vsh_planar_pair& pair : pairs)
       {
-        for (int l = 0; l < impl.LightCount; ++l)
-        {
-          const int pair = static_cast<int>(r) * impl.LightCount + l;
-          if (!lights[l].Casts || pair >= MaxPairs)
-          {
-            continue;
-          }
-          // Orient the plane towards the light: its lit side is the light's side.
-          double plane[4];
-          std::copy_n(receivers[r].Plane, 4, plane);
-          const double* light = lights[l].Homogeneous;
-          const double side = plane[0] * light[0] + plane[1] * light[1] + plane[2] * light[2] +
-            plane[3] * light[3];
-          if (side < 0)
-          {
-            for (double& v : plane)
-            {
-              v = -v;
-            }
-          }
-          double shadow[16], clip[2][4];
-          if (vsh_planar_shadow_matrix_relative(plane, light, eye, shadow) != VSH_PLANAR_OK ||
-            vsh_planar_caster_clip_planes_relative(plane, light, eye, clip) != VSH_PLANAR_OK)
-          {
-            continue; // light on, behind or parallel to the plane: no shadow
-          }
-          ++this->NumberOfShadowPairs;
-          double shadowDC[16];
-          vsh_mat4_multiply(cameraRelative, shadow, shadowDC);
-          unsigned int bits[4] = { 0, 0, 0, 0 };
-          bits[pair / 32] = 1u << (pair % 32);
-          glUniform4uiv(glGetUniformLocation(program->GetHandle(), "pairBit"), 1, bits);
-          struct Fan
-          {
-            vtkShadowCasterGeometry* Geometry;
-            float MCDC[16];
-            double Light[4];
-          };
-          std::vector<Fan> fans;
-          double fanRect[4] = { 1e300, 1e300, -1e300, -1e300 }; // NDC x0 y0 x1 y1
-          bool fanRectFull = false;
-          for (vtkActor* actor : casters)
-          {
-            if (actor == receivers[r].Actor)
-            {
-              continue; // a flat receiver does not shadow itself
-            }
-            if (!receivers[r].Actor && LiesInPlane(actor, receivers[r].Plane))
-            {
-              continue; // nor does a surface lying in an explicit receiver plane
-            }
-            auto& caster = impl.Casters[actor];
-            if (!caster)
-            {
-              caster.reset(new Internals::Caster);
-            }
-            if (caster->SeenFrame != impl.Frame)
-            {
-              const vtkMTimeType built = caster->Geometry.GetBuildTime();
-              caster->Geometry.Update(actor);
-              if (caster->Geometry.GetBuildTime() != built)
-              {
-                ++this->NumberOfGeometryBuilds;
-              }
-              caster->SeenFrame = impl.Frame;
-            }
-            if (caster->Geometry.GetNumberOfTriangles() == 0)
-            {
-              continue;
-            }
-            // Model (shifted) -> world -> relative to the eye, in double.
-            double model[16], modelRelative[16];
-            vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
-            caster->Geometry.GetModelRelativeMatrix(actor, eye, modelRelative);
-            double mcdc[16], keep0[4], keep1[4];
-            vsh_mat4_multiply(shadowDC, modelRelative, mcdc);
-            PlaneTimesMatrix(clip[0], modelRelative, keep0);
-            PlaneTimesMatrix(clip[1], modelRelative, keep1);
-            float mcdcF[16], keep0F[4], keep1F[4];
-            // vtkShaderProgram expects column-major (OpenGL) order.
-            double transposed[16];
-            vsh_mat4_transpose(mcdc, transposed);
-            ToFloat(transposed, mcdcF, 16);
-            ToFloat(keep0, keep0F, 4);
-            ToFloat(keep1, keep1F, 4);
-            // Clipping costs a software rasterizer a stage per triangle: skip
-            // it when every corner of the caster's bounds is kept anyway.
-            double b[6];
-            actor->GetBounds(b);
-            bool clipNeeded = false;
-            for (int k = 0; k < 8 && !clipNeeded; ++k)
-            {
-              const double p[3] = { b[k & 1] - eye[0], b[2 + ((k >> 1) & 1)] - eye[1],
-                b[4 + ((k >> 2) & 1)] - eye[2] };
-              for (const auto& plane : clip)
-              {
-                clipNeeded = clipNeeded ||
-                  plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3] <= 0.0;
-              }
-            }
-            if (!clipNeeded && caster->Geometry.IsClosed())
-            {
-              // Closed and unclipped: its silhouette fans, counted in the
-              // stencil below, cover exactly what its triangles would.
-              Fan fan;
-              fan.Geometry = &caster->Geometry;
-              std::copy_n(mcdcF, 16, fan.MCDC);
-              double inverse[16];
-              if (vsh_mat4_inverse(model, inverse))
-              {
-                vsh_mat4_transform_point4(inverse, light, fan.Light);
-                fans.push_back(fan);
-                for (int k = 0; k < 8; ++k)
-                {
-                  const double p[4] = { b[k & 1] - eye[0], b[2 + ((k >> 1) & 1)] - eye[1],
-                    b[4 + ((k >> 2) & 1)] - eye[2], 1.0 };
-                  double q[4];
-                  vsh_mat4_transform_point4(shadowDC, p, q);
-                  if (!(q[3] > 0.0))
-                  {
-                    fanRectFull = true;
-                    continue;
-                  }
-                  fanRect[0] = std::min(fanRect[0], q[0] / q[3]);
-                  fanRect[1] = std::min(fanRect[1], q[1] / q[3]);
-                  fanRect[2] = std::max(fanRect[2], q[0] / q[3]);
-                  fanRect[3] = std::max(fanRect[3], q[1] / q[3]);
-                }
-                continue;
-              }
-            }
-            if (clipNeeded)
-            {
-              glEnable(GL_CLIP_DISTANCE0);
-              glEnable(GL_CLIP_DISTANCE1);
-            }
-            else
-            {
-              glDisable(GL_CLIP_DISTANCE0);
-              glDisable(GL_CLIP_DISTANCE1);
-              keep0F[0] = keep0F[1] = keep0F[2] = 0.0f;
-              keep0F[3] = 1.0f;
-              std::copy_n(keep0F, 4, keep1F);
-            }
-            program->SetUniformMatrix4x4("shadowMCDC", mcdcF);
-            program->SetUniform4f("receiverSideMC", keep0F);
-            program->SetUniform4f("belowLightMC", keep1F);
-            caster->Geometry.Draw(program);
-            this->NumberOfMaskTriangles += caster->Geometry.GetNumberOfTriangles();
-          }
-          if (!fans.empty())
-          {
-            // Winding numbers of the silhouette fans in the stencil (front
-            // +1, back -1), then the pair's bit wherever it is not zero,
-            // within the casters' projected bounds.
-            int x0 = 0, y0 = 0, x1 = size[0], y1 = size[1];
-            if (!fanRectFull)
-            {
-              x0 = std::max(0, static_cast<int>(std::floor((fanRect[0] * 0.5 + 0.5) * size[0])) - 1);
-              y0 = std::max(0, static_cast<int>(std::floor((fanRect[1] * 0.5 + 0.5) * size[1])) - 1);
-              x1 = std::min(size[0], static_cast<int>(std::ceil((fanRect[2] * 0.5 + 0.5) * size[0])) + 1);
-              y1 = std::min(size[1], static_cast<int>(std::ceil((fanRect[3] * 0.5 + 0.5) * size[1])) + 1);
-            }
-            if (x1 > x0 && y1 > y0)
-            {
-              // Through vtkOpenGLState: VTK caches this state, and a stale
-              // cache would leave our scissor box on its own renders.
-              state->vtkglEnable(GL_SCISSOR_TEST);
-              state->vtkglScissor(x0, y0, x1 - x0, y1 - y0);
-              state->vtkglStencilMask(0xff);
-              glClearStencil(0);
-              state->vtkglClear(GL_STENCIL_BUFFER_BIT);
-              state->vtkglEnable(GL_STENCIL_TEST);
-              // Counting only: OR-ing zero writes nothing (llvmpipe does not
-              // honour a colour mask with logic ops on integer targets).
-              const unsigned int none[4] = { 0, 0, 0, 0 };
-              const GLint pairBitLocation = glGetUniformLocation(program->GetHandle(), "pairBit");
-              glUniform4uiv(pairBitLocation, 1, none);
-              state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
-              state->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-              state->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
-              glDisable(GL_CLIP_DISTANCE0);
-              glDisable(GL_CLIP_DISTANCE1);
-              // Keep-all planes too: llvmpipe was seen to apply the clip
-              // distances a shader writes even with them disabled.
-              const float keepAll[4] = { 0, 0, 0, 1 };
-              program->SetUniform4f("receiverSideMC", keepAll);
-              program->SetUniform4f("belowLightMC", keepAll);
-              for (const Fan& fan : fans)
-              {
-                float mcdc[16];
-                std::copy_n(fan.MCDC, 16, mcdc);
-                program->SetUniformMatrix4x4("shadowMCDC", mcdc);
-                fan.Geometry->DrawSilhouetteFans(program, fan.Light);
-                this->NumberOfMaskTriangles += fan.Geometry->GetNumberOfSilhouetteTriangles();
-              }
-              glUniform4uiv(pairBitLocation, 1, bits);
-              state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
-              state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-              // A quad over the viewport in clip space sets the bit.
-              if (!impl.Quad)
-              {
-                const std::vector<float> corners = { -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, -1, 0, 1, 1,
-                  0, -1, 1, 0 };
-                impl.Quad = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-                impl.Quad->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-                impl.Quad->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
-                impl.QuadVAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-                impl.QuadProgram = nullptr;
-              }
-              if (impl.QuadProgram != program)
-              {
-                impl.QuadVAO->ShaderProgramChanged();
-                impl.QuadVAO->Bind();
-                impl.QuadVAO->AddAttributeArray(
-                  program, impl.Quad, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-                impl.QuadProgram = program;
-              }
-              float identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
-              const float keep[4] = { 0, 0, 0, 1 };
-              program->SetUniformMatrix4x4("shadowMCDC", identity);
-              program->SetUniform4f("receiverSideMC", keep);
-              program->SetUniform4f("belowLightMC", keep);
-              impl.QuadVAO->Bind();
-              glDrawArrays(GL_TRIANGLES, 0, 6);
-              impl.QuadVAO->Release();
-              state->vtkglDisable(GL_STENCIL_TEST);
-              state->vtkglDisable(GL_SCISSOR_TEST);
-            }
-          }
-        }
+        this->DrawPair(program, state, frame, pair);
       }
       glDisable(GL_CLIP_DISTANCE0);
       glDisable(GL_CLIP_DISTANCE1);
@@ -703,8 +547,215 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);
   impl.FBO->RemoveColorAttachment(0);
   state->PopFramebufferBindings();
+}
 
-  // Forget casters that left the scene.
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::DrawPair(vtkShaderProgram* program, vtkOpenGLState* state,
+  const FrameState& frame, const vsh_planar_pair& pair)
+{
+  ++this->NumberOfShadowPairs;
+  double shadowDC[16];
+  vsh_mat4_multiply(frame.CameraRelative, pair.shadow, shadowDC);
+  unsigned int bits[4];
+  vsh_planar_pair_bits(pair.bit, bits);
+  glUniform4uiv(glGetUniformLocation(program->GetHandle(), "pairBit"), 1, bits);
+  vtkActor* receiver = frame.Receivers[pair.receiver];
+  const double* receiverPlane = &frame.Planes[4 * pair.receiver];
+  std::vector<Fan> fans;
+  vsh_planar_rect fanRect;
+  vsh_planar_rect_init(&fanRect);
+  for (vtkActor* actor : frame.Casters)
+  {
+    if (actor == receiver)
+    {
+      continue; // a flat receiver does not shadow itself
+    }
+    if (!receiver && LiesInPlane(actor, receiverPlane))
+    {
+      continue; // nor does a surface lying in an explicit receiver plane
+    }
+    vtkShadowCasterGeometry* geometry = this->CasterGeometry(actor);
+    if (geometry->GetNumberOfTriangles() > 0)
+    {
+      this->DrawCaster(program, frame, pair, shadowDC, actor, *geometry, fans, fanRect);
+    }
+  }
+  if (!fans.empty())
+  {
+    this->FillFans(program, state, frame, fans, fanRect, bits);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkShadowCasterGeometry* vtkPlanarShadowPass::CasterGeometry(vtkActor* actor)
+{
+  // Built on first use in a frame, rebuilt only when the mesh changed.
+  Internals& impl = *this->Impl;
+  auto& caster = impl.Casters[actor];
+  if (!caster)
+  {
+    caster.reset(new Internals::Caster);
+  }
+  if (caster->SeenFrame != impl.Frame)
+  {
+    const vtkMTimeType built = caster->Geometry.GetBuildTime();
+    caster->Geometry.Update(actor);
+    if (caster->Geometry.GetBuildTime() != built)
+    {
+      ++this->NumberOfGeometryBuilds;
+    }
+    caster->SeenFrame = impl.Frame;
+  }
+  return &caster->Geometry;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState& frame,
+  const vsh_planar_pair& pair, const double shadowDC[16], vtkActor* actor,
+  vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans, vsh_planar_rect& fanRect)
+{
+  // Model (shifted) -> world -> relative to the eye, in double.
+  double model[16], modelRelative[16];
+  vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
+  geometry.GetModelRelativeMatrix(actor, frame.Eye, modelRelative);
+  double mcdc[16], keep0[4], keep1[4], transposed[16];
+  vsh_mat4_multiply(shadowDC, modelRelative, mcdc);
+  PlaneTimesMatrix(pair.clip[0], modelRelative, keep0);
+  PlaneTimesMatrix(pair.clip[1], modelRelative, keep1);
+  float mcdcF[16], keep0F[4], keep1F[4];
+  // vtkShaderProgram expects column-major (OpenGL) order.
+  vsh_mat4_transpose(mcdc, transposed);
+  ToFloat(transposed, mcdcF, 16);
+  ToFloat(keep0, keep0F, 4);
+  ToFloat(keep1, keep1F, 4);
+  // Clipping costs a software rasterizer a stage per triangle: skip it when
+  // every corner of the caster's bounds is kept anyway.
+  double b[6];
+  actor->GetBounds(b);
+  const bool clipNeeded = vsh_planar_bounds_clipped(pair.clip, b, frame.Eye) != 0;
+  double inverse[16];
+  if (!clipNeeded && geometry.IsClosed() && vsh_mat4_inverse(model, inverse))
+  {
+    // Closed and unclipped: its silhouette fans, counted in the stencil,
+    // cover exactly what its triangles would.
+    Fan fan;
+    fan.Geometry = &geometry;
+    std::copy_n(mcdcF, 16, fan.MCDC);
+    vsh_mat4_transform_point4(inverse, frame.Lights[pair.light].homogeneous, fan.Light);
+    fans.push_back(fan);
+    vsh_planar_rect_add_bounds(&fanRect, shadowDC, b, frame.Eye);
+    return;
+  }
+  if (clipNeeded)
+  {
+    glEnable(GL_CLIP_DISTANCE0);
+    glEnable(GL_CLIP_DISTANCE1);
+  }
+  else
+  {
+    glDisable(GL_CLIP_DISTANCE0);
+    glDisable(GL_CLIP_DISTANCE1);
+    keep0F[0] = keep0F[1] = keep0F[2] = 0.0f;
+    keep0F[3] = 1.0f;
+    std::copy_n(keep0F, 4, keep1F);
+  }
+  program->SetUniformMatrix4x4("shadowMCDC", mcdcF);
+  program->SetUniform4f("receiverSideMC", keep0F);
+  program->SetUniform4f("belowLightMC", keep1F);
+  geometry.Draw(program);
+  this->NumberOfMaskTriangles += geometry.GetNumberOfTriangles();
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::FillFans(vtkShaderProgram* program, vtkOpenGLState* state,
+  const FrameState& frame, const std::vector<Fan>& fans, const vsh_planar_rect& fanRect,
+  const unsigned int bits[4])
+{
+  // Winding numbers of the silhouette fans in the stencil (front +1, back
+  // -1), then the pair's bit wherever it is not zero, within the casters'
+  // projected bounds.
+  int box[4];
+  if (!vsh_planar_rect_pixels(&fanRect, frame.Size, box))
+  {
+    return;
+  }
+  // Through vtkOpenGLState: VTK caches this state, and a stale cache would
+  // leave our scissor box on its own renders.
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  state->vtkglScissor(box[0], box[1], box[2] - box[0], box[3] - box[1]);
+  state->vtkglStencilMask(0xff);
+  glClearStencil(0);
+  state->vtkglClear(GL_STENCIL_BUFFER_BIT);
+  state->vtkglEnable(GL_STENCIL_TEST);
+  // Counting only: OR-ing zero writes nothing (llvmpipe does not honour a
+  // colour mask with logic ops on integer targets).
+  const unsigned int none[4] = { 0, 0, 0, 0 };
+  const GLint pairBitLocation = glGetUniformLocation(program->GetHandle(), "pairBit");
+  glUniform4uiv(pairBitLocation, 1, none);
+  state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
+  state->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+  state->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+  glDisable(GL_CLIP_DISTANCE0);
+  glDisable(GL_CLIP_DISTANCE1);
+  // Keep-all planes too: llvmpipe was seen to apply the clip distances a
+  // shader writes even with them disabled.
+  const float keepAll[4] = { 0, 0, 0, 1 };
+  program->SetUniform4f("receiverSideMC", keepAll);
+  program->SetUniform4f("belowLightMC", keepAll);
+  for (const Fan& fan : fans)
+  {
+    float mcdc[16];
+    std::copy_n(fan.MCDC, 16, mcdc);
+    program->SetUniformMatrix4x4("shadowMCDC", mcdc);
+    fan.Geometry->DrawSilhouetteFans(program, fan.Light);
+    this->NumberOfMaskTriangles += fan.Geometry->GetNumberOfSilhouetteTriangles();
+  }
+  glUniform4uiv(pairBitLocation, 1, bits);
+  state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
+  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  this->DrawViewportQuad(program);
+  state->vtkglDisable(GL_STENCIL_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::DrawViewportQuad(vtkShaderProgram* program)
+{
+  // A quad over the viewport in clip space sets the bit.
+  Internals& impl = *this->Impl;
+  if (!impl.Quad)
+  {
+    const std::vector<float> corners = { -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, -1, 1,
+      0 };
+    impl.Quad = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    impl.Quad->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+    impl.Quad->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
+    impl.QuadVAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+    impl.QuadProgram = nullptr;
+  }
+  if (impl.QuadProgram != program)
+  {
+    impl.QuadVAO->ShaderProgramChanged();
+    impl.QuadVAO->Bind();
+    impl.QuadVAO->AddAttributeArray(
+      program, impl.Quad, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    impl.QuadProgram = program;
+  }
+  float identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  const float keep[4] = { 0, 0, 0, 1 };
+  program->SetUniformMatrix4x4("shadowMCDC", identity);
+  program->SetUniform4f("receiverSideMC", keep);
+  program->SetUniform4f("belowLightMC", keep);
+  impl.QuadVAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+  impl.QuadVAO->Release();
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::ForgetRemovedCasters(vtkOpenGLRenderWindow* window)
+{
+  // Casters not drawn last frame nor this one have left the scene.
+  Internals& impl = *this->Impl;
   for (auto it = impl.Casters.begin(); it != impl.Casters.end();)
   {
     if (it->second->SeenFrame + 1 < impl.Frame && it->second->SeenFrame != 0)
@@ -717,11 +768,6 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
       ++it;
     }
   }
-
-  // The scene, with the receivers' lighting reading the mask.
-  impl.Mask->Activate();
-  this->RenderDelegateWithShaderHooks(s);
-  impl.Mask->Deactivate();
 }
 
 //------------------------------------------------------------------------------

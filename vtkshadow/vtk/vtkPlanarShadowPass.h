@@ -34,12 +34,25 @@
 #include "vtkshadowModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
 
 class vtkActor;
 class vtkInformationIntegerKey;
 class vtkProp;
 class vtkRenderPass;
 class vtkTextureObject;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
+class vtkShaderProgram;
+class vtkShadowCasterGeometry;
+struct vsh_planar_pair;
+struct vsh_planar_rect;
+#ifndef __VTK_WRAP__
+namespace vtkshadow
+{
+class ReceiverPlaneCache;
+}
+#endif
 
 class VTKSHADOW_EXPORT vtkPlanarShadowPass : public vtkShadowPassBase
 {
@@ -96,6 +109,14 @@ public:
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+#ifndef __VTK_WRAP__
+  /**
+   * The planes of the receiver actors, by actor (vtkShadowReceiverPlane.h):
+   * vtkAutoShadowPass reads the cache of its planar pass.
+   */
+  vtkshadow::ReceiverPlaneCache& GetReceiverPlaneCache();
+#endif
+
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -118,6 +139,31 @@ private:
 
   struct Internals;
   std::unique_ptr<Internals> Impl;
+
+  // A frame's plain data: viewport, lights, receivers, casters, camera.
+  struct FrameState;
+  struct Fan;
+  // The stages of Render(), in order.
+  void GatherLights(vtkRenderer* renderer, FrameState& frame);
+  void GatherReceivers(const std::vector<vtkActor*>& actors, FrameState& frame);
+  void GatherCasters(const std::vector<vtkActor*>& actors, FrameState& frame);
+  void SetUpCamera(vtkRenderer* renderer, FrameState& frame);
+  void DrawMask(vtkOpenGLRenderWindow* window, const FrameState& frame,
+    const std::vector<vsh_planar_pair>& pairs);
+  void ForgetRemovedCasters(vtkOpenGLRenderWindow* window);
+  // Parts of them.
+  void UpdateReceivingSet();
+  void AllocateMask(vtkOpenGLRenderWindow* window, const FrameState& frame);
+  void AttachStencil(const FrameState& frame);
+  void DrawPair(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
+    const vsh_planar_pair& pair);
+  vtkShadowCasterGeometry* CasterGeometry(vtkActor* actor);
+  void DrawCaster(vtkShaderProgram* program, const FrameState& frame, const vsh_planar_pair& pair,
+    const double shadowDC[16], vtkActor* actor, vtkShadowCasterGeometry& geometry,
+    std::vector<Fan>& fans, vsh_planar_rect& fanRect);
+  void FillFans(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
+    const std::vector<Fan>& fans, const vsh_planar_rect& fanRect, const unsigned int bits[4]);
+  void DrawViewportQuad(vtkShaderProgram* program);
 };
 
 #endif

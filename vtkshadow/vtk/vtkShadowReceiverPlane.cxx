@@ -5,6 +5,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkShadowActorFlags.h"
 
 #include "vsh_mat4.h"
 #include "vsh_plane.h"
@@ -34,5 +35,19 @@ bool ReceiverPlane(vtkActor* actor, double plane[4])
   }
   // Largest fan triangle's normal, flat within 1e-6 of the points' size.
   return vsh_plane_fit_points(world.data(), world.size() / 3, 1e-6, plane) == VSH_PLANE_OK;
+}
+
+//------------------------------------------------------------------------------
+ReceiverPlaneCache::Entry& ReceiverPlaneCache::Get(vtkActor* actor)
+{
+  Entry& entry = this->Entries[actor];
+  const vtkMTimeType t = std::max(actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor));
+  if (t > entry.Time || entry.Time == 0)
+  {
+    entry.Time = t;
+    entry.Flat = ReceiverPlane(actor, entry.Plane);
+    entry.Reported = false;
+  }
+  return entry;
 }
 }

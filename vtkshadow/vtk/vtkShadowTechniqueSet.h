@@ -1,0 +1,65 @@
+// vtkShadowTechniqueSet.h - which techniques vtkAutoShadowPass chose, as a
+// set of bits; names only for display. No VTK: unit-tested on its own.
+#ifndef vtkShadowTechniqueSet_h
+#define vtkShadowTechniqueSet_h
+
+#include "vsh_auto.h"
+
+namespace vtkshadow
+{
+/**
+ * A set of techniques (the core's VSH_AUTO_* values): one light's choice is
+ * a single member or None, a frame's choice the union over its lights.
+ */
+enum class TechniqueSet : unsigned
+{
+  None = VSH_AUTO_NONE,
+  Planar = VSH_AUTO_PLANAR,
+  Cascaded = VSH_AUTO_CSM
+};
+
+constexpr TechniqueSet operator|(TechniqueSet a, TechniqueSet b)
+{
+  return static_cast<TechniqueSet>(static_cast<unsigned>(a) | static_cast<unsigned>(b));
+}
+
+constexpr TechniqueSet operator&(TechniqueSet a, TechniqueSet b)
+{
+  return static_cast<TechniqueSet>(static_cast<unsigned>(a) & static_cast<unsigned>(b));
+}
+
+inline TechniqueSet& operator|=(TechniqueSet& a, TechniqueSet b)
+{
+  return a = a | b;
+}
+
+/**
+ * Whether `set` holds every technique of `members` (and members is not None).
+ */
+constexpr bool Has(TechniqueSet set, TechniqueSet members)
+{
+  return members != TechniqueSet::None && (set & members) == members;
+}
+
+/**
+ * The frame's set from the per-light masks of vsh_auto_light_masks.
+ */
+constexpr TechniqueSet FromLightMasks(unsigned int planar, unsigned int cascaded)
+{
+  return (planar ? TechniqueSet::Planar : TechniqueSet::None) |
+    (cascaded ? TechniqueSet::Cascaded : TechniqueSet::None);
+}
+
+/**
+ * The display name: "none", "planar", "csm" or "planar+csm" (what
+ * vtkAutoShadowPass::GetChoice and --stats print).
+ */
+inline const char* TechniqueSetName(TechniqueSet set)
+{
+  const bool planar = Has(set, TechniqueSet::Planar);
+  const bool cascaded = Has(set, TechniqueSet::Cascaded);
+  return planar && cascaded ? "planar+csm" : planar ? "planar" : cascaded ? "csm" : "none";
+}
+}
+
+#endif
