@@ -377,9 +377,15 @@ static void test_visible_depth_known(void) {
       .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK(nf[0] == 30);
   CHECK_NEAR(nf[1], 100, 1e-13);
+}
+
+/* Zero-volume boxes (floors, walls, points, segments) and nothing visible. */
+static void test_visible_depth_degenerate(void) {
+  double nf[2];
+  const vsh_camera c60 = axis_camera(60);
   /* Zero-volume: a flat floor 1 below the eye, 60 degrees: the bottom plane
    * y >= -t d meets it at d = 1 / t; its far edge (z = -50) is inside. */
-  b = box(-50, 50, -1, -1, -50, 50);
+  vsh_bounds b = box(-50, 50, -1, -1, -50, 50);
   CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
       .clip_near = 0.1, .clip_far = 1000, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 1 / tan_half(60), 1e-13);
@@ -1717,6 +1723,7 @@ int main(void) {
   test_splits_bad_input();
   test_default_count();
   test_visible_depth_known();
+  test_visible_depth_degenerate();
   test_visible_depth_bad_input();
   test_visible_depth_offset();
   test_visible_depth_sampled();
