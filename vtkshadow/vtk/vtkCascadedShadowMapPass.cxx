@@ -26,7 +26,6 @@
 
 #include "vsh_bounds.h"
 #include "vsh_camera.h"
-#include "vsh_vec3.h"
 #include "vsh_csm.h"
 #include "vsh_csm_plan.h"
 #include "vsh_mat4.h"
