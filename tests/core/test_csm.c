@@ -104,11 +104,16 @@ static void test_splits_closed_forms(void) {
       double u[VSH_CSM_MAX_CASCADES + 1], l[VSH_CSM_MAX_CASCADES + 1];
       double p0[VSH_CSM_MAX_CASCADES + 1], p1[VSH_CSM_MAX_CASCADES + 1];
       double ph[VSH_CSM_MAX_CASCADES + 1];
-      CHECK(vsh_csm_splits(VSH_SPLIT_UNIFORM, c, n, f, 0.0, NULL, u) == 0);
-      CHECK(vsh_csm_splits(VSH_SPLIT_LOG, c, n, f, 0.0, NULL, l) == 0);
-      CHECK(vsh_csm_splits(VSH_SPLIT_PRACTICAL, c, n, f, 0.0, NULL, p0) == 0);
-      CHECK(vsh_csm_splits(VSH_SPLIT_PRACTICAL, c, n, f, 1.0, NULL, p1) == 0);
-      CHECK(vsh_csm_splits(VSH_SPLIT_PRACTICAL, c, n, f, 0.5, NULL, ph) == 0);
+      CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_UNIFORM, .count = c,
+          .near_depth = n, .far_depth = f, .lambda = 0.0, .fractions = NULL}, u) == VSH_CSM_OK);
+      CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_LOG, .count = c,
+          .near_depth = n, .far_depth = f, .lambda = 0.0, .fractions = NULL}, l) == VSH_CSM_OK);
+      CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_PRACTICAL, .count = c,
+          .near_depth = n, .far_depth = f, .lambda = 0.0, .fractions = NULL}, p0) == VSH_CSM_OK);
+      CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_PRACTICAL, .count = c,
+          .near_depth = n, .far_depth = f, .lambda = 1.0, .fractions = NULL}, p1) == VSH_CSM_OK);
+      CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_PRACTICAL, .count = c,
+          .near_depth = n, .far_depth = f, .lambda = 0.5, .fractions = NULL}, ph) == VSH_CSM_OK);
       check_split_invariants(u, c, n, f);
       check_split_invariants(l, c, n, f);
       check_split_invariants(p0, c, n, f);
@@ -131,28 +136,34 @@ static void test_splits_closed_forms(void) {
   }
   /* Exact decades: log over [1, 1e4] in 4 steps. */
   double s[VSH_CSM_MAX_CASCADES + 1];
-  CHECK(vsh_csm_splits(VSH_SPLIT_LOG, 4, 1, 1e4, 0, NULL, s) == 0);
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_LOG, .count = 4, .near_depth = 1,
+      .far_depth = 1e4, .lambda = 0, .fractions = NULL}, s) == VSH_CSM_OK);
   CHECK_NEAR(s[1], 10, 1e-13);
   CHECK_NEAR(s[2], 100, 1e-12);
   CHECK_NEAR(s[3], 1000, 1e-11);
-  CHECK(vsh_csm_splits(VSH_SPLIT_UNIFORM, 4, 2, 10, 0, NULL, s) == 0);
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_UNIFORM, .count = 4,
+      .near_depth = 2, .far_depth = 10, .lambda = 0, .fractions = NULL}, s) == VSH_CSM_OK);
   CHECK(s[0] == 2 && s[1] == 4 && s[2] == 6 && s[3] == 8 && s[4] == 10);
   /* Uniform ignores lambda (only PRACTICAL reads it). */
-  CHECK(vsh_csm_splits(VSH_SPLIT_UNIFORM, 4, 2, 10, 7.0, NULL, s) == 0);
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_UNIFORM, .count = 4,
+      .near_depth = 2, .far_depth = 10, .lambda = 7.0, .fractions = NULL}, s) == VSH_CSM_OK);
   CHECK(s[2] == 6);
   /* Explicit fractions. */
   const double fr[3] = {0.1, 0.3, 0.7};
-  CHECK(vsh_csm_splits(VSH_SPLIT_EXPLICIT, 4, 10, 110, 0, fr, s) == 0);
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_EXPLICIT, .count = 4,
+      .near_depth = 10, .far_depth = 110, .lambda = 0, .fractions = fr}, s) == VSH_CSM_OK);
   check_split_invariants(s, 4, 10, 110);
   CHECK_NEAR(s[1], 20, 1e-13);
   CHECK_NEAR(s[2], 40, 1e-13);
   CHECK_NEAR(s[3], 80, 1e-13);
   /* Explicit with one cascade reads no fractions. */
-  CHECK(vsh_csm_splits(VSH_SPLIT_EXPLICIT, 1, 10, 110, 0, fr, s) == 0);
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_EXPLICIT, .count = 1,
+      .near_depth = 10, .far_depth = 110, .lambda = 0, .fractions = fr}, s) == VSH_CSM_OK);
   CHECK(s[0] == 10 && s[1] == 110);
   /* All 8 explicit. */
   const double fr8[7] = {0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.8};
-  CHECK(vsh_csm_splits(VSH_SPLIT_EXPLICIT, 8, 1, 101, 0, fr8, s) == 0);
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_EXPLICIT, .count = 8,
+      .near_depth = 1, .far_depth = 101, .lambda = 0, .fractions = fr8}, s) == VSH_CSM_OK);
   check_split_invariants(s, 8, 1, 101);
   for (int i = 1; i < 8; ++i) CHECK_NEAR(s[i], 1 + 100 * fr8[i - 1], 1e-13);
   /* Seeded random lambdas: monotone and between log and uniform. */
@@ -161,7 +172,8 @@ static void test_splits_closed_forms(void) {
     const int c = 1 + (int)vsh_test_rnd(0, 8);
     const double lam = vsh_test_rnd(0, 1);
     double p[VSH_CSM_MAX_CASCADES + 1];
-    CHECK(vsh_csm_splits(VSH_SPLIT_PRACTICAL, c, n, f, lam, NULL, p) == 0);
+    CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_PRACTICAL, .count = c,
+        .near_depth = n, .far_depth = f, .lambda = lam, .fractions = NULL}, p) == VSH_CSM_OK);
     check_split_invariants(p, c, n, f);
   }
 }
@@ -210,19 +222,22 @@ static void test_splits_bad_input(void) {
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
     double out[VSH_CSM_MAX_CASCADES + 2];
     for (int i = 0; i < VSH_CSM_MAX_CASCADES + 2; ++i) out[i] = -7.25;
-    const int st = vsh_csm_splits(cases[k].scheme, cases[k].count, cases[k].n, cases[k].f,
-                                  cases[k].lambda, cases[k].fr, out);
-    if (st == 0) fprintf(stderr, "splits bad case %zu accepted\n", k);
-    CHECK(st != 0);
+    const vsh_csm_status st = vsh_csm_splits(&(vsh_csm_split_params){.scheme = cases[k].scheme,
+        .count = cases[k].count, .near_depth = cases[k].n, .far_depth = cases[k].f,
+        .lambda = cases[k].lambda, .fractions = cases[k].fr}, out);
+    if (st == VSH_CSM_OK) fprintf(stderr, "splits bad case %zu accepted\n", k);
+    CHECK(st == VSH_CSM_BAD_INPUT);
     int untouched = 1;
     for (int i = 0; i < VSH_CSM_MAX_CASCADES + 2; ++i) untouched &= out[i] == -7.25;
     CHECK(untouched);
   }
-  CHECK(vsh_csm_splits(VSH_SPLIT_UNIFORM, 4, 1, 100, 0, NULL, NULL) != 0);
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_UNIFORM, .count = 4,
+      .near_depth = 1, .far_depth = 100, .lambda = 0, .fractions = NULL}, NULL) != VSH_CSM_OK);
   /* The good explicit fractions are accepted (so the cases above fail for
    * the reason they name). */
   double out[VSH_CSM_MAX_CASCADES + 1];
-  CHECK(vsh_csm_splits(VSH_SPLIT_EXPLICIT, 4, 1, 100, 0, good_fr, out) == 0);
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_EXPLICIT, .count = 4,
+      .near_depth = 1, .far_depth = 100, .lambda = 0, .fractions = good_fr}, out) == VSH_CSM_OK);
 }
 
 /* ---- default count -------------------------------------------------------- */
@@ -284,94 +299,119 @@ static void test_visible_depth_known(void) {
   const double t90 = tan_half(90);
   /* Fully inside: exactly the corner depths. */
   vsh_bounds b = box(-1, 1, -0.5, 0.5, -20, -5);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK(nf[0] == 5 && nf[1] == 20);
   /* Straddling the near plane (and the eye): clipped to clip_near. */
   b = box(-0.1, 0.1, -0.1, 0.1, -20, 5);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 0.1, 1e-15);
   CHECK(nf[1] == 20);
   /* Beyond the far plane: clipped to clip_far. */
   b = box(-1, 1, -1, 1, -200, -50);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK(nf[0] == 50);
   CHECK_NEAR(nf[1], 100, 1e-13);
   /* A long thin box along the view axis, partly outside the LEFT plane
    * (aspect 2, 90 degrees: visible where x >= -2 t d): its inner edge
    * x = -3.8 enters at depth 1.9 / t. */
   b = box(-4, -3.8, -0.1, 0.1, -10, -1);
-  CHECK(vsh_csm_visible_depth_range(&c90, 2.0, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c90, .aspect = 2.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 1.9 / t90, 1e-13);
   CHECK(nf[1] == 10);
   /* ... and mirrored outside the RIGHT plane. */
   b = box(3.8, 4, -0.1, 0.1, -10, -1);
-  CHECK(vsh_csm_visible_depth_range(&c90, 2.0, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c90, .aspect = 2.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 1.9 / t90, 1e-13);
   CHECK(nf[1] == 10);
   /* ... above the TOP plane (y <= t d, aspect does not matter). */
   b = box(-0.1, 0.1, 2.5, 2.7, -10, -1);
-  CHECK(vsh_csm_visible_depth_range(&c90, 3.0, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c90, .aspect = 3.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 2.5 / t90, 1e-13);
   CHECK(nf[1] == 10);
   /* ... below the BOTTOM plane. */
   b = box(-0.1, 0.1, -2.7, -2.5, -10, -1);
-  CHECK(vsh_csm_visible_depth_range(&c90, 0.5, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c90, .aspect = 0.5,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 2.5 / t90, 1e-13);
   /* Box in a corner: must pass BOTH the right and the top plane:
    * x = 3 enters at 3 / (t a), y = 5 at 5 / t; the later one wins. */
   b = box(3, 3.5, 5, 5.5, -30, -1);
-  CHECK(vsh_csm_visible_depth_range(&c90, 1.5, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c90, .aspect = 1.5,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 5 / t90, 1e-13);
   CHECK(nf[1] == 30);
   /* A box whose near face is partly outside: the visible depth is the
    * clipped polygon's (the far face is inside, the side face x = -3 enters
    * at depth 3 / t). */
   b = box(-3, 0, -0.1, 0.1, -6, -2);
-  CHECK(vsh_csm_visible_depth_range(&c90, 1.0, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c90, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK(nf[0] == 2); /* the near face's part with x >= -2 t is inside */
   CHECK(nf[1] == 6);
   /* The camera inside a big box: [clip_near, the far face]. */
   b = box(-10, 10, -10, 10, -10, 10);
-  CHECK(vsh_csm_visible_depth_range(&c90, 1.0, 0.1, 1000, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c90, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 1000, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 0.1, 1e-15);
   CHECK(nf[1] == 10);
   /* A box containing the whole view frustum: [clip_near, clip_far]. */
   b = box(-1e4, 1e4, -1e4, 1e4, -1e4, 1e4);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.5, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.5,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 0.1, 1e-15);
   CHECK_NEAR(nf[1], 100, 1e-13);
   /* A slab crossing the whole view at depths 30..40 (no corner visible). */
   b = box(-1e4, 1e4, -1e4, 1e4, -40, -30);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.5, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.5,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK(nf[0] == 30 && nf[1] == 40);
   /* A box containing the far part of the frustum only. */
   b = box(-1e4, 1e4, -1e4, 1e4, -1e4, -30);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.5, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.5,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK(nf[0] == 30);
   CHECK_NEAR(nf[1], 100, 1e-13);
+}
+
+/* Zero-volume boxes (floors, walls, points, segments) and nothing visible. */
+static void test_visible_depth_degenerate(void) {
+  double nf[2];
+  const vsh_camera c60 = axis_camera(60);
   /* Zero-volume: a flat floor 1 below the eye, 60 degrees: the bottom plane
    * y >= -t d meets it at d = 1 / t; its far edge (z = -50) is inside. */
-  b = box(-50, 50, -1, -1, -50, 50);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 0);
+  vsh_bounds b = box(-50, 50, -1, -1, -50, 50);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 1000, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 1 / tan_half(60), 1e-13);
   CHECK(nf[1] == 50);
   /* A flat wall facing the camera: a single depth. */
   b = box(-1, 1, -1, 1, -7, -7);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 1000, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK(nf[0] == 7 && nf[1] == 7);
   /* ... and much larger than the view: still a single depth. */
   b = box(-1e3, 1e3, -1e3, 1e3, -7, -7);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 1000, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK(nf[0] == 7 && nf[1] == 7);
   /* A single point inside / outside. */
   b = box(0.3, 0.3, -0.2, -0.2, -7, -7);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 1000, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK(nf[0] == 7 && nf[1] == 7);
   b = box(30, 30, -0.2, -0.2, -7, -7);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 1000, &b, nf) == 1);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 1000, .bounds = &b}, nf) == VSH_CSM_EMPTY);
   /* A line segment along the view axis. */
   b = box(0, 0, 0, 0, -9, 4);
-  CHECK(vsh_csm_visible_depth_range(&c60, 1.0, 0.5, 1000, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60, .aspect = 1.0,
+      .clip_near = 0.5, .clip_far = 1000, .bounds = &b}, nf) == VSH_CSM_OK);
   CHECK_NEAR(nf[0], 0.5, 1e-15);
   CHECK(nf[1] == 9);
   /* Nothing visible: 1. */
@@ -384,9 +424,10 @@ static void test_visible_depth_known(void) {
       box(-50, 50, -1, -1, 0.5, 50),     /* a floor behind the eye */
   };
   for (size_t k = 0; k < sizeof invisible / sizeof invisible[0]; ++k) {
-    const int st = vsh_csm_visible_depth_range(&c60, 1.0, 0.1, 100, &invisible[k], nf);
-    if (st != 1) fprintf(stderr, "invisible case %zu: %d\n", k, st);
-    CHECK(st == 1);
+    const vsh_csm_status st = vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c60,
+        .aspect = 1.0, .clip_near = 0.1, .clip_far = 100, .bounds = &invisible[k]}, nf);
+    if (st != VSH_CSM_EMPTY) fprintf(stderr, "invisible case %zu: %d\n", k, st);
+    CHECK(st == VSH_CSM_EMPTY);
   }
 }
 
@@ -396,12 +437,16 @@ static void test_visible_depth_bad_input(void) {
   const vsh_bounds b = box(-1, 1, -1, 1, -10, -5);
   vsh_bounds empty;
   vsh_bounds_init_empty(&empty);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &empty, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &empty}, nf) == VSH_CSM_BAD_INPUT);
   const vsh_bounds nanb = box(NAN, 1, -1, 1, -10, -5), infb = box(-1, INFINITY, -1, 1, -10, -5);
   const vsh_bounds inverted = box(1, -1, -1, 1, -10, -5);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &nanb, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &infb, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &inverted, nf) == 2);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &nanb}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &infb}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &inverted}, nf) == VSH_CSM_BAD_INPUT);
   const vsh_camera bad_cams[] = {
       make_camera(0, 0, 0, 0, 0, -1, 0, 0, 1, 60),   /* view_up parallel */
       make_camera(0, 0, 0, 0, 0, -1, 0, 0, -3, 60),  /* anti-parallel */
@@ -414,23 +459,40 @@ static void test_visible_depth_bad_input(void) {
       make_camera(0, 0, 0, 0, 0, -1, 0, 1, 0, -30),
   };
   for (size_t k = 0; k < sizeof bad_cams / sizeof bad_cams[0]; ++k)
-    CHECK(vsh_csm_visible_depth_range(&bad_cams[k], 1.0, 0.1, 100, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 0.0, 0.1, 100, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, -1.0, 0.1, 100, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, NAN, 0.1, 100, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, INFINITY, 0.1, 100, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.0, 100, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, -1, 100, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, NAN, 100, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 0.1, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 0.05, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, NAN, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, INFINITY, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(NULL, 1.0, 0.1, 100, &b, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, NULL, nf) == 2);
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &b, NULL) == 2);
+    CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &bad_cams[k],
+        .aspect = 1.0, .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 0.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = -1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = NAN,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good,
+      .aspect = INFINITY, .clip_near = 0.1, .clip_far = 100, .bounds = &b},
+      nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.0, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = -1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = NAN, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 0.1, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 0.05, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = NAN, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = INFINITY, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = NULL, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = NULL}, nf) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, NULL) == VSH_CSM_BAD_INPUT);
   /* ... and the good call works. */
-  CHECK(vsh_csm_visible_depth_range(&good, 1.0, 0.1, 100, &b, nf) == 0);
+  CHECK(vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &good, .aspect = 1.0,
+      .clip_near = 0.1, .clip_far = 100, .bounds = &b}, nf) == VSH_CSM_OK);
 }
 
 /* Translating the camera and the box together by 1e6 changes nothing. */
@@ -446,12 +508,14 @@ static void test_visible_depth_offset(void) {
     for (size_t c = 0; c < sizeof cams / sizeof cams[0]; ++c)
       for (size_t k = 0; k < sizeof boxes / sizeof boxes[0]; ++k) {
         double a[2], b[2];
-        const int sa = vsh_csm_visible_depth_range(&cams[c], 1.5, 0.1, 100, &boxes[k], a);
+        const vsh_csm_status sa = vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &cams[c],
+            .aspect = 1.5, .clip_near = 0.1, .clip_far = 100, .bounds = &boxes[k]}, a);
         const vsh_camera cs = shifted_camera(cams[c], shifts[s]);
         const vsh_bounds bs = shifted(boxes[k], shifts[s]);
-        const int sb = vsh_csm_visible_depth_range(&cs, 1.5, 0.1, 100, &bs, b);
+        const vsh_csm_status sb = vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &cs,
+            .aspect = 1.5, .clip_near = 0.1, .clip_far = 100, .bounds = &bs}, b);
         CHECK(sa == sb);
-        if (sa == 0 && sb == 0) {
+        if (sa == VSH_CSM_OK && sb == VSH_CSM_OK) {
           CHECK_NEAR(a[0], b[0], 1e-9 * a[0]);
           CHECK_NEAR(a[1], b[1], 1e-9 * a[1]);
         }
@@ -477,8 +541,9 @@ static void test_visible_depth_sampled(void) {
     }
     const vsh_bounds b = box(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]);
     double nf[2] = {0, 0};
-    const int st = vsh_csm_visible_depth_range(&c, aspect, cn, cf, &b, nf);
-    CHECK(st == 0 || st == 1);
+    const vsh_csm_status st = vsh_csm_visible_depth_range(&(vsh_csm_depth_range_params){.camera = &c,
+        .aspect = aspect, .clip_near = cn, .clip_far = cf, .bounds = &b}, nf);
+    CHECK(st == VSH_CSM_OK || st == VSH_CSM_EMPTY);
     double r[3], u[3], f[3];
     vsh_camera_basis(&c, r, u, f);
     const double t = tan_half(c.view_angle);
@@ -504,8 +569,8 @@ static void test_visible_depth_sampled(void) {
     }
     if (smin <= smax) {
       ++visible_cases;
-      CHECK(st == 0);
-      if (st != 0) continue;
+      CHECK(st == VSH_CSM_OK);
+      if (st != VSH_CSM_OK) continue;
       const double tol = 1e-9 * cf;
       CHECK(nf[0] <= smin + tol && nf[1] >= smax - tol);
       CHECK(nf[0] >= cn && nf[1] <= cf && nf[0] <= nf[1]);
@@ -575,29 +640,40 @@ static void test_directional_basic(void) {
   vsh_bounds_merge(&scene, &tower);
   for (int stable = 0; stable <= 1; ++stable) {
     /* No receivers, no casters. */
-    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, NULL, NULL, stable, 2048, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.5,
+        .slice_near = 1, .slice_far = 20, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 2048}, &v) == VSH_CSM_OK);
     check_directional(&c, 1.5, 1, 20, NULL, NULL, 1, &v, NULL);
     /* Casters = the scene (the tower reaches above the slice). */
-    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, NULL, &scene, stable, 2048, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.5,
+        .slice_near = 1, .slice_far = 20, .light_direction = sun, .receivers = NULL,
+        .casters = &scene, .stable = stable, .resolution = 2048}, &v) == VSH_CSM_OK);
     check_directional(&c, 1.5, 1, 20, NULL, &scene, 1, &v, NULL);
     /* Receivers: the floor (zero volume); casters: the scene. */
-    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, &floor_, &scene, stable, 2048, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.5,
+        .slice_near = 1, .slice_far = 20, .light_direction = sun, .receivers = &floor_,
+        .casters = &scene, .stable = stable, .resolution = 2048}, &v) == VSH_CSM_OK);
     check_directional(&c, 1.5, 1, 20, &floor_, &scene, stable, &v, NULL);
     CHECK(v.depth_extent > 0);
     /* Empty receivers and casters mean "none given". */
     vsh_bounds empty;
     vsh_bounds_init_empty(&empty);
-    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, &empty, &empty, stable, 2048, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.5,
+        .slice_near = 1, .slice_far = 20, .light_direction = sun, .receivers = &empty,
+        .casters = &empty, .stable = stable, .resolution = 2048}, &v) == VSH_CSM_OK);
     check_directional(&c, 1.5, 1, 20, NULL, NULL, 1, &v, NULL);
     /* A caster far outside the slice (behind the camera, towards the sun)
      * still gets clip z >= -1. */
     const vsh_bounds far_caster = box(-40, -38, 0, 80, 60, 62);
-    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, &floor_, &far_caster, stable, 2048, &v) ==
-          0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.5,
+        .slice_near = 1, .slice_far = 20, .light_direction = sun, .receivers = &floor_,
+        .casters = &far_caster, .stable = stable, .resolution = 2048}, &v) == VSH_CSM_OK);
     check_directional(&c, 1.5, 1, 20, &floor_, &far_caster, stable, &v, NULL);
     /* Casters entirely below the receivers: finite, nothing breaks. */
     const vsh_bounds under = box(-5, 5, -10, -9, -5, 5);
-    CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, &floor_, &under, stable, 2048, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.5,
+        .slice_near = 1, .slice_far = 20, .light_direction = sun, .receivers = &floor_,
+        .casters = &under, .stable = stable, .resolution = 2048}, &v) == VSH_CSM_OK);
     check_directional(&c, 1.5, 1, 20, &floor_, NULL, stable, &v, NULL);
   }
   /* Orthographic map depth: the caster top maps to -1 (up to the margin),
@@ -606,7 +682,9 @@ static void test_directional_basic(void) {
   const vsh_camera top = make_camera(0, 10, 0, 0, 0, 0, 0, 0, -1, 60);
   const double down[3] = {0, -1, 0};
   const vsh_bounds tall = box(-1, 1, 0, 4, -1, 1);
-  CHECK(vsh_csm_fit_directional(&top, 1.0, 5, 10, down, &floor_, &tall, 0, 1024, &v) == 0);
+  CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &top, .aspect = 1.0,
+      .slice_near = 5, .slice_far = 10, .light_direction = down, .receivers = &floor_,
+      .casters = &tall, .stable = 0, .resolution = 1024}, &v) == VSH_CSM_OK);
   check_directional(&top, 1.0, 5, 10, &floor_, &tall, 0, &v, NULL);
   double q[3];
   clip_world(v.world_to_clip, top.position, (double[3]){0, 4, 0}, q);
@@ -616,7 +694,9 @@ static void test_directional_basic(void) {
   CHECK_NEAR(v.depth_extent, 4, 0.01);
   /* Non-stable without receivers: the map is the tight light-space box of
    * the slice, so some corner reaches |x| = 1 and some |y| = 1. */
-  CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 20, sun, NULL, NULL, 0, 1000, &v) == 0);
+  CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.5,
+      .slice_near = 1, .slice_far = 20, .light_direction = sun, .receivers = NULL, .casters = NULL,
+      .stable = 0, .resolution = 1000}, &v) == VSH_CSM_OK);
   double mx = 0, my = 0;
   for (int k = 0; k < 8; ++k) {
     double rel[3];
@@ -661,9 +741,11 @@ static void test_directional_random(void) {
       cp = &cas;
     }
     vsh_shadow_view v;
-    const int st = vsh_csm_fit_directional(&c, aspect, n, f, L, rp, cp, stable, res, &v);
-    CHECK(st == 0 || st == 1);
-    if (st == 0) {
+    const vsh_csm_status st = vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c,
+        .aspect = aspect, .slice_near = n, .slice_far = f, .light_direction = L, .receivers = rp,
+        .casters = cp, .stable = stable, .resolution = res}, &v);
+    CHECK(st == VSH_CSM_OK || st == VSH_CSM_EMPTY);
+    if (st == VSH_CSM_OK) {
       ++fitted;
       double w = 0;
       check_directional(&c, aspect, n, f, rp, cp, stable || !rp, &v, &w);
@@ -722,7 +804,9 @@ static void test_directional_stable_tight_radius(void) {
                                      up[0], up[1], up[2], 90);
     vsh_shadow_view v;
     const int res = (s % 3 == 0) ? 16 : (s % 3 == 1) ? 256 : 2048;
-    CHECK(vsh_csm_fit_directional(&c, 1.0, n, f, L, NULL, NULL, 1, res, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.0,
+        .slice_near = n, .slice_far = f, .light_direction = L, .receivers = NULL, .casters = NULL,
+        .stable = 1, .resolution = res}, &v) == VSH_CSM_OK);
     finite &= view_is_finite(&v);
     for (int i = 0; i < 8; ++i) {
       double rel[3], q[3];
@@ -776,7 +860,9 @@ static void test_directional_stable(void) {
       const vsh_camera c = make_camera(E[0], E[1], E[2], E[0] + cos(p) * sin(y),
                                        E[1] + sin(p), E[2] - cos(p) * cos(y), 0, 1, 0, 55);
       vsh_shadow_view v;
-      CHECK(vsh_csm_fit_directional(&c, aspect, n, f, L, NULL, NULL, 1, res, &v) == 0);
+      CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = aspect,
+          .slice_near = n, .slice_far = f, .light_direction = L, .receivers = NULL, .casters = NULL,
+          .stable = 1, .resolution = res}, &v) == VSH_CSM_OK);
       check_directional(&c, aspect, n, f, NULL, NULL, 1, &v, NULL);
       const double w = v.texel_world * res;
       if (first) width0 = w, first = 0;
@@ -796,7 +882,9 @@ static void test_directional_stable(void) {
    * keep the width; a large change changes it by a power of 2^(1/8). */
   const vsh_camera c0 = make_camera(3, 4, 5, 3.2, 3.9, 4, 0, 1, 0, 55);
   vsh_shadow_view v0, v1;
-  CHECK(vsh_csm_fit_directional(&c0, aspect, n, f, L, NULL, NULL, 1, res, &v0) == 0);
+  CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c0, .aspect = aspect,
+      .slice_near = n, .slice_far = f, .light_direction = L, .receivers = NULL, .casters = NULL,
+      .stable = 1, .resolution = res}, &v0) == VSH_CSM_OK);
   const double step0 = ceil(8 * log2(r0) - 1e-9);
   int same_step_cases = 0;
   for (int k = -20; k <= 20; ++k) {
@@ -805,11 +893,15 @@ static void test_directional_stable(void) {
     const double r1 = sqrt(h1 * h1 + f1 * f1 * t * t * (1 + aspect * aspect));
     if (ceil(8 * log2(r1) - 1e-9) != step0) continue;
     ++same_step_cases;
-    CHECK(vsh_csm_fit_directional(&c0, aspect, n1, f1, L, NULL, NULL, 1, res, &v1) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c0, .aspect = aspect,
+        .slice_near = n1, .slice_far = f1, .light_direction = L, .receivers = NULL, .casters = NULL,
+        .stable = 1, .resolution = res}, &v1) == VSH_CSM_OK);
     CHECK(v1.texel_world == v0.texel_world);
   }
   CHECK(same_step_cases >= 30);
-  CHECK(vsh_csm_fit_directional(&c0, aspect, n, f * 1.5, L, NULL, NULL, 1, res, &v1) == 0);
+  CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c0, .aspect = aspect,
+      .slice_near = n, .slice_far = f * 1.5, .light_direction = L, .receivers = NULL,
+      .casters = NULL, .stable = 1, .resolution = res}, &v1) == VSH_CSM_OK);
   const double steps = 8 * log2(v1.texel_world / v0.texel_world);
   CHECK(steps > 0.5);
   CHECK_NEAR(steps, round(steps), 1e-9);
@@ -839,8 +931,9 @@ static void test_directional_texel_grid(void) {
           const vsh_camera c = make_camera(E[0], E[1], E[2], E[0] + 0.3, E[1] - 0.2, E[2] - 1,
                                            0, 1, 0, 60);
           vsh_shadow_view v;
-          CHECK(vsh_csm_fit_directional(&c, 1.5, 1, 500, lights[li], NULL, NULL, 1, res, &v) ==
-                0);
+          CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.5,
+              .slice_near = 1, .slice_far = 500, .light_direction = lights[li], .receivers = NULL,
+              .casters = NULL, .stable = 1, .resolution = res}, &v) == VSH_CSM_OK);
           CHECK(view_is_finite(&v));
           check_directional(&c, 1.5, 1, 500, NULL, NULL, 1, &v, NULL);
           for (int row = 0; row < 2; ++row) {
@@ -889,51 +982,70 @@ static void test_directional_degenerate(void) {
   const vsh_camera fwd = make_camera(1, 5, 20, 1, 5, 0, 0, 1, 0, 45);
   const double along[3] = {0, 0, -1};
   for (int stable = 0; stable <= 1; ++stable) {
-    CHECK(vsh_csm_fit_directional(&fwd, 1.3, 0.5, 30, along, NULL, &stuff, stable, 1024, &v) ==
-          0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &fwd, .aspect = 1.3,
+        .slice_near = 0.5, .slice_far = 30, .light_direction = along, .receivers = NULL,
+        .casters = &stuff, .stable = stable, .resolution = 1024}, &v) == VSH_CSM_OK);
     check_directional(&fwd, 1.3, 0.5, 30, NULL, &stuff, 1, &v, NULL);
     /* Looking straight down with the sun straight down (a top view). */
     const vsh_camera topv = make_camera(2, 50, 3, 2, 0, 3, 0, 0, -1, 45);
     const double down[3] = {0, -2, 0};
-    CHECK(vsh_csm_fit_directional(&topv, 1.3, 1, 60, down, &floor_, &stuff, stable, 1024, &v) ==
-          0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &topv, .aspect = 1.3,
+        .slice_near = 1, .slice_far = 60, .light_direction = down, .receivers = &floor_,
+        .casters = &stuff, .stable = stable, .resolution = 1024}, &v) == VSH_CSM_OK);
     check_directional(&topv, 1.3, 1, 60, &floor_, &stuff, stable, &v, NULL);
     /* ... and the light coming against the view direction. */
     const double up[3] = {0, 1, 0};
-    CHECK(vsh_csm_fit_directional(&topv, 1.3, 1, 60, up, NULL, &stuff, stable, 1024, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &topv, .aspect = 1.3,
+        .slice_near = 1, .slice_far = 60, .light_direction = up, .receivers = NULL,
+        .casters = &stuff, .stable = stable, .resolution = 1024}, &v) == VSH_CSM_OK);
     check_directional(&topv, 1.3, 1, 60, NULL, &stuff, 1, &v, NULL);
     /* A light nearly (1e-12) off a world axis. */
     const double almost[3] = {1e-12, -1, 0};
-    CHECK(vsh_csm_fit_directional(&topv, 1.3, 1, 60, almost, &floor_, &stuff, stable, 1024,
-                                  &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &topv, .aspect = 1.3,
+        .slice_near = 1, .slice_far = 60, .light_direction = almost, .receivers = &floor_,
+        .casters = &stuff, .stable = stable, .resolution = 1024}, &v) == VSH_CSM_OK);
     check_directional(&topv, 1.3, 1, 60, &floor_, &stuff, stable, &v, NULL);
     /* Zero-volume receivers: a floor (done above), a point in the slice,
      * a segment. */
     const vsh_camera c = make_camera(0, 3, 10, 0, 0, 0, 0, 1, 0, 50);
     const double sun[3] = {0.3, -1, -0.2};
     const vsh_bounds point = box(0.5, 0.5, 0, 0, 1, 1);
-    const int sp = vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &point, &stuff, stable, 1024, &v);
-    CHECK(sp == 0);
-    if (sp == 0) check_directional(&c, 1.3, 1, 30, &point, &stuff, stable, &v, NULL);
+    const vsh_csm_status sp = vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c,
+        .aspect = 1.3, .slice_near = 1, .slice_far = 30, .light_direction = sun,
+        .receivers = &point, .casters = &stuff, .stable = stable, .resolution = 1024}, &v);
+    CHECK(sp == VSH_CSM_OK);
+    if (sp == VSH_CSM_OK) check_directional(&c, 1.3, 1, 30, &point, &stuff, stable, &v, NULL);
     const vsh_bounds seg = box(-2, 2, 0, 0, 1, 1);
-    const int ss = vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &seg, &stuff, stable, 1024, &v);
-    CHECK(ss == 0);
-    if (ss == 0) check_directional(&c, 1.3, 1, 30, &seg, &stuff, stable, &v, NULL);
+    const vsh_csm_status ss = vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c,
+        .aspect = 1.3, .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = &seg,
+        .casters = &stuff, .stable = stable, .resolution = 1024}, &v);
+    CHECK(ss == VSH_CSM_OK);
+    if (ss == VSH_CSM_OK) check_directional(&c, 1.3, 1, 30, &seg, &stuff, stable, &v, NULL);
     /* Casters NULL and receivers NULL. */
-    CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, NULL, NULL, stable, 1024, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.3,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 1024}, &v) == VSH_CSM_OK);
     check_directional(&c, 1.3, 1, 30, NULL, NULL, 1, &v, NULL);
     /* A zero-volume caster (a point) at the receivers' level. */
     const vsh_bounds cpt = box(0, 0, 0, 0, 0, 0);
-    CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &floor_, &cpt, stable, 1024, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.3,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = &floor_,
+        .casters = &cpt, .stable = stable, .resolution = 1024}, &v) == VSH_CSM_OK);
     check_directional(&c, 1.3, 1, 30, &floor_, &cpt, stable, &v, NULL);
     /* Receivers not overlapping the slice: 1. */
     const vsh_bounds away = box(500, 600, -50, -40, 500, 600);
-    CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &away, &stuff, stable, 1024, &v) == 1);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.3,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = &away,
+        .casters = &stuff, .stable = stable, .resolution = 1024}, &v) == VSH_CSM_EMPTY);
     const vsh_bounds behind = box(-1, 1, -1, 1, 200, 210);
-    CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, &behind, &stuff, stable, 1024, &v) == 1);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.3,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = &behind,
+        .casters = &stuff, .stable = stable, .resolution = 1024}, &v) == VSH_CSM_EMPTY);
     /* Resolution 1 and 2: still finite and covering. */
     for (int res = 1; res <= 2; ++res) {
-      CHECK(vsh_csm_fit_directional(&c, 1.3, 1, 30, sun, NULL, NULL, stable, res, &v) == 0);
+      CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1.3,
+          .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+          .casters = NULL, .stable = stable, .resolution = res}, &v) == VSH_CSM_OK);
       check_directional(&c, 1.3, 1, 30, NULL, NULL, 1, &v, NULL);
     }
   }
@@ -946,41 +1058,87 @@ static void test_directional_bad_input(void) {
   const double zero[3] = {0, 0, 0}, nanl[3] = {NAN, -1, 0}, infl[3] = {INFINITY, -1, 0};
   const double tiny[3] = {1e-300, -1e-300, 0}; /* tiny but a direction */
   for (int stable = 0; stable <= 1; ++stable) {
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, zero, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, nanl, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, infl, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, NULL, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, tiny, NULL, NULL, stable, 512, &v) == 0);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = zero, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = nanl, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = infl, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = NULL, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = tiny, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_OK);
     CHECK(view_is_finite(&v));
-    CHECK(vsh_csm_fit_directional(NULL, 1, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, sun, NULL, NULL, stable, 512, NULL) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 0, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, NAN, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, INFINITY, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 0, 30, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, -1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 30, 30, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 30, 1, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, NAN, 30, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, NAN, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, INFINITY, sun, NULL, NULL, stable, 512, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, sun, NULL, NULL, stable, 0, &v) == 2);
-    CHECK(vsh_csm_fit_directional(&c, 1, 1, 30, sun, NULL, NULL, stable, -4, &v) == 2);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = NULL, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, NULL) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 0,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = NAN,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = INFINITY,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 0, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = -1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 30, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 30, .slice_far = 1, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = NAN, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = NAN, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = INFINITY, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = 0}, &v) == VSH_CSM_BAD_INPUT);
+    CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = NULL, .stable = stable, .resolution = -4}, &v) == VSH_CSM_BAD_INPUT);
     const vsh_camera bad[] = {make_camera(0, 0, 0, 0, -1, 0, 0, 1, 0, 50),
                               make_camera(1, 1, 1, 1, 1, 1, 0, 1, 0, 50),
                               make_camera(0, 3, 10, 0, 0, 0, 0, 1, 0, 0),
                               make_camera(0, 3, 10, 0, 0, 0, 0, 1, 0, 180),
                               make_camera(0, 3, 10, 0, 0, 0, 0, 1, 0, NAN)};
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k)
-      CHECK(vsh_csm_fit_directional(&bad[k], 1, 1, 30, sun, NULL, NULL, stable, 512, &v) == 2);
+      CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &bad[k], .aspect = 1,
+          .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+          .casters = NULL, .stable = stable, .resolution = 512}, &v) == VSH_CSM_BAD_INPUT);
     /* Non-finite receivers or casters are bad input, not NaN matrices. */
     const vsh_bounds nanb = box(NAN, 1, 0, 1, 0, 1), infb = box(-INFINITY, 1, 0, 1, 0, 1);
-    int st = vsh_csm_fit_directional(&c, 1, 1, 30, sun, &nanb, NULL, stable, 512, &v);
-    CHECK(st == 2 || (st == 0 && view_is_finite(&v)));
-    st = vsh_csm_fit_directional(&c, 1, 1, 30, sun, NULL, &infb, stable, 512, &v);
-    CHECK(st == 2 || (st == 0 && view_is_finite(&v)));
-    st = vsh_csm_fit_directional(&c, 1, 1, 30, sun, &infb, NULL, stable, 512, &v);
-    CHECK(st == 2 || (st == 0 && view_is_finite(&v)));
+    vsh_csm_status st = vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = &nanb,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v);
+    CHECK(st == VSH_CSM_BAD_INPUT || (st == VSH_CSM_OK && view_is_finite(&v)));
+    st = vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = NULL,
+        .casters = &infb, .stable = stable, .resolution = 512}, &v);
+    CHECK(st == VSH_CSM_BAD_INPUT || (st == VSH_CSM_OK && view_is_finite(&v)));
+    st = vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = 1,
+        .slice_near = 1, .slice_far = 30, .light_direction = sun, .receivers = &infb,
+        .casters = NULL, .stable = stable, .resolution = 512}, &v);
+    CHECK(st == VSH_CSM_BAD_INPUT || (st == VSH_CSM_OK && view_is_finite(&v)));
   }
 }
 
@@ -1005,7 +1163,8 @@ static void test_perspective(void) {
     const double w = vsh_test_rnd(0, 0.5) * dist;
     vsh_bounds b = box(Cn[0] - w, Cn[0] + w, Cn[1] - w, Cn[1] + w * vsh_test_rnd(0, 1), Cn[2] - w,
                        Cn[2] + w);
-    const int st = vsh_csm_fit_perspective(P, D, half, &b, O, res, &v);
+    const vsh_csm_status st = vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P,
+        .direction = D, .half_angle_deg = half, .bounds = &b, .origin = O, .resolution = res}, &v);
     double corners[8][3];
     vsh_bounds_corners(&b, corners);
     double dmin = INFINITY;
@@ -1014,8 +1173,8 @@ static void test_perspective(void) {
       vsh_vec3_sub(corners[k], P, rel);
       dmin = fmin(dmin, vsh_vec3_dot(rel, D));
     }
-    CHECK(st == 0);
-    if (st != 0) continue;
+    CHECK(st == VSH_CSM_OK);
+    if (st != VSH_CSM_OK) continue;
     ++cases;
     CHECK(view_is_finite(&v));
     CHECK(v.perspective == 1);
@@ -1077,59 +1236,103 @@ static void test_perspective_offset_and_degenerate(void) {
   vsh_shadow_view v, w;
   const double P[3] = {1, 2, 3}, D[3] = {0.2, -1, 0.1}, O[3] = {4, 5, 6};
   const vsh_bounds b = box(-5, 5, -10, -2, -5, 5);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, O, 1024, &v) == 0);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &b, .origin = O, .resolution = 1024}, &v) == VSH_CSM_OK);
   /* Everything shifted by 1e6: the same camera-relative matrix. */
   const double s[3] = {1e6, -2e6, 1e6};
   double P2[3], O2[3];
   vsh_vec3_add(P, s, P2);
   vsh_vec3_add(O, s, O2);
   const vsh_bounds b2 = shifted(b, s);
-  CHECK(vsh_csm_fit_perspective(P2, D, 40, &b2, O2, 1024, &w) == 0);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P2, .direction = D,
+      .half_angle_deg = 40, .bounds = &b2, .origin = O2, .resolution = 1024}, &w) == VSH_CSM_OK);
   for (int k = 0; k < 16; ++k) CHECK_NEAR(w.world_to_clip[k], v.world_to_clip[k], 1e-8);
   CHECK_NEAR(w.near_far[0], v.near_far[0], 1e-9 * v.near_far[0]);
   CHECK_NEAR(w.near_far[1], v.near_far[1], 1e-9 * v.near_far[1]);
   /* Bounds straddling the light: near is the 1e-4 floor, still finite. */
   const vsh_bounds around = box(-10, 10, -10, 10, -10, 10);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &around, O, 1024, &v) == 0);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &around, .origin = O, .resolution = 1024}, &v) == VSH_CSM_OK);
   CHECK(view_is_finite(&v));
   CHECK_NEAR(v.near_far[0], 1e-4 * v.near_far[1], 1e-12 * v.near_far[1]);
   /* Zero-volume bounds: a point in front, a floor below. */
   const vsh_bounds pt = box(1, 1, -5, -5, 3, 3);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &pt, O, 1024, &v) == 0);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &pt, .origin = O, .resolution = 1024}, &v) == VSH_CSM_OK);
   CHECK(view_is_finite(&v));
   double q[3];
   CHECK(clip_world(v.world_to_clip, O, pt.min, q) > 0);
   CHECK(q[2] >= -1 && q[2] <= 1);
   const vsh_bounds flo = box(-50, 50, -3, -3, -50, 50);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &flo, O, 1024, &v) == 0);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &flo, .origin = O, .resolution = 1024}, &v) == VSH_CSM_OK);
   CHECK(view_is_finite(&v));
   /* All bounds behind the light: 1. Touching its plane from behind: 1. */
   const vsh_bounds behind = box(-5, 5, 10, 20, -5, 5);
-  CHECK(vsh_csm_fit_perspective(P, (double[3]){0, -1, 0}, 40, &behind, O, 1024, &v) == 1);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P,
+      .direction = (double[3]){0, -1, 0}, .half_angle_deg = 40, .bounds = &behind, .origin = O,
+      .resolution = 1024}, &v) == VSH_CSM_EMPTY);
   const vsh_bounds touching = box(-5, 5, 2, 20, -5, 5);
-  CHECK(vsh_csm_fit_perspective(P, (double[3]){0, -1, 0}, 40, &touching, O, 1024, &v) == 1);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P,
+      .direction = (double[3]){0, -1, 0}, .half_angle_deg = 40, .bounds = &touching, .origin = O,
+      .resolution = 1024}, &v) == VSH_CSM_EMPTY);
   /* Bad input: 2. */
-  CHECK(vsh_csm_fit_perspective(P, D, 0, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, 90, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, 120, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, -10, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, NAN, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, INFINITY, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, (double[3]){0, 0, 0}, 40, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, (double[3]){NAN, 0, 1}, 40, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective((double[3]){NAN, 0, 0}, D, 40, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, (double[3]){0, INFINITY, 0}, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, O, 0, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 0, .bounds = &b, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 90, .bounds = &b, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 120, .bounds = &b, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = -10, .bounds = &b, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = NAN, .bounds = &b, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = INFINITY, .bounds = &b, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P,
+      .direction = (double[3]){0, 0, 0}, .half_angle_deg = 40, .bounds = &b, .origin = O,
+      .resolution = 1024}, &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P,
+      .direction = (double[3]){NAN, 0, 1}, .half_angle_deg = 40, .bounds = &b, .origin = O,
+      .resolution = 1024}, &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = (double[3]){NAN, 0, 0},
+      .direction = D, .half_angle_deg = 40, .bounds = &b, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &b, .origin = (double[3]){0, INFINITY, 0},
+      .resolution = 1024}, &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &b, .origin = O, .resolution = 0}, &v) == VSH_CSM_BAD_INPUT);
   vsh_bounds empty;
   vsh_bounds_init_empty(&empty);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &empty, O, 1024, &v) == 2);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &empty, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
   const vsh_bounds nanb = box(NAN, 1, 0, 1, 0, 1);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &nanb, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(NULL, D, 40, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, NULL, 40, &b, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, NULL, O, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, NULL, 1024, &v) == 2);
-  CHECK(vsh_csm_fit_perspective(P, D, 40, &b, O, 1024, NULL) == 2);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &nanb, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = NULL, .direction = D,
+      .half_angle_deg = 40, .bounds = &b, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = NULL,
+      .half_angle_deg = 40, .bounds = &b, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = NULL, .origin = O, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &b, .origin = NULL, .resolution = 1024},
+      &v) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = P, .direction = D,
+      .half_angle_deg = 40, .bounds = &b, .origin = O, .resolution = 1024},
+      NULL) == VSH_CSM_BAD_INPUT);
 }
 
 static void test_cube_faces(void) {
@@ -1156,7 +1359,9 @@ static void test_cube_faces(void) {
   for (int f = 0; f < 6; ++f) {
     double d[3];
     vsh_csm_cube_face_direction(f, d);
-    CHECK(vsh_csm_fit_perspective(L, d, 45, &around, O, 256, &faces[f]) == 0);
+    CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = L, .direction = d,
+        .half_angle_deg = 45, .bounds = &around, .origin = O, .resolution = 256},
+        &faces[f]) == VSH_CSM_OK);
     CHECK(view_is_finite(&faces[f]));
   }
   int all_covered = 1, multiply = 0;
@@ -1265,13 +1470,17 @@ static void test_bias(void) {
 static double predicted_px(double n, double f, double angle, double aspect, int H, int res,
                            int count) {
   double s[VSH_CSM_MAX_CASCADES + 1];
-  if (vsh_csm_splits(VSH_SPLIT_LOG, count, n, f, 0, NULL, s) != 0) return INFINITY;
+  if (vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_LOG, .count = count,
+      .near_depth = n, .far_depth = f, .lambda = 0, .fractions = NULL},
+      s) != VSH_CSM_OK) return INFINITY;
   const vsh_camera c = make_camera(1, 2, 3, 1.5, 1.75, 2, 0, 1, 0, angle);
   const double L[3] = {0.2, -1, 0.4};
   double worst = 0;
   for (int i = 0; i < count; ++i) {
     vsh_shadow_view v;
-    if (vsh_csm_fit_directional(&c, aspect, s[i], s[i + 1], L, NULL, NULL, 1, res, &v) != 0)
+    if (vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &c, .aspect = aspect,
+        .slice_near = s[i], .slice_far = s[i + 1], .light_direction = L, .receivers = NULL,
+        .casters = NULL, .stable = 1, .resolution = res}, &v) != VSH_CSM_OK)
       return INFINITY;
     worst = fmax(worst, vsh_csm_texel_pixels(v.texel_world, s[i], angle, H));
   }
@@ -1282,10 +1491,15 @@ static int is_pow2(int x) { return x > 0 && (x & (x - 1)) == 0; }
 
 static void check_choose(double n, double f, double angle, double aspect, int H, double target,
                          long long budget, int min_res, int max_res, int max_count) {
-  int res = -1, count = -1;
-  double px = -1;
-  const int st = vsh_csm_choose(n, f, angle, aspect, H, target, budget, min_res, max_res,
-                                max_count, &res, &count, &px);
+  vsh_csm_choice choice = {-1, -1, -1};
+  const vsh_csm_status st = vsh_csm_choose(
+      &(vsh_csm_choose_params){.near_depth = n, .far_depth = f, .view_angle_deg = angle,
+                               .aspect = aspect, .viewport_height = H, .max_texel_px = target,
+                               .budget_bytes = budget, .min_res = min_res, .max_res = max_res,
+                               .max_count = max_count},
+      &choice);
+  const int res = choice.resolution, count = choice.count;
+  const double px = choice.texel_px;
   /* Brute force over the documented space. */
   double best_mem = INFINITY, best_px_any = INFINITY;
   int any_in_budget = 0;
@@ -1300,27 +1514,27 @@ static void check_choose(double n, double f, double angle, double aspect, int H,
       best_px_any = fmin(best_px_any, p);
       if (p <= target) best_mem = fmin(best_mem, mem);
     }
-  CHECK(st == 0 || st == 1);
+  CHECK(st == VSH_CSM_OK || st == VSH_CSM_TARGET_MISSED);
   CHECK(is_pow2(res) && res >= min_res && res <= max_res);
   CHECK(count >= 1 && count <= mc);
   CHECK(isfinite(px));
   const double mem = 4.0 * count * (double)res * (double)res;
   const double p = predicted_px(n, f, angle, aspect, H, res, count);
   if (isfinite(best_mem)) {
-    if (st != 0)
-      fprintf(stderr, "choose: target %g reachable with %g bytes but status %d\n", target,
-              best_mem, st);
-    CHECK(st == 0);
+    if (st != VSH_CSM_OK)
+      fprintf(stderr, "choose: target %g reachable with %g bytes but status %s\n", target,
+              best_mem, vsh_csm_status_name(st));
+    CHECK(st == VSH_CSM_OK);
     CHECK(p <= target * (1 + 1e-12));
     CHECK(mem == best_mem);
   } else {
-    CHECK(st == 1);
+    CHECK(st == VSH_CSM_TARGET_MISSED);
   }
   if (any_in_budget) {
     CHECK(mem <= (double)budget);
     CHECK_NEAR(px, p, 1e-9 * p);
     /* When the target is out of reach: the best achievable within budget. */
-    if (st == 1) CHECK(p <= best_px_any * (1 + 1e-12));
+    if (st == VSH_CSM_TARGET_MISSED) CHECK(p <= best_px_any * (1 + 1e-12));
   }
 }
 
@@ -1334,16 +1548,21 @@ static void test_choose(void) {
   }
   /* Tiny budget: one min_res map fits, the target does not. */
   check_choose(0.1, 1000, 60, 1.6, 1080, 1, 4LL * 256 * 256, 256, 8192, 8);
-  int res, count;
-  double px;
-  CHECK(vsh_csm_choose(0.1, 1000, 60, 1.6, 1080, 1, 4LL * 256 * 256, 256, 8192, 8, &res, &count,
-                       &px) == 1);
-  CHECK(res == 256 && count == 1 && px > 1);
-  /* A budget below a single min_res map: 1, finite outputs. */
-  CHECK(vsh_csm_choose(0.1, 1000, 60, 1.6, 1080, 1, 1000, 256, 8192, 8, &res, &count, &px) == 1);
-  CHECK(res >= 1 && count >= 1 && isfinite(px));
-  CHECK(vsh_csm_choose(0.1, 1000, 60, 1.6, 1080, 1, -5, 256, 8192, 8, &res, &count, &px) == 1);
-  CHECK(res >= 1 && count >= 1 && isfinite(px));
+  vsh_csm_choice c;
+  const vsh_csm_choose_params wide = {.near_depth = 0.1, .far_depth = 1000, .view_angle_deg = 60,
+                                      .aspect = 1.6, .viewport_height = 1080, .max_texel_px = 1,
+                                      .budget_bytes = 4LL * 256 * 256, .min_res = 256,
+                                      .max_res = 8192, .max_count = 8};
+  CHECK(vsh_csm_choose(&wide, &c) == VSH_CSM_TARGET_MISSED);
+  CHECK(c.resolution == 256 && c.count == 1 && c.texel_px > 1);
+  /* A budget below a single min_res map: the target is missed, finite outputs. */
+  vsh_csm_choose_params poor = wide;
+  poor.budget_bytes = 1000;
+  CHECK(vsh_csm_choose(&poor, &c) == VSH_CSM_TARGET_MISSED);
+  CHECK(c.resolution >= 1 && c.count >= 1 && isfinite(c.texel_px));
+  poor.budget_bytes = -5;
+  CHECK(vsh_csm_choose(&poor, &c) == VSH_CSM_TARGET_MISSED);
+  CHECK(c.resolution >= 1 && c.count >= 1 && isfinite(c.texel_px));
   /* min_res / max_res not powers of two: the resolution is one in range. */
   check_choose(1, 100, 45, 1.0, 720, 2, 1LL << 30, 300, 3000, 4);
   check_choose(1, 100, 45, 1.0, 720, 0.5, 1LL << 30, 100, 5000, 8);
@@ -1356,7 +1575,7 @@ static void test_choose(void) {
     check_choose(n, f, vsh_test_rnd(30, 100), vsh_test_rnd(0.75, 2.5), 400 + (int)vsh_test_rnd(0, 2000), vsh_test_rnd(0.3, 8),
                  (long long)exp(vsh_test_rnd(log(1e5), log(1e10))), minr, maxr, 1 + (int)vsh_test_rnd(0, 8));
   }
-  /* Bad input: 1 with finite, usable outputs. */
+  /* Bad input: BAD_INPUT with finite, usable outputs. */
   struct {
     double n, f, angle, aspect;
     int H;
@@ -1376,22 +1595,35 @@ static void test_choose(void) {
       {1, 100, 60, 1, 1000, 1, 256, 4096, 0},     {1, 100, 60, 1, 1000, 1, 256, 4096, -3},
   };
   for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
-    res = count = -7;
-    px = NAN;
-    const int st = vsh_csm_choose(bad[k].n, bad[k].f, bad[k].angle, bad[k].aspect, bad[k].H,
-                                  bad[k].target, 1LL << 30, bad[k].min_res, bad[k].max_res,
-                                  bad[k].max_count, &res, &count, &px);
-    CHECK(st == 1);
-    CHECK(res >= 1 && count >= 1 && count <= VSH_CSM_MAX_CASCADES && isfinite(px));
+    c.resolution = c.count = -7;
+    c.texel_px = NAN;
+    const vsh_csm_status st = vsh_csm_choose(
+        &(vsh_csm_choose_params){.near_depth = bad[k].n, .far_depth = bad[k].f,
+                                 .view_angle_deg = bad[k].angle, .aspect = bad[k].aspect,
+                                 .viewport_height = bad[k].H, .max_texel_px = bad[k].target,
+                                 .budget_bytes = 1LL << 30, .min_res = bad[k].min_res,
+                                 .max_res = bad[k].max_res, .max_count = bad[k].max_count},
+        &c);
+    CHECK(st == VSH_CSM_BAD_INPUT);
+    CHECK(c.resolution >= 1 && c.count >= 1 && c.count <= VSH_CSM_MAX_CASCADES &&
+          isfinite(c.texel_px));
   }
-  /* No power of two in [min_res, max_res]: 1, finite outputs. */
-  CHECK(vsh_csm_choose(1, 100, 60, 1, 1000, 1, 1LL << 30, 300, 500, 4, &res, &count, &px) == 1);
-  CHECK(res >= 1 && count >= 1 && isfinite(px));
+  /* No power of two in [min_res, max_res]: BAD_INPUT, finite outputs. */
+  vsh_csm_choose_params small = {.near_depth = 1, .far_depth = 100, .view_angle_deg = 60,
+                                 .aspect = 1, .viewport_height = 1000, .max_texel_px = 1,
+                                 .budget_bytes = 1LL << 30, .min_res = 300, .max_res = 500,
+                                 .max_count = 4};
+  CHECK(vsh_csm_choose(&small, &c) == VSH_CSM_BAD_INPUT);
+  CHECK(c.resolution >= 1 && c.count >= 1 && isfinite(c.texel_px));
   /* NULL outputs are allowed (and do not change the answer). */
-  CHECK(vsh_csm_choose(1, 100, 60, 1, 1000, 4, 1LL << 30, 256, 4096, 4, &res, &count, &px) == 0);
-  CHECK(vsh_csm_choose(1, 100, 60, 1, 1000, 4, 1LL << 30, 256, 4096, 4, NULL, NULL, NULL) == 0);
-  CHECK(vsh_csm_choose(1, 100, 60, 1, 1000, 0.01, 1LL << 30, 256, 4096, 4, NULL, NULL, NULL) ==
-        1);
+  small.max_texel_px = 4;
+  small.min_res = 256;
+  small.max_res = 4096;
+  CHECK(vsh_csm_choose(&small, &c) == VSH_CSM_OK);
+  CHECK(vsh_csm_choose(&small, NULL) == VSH_CSM_OK);
+  small.max_texel_px = 0.01;
+  CHECK(vsh_csm_choose(&small, NULL) == VSH_CSM_TARGET_MISSED);
+  CHECK(vsh_csm_choose(NULL, &c) == VSH_CSM_BAD_INPUT);
 }
 
 static void test_perspective_depth_terms(void) {
@@ -1401,7 +1633,9 @@ static void test_perspective_depth_terms(void) {
   const double pos[3] = {0, 0, 10}, down[3] = {0, 0, -1}, origin[3] = {1, 2, 3};
   const vsh_bounds b = box(-1, 1, -1, 1, 0, 2);
   vsh_shadow_view v;
-  CHECK(vsh_csm_fit_perspective(pos, down, 30.0, &b, origin, 512, &v) == 0);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = pos, .direction = down,
+      .half_angle_deg = 30.0, .bounds = &b, .origin = origin, .resolution = 512},
+      &v) == VSH_CSM_OK);
   double t[2];
   vsh_csm_perspective_depth_terms(&v, t);
   CHECK_NEAR(-t[0] + t[1] / v.near_far[0], -1.0, 1e-12);
@@ -1425,35 +1659,63 @@ static void test_perspective_depth_terms(void) {
   CHECK(t[0] == 0.0 && t[1] == 0.0);
 }
 
+/* vsh_csm_perspective_resolution's answer for a map of half angle `half`
+ * whose texel at `dist` from the light is seen at view depth `depth` (fov
+ * degrees, h pixels high), and its status in *status. */
+static int perspective_resolution(double half, double dist, double depth, double fov, int h,
+                                  double target, int min_res, int max_res,
+                                  vsh_csm_status *status) {
+  int res = -1;
+  *status = vsh_csm_perspective_resolution(
+      &(vsh_csm_resolution_params){.half_angle_deg = half, .light_distance = dist,
+                                   .view_depth = depth, .view_angle_deg = fov,
+                                   .viewport_height = h, .max_texel_px = target,
+                                   .min_res = min_res, .max_res = max_res},
+      &res);
+  return res;
+}
+
 static void test_perspective_resolution(void) {
+  vsh_csm_status st;
   /* Closed form: a 45-degree half angle, light 10 away, seen at depth 10
    * with a 90-degree view on 512 px, target 1 px: need 512. */
-  CHECK(vsh_csm_perspective_resolution(45.0, 10.0, 10.0, 90.0, 512, 1.0, 16, 8192) == 512);
-  CHECK(vsh_csm_perspective_resolution(45.0, 10.0, 10.0, 90.0, 513, 1.0, 16, 8192) == 1024);
-  CHECK(vsh_csm_perspective_resolution(45.0, 10.0, 10.0, 90.0, 512, 2.0, 16, 8192) == 256);
+  CHECK(perspective_resolution(45.0, 10.0, 10.0, 90.0, 512, 1.0, 16, 8192, &st) == 512);
+  CHECK(st == VSH_CSM_OK);
+  CHECK(perspective_resolution(45.0, 10.0, 10.0, 90.0, 513, 1.0, 16, 8192, &st) == 1024);
+  CHECK(st == VSH_CSM_OK);
+  CHECK(perspective_resolution(45.0, 10.0, 10.0, 90.0, 512, 2.0, 16, 8192, &st) == 256);
+  CHECK(st == VSH_CSM_OK);
   /* The result meets the target, and half of it does not (when above min). */
   for (int i = 0; i < 200; ++i) {
     const double half = vsh_test_rnd(5.0, 80.0), dist = vsh_test_rnd(0.1, 100.0), depth = vsh_test_rnd(0.1, 100.0);
     const double fov = vsh_test_rnd(10.0, 120.0), target = vsh_test_rnd(0.5, 5.0);
     const int h = (int)vsh_test_rnd(100.0, 2000.0);
-    const int res = vsh_csm_perspective_resolution(half, dist, depth, fov, h, target, 64, 8192);
+    const int res = perspective_resolution(half, dist, depth, fov, h, target, 64, 8192, &st);
     const double px = 2.0 * tan(half * PI / 180.0) * dist / res /
                       (2.0 * depth * tan(fov * PI / 360.0) / h);
     CHECK(res >= 64 && res <= 8192);
     CHECK(px <= target * (1 + 1e-12) || res == 8192);
+    CHECK(st == VSH_CSM_OK || (st == VSH_CSM_TARGET_MISSED && res == 8192));
     if (res > 64) {
       CHECK(2.0 * px > target * (1 - 1e-12));
     }
   }
   /* Bad input: min_res back. */
-  CHECK(vsh_csm_perspective_resolution(90.0, 1.0, 1.0, 60.0, 100, 1.0, 256, 4096) == 256);
-  CHECK(vsh_csm_perspective_resolution(45.0, 0.0, 1.0, 60.0, 100, 1.0, 256, 4096) == 256);
-  CHECK(vsh_csm_perspective_resolution(45.0, 1.0, NAN, 60.0, 100, 1.0, 256, 4096) == 256);
-  CHECK(vsh_csm_perspective_resolution(45.0, 1.0, 1.0, 60.0, 0, 1.0, 256, 4096) == 256);
-  CHECK(vsh_csm_perspective_resolution(45.0, 1.0, 1.0, 60.0, 100, 0.0, 256, 4096) == 256);
-  CHECK(vsh_csm_perspective_resolution(45.0, 1.0, 1.0, 60.0, 100, 1.0, 512, 256) == 512);
+  CHECK(perspective_resolution(90.0, 1.0, 1.0, 60.0, 100, 1.0, 256, 4096, &st) == 256);
+  CHECK(st == VSH_CSM_BAD_INPUT);
+  CHECK(perspective_resolution(45.0, 0.0, 1.0, 60.0, 100, 1.0, 256, 4096, &st) == 256);
+  CHECK(st == VSH_CSM_BAD_INPUT);
+  CHECK(perspective_resolution(45.0, 1.0, NAN, 60.0, 100, 1.0, 256, 4096, &st) == 256);
+  CHECK(st == VSH_CSM_BAD_INPUT);
+  CHECK(perspective_resolution(45.0, 1.0, 1.0, 60.0, 0, 1.0, 256, 4096, &st) == 256);
+  CHECK(st == VSH_CSM_BAD_INPUT);
+  CHECK(perspective_resolution(45.0, 1.0, 1.0, 60.0, 100, 0.0, 256, 4096, &st) == 256);
+  CHECK(st == VSH_CSM_BAD_INPUT);
+  CHECK(perspective_resolution(45.0, 1.0, 1.0, 60.0, 100, 1.0, 512, 256, &st) == 512);
+  CHECK(st == VSH_CSM_BAD_INPUT);
   /* Far beyond reach: max_res. */
-  CHECK(vsh_csm_perspective_resolution(45.0, 1e9, 1e-3, 60.0, 1000, 1.0, 16, 4096) == 4096);
+  CHECK(perspective_resolution(45.0, 1e9, 1e-3, 60.0, 1000, 1.0, 16, 4096, &st) == 4096);
+  CHECK(st == VSH_CSM_TARGET_MISSED);
 }
 
 int main(void) {
@@ -1461,6 +1723,7 @@ int main(void) {
   test_splits_bad_input();
   test_default_count();
   test_visible_depth_known();
+  test_visible_depth_degenerate();
   test_visible_depth_bad_input();
   test_visible_depth_offset();
   test_visible_depth_sampled();

@@ -74,9 +74,10 @@ static vsh_camera moved(const vsh_camera *c, double deg, double shift) {
   return m;
 }
 
-static int fit(const scene *s, const vsh_camera *camera, vsh_shadow_view *out) {
-  return vsh_csm_fit_directional(camera, 4.0 / 3.0, s->near, s->far, s->light, &s->receivers,
-                                 &s->casters, 1, RES, out);
+static vsh_csm_status fit(const scene *s, const vsh_camera *camera, vsh_shadow_view *out) {
+  return vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = camera,
+      .aspect = 4.0 / 3.0, .slice_near = s->near, .slice_far = s->far, .light_direction = s->light,
+      .receivers = &s->receivers, .casters = &s->casters, .stable = 1, .resolution = RES}, out);
 }
 
 /* A random world point inside `camera`'s slice [near, far] and on the
@@ -112,22 +113,25 @@ static void test_property(const double offset[3], double size, int *yes_small, i
   for (int trial = 0; trial < 300; ++trial) {
     scene s = random_scene(offset, size);
     vsh_shadow_view held, needed;
-    if (fit(&s, &s.camera, &held) != 0)
+    if (fit(&s, &s.camera, &held) != VSH_CSM_OK)
       continue;
     const int small = trial % 3 != 0;
     const vsh_camera next =
         small ? moved(&s.camera, vsh_test_rnd(-1.0, 1.0), vsh_test_rnd(-0.01, 0.01))
               : moved(&s.camera, vsh_test_rnd(-40.0, 40.0), vsh_test_rnd(-0.3, 0.3));
-    if (fit(&s, &next, &needed) != 0)
+    if (fit(&s, &next, &needed) != VSH_CSM_OK)
       continue;
     double region[6];
-    if (vsh_csm_lookup_region(&next, 4.0 / 3.0, s.near, s.far, &s.receivers, &s.casters, &needed,
-                              region) != 0)
+    if (vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &next, .aspect = 4.0 / 3.0,
+        .lookup_near = s.near, .slice_far = s.far, .receivers = &s.receivers, .casters = &s.casters,
+        .view = &needed}, region) != VSH_CSM_OK)
       continue;
     for (int k = 0; k < 6; ++k)
       CHECK(region[k] >= -1.0 && region[k] <= 1.0);
     const int yes =
-        vsh_csm_view_covers(&held, s.camera.position, &needed, next.position, region, RES, margin);
+        vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &held,
+            .rendered_origin = s.camera.position, .needed = &needed, .needed_origin = next.position,
+            .needed_region = region, .resolution = RES, .margin_texels = margin});
     if (small) {
       ++*tried_small;
       *yes_small += yes;
@@ -189,27 +193,40 @@ static void test_known_answers(void) {
   const double origin[3] = {0, 0, 0};
   scene s = random_scene(origin, 10.0);
   vsh_shadow_view v;
-  CHECK(fit(&s, &s.camera, &v) == 0);
+  CHECK(fit(&s, &s.camera, &v) == VSH_CSM_OK);
   const double inner[6] = {-0.5, 0.5, -0.5, 0.5, -1.0, 1.0};
   const double edge[6] = {-1.0, 0.5, -0.5, 0.5, -1.0, 1.0};
   /* Itself: yes, unless the region reaches the filter margin. */
-  CHECK(vsh_csm_view_covers(&v, s.camera.position, &v, s.camera.position, inner, RES, 3.0) == 1);
-  CHECK(vsh_csm_view_covers(&v, s.camera.position, &v, s.camera.position, edge, RES, 3.0) == 0);
-  CHECK(vsh_csm_view_covers(&v, s.camera.position, &v, s.camera.position, edge, RES, 0.0) == 1);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v,
+      .rendered_origin = s.camera.position, .needed = &v, .needed_origin = s.camera.position,
+      .needed_region = inner, .resolution = RES, .margin_texels = 3.0}) == true);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v,
+      .rendered_origin = s.camera.position, .needed = &v, .needed_origin = s.camera.position,
+      .needed_region = edge, .resolution = RES, .margin_texels = 3.0}) == false);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v,
+      .rendered_origin = s.camera.position, .needed = &v, .needed_origin = s.camera.position,
+      .needed_region = edge, .resolution = RES, .margin_texels = 0.0}) == true);
   /* Depth outside the held range. */
   const double deep[6] = {-0.5, 0.5, -0.5, 0.5, -1.0, 1.1};
-  CHECK(vsh_csm_view_covers(&v, s.camera.position, &v, s.camera.position, deep, RES, 3.0) == 0);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v,
+      .rendered_origin = s.camera.position, .needed = &v, .needed_origin = s.camera.position,
+      .needed_region = deep, .resolution = RES, .margin_texels = 3.0}) == false);
   /* Another light direction, or another texel size: never. */
   scene turned = s;
   turned.light[0] += 0.05;
   vsh_shadow_view w;
-  CHECK(fit(&turned, &s.camera, &w) == 0);
-  CHECK(vsh_csm_view_covers(&v, s.camera.position, &w, s.camera.position, inner, RES, 3.0) == 0);
+  CHECK(fit(&turned, &s.camera, &w) == VSH_CSM_OK);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v,
+      .rendered_origin = s.camera.position, .needed = &w, .needed_origin = s.camera.position,
+      .needed_region = inner, .resolution = RES, .margin_texels = 3.0}) == false);
   vsh_shadow_view finer;
-  CHECK(vsh_csm_fit_directional(&s.camera, 4.0 / 3.0, s.near, s.far, s.light, &s.receivers,
-                                &s.casters, 1, 2 * RES, &finer) == 0);
-  CHECK(vsh_csm_view_covers(&v, s.camera.position, &finer, s.camera.position, inner, RES, 3.0) ==
-        0);
+  CHECK(vsh_csm_fit_directional(&(vsh_csm_directional_params){.camera = &s.camera,
+      .aspect = 4.0 / 3.0, .slice_near = s.near, .slice_far = s.far, .light_direction = s.light,
+      .receivers = &s.receivers, .casters = &s.casters, .stable = 1, .resolution = 2 * RES},
+      &finer) == VSH_CSM_OK);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v,
+      .rendered_origin = s.camera.position, .needed = &finer, .needed_origin = s.camera.position,
+      .needed_region = inner, .resolution = RES, .margin_texels = 3.0}) == false);
   /* A move along the light direction changes nothing the map holds. */
   double along[3];
   vsh_vec3_scale(s.light, 0.5 / vsh_vec3_length(s.light), along);
@@ -219,21 +236,26 @@ static void test_known_answers(void) {
   double back[16];
   vsh_mat4_translation(along, back);
   vsh_mat4_multiply(v.world_to_clip, back, shifted.world_to_clip);
-  CHECK(vsh_csm_view_covers(&v, s.camera.position, &shifted, origin2, inner, RES, 3.0) == 1);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v,
+      .rendered_origin = s.camera.position, .needed = &shifted, .needed_origin = origin2,
+      .needed_region = inner, .resolution = RES, .margin_texels = 3.0}) == true);
 }
 
 static void test_lookup_region(void) {
   const double origin[3] = {0, 0, 0};
   scene s = random_scene(origin, 10.0);
   vsh_shadow_view v;
-  CHECK(fit(&s, &s.camera, &v) == 0);
+  CHECK(fit(&s, &s.camera, &v) == VSH_CSM_OK);
   double with[6], without[6], widened[6];
-  CHECK(vsh_csm_lookup_region(&s.camera, 4.0 / 3.0, s.near, s.far, &s.receivers, NULL, &v,
-                              with) == 0);
-  CHECK(vsh_csm_lookup_region(&s.camera, 4.0 / 3.0, s.near, s.far, NULL, NULL, &v, without) ==
-        0);
-  CHECK(vsh_csm_lookup_region(&s.camera, 4.0 / 3.0, 0.5 * s.near, s.far, &s.receivers,
-                              &s.casters, &v, widened) == 0);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 4.0 / 3.0,
+      .lookup_near = s.near, .slice_far = s.far, .receivers = &s.receivers, .casters = NULL,
+      .view = &v}, with) == VSH_CSM_OK);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 4.0 / 3.0,
+      .lookup_near = s.near, .slice_far = s.far, .receivers = NULL, .casters = NULL, .view = &v},
+      without) == VSH_CSM_OK);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 4.0 / 3.0,
+      .lookup_near = 0.5 * s.near, .slice_far = s.far, .receivers = &s.receivers,
+      .casters = &s.casters, .view = &v}, widened) == VSH_CSM_OK);
   /* Receivers only shrink the region in x and y; a nearer start and the
    * casters only grow it. */
   for (int k = 0; k < 2; ++k) {
@@ -245,11 +267,14 @@ static void test_lookup_region(void) {
   CHECK(widened[4] <= with[4] + 1e-12 && widened[5] >= with[5] - 1e-12);
   /* Receivers the slice never sees: nothing to look up. */
   const vsh_bounds elsewhere = {{1e3, 1e3, 0}, {1e3 + 1, 1e3 + 1, 1}};
-  CHECK(vsh_csm_lookup_region(&s.camera, 4.0 / 3.0, s.near, s.far, &elsewhere, NULL, &v, with) ==
-        1);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 4.0 / 3.0,
+      .lookup_near = s.near, .slice_far = s.far, .receivers = &elsewhere, .casters = NULL,
+      .view = &v}, with) == VSH_CSM_EMPTY);
   /* A zero-volume receiver (a point on the floor in view) still has a region. */
   const vsh_bounds point = {{0, 0, 0}, {0, 0, 0}};
-  CHECK(vsh_csm_lookup_region(&s.camera, 4.0 / 3.0, s.near, s.far, &point, NULL, &v, with) == 0);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 4.0 / 3.0,
+      .lookup_near = s.near, .slice_far = s.far, .receivers = &point, .casters = NULL, .view = &v},
+      with) == VSH_CSM_OK);
   CHECK(with[0] == with[1] && with[2] == with[3]);
 }
 
@@ -257,45 +282,89 @@ static void test_bad_input(void) {
   const double origin[3] = {0, 0, 0};
   scene s = random_scene(origin, 10.0);
   vsh_shadow_view v, persp;
-  CHECK(fit(&s, &s.camera, &v) == 0);
+  CHECK(fit(&s, &s.camera, &v) == VSH_CSM_OK);
   double region[6];
   const vsh_bounds nan_box = {{NAN, 0, 0}, {1, 1, 1}};
-  CHECK(vsh_csm_lookup_region(NULL, 1.0, 1.0, 2.0, NULL, NULL, &v, region) == 2);
-  CHECK(vsh_csm_lookup_region(&s.camera, 1.0, 1.0, 2.0, NULL, NULL, NULL, region) == 2);
-  CHECK(vsh_csm_lookup_region(&s.camera, 0.0, 1.0, 2.0, NULL, NULL, &v, region) == 2);
-  CHECK(vsh_csm_lookup_region(&s.camera, 1.0, 0.0, 2.0, NULL, NULL, &v, region) == 2);
-  CHECK(vsh_csm_lookup_region(&s.camera, 1.0, 2.0, 2.0, NULL, NULL, &v, region) == 2);
-  CHECK(vsh_csm_lookup_region(&s.camera, 1.0, 1.0, INFINITY, NULL, NULL, &v, region) == 2);
-  CHECK(vsh_csm_lookup_region(&s.camera, 1.0, 1.0, 2.0, &nan_box, NULL, &v, region) == 2);
-  CHECK(vsh_csm_lookup_region(&s.camera, 1.0, 1.0, 2.0, NULL, &nan_box, &v, region) == 2);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = NULL, .aspect = 1.0,
+      .lookup_near = 1.0, .slice_far = 2.0, .receivers = NULL, .casters = NULL, .view = &v},
+      region) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 1.0,
+      .lookup_near = 1.0, .slice_far = 2.0, .receivers = NULL, .casters = NULL, .view = NULL},
+      region) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 0.0,
+      .lookup_near = 1.0, .slice_far = 2.0, .receivers = NULL, .casters = NULL, .view = &v},
+      region) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 1.0,
+      .lookup_near = 0.0, .slice_far = 2.0, .receivers = NULL, .casters = NULL, .view = &v},
+      region) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 1.0,
+      .lookup_near = 2.0, .slice_far = 2.0, .receivers = NULL, .casters = NULL, .view = &v},
+      region) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 1.0,
+      .lookup_near = 1.0, .slice_far = INFINITY, .receivers = NULL, .casters = NULL, .view = &v},
+      region) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 1.0,
+      .lookup_near = 1.0, .slice_far = 2.0, .receivers = &nan_box, .casters = NULL, .view = &v},
+      region) == VSH_CSM_BAD_INPUT);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 1.0,
+      .lookup_near = 1.0, .slice_far = 2.0, .receivers = NULL, .casters = &nan_box, .view = &v},
+      region) == VSH_CSM_BAD_INPUT);
   vsh_camera parallel = s.camera; /* view up parallel to the view direction */
   parallel.view_up[0] = parallel.focal_point[0] - parallel.position[0];
   parallel.view_up[1] = parallel.focal_point[1] - parallel.position[1];
   parallel.view_up[2] = parallel.focal_point[2] - parallel.position[2];
-  CHECK(vsh_csm_lookup_region(&parallel, 1.0, 1.0, 2.0, NULL, NULL, &v, region) == 2);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &parallel, .aspect = 1.0,
+      .lookup_near = 1.0, .slice_far = 2.0, .receivers = NULL, .casters = NULL, .view = &v},
+      region) == VSH_CSM_BAD_INPUT);
   const double p[3] = {0, 0, 10}, down[3] = {0, 0, -1};
-  CHECK(vsh_csm_fit_perspective(p, down, 30.0, &s.receivers, s.camera.position, RES, &persp) == 0);
-  CHECK(vsh_csm_lookup_region(&s.camera, 1.0, 1.0, 2.0, NULL, NULL, &persp, region) == 2);
+  CHECK(vsh_csm_fit_perspective(&(vsh_csm_perspective_params){.position = p, .direction = down,
+      .half_angle_deg = 30.0, .bounds = &s.receivers, .origin = s.camera.position,
+      .resolution = RES}, &persp) == VSH_CSM_OK);
+  CHECK(vsh_csm_lookup_region(&(vsh_csm_region_params){.camera = &s.camera, .aspect = 1.0,
+      .lookup_near = 1.0, .slice_far = 2.0, .receivers = NULL, .casters = NULL, .view = &persp},
+      region) == VSH_CSM_BAD_INPUT);
   const double inner[6] = {-0.5, 0.5, -0.5, 0.5, -1.0, 1.0};
   const double o[3] = {0, 0, 0}, bad[3] = {NAN, 0, 0};
-  CHECK(vsh_csm_view_covers(&persp, o, &persp, o, inner, RES, 1.0) == 0);
-  CHECK(vsh_csm_view_covers(NULL, o, &v, o, inner, RES, 1.0) == 0);
-  CHECK(vsh_csm_view_covers(&v, bad, &v, o, inner, RES, 1.0) == 0);
-  CHECK(vsh_csm_view_covers(&v, o, &v, o, NULL, RES, 1.0) == 0);
-  CHECK(vsh_csm_view_covers(&v, o, &v, o, inner, 0, 1.0) == 0);
-  CHECK(vsh_csm_view_covers(&v, o, &v, o, inner, RES, -1.0) == 0);
-  CHECK(vsh_csm_view_covers(&v, o, &v, o, inner, RES, NAN) == 0);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &persp, .rendered_origin = o,
+      .needed = &persp, .needed_origin = o, .needed_region = inner, .resolution = RES,
+      .margin_texels = 1.0}) == false);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = NULL, .rendered_origin = o,
+      .needed = &v, .needed_origin = o, .needed_region = inner, .resolution = RES,
+      .margin_texels = 1.0}) == false);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v, .rendered_origin = bad,
+      .needed = &v, .needed_origin = o, .needed_region = inner, .resolution = RES,
+      .margin_texels = 1.0}) == false);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v, .rendered_origin = o,
+      .needed = &v, .needed_origin = o, .needed_region = NULL, .resolution = RES,
+      .margin_texels = 1.0}) == false);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v, .rendered_origin = o,
+      .needed = &v, .needed_origin = o, .needed_region = inner, .resolution = 0,
+      .margin_texels = 1.0}) == false);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v, .rendered_origin = o,
+      .needed = &v, .needed_origin = o, .needed_region = inner, .resolution = RES,
+      .margin_texels = -1.0}) == false);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v, .rendered_origin = o,
+      .needed = &v, .needed_origin = o, .needed_region = inner, .resolution = RES,
+      .margin_texels = NAN}) == false);
   vsh_shadow_view empty = v; /* a map that covers nothing (texel 0) */
   empty.texel_world = 0.0;
-  CHECK(vsh_csm_view_covers(&empty, o, &v, o, inner, RES, 1.0) == 0);
-  CHECK(vsh_csm_view_covers(&v, o, &empty, o, inner, RES, 1.0) == 0);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &empty, .rendered_origin = o,
+      .needed = &v, .needed_origin = o, .needed_region = inner, .resolution = RES,
+      .margin_texels = 1.0}) == false);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v, .rendered_origin = o,
+      .needed = &empty, .needed_origin = o, .needed_region = inner, .resolution = RES,
+      .margin_texels = 1.0}) == false);
   vsh_shadow_view flat = v; /* zero depth scale: singular */
   flat.world_to_clip[8] = flat.world_to_clip[9] = flat.world_to_clip[10] = 0.0;
-  CHECK(vsh_csm_view_covers(&v, o, &flat, o, inner, RES, 1.0) == 0);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v, .rendered_origin = o,
+      .needed = &flat, .needed_origin = o, .needed_region = inner, .resolution = RES,
+      .margin_texels = 1.0}) == false);
   vsh_shadow_view flipped = v; /* depth reversed */
   for (int k = 8; k < 11; ++k)
     flipped.world_to_clip[k] = -flipped.world_to_clip[k];
-  CHECK(vsh_csm_view_covers(&v, o, &flipped, o, inner, RES, 1.0) == 0);
+  CHECK(vsh_csm_view_covers(&(vsh_csm_cover_params){.rendered = &v, .rendered_origin = o,
+      .needed = &flipped, .needed_origin = o, .needed_region = inner, .resolution = RES,
+      .margin_texels = 1.0}) == false);
 }
 
 int main(void) {

@@ -54,7 +54,8 @@ static double worst_texel_px(double near_depth, double far_depth, double t, doub
                              double view_angle_deg, int viewport_height, int count, long long res)
 {
   double splits[VSH_CSM_MAX_CASCADES + 1];
-  if (vsh_csm_splits(VSH_SPLIT_LOG, count, near_depth, far_depth, 0.0, NULL, splits) != 0)
+  const vsh_csm_split_params log_split = {VSH_SPLIT_LOG, count, near_depth, far_depth, 0.0, NULL};
+  if (vsh_csm_splits(&log_split, splits) != VSH_CSM_OK)
     return INFINITY;
   double worst = 0.0;
   for (int i = 0; i < count; ++i) {
@@ -64,51 +65,54 @@ static double worst_texel_px(double near_depth, double far_depth, double t, doub
   return worst;
 }
 
-int vsh_csm_choose(double near_depth, double far_depth, double view_angle_deg, double aspect,
-                   int viewport_height, double max_texel_px, long long budget_bytes,
-                   int min_res, int max_res, int max_count, int *out_resolution,
-                   int *out_count, double *out_texel_px)
+/* The choice for bad input (and for a range holding no power of two). */
+static vsh_csm_status refuse(int resolution, vsh_csm_choice *out)
 {
-  if (!(near_depth > 0.0) || !(far_depth > near_depth) || !isfinite(far_depth) ||
-      !(view_angle_deg > 0.0 && view_angle_deg < 180.0) || !(aspect > 0.0) || !isfinite(aspect) ||
-      viewport_height < 1 || !(max_texel_px > 0.0) || min_res < 1 || max_res < min_res ||
-      max_count < 1) {
-    if (out_resolution)
-      *out_resolution = min_res > 0 ? min_res : 1;
-    if (out_count)
-      *out_count = 1;
-    if (out_texel_px)
-      *out_texel_px = 0.0;
-    return 1;
+  if (out) {
+    out->resolution = resolution;
+    out->count = 1;
+    out->texel_px = 0.0;
   }
-  if (max_count > VSH_CSM_MAX_CASCADES)
-    max_count = VSH_CSM_MAX_CASCADES;
+  return VSH_CSM_BAD_INPUT;
+}
+
+static bool choose_input_ok(const vsh_csm_choose_params *p)
+{
+  return p->near_depth > 0.0 && p->far_depth > p->near_depth && isfinite(p->far_depth) &&
+         p->view_angle_deg > 0.0 && p->view_angle_deg < 180.0 && p->aspect > 0.0 &&
+         isfinite(p->aspect) && p->viewport_height >= 1 && p->max_texel_px > 0.0 &&
+         p->min_res >= 1 && p->max_res >= p->min_res && p->max_count >= 1;
+}
+
+vsh_csm_status vsh_csm_choose(const vsh_csm_choose_params *p, vsh_csm_choice *out)
+{
+  if (!p)
+    return refuse(1, out);
+  if (!choose_input_ok(p))
+    return refuse(p->min_res > 0 ? p->min_res : 1, out);
+  const double near_depth = p->near_depth, far_depth = p->far_depth;
+  const double view_angle_deg = p->view_angle_deg, aspect = p->aspect;
+  const int viewport_height = p->viewport_height, max_res = p->max_res;
+  const int max_count = p->max_count > VSH_CSM_MAX_CASCADES ? VSH_CSM_MAX_CASCADES : p->max_count;
   /* The resolutions are the powers of two in [min_res, max_res]. */
   long long first_res = 1;
-  while (first_res < min_res)
+  while (first_res < p->min_res)
     first_res *= 2;
-  if (first_res > max_res) {
-    if (out_resolution)
-      *out_resolution = min_res;
-    if (out_count)
-      *out_count = 1;
-    if (out_texel_px)
-      *out_texel_px = 0.0;
-    return 1;
-  }
+  if (first_res > max_res)
+    return refuse(p->min_res, out);
   const double t = tan(view_angle_deg * 0.5 * VSH_PI / 180.0);
   int best_res = (int)first_res, best_count = 1, found = 0;
   double best_px = INFINITY, best_mem = INFINITY;
   for (int count = 1; count <= max_count; ++count) {
     for (long long res = first_res; res <= max_res; res *= 2) {
       const double memory = (double)count * (double)res * (double)res * 4.0;
-      if (memory > (double)budget_bytes)
+      if (memory > (double)p->budget_bytes)
         break;
       const double worst = worst_texel_px(near_depth, far_depth, t, aspect, view_angle_deg,
                                           viewport_height, count, res);
       if (!isfinite(worst))
         continue;
-      const int meets = worst <= max_texel_px;
+      const int meets = worst <= p->max_texel_px;
       if ((meets && (!found || memory < best_mem)) || (!found && !meets && worst < best_px)) {
         found = found || meets;
         best_res = (int)res;
@@ -122,30 +126,39 @@ int vsh_csm_choose(double near_depth, double far_depth, double view_angle_deg, d
   if (!isfinite(best_px))
     best_px = worst_texel_px(near_depth, far_depth, t, aspect, view_angle_deg, viewport_height,
                              best_count, best_res);
-  if (out_resolution)
-    *out_resolution = best_res;
-  if (out_count)
-    *out_count = best_count;
-  if (out_texel_px)
-    *out_texel_px = isfinite(best_px) ? best_px : 0.0;
-  return found ? 0 : 1;
+  if (out) {
+    out->resolution = best_res;
+    out->count = best_count;
+    out->texel_px = isfinite(best_px) ? best_px : 0.0;
+  }
+  return found ? VSH_CSM_OK : VSH_CSM_TARGET_MISSED;
 }
 
-int vsh_csm_perspective_resolution(double half_angle_deg, double light_distance,
-                                   double view_depth, double view_angle_deg, int viewport_height,
-                                   double max_texel_px, int min_res, int max_res)
+vsh_csm_status vsh_csm_perspective_resolution(const vsh_csm_resolution_params *p,
+                                              int *out_resolution)
 {
-  if (min_res < 1 || max_res < min_res || !(half_angle_deg > 0.0 && half_angle_deg < 90.0) ||
-      !(light_distance > 0.0) || !isfinite(light_distance) || !(view_depth > 0.0) ||
-      !isfinite(view_depth) || !(view_angle_deg > 0.0 && view_angle_deg < 180.0) ||
-      viewport_height < 1 || !(max_texel_px > 0.0) || !isfinite(max_texel_px))
-    return min_res > 0 ? min_res : 1;
-  const double need = tan(half_angle_deg * VSH_PI / 180.0) * light_distance * viewport_height /
-                      (max_texel_px * view_depth * tan(view_angle_deg * 0.5 * VSH_PI / 180.0));
+  int ignored;
+  int *res_out = out_resolution ? out_resolution : &ignored;
+  if (!p) {
+    *res_out = 1;
+    return VSH_CSM_BAD_INPUT;
+  }
+  const int min_res = p->min_res, max_res = p->max_res;
+  if (min_res < 1 || max_res < min_res || !(p->half_angle_deg > 0.0 && p->half_angle_deg < 90.0) ||
+      !(p->light_distance > 0.0) || !isfinite(p->light_distance) || !(p->view_depth > 0.0) ||
+      !isfinite(p->view_depth) || !(p->view_angle_deg > 0.0 && p->view_angle_deg < 180.0) ||
+      p->viewport_height < 1 || !(p->max_texel_px > 0.0) || !isfinite(p->max_texel_px)) {
+    *res_out = min_res > 0 ? min_res : 1;
+    return VSH_CSM_BAD_INPUT;
+  }
+  const double need =
+      tan(p->half_angle_deg * VSH_PI / 180.0) * p->light_distance * p->viewport_height /
+      (p->max_texel_px * p->view_depth * tan(p->view_angle_deg * 0.5 * VSH_PI / 180.0));
   long long res = 1;
   while (res < min_res)
     res *= 2;
   while (res < need && res * 2 <= max_res)
     res *= 2;
-  return (int)(res > max_res ? max_res : res);
+  *res_out = (int)(res > max_res ? max_res : res);
+  return *res_out < need ? VSH_CSM_TARGET_MISSED : VSH_CSM_OK;
 }

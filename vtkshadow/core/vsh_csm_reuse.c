@@ -37,18 +37,21 @@ static void grow(double box[6], const double q[3])
   }
 }
 
-int vsh_csm_lookup_region(const vsh_camera *camera, double aspect, double lookup_near,
-                          double slice_far, const vsh_bounds *receivers,
-                          const vsh_bounds *casters, const vsh_shadow_view *view,
-                          double out_clip[6])
+vsh_csm_status vsh_csm_lookup_region(const vsh_csm_region_params *in, double out_clip[6])
 {
+  if (!in)
+    return VSH_CSM_BAD_INPUT;
+  const vsh_camera *camera = in->camera;
+  const vsh_bounds *receivers = in->receivers, *casters = in->casters;
+  const vsh_shadow_view *view = in->view;
+  const double aspect = in->aspect, lookup_near = in->lookup_near, slice_far = in->slice_far;
   double r[3], u[3], f[3];
   if (!camera || !view || !out_clip || view->perspective || !(aspect > 0.0) ||
       !isfinite(aspect) || !(lookup_near > 0.0) || !(slice_far > lookup_near) ||
       !isfinite(slice_far) || !(camera->view_angle > 0.0 && camera->view_angle < 180.0) ||
       vsh_camera_basis(camera, r, u, f) != 0 || !vsh_mat4_is_finite(view->world_to_clip) ||
       (receivers && has_nan(receivers)) || (casters && has_nan(casters)))
-    return 2;
+    return VSH_CSM_BAD_INPUT;
   const double t = tan(camera->view_angle * 0.5 * VSH_PI / 180.0);
   double slice[6] = { INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY };
   for (int i = 0; i < 8; ++i) {
@@ -65,7 +68,7 @@ int vsh_csm_lookup_region(const vsh_camera *camera, double aspect, double lookup
   double depth_lo = slice[4], depth_hi = slice[5];
   if (receivers && !vsh_bounds_is_empty(receivers)) {
     if (!vsh_bounds_is_finite(receivers))
-      return 2;
+      return VSH_CSM_BAD_INPUT;
     double corners[8][3], rec[6] = { INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY };
     vsh_bounds_corners(receivers, corners);
     for (int i = 0; i < 8; ++i) {
@@ -78,14 +81,14 @@ int vsh_csm_lookup_region(const vsh_camera *camera, double aspect, double lookup
       slice[2 * k] = fmax(slice[2 * k], rec[2 * k]);
       slice[2 * k + 1] = fmin(slice[2 * k + 1], rec[2 * k + 1]);
       if (slice[2 * k] > slice[2 * k + 1])
-        return 1;
+        return VSH_CSM_EMPTY;
     }
     depth_lo = slice[4];
     depth_hi = slice[5];
   }
   if (casters && !vsh_bounds_is_empty(casters)) {
     if (!vsh_bounds_is_finite(casters))
-      return 2;
+      return VSH_CSM_BAD_INPUT;
     double corners[8][3];
     vsh_bounds_corners(casters, corners);
     for (int i = 0; i < 8; ++i) {
@@ -104,21 +107,26 @@ int vsh_csm_lookup_region(const vsh_camera *camera, double aspect, double lookup
   out_clip[4] = fmax(depth_lo, -1.0);
   out_clip[5] = fmin(depth_hi, 1.0);
   if (out_clip[0] > out_clip[1] || out_clip[2] > out_clip[3] || out_clip[4] > out_clip[5])
-    return 1;
-  return 0;
+    return VSH_CSM_EMPTY;
+  return VSH_CSM_OK;
 }
 
-int vsh_csm_view_covers(const vsh_shadow_view *rendered, const double rendered_origin[3],
-                        const vsh_shadow_view *needed, const double needed_origin[3],
-                        const double needed_region[6], int resolution, double margin_texels)
+bool vsh_csm_view_covers(const vsh_csm_cover_params *in)
 {
+  if (!in)
+    return false;
+  const vsh_shadow_view *rendered = in->rendered, *needed = in->needed;
+  const double *rendered_origin = in->rendered_origin, *needed_origin = in->needed_origin;
+  const double *needed_region = in->needed_region;
+  const int resolution = in->resolution;
+  const double margin_texels = in->margin_texels;
   if (!rendered || !needed || !rendered_origin || !needed_origin || !needed_region ||
       rendered->perspective || needed->perspective || resolution < 1 ||
       !(margin_texels >= 0.0) || !isfinite(margin_texels) ||
       !vsh_vec3_is_finite(rendered_origin) || !vsh_vec3_is_finite(needed_origin) ||
       !vsh_mat4_is_finite(rendered->world_to_clip) || !vsh_mat4_is_finite(needed->world_to_clip) ||
       !(rendered->texel_world > 0.0) || !(needed->texel_world > 0.0))
-    return 0;
+    return false;
   const double *a = rendered->world_to_clip, *b = needed->world_to_clip;
   /* Same light direction and texel size: the x and y rows agree; the depth
    * row may differ in scale (the depth range follows the slice) but not in
@@ -128,7 +136,7 @@ int vsh_csm_view_covers(const vsh_shadow_view *rendered, const double rendered_o
       const double x = a[row * 4 + c], y = b[row * 4 + c];
       if (fabs(x - y) > 1e-9 * fmax(fabs(x), fabs(y)) + 1e-300 &&
           fabs(x - y) > 1e-12 * vsh_vec3_length(&a[row * 4]))
-        return 0;
+        return false;
     }
   const double za[3] = { a[8], a[9], a[10] }, zb[3] = { b[8], b[9], b[10] };
   double cross[3];
@@ -136,10 +144,10 @@ int vsh_csm_view_covers(const vsh_shadow_view *rendered, const double rendered_o
   const double la = vsh_vec3_length(za), lb = vsh_vec3_length(zb);
   if (!(la > 0.0) || !(lb > 0.0) || vsh_vec3_dot(za, zb) <= 0.0 ||
       vsh_vec3_length(cross) > 1e-9 * la * lb)
-    return 0;
+    return false;
   double inverse[16];
   if (!vsh_mat4_inverse(b, inverse))
-    return 0;
+    return false;
   /* The origins differ by a camera move: small, so this difference keeps its
    * precision however far both are from the world origin. */
   double shift[3];
@@ -155,7 +163,7 @@ int vsh_csm_view_covers(const vsh_shadow_view *rendered, const double rendered_o
     const double lo = -1.0 + m - 1e-12, hi = 1.0 - m + 1e-12; /* rounding of the round trip */
     if (!(q[0] >= lo && q[0] <= hi && q[1] >= lo && q[1] <= hi &&
           q[2] >= -1.0 - 1e-9 && q[2] <= 1.0 + 1e-9))
-      return 0;
+      return false;
   }
-  return 1;
+  return true;
 }

@@ -28,17 +28,21 @@ static int clip_polygon(double in[][3], int n, const double plane[4], double out
   return m;
 }
 
-int vsh_csm_visible_depth_range(const vsh_camera *camera, double aspect, double clip_near,
-                                double clip_far, const vsh_bounds *bounds,
-                                double out_near_far[2])
+vsh_csm_status vsh_csm_visible_depth_range(const vsh_csm_depth_range_params *in,
+                                           double out_near_far[2])
 {
+  if (!in)
+    return VSH_CSM_BAD_INPUT;
+  const vsh_camera *camera = in->camera;
+  const vsh_bounds *bounds = in->bounds;
+  const double aspect = in->aspect, clip_near = in->clip_near, clip_far = in->clip_far;
   double r[3], u[3], f[3];
   if (!camera || !bounds || !out_near_far || !(aspect > 0.0) || !isfinite(aspect) ||
       !(clip_near > 0.0) ||
       !(clip_far > clip_near) || !isfinite(clip_far) || vsh_bounds_is_empty(bounds) ||
       !vsh_bounds_is_finite(bounds) || vsh_camera_basis(camera, r, u, f) != 0 ||
       !(camera->view_angle > 0.0 && camera->view_angle < 180.0))
-    return 2;
+    return VSH_CSM_BAD_INPUT;
   const double t = tan(camera->view_angle * 0.5 * 3.14159265358979323846 / 180.0);
   /* Frustum planes in view coordinates (x right, y up, z = depth forward),
    * each as dot(n, p) + w >= 0 inside. */
@@ -95,10 +99,10 @@ int vsh_csm_visible_depth_range(const vsh_camera *camera, double aspect, double 
     }
   }
   if (!(lo <= hi))
-    return 1;
+    return VSH_CSM_EMPTY;
   out_near_far[0] = fmax(lo, clip_near);
   out_near_far[1] = fmin(fmax(hi, out_near_far[0]), clip_far);
-  return 0;
+  return VSH_CSM_OK;
 }
 
 int vsh_csm_default_count(double near_depth, double far_depth, double ratio_per_cascade)
@@ -112,14 +116,19 @@ int vsh_csm_default_count(double near_depth, double far_depth, double ratio_per_
   return k > VSH_CSM_MAX_CASCADES ? VSH_CSM_MAX_CASCADES : (int)k;
 }
 
-int vsh_csm_splits(vsh_split_scheme scheme, int count, double near_depth, double far_depth,
-                   double lambda, const double *fractions, double *out)
+vsh_csm_status vsh_csm_splits(const vsh_csm_split_params *p, double *out)
 {
+  if (!p)
+    return VSH_CSM_BAD_INPUT;
+  const vsh_split_scheme scheme = p->scheme;
+  const int count = p->count;
+  const double near_depth = p->near_depth, far_depth = p->far_depth, lambda = p->lambda;
+  const double *fractions = p->fractions;
   if (!out || count < 1 || count > VSH_CSM_MAX_CASCADES || !(near_depth > 0.0) ||
       !(far_depth > near_depth) || !isfinite(far_depth))
-    return 1;
+    return VSH_CSM_BAD_INPUT;
   if (scheme == VSH_SPLIT_PRACTICAL && !(lambda >= 0.0 && lambda <= 1.0))
-    return 1;
+    return VSH_CSM_BAD_INPUT;
   double s[VSH_CSM_MAX_CASCADES + 1];
   s[0] = near_depth;
   s[count] = far_depth;
@@ -139,16 +148,16 @@ int vsh_csm_splits(vsh_split_scheme scheme, int count, double near_depth, double
       break;
     case VSH_SPLIT_EXPLICIT:
       if (!fractions || !(fractions[i - 1] > 0.0 && fractions[i - 1] < 1.0))
-        return 1;
+        return VSH_CSM_BAD_INPUT;
       s[i] = near_depth + (far_depth - near_depth) * fractions[i - 1];
       break;
     default:
-      return 1;
+      return VSH_CSM_BAD_INPUT;
     }
   }
   for (int i = 0; i < count; ++i)
     if (!(s[i + 1] > s[i]))
-      return 1;
+      return VSH_CSM_BAD_INPUT;
   memcpy(out, s, sizeof(double) * (size_t)(count + 1));
-  return 0;
+  return VSH_CSM_OK;
 }

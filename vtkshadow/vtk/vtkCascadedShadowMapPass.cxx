@@ -15,7 +15,6 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkPlanarShadowPass.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkShaderProgram.h"
@@ -27,8 +26,8 @@
 
 #include "vsh_bounds.h"
 #include "vsh_camera.h"
-#include "vsh_vec3.h"
 #include "vsh_csm.h"
+#include "vsh_csm_plan.h"
 #include "vsh_mat4.h"
 
 #include "vtkShadowMapDepthFS.h"
@@ -47,17 +46,8 @@ vtkStandardNewMacro(vtkCascadedShadowMapPass);
 
 namespace
 {
-constexpr int MaxLights = 8;
-constexpr int MaxTiles = 24;
-
-enum LightKind
-{
-  NoShadow = 0,
-  Cascades = 1,
-  Spot = 2,
-  Point = 3
-};
-
+constexpr int MaxLights = VSH_CSM_MAX_LIGHTS;
+constexpr int MaxTiles = VSH_CSM_MAX_TILES;
 
 void ToFloatTransposed(const double m[16], float out[16])
 {
@@ -69,46 +59,19 @@ void ToFloatTransposed(const double m[16], float out[16])
     }
   }
 }
+}
 
-// One shadow map of the atlas.
-struct Tile
+// One frame's inputs, gathered from VTK: the plain scene the core plans
+// from, and what the bake needs (the caster actors).
+struct vtkCascadedShadowMapPass::Frame
 {
-  vsh_shadow_view View;      // camera-relative world -> clip
-  double Absolute[16];       // world -> clip (for caching)
-  double Near = 0.0;         // cascade near depth
-  double Far = 0.0;          // cascade far depth
-  double TexelPixels = 0.0;  // on-screen size of a texel at the cascade's near end
-  double Bias[2] = { 0, 0 }; // depth bias, normal offset
-  int Light = -1;
+  std::vector<vtkActor*> Casters;
+  vtkMTimeType CasterTime = 0;      // changes when a caster moves, changes or leaves
+  std::vector<vsh_csm_light> Lights; // switched on, in the mappers' numbering
+  vsh_csm_scene Scene{};            // its `lights` point into Lights
+  vsh_csm_settings Settings{};
+  double ViewRotation[16];          // world -> view, rotation only
 };
-
-// Half angle of a positional light's map: the spot's cone a little wider
-// (so its edge is inside the map), or a cube face, a little over 45 degrees
-// (so the face a direction's major axis picks always contains it).
-const double CubeFaceHalfAngle = 45.5;
-double MapHalfAngle(vtkLight* light)
-{
-  return light->GetConeAngle() < 90.0 ? std::min(light->GetConeAngle() * 1.02 + 0.5, 89.0)
-                                      : CubeFaceHalfAngle;
-}
-
-// Depth bias and normal offset from the map's texel size and depth range,
-// and the absolute world -> clip matrix (for caching).
-void ComputeBiasAndAbsolute(Tile& tile, const double eye[3], double biasScale)
-{
-  // A perspective map's texels grow with the distance from the light, and
-  // its depth is not linear: both biases are per unit of distance there, and
-  // the shader scales them by the fragment's distance and applies the depth
-  // bias in linear depth (a constant offset in the map's depth would swamp
-  // the depth differences far from a light whose near plane is close).
-  vsh_csm_bias(tile.View.texel_world, tile.View.perspective ? 1.0 : tile.View.depth_extent,
-    biasScale, &tile.Bias[0], &tile.Bias[1]);
-  double toRelative[16];
-  const double negEye[3] = { -eye[0], -eye[1], -eye[2] };
-  vsh_mat4_translation(negEye, toRelative);
-  vsh_mat4_multiply(tile.View.world_to_clip, toRelative, tile.Absolute);
-}
-}
 
 struct vtkCascadedShadowMapPass::Internals
 {
@@ -119,29 +82,17 @@ struct vtkCascadedShadowMapPass::Internals
   int AtlasSize[2] = { 0, 0 };
   int TileGrid[2] = { 1, 1 };
   int RenderedResolution = 0; // texels per tile edge of the held maps
-  std::vector<Tile> Tiles;
-  // What each atlas slot last held, to skip re-rendering unchanged maps.
+  // This frame's maps and, per light in the mappers' numbering, their kind
+  // and range of tiles (the shader's uniforms).
+  vsh_csm_plan Plan{};
   // What each atlas tile holds: the view it was rendered with (relative to
   // the camera position then), so a later frame can reuse it.
-  struct RenderedTile
-  {
-    bool Valid = false;
-    Tile Map;
-    double Origin[3] = { 0, 0, 0 };
-    vtkMTimeType CasterTime = 0;
-  };
-  std::vector<RenderedTile> Rendered;
-  // Per-light shader data in the mapper's numbering.
-  int LightCount = 0;
-  int Kind[MaxLights] = { 0 };
-  int First[MaxLights] = { 0 };
-  int Count[MaxLights] = { 0 };
+  std::vector<vsh_csm_held_map> Rendered;
   float LightVC[MaxLights][3] = { { 0 } };
   float ViewToWorld[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   float FadeStart = 0.0f;
   float MaxDistance = 0.0f;
   std::string ShaderSignature; // kinds, filter: what the generated code depends on
-
 };
 
 //------------------------------------------------------------------------------
@@ -231,8 +182,9 @@ double vtkCascadedShadowMapPass::GetSplitFraction(int i) const
 //------------------------------------------------------------------------------
 int vtkCascadedShadowMapPass::GetNumberOfCascades(int light) const
 {
-  return (light >= 0 && light < this->Impl->LightCount && this->Impl->Kind[light] == Cascades)
-    ? this->Impl->Count[light]
+  const vsh_csm_tile_plan& tiles = this->Impl->Plan.tiles;
+  return (light >= 0 && light < tiles.light_count && tiles.kind[light] == VSH_CSM_CASCADES)
+    ? tiles.count[light]
     : 0;
 }
 
@@ -243,7 +195,8 @@ double vtkCascadedShadowMapPass::GetCascadeFar(int light, int cascade) const
   {
     return 0.0;
   }
-  return this->Impl->Tiles[this->Impl->First[light] + cascade].Far;
+  const vsh_csm_tile_plan& tiles = this->Impl->Plan.tiles;
+  return tiles.tiles[tiles.first[light] + cascade].far_depth;
 }
 
 //------------------------------------------------------------------------------
@@ -253,7 +206,8 @@ double vtkCascadedShadowMapPass::GetCascadeTexelPixels(int light, int cascade) c
   {
     return 0.0;
   }
-  return this->Impl->Tiles[this->Impl->First[light] + cascade].TexelPixels;
+  const vsh_csm_tile_plan& tiles = this->Impl->Plan.tiles;
+  return tiles.tiles[tiles.first[light] + cascade].texel_px;
 }
 
 //------------------------------------------------------------------------------
@@ -263,61 +217,149 @@ long long vtkCascadedShadowMapPass::GetMemoryBytes() const
 }
 
 //------------------------------------------------------------------------------
+// The frame, stage by stage: gather the scene, plan the maps (depth range ->
+// resolution -> tiles fitted per light kind, in the C core), allocate the
+// atlas, select the maps an earlier frame can stand in for, bake the rest,
+// then render the scene through the delegate with the shadow lookups.
 void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   this->NumberOfMapsRendered = 0;
-  vtkRenderer* renderer = s->GetRenderer();
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   if (!window)
   {
     vtkErrorMacro("vtkCascadedShadowMapPass needs an OpenGL render window");
     return;
   }
-  Internals& impl = *this->Impl;
+  Frame frame;
+  this->GatherScene(s, frame);
+  this->PlanMaps(frame);
+  this->UpdateShaderState(frame);
+  const int resolution = this->AllocateAtlas(window);
+  std::vector<int> bake;
+  this->SelectReusable(frame, resolution, bake);
+  this->BakeMaps(window, frame, bake, resolution);
+  this->ReleaseRemovedCasters(window, frame);
 
+  // The scene, with every receiver's lighting reading the maps.
+  this->Impl->Atlas->Activate();
+  this->RenderDelegateWithShaderHooks(s);
+  this->Impl->Atlas->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+// Casters and receivers (every visible opaque actor receives), the camera in
+// double, the lights, and the settings: the plain inputs of the plan.
+void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame)
+{
+  vtkRenderer* renderer = s->GetRenderer();
+  vsh_csm_scene& scene = frame.Scene;
   int size[2], origin[2];
   GetViewport(s, size, origin);
-  const double aspect = size[1] > 0 ? static_cast<double>(size[0]) / size[1] : 1.0;
+  scene.aspect = size[1] > 0 ? static_cast<double>(size[0]) / size[1] : 1.0;
+  scene.viewport_height = size[1];
 
-  // Casters and receivers (every visible opaque actor receives).
-  std::vector<vtkActor*> casters;
-  vsh_bounds casterBounds, receiverBounds;
-  vsh_bounds_init_empty(&casterBounds);
-  vsh_bounds_init_empty(&receiverBounds);
-  vtkMTimeType casterTime = 0;
+  vsh_bounds_init_empty(&scene.casters);
+  vsh_bounds_init_empty(&scene.receivers);
   for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(s))
   {
     vtkActor* actor = shadowActor.Actor;
     vsh_bounds ab;
     vsh_bounds_from_vtk(&ab, shadowActor.Bounds);
-    vsh_bounds_merge(&receiverBounds, &ab);
+    vsh_bounds_merge(&scene.receivers, &ab);
     if (!vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()))
     {
-      casters.push_back(actor);
-      vsh_bounds_merge(&casterBounds, &ab);
+      frame.Casters.push_back(actor);
+      vsh_bounds_merge(&scene.casters, &ab);
       // The actor's placement, not its own MTime: VTK's pass machinery gives
       // actors property keys during the first frame, which bumps it.
-      casterTime =
-        std::max({ casterTime, actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor) });
+      frame.CasterTime = std::max(
+        { frame.CasterTime, actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor) });
     }
   }
-  casterTime += casters.size(); // a caster leaving the scene changes it too
+  frame.CasterTime += frame.Casters.size(); // a caster leaving the scene changes it too
+  scene.caster_count = static_cast<int>(frame.Casters.size());
 
-  // Camera, in double, relative to its own position.
   vtkCamera* camera = renderer->GetActiveCamera();
-  vsh_camera cam;
-  camera->GetPosition(cam.position);
-  camera->GetFocalPoint(cam.focal_point);
-  camera->GetViewUp(cam.view_up);
-  cam.view_angle = camera->GetViewAngle();
-  double clip[2];
-  camera->GetClippingRange(clip);
-  double viewRotation[16];
-  vtkMatrix4x4::DeepCopy(viewRotation, camera->GetViewTransformMatrix());
-  viewRotation[3] = viewRotation[7] = viewRotation[11] = 0.0;
+  camera->GetPosition(scene.camera.position);
+  camera->GetFocalPoint(scene.camera.focal_point);
+  camera->GetViewUp(scene.camera.view_up);
+  scene.camera.view_angle = camera->GetViewAngle();
+  camera->GetClippingRange(scene.clip);
+  vtkMatrix4x4::DeepCopy(frame.ViewRotation, camera->GetViewTransformMatrix());
+  frame.ViewRotation[3] = frame.ViewRotation[7] = frame.ViewRotation[11] = 0.0;
+
+  this->GatherLights(renderer, frame);
+  this->GatherSettings(frame.Settings);
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::GatherLights(vtkRenderer* renderer, Frame& frame)
+{
+  // Lights that follow the camera (and the automatic headlight) are updated
+  // by VTK's lights pass inside the delegate, after our shadow work: bring
+  // them up to date now, or their shadows (and the resolution they ask
+  // for) lag one frame behind.
+  vtkshadow::UpdateLights(renderer);
+  int l = 0;
+  for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
+  {
+    vsh_csm_light plain{};
+    light->GetTransformedPosition(plain.position);
+    light->GetTransformedFocalPoint(plain.focal_point);
+    plain.positional = light->GetPositional() ? 1 : 0;
+    plain.cone_angle = light->GetConeAngle();
+    plain.casts = this->LightCasts(light, l++) ? 1 : 0;
+    frame.Lights.push_back(plain);
+  }
+  frame.Scene.lights = frame.Lights.data();
+  frame.Scene.light_count = static_cast<int>(frame.Lights.size());
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::GatherSettings(vsh_csm_settings& out) const
+{
+  out.cascade_count = this->CascadeCount;
+  out.ratio_per_cascade = this->RatioPerCascade;
+  out.split_scheme = static_cast<vsh_split_scheme>(this->SplitScheme);
+  out.split_lambda = this->SplitLambda;
+  std::copy_n(this->Impl->SplitFractions, VSH_CSM_MAX_CASCADES, out.split_fractions);
+  out.stable = this->Stable ? 1 : 0;
+  out.map_resolution = this->MapResolution;
+  out.max_texel_px = this->MaxTexelPixels;
+  out.memory_budget = this->MemoryBudget;
+  out.max_shadow_distance = this->MaxShadowDistance;
+  out.fade_fraction = this->FadeFraction;
+  out.bias_scale = this->BiasScale;
+}
+
+//------------------------------------------------------------------------------
+// Depth range -> resolution and cascades -> tiles per light (the C core).
+void vtkCascadedShadowMapPass::PlanMaps(const Frame& frame)
+{
+  vsh_csm_plan& plan = this->Impl->Plan;
+  vsh_csm_plan_frame(&frame.Scene, &frame.Settings, &plan);
+  if (plan.resolution.split_fallback)
+  {
+    vtkWarningMacro("explicit split fractions are invalid for "
+      << plan.resolution.cascade_count << " cascades: using practical splits");
+  }
+  if (plan.tiles.lights_dropped > 0)
+  {
+    vtkWarningMacro("only the first " << MaxLights << " lights cast shadows");
+  }
+}
+
+//------------------------------------------------------------------------------
+// What the receivers' shaders read besides the tiles: the view rotation, the
+// fade, each point light's position in view coordinates; and the shader
+// code's signature (the lights' kinds and the filter are compiled in).
+void vtkCascadedShadowMapPass::UpdateShaderState(const Frame& frame)
+{
+  Internals& impl = *this->Impl;
+  const vsh_csm_plan& plan = impl.Plan;
   double viewToRelative[16]; // view coordinates -> camera-relative world
-  vsh_mat4_transpose(viewRotation, viewToRelative);
+  vsh_mat4_transpose(frame.ViewRotation, viewToRelative);
   for (int r = 0; r < 3; ++r)
   {
     for (int c = 0; c < 3; ++c)
@@ -325,245 +367,55 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
       impl.ViewToWorld[c * 3 + r] = static_cast<float>(viewToRelative[r * 4 + c]);
     }
   }
-
-  // Visible depth range of the receivers, and the shadow distance.
-  double depthRange[2] = { clip[0], clip[1] };
-  const bool haveScene = !vsh_bounds_is_empty(&receiverBounds) && !casters.empty();
-  if (haveScene &&
-    vsh_csm_visible_depth_range(&cam, aspect, clip[0], clip[1], &receiverBounds, depthRange) != 0)
+  impl.MaxDistance = static_cast<float>(plan.depth.max_distance);
+  impl.FadeStart = static_cast<float>(plan.depth.fade_start);
+  const double* eye = frame.Scene.camera.position;
+  for (int l = 0; l < plan.tiles.light_count; ++l)
   {
-    depthRange[0] = clip[0];
-    depthRange[1] = clip[1];
-  }
-  if (this->MaxShadowDistance > 0.0)
-  {
-    depthRange[1] = std::max(std::min(depthRange[1], this->MaxShadowDistance), depthRange[0] * 1.001);
-  }
-  impl.MaxDistance = static_cast<float>(depthRange[1]);
-  impl.FadeStart = static_cast<float>(depthRange[1] - this->FadeFraction * (depthRange[1] - depthRange[0]));
-  if (this->MaxShadowDistance <= 0.0 && this->FadeFraction <= 0.0)
-  {
-    impl.MaxDistance = 0.0f;
-  }
-
-  // Lights that follow the camera (and the automatic headlight) are updated
-  // by VTK's lights pass inside the delegate, after our shadow work: bring
-  // them up to date now, or their shadows (and the resolution they ask
-  // for) lag one frame behind.
-  vtkshadow::UpdateLights(renderer);
-  // Light `l` (mapper numbering) gets maps in this frame.
-  auto castsShadows = [&](vtkLight* light, int l) {
-    return haveScene && this->LightCasts(light, l);
-  };
-  // Perspective maps are fitted to everything that casts or receives.
-  vsh_bounds everything = casterBounds;
-  vsh_bounds_merge(&everything, &receiverBounds);
-
-  // Resolution and cascade count.
-  int resolution = this->MapResolution;
-  int count = this->CascadeCount > 0
-    ? this->CascadeCount
-    : vsh_csm_default_count(depthRange[0], depthRange[1], this->RatioPerCascade);
-  if (this->MaxTexelPixels > 0.0)
-  {
-    // Fewest cascades first: every cascade re-renders every caster, so on
-    // any renderer a second cascade costs more than a larger map. Then the
-    // least memory for that count.
-    const int maxCount = this->CascadeCount > 0 ? this->CascadeCount : 8;
-    double predicted = 0.0;
-    for (int k = this->CascadeCount > 0 ? maxCount : 1; k <= maxCount; ++k)
+    if (plan.tiles.kind[l] != VSH_CSM_POINT)
     {
-      if (vsh_csm_choose(depthRange[0], depthRange[1], cam.view_angle, aspect, size[1],
-            this->MaxTexelPixels, this->MemoryBudget, 256, 8192, k, &resolution, &count,
-            &predicted) == 0)
-      {
-        break;
-      }
+      continue;
     }
-    // Spot and point-light maps share the atlas resolution: raise it to what
-    // they need where the scene's centre is seen.
-    double centre[3];
-    if (haveScene && vsh_bounds_center(&everything, centre) == 0)
+    const double* p = frame.Lights[l].position;
+    const double rel[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
+    double vc[3];
+    vsh_mat4_transform_direction(frame.ViewRotation, rel, vc);
+    for (int k = 0; k < 3; ++k)
     {
-      double forward[3], r[3], u[3];
-      vsh_camera_basis(&cam, r, u, forward);
-      const double rel[3] = { centre[0] - cam.position[0], centre[1] - cam.position[1],
-        centre[2] - cam.position[2] };
-      const double depth = std::max(vsh_vec3_dot(rel, forward), depthRange[0]);
-      int l = 0;
-      for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
-      {
-        if (!castsShadows(light, l++) || !light->GetPositional())
-        {
-          continue;
-        }
-        double p[3];
-        light->GetTransformedPosition(p);
-        const double half = MapHalfAngle(light);
-        const double toCentre[3] = { centre[0] - p[0], centre[1] - p[1], centre[2] - p[2] };
-        resolution = std::max(resolution,
-          vsh_csm_perspective_resolution(half, vsh_vec3_length(toCentre), depth, cam.view_angle,
-            size[1], this->MaxTexelPixels, 256, 8192));
-      }
+      impl.LightVC[l][k] = static_cast<float>(vc[k]);
     }
   }
-  double splits[VSH_CSM_MAX_CASCADES + 1];
-  if (vsh_csm_splits(static_cast<vsh_split_scheme>(this->SplitScheme), count, depthRange[0],
-        depthRange[1], this->SplitLambda, impl.SplitFractions, splits) != 0)
+  std::string signature = std::to_string(this->Filter) + "/" + std::to_string(this->PCFSize) + ":";
+  for (int l = 0; l < plan.tiles.light_count; ++l)
   {
-    if (this->SplitScheme == EXPLICIT)
-    {
-      vtkWarningMacro("explicit split fractions are invalid for " << count
-                                                                  << " cascades: using practical splits");
-    }
-    vsh_csm_splits(VSH_SPLIT_PRACTICAL, count, depthRange[0], depthRange[1], 0.75, nullptr, splits);
+    signature += std::to_string(plan.tiles.kind[l]);
   }
+  if (signature != impl.ShaderSignature)
+  {
+    impl.ShaderSignature = signature;
+    this->BumpShaderTime();
+  }
+}
 
-  // Lights in the mapper's numbering and their maps.
-  impl.Tiles.clear();
-  impl.LightCount = 0;
-  {
-    for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
-    {
-      const int l = impl.LightCount++;
-      if (l >= MaxLights)
-      {
-        continue;
-      }
-      impl.Kind[l] = NoShadow;
-      impl.First[l] = static_cast<int>(impl.Tiles.size());
-      impl.Count[l] = 0;
-      if (!castsShadows(light, l))
-      {
-        continue;
-      }
-      double p[3], f[3];
-      light->GetTransformedPosition(p);
-      light->GetTransformedFocalPoint(f);
-      const double travel[3] = { f[0] - p[0], f[1] - p[1], f[2] - p[2] };
-      if (!light->GetPositional())
-      {
-        int made = 0;
-        for (int c = 0; c < count && impl.Tiles.size() < MaxTiles; ++c)
-        {
-          Tile tile;
-          const int status = vsh_csm_fit_directional(&cam, aspect, splits[c], splits[c + 1], travel,
-            &receiverBounds, &casterBounds, this->Stable ? 1 : 0, resolution, &tile.View);
-          if (status == 2)
-          {
-            break;
-          }
-          if (status == 1)
-          {
-            // The slice sees no receiver: an empty map that nothing samples.
-            vsh_mat4_identity(tile.View.world_to_clip);
-            tile.View.world_to_clip[10] = 0.0;
-            tile.View.texel_world = 0.0;
-            tile.View.depth_extent = 1.0;
-          }
-          tile.Near = splits[c];
-          tile.Far = splits[c + 1];
-          tile.TexelPixels =
-            vsh_csm_texel_pixels(tile.View.texel_world, splits[c], cam.view_angle, size[1]);
-          tile.Light = l;
-          impl.Tiles.push_back(tile);
-          ++made;
-        }
-        if (made > 0)
-        {
-          impl.Kind[l] = Cascades;
-          impl.Count[l] = made;
-        }
-      }
-      else if (light->GetConeAngle() < 90.0)
-      {
-        Tile tile;
-        const double half = MapHalfAngle(light);
-        if (impl.Tiles.size() < MaxTiles &&
-          vsh_csm_fit_perspective(p, travel, half, &everything, cam.position, resolution, &tile.View) == 0)
-        {
-          tile.Light = l;
-          impl.Tiles.push_back(tile);
-          impl.Kind[l] = Spot;
-          impl.Count[l] = 1;
-        }
-      }
-      else if (impl.Tiles.size() + 6 <= MaxTiles)
-      {
-        // Point light: six 90-degree faces (a little wider, so the face a
-        // direction's major axis picks always contains it).
-        int made = 0;
-        for (int face = 0; face < 6; ++face)
-        {
-          Tile tile;
-          double axis[3];
-          vsh_csm_cube_face_direction(face, axis);
-          if (vsh_csm_fit_perspective(p, axis, CubeFaceHalfAngle, &everything, cam.position, resolution, &tile.View) != 0)
-          {
-            // Nothing in front of this face: a map that covers nothing.
-            vsh_mat4_identity(tile.View.world_to_clip);
-            tile.View.world_to_clip[15] = -1.0; // w < 0: every lookup is lit
-            tile.View.texel_world = 0.0;
-            tile.View.depth_extent = 1.0;
-          }
-          tile.Light = l;
-          impl.Tiles.push_back(tile);
-          ++made;
-        }
-        impl.Kind[l] = Point;
-        impl.Count[l] = made;
-        const double rel[3] = { p[0] - cam.position[0], p[1] - cam.position[1], p[2] - cam.position[2] };
-        double vc[3];
-        vsh_mat4_transform_direction(viewRotation, rel, vc);
-        for (int k = 0; k < 3; ++k)
-        {
-          impl.LightVC[l][k] = static_cast<float>(vc[k]);
-        }
-      }
-    }
-  }
-  if (impl.LightCount > MaxLights)
-  {
-    vtkWarningMacro("only the first " << MaxLights << " lights cast shadows");
-    impl.LightCount = MaxLights;
-  }
-  // The lights' kinds and the filter are compiled into the receivers'
-  // shaders: rebuild them when those change.
-  {
-    std::string signature = std::to_string(this->Filter) + "/" + std::to_string(this->PCFSize) + ":";
-    for (int l = 0; l < impl.LightCount; ++l)
-    {
-      signature += std::to_string(impl.Kind[l]);
-    }
-    if (signature != impl.ShaderSignature)
-    {
-      impl.ShaderSignature = signature;
-      this->BumpShaderTime();
-    }
-  }
-
-  // Bias and absolute matrices per tile.
-  for (Tile& tile : impl.Tiles)
-  {
-    ComputeBiasAndAbsolute(tile, cam.position, this->BiasScale);
-  }
-
-  // The atlas: a grid of resolution^2 tiles, clamped to the GL's limit.
-  const int tiles = static_cast<int>(impl.Tiles.size());
+//------------------------------------------------------------------------------
+// The atlas: a grid of resolution^2 tiles, clamped to the GL's limit.
+// Returns the resolution of a tile.
+int vtkCascadedShadowMapPass::AllocateAtlas(vtkOpenGLRenderWindow* window)
+{
+  Internals& impl = *this->Impl;
+  const int tiles = impl.Plan.tiles.tile_count;
   GLint maxSize = 4096;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  const int columns = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(tiles, 1))))));
-  const int rows = std::max(1, (std::max(tiles, 1) + columns - 1) / columns);
-  if (resolution * std::max(columns, rows) > maxSize)
+  vsh_csm_atlas_layout layout;
+  vsh_csm_atlas_layout_for(tiles, impl.Plan.resolution.resolution, maxSize, &layout);
+  if (layout.clamped)
   {
-    const int clamped = maxSize / std::max(columns, rows);
-    vtkWarningMacro("shadow map resolution " << resolution << " x " << columns << " x " << rows
+    vtkWarningMacro("shadow map resolution " << impl.Plan.resolution.resolution << " x "
+                                             << layout.columns << " x " << layout.rows
                                              << " exceeds the GL limit " << maxSize
-                                             << ": using " << clamped);
-    resolution = clamped;
+                                             << ": using " << layout.resolution);
   }
-  this->UsedResolution = resolution;
-  vtkOpenGLState* state = window->GetState();
+  this->UsedResolution = layout.resolution;
   if (!impl.Atlas)
   {
     impl.Atlas = vtkTextureObject::New();
@@ -571,8 +423,8 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   }
   impl.Atlas->SetContext(window);
   impl.FBO->SetContext(window);
-  const int atlasW = columns * resolution, atlasH = rows * resolution;
-  if (!impl.Atlas->GetHandle() || impl.AtlasSize[0] != atlasW || impl.AtlasSize[1] != atlasH)
+  if (!impl.Atlas->GetHandle() || impl.AtlasSize[0] != layout.width ||
+    impl.AtlasSize[1] != layout.height)
   {
     impl.Atlas->ReleaseGraphicsResources(window);
     impl.Atlas->SetWrapS(vtkTextureObject::ClampToEdge);
@@ -581,168 +433,161 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     impl.Atlas->SetMagnificationFilter(vtkTextureObject::Linear);
     impl.Atlas->SetDepthTextureCompare(true);
     impl.Atlas->SetDepthTextureCompareFunction(vtkTextureObject::Lequal);
-    impl.Atlas->AllocateDepth(atlasW, atlasH, vtkTextureObject::Float32);
+    impl.Atlas->AllocateDepth(layout.width, layout.height, vtkTextureObject::Float32);
     // The setters above change nothing the second time, so the texture
     // object's time is older than its last SendParameters and the new GL
     // texture would never get the depth compare mode: every lookup would
     // then read as shadowed (found by the robustness suite: auto re-sizing
     // its maps after a window resize).
     impl.Atlas->Modified();
-    impl.AtlasSize[0] = atlasW;
-    impl.AtlasSize[1] = atlasH;
-    impl.Rendered.clear();
+    impl.AtlasSize[0] = layout.width;
+    impl.AtlasSize[1] = layout.height;
+    impl.Rendered.clear(); // nothing held survives a new texture
   }
   // A held map is only reusable in the slot and at the texel size it was
   // rendered with: a new grid or resolution (auto's texel target follows the
   // window size and the casters) can keep the atlas size but not its layout.
-  if (impl.TileGrid[0] != columns || impl.TileGrid[1] != rows ||
-    impl.RenderedResolution != resolution)
+  if (impl.TileGrid[0] != layout.columns || impl.TileGrid[1] != layout.rows ||
+    impl.RenderedResolution != layout.resolution)
   {
     impl.Rendered.clear();
   }
-  impl.TileGrid[0] = columns;
-  impl.TileGrid[1] = rows;
-  impl.RenderedResolution = resolution;
+  impl.TileGrid[0] = layout.columns;
+  impl.TileGrid[1] = layout.rows;
+  impl.RenderedResolution = layout.resolution;
   impl.Rendered.resize(tiles);
+  return layout.resolution;
+}
 
-  // Render the maps that changed. A cascade whose map from an earlier frame
-  // still covers every lookup of this frame keeps that map (and its matrix
-  // and bias): a stable cascade is a square around its slice's bounding
-  // sphere, so small camera moves rarely leave it.
-  std::vector<int> dirty;
-  this->NumberOfMapsReused = 0;
-  const double reach = 2.0 + this->BiasScale * 2.0 +
-    (this->Filter == PCF ? 0.5 * this->PCFSize + 1.0
-                         : this->Filter == POISSON ? this->PoissonRadius + 1.0 : 1.0);
-  for (int t = 0; t < tiles; ++t)
+//------------------------------------------------------------------------------
+// Which tiles to bake. A cascade whose map from an earlier frame still covers
+// every lookup of this frame keeps that map (and its matrix and bias): a
+// stable cascade is a square around its slice's bounding sphere, so small
+// camera moves rarely leave it.
+void vtkCascadedShadowMapPass::SelectReusable(
+  const Frame& frame, int resolution, std::vector<int>& bake)
+{
+  Internals& impl = *this->Impl;
+  vsh_csm_reuse_params p{};
+  p.camera = &frame.Scene.camera;
+  p.aspect = frame.Scene.aspect;
+  p.depth_near = impl.Plan.depth.range[0];
+  p.blend_band = this->BlendBand;
+  p.receivers = &frame.Scene.receivers;
+  p.casters = &frame.Scene.casters;
+  p.stable = this->Stable ? 1 : 0;
+  p.resolution = resolution;
+  // How far from a lookup the filter and the bias read, in texels.
+  p.reach_texels = 2.0 + this->BiasScale * 2.0 +
+    (this->Filter == PCF           ? 0.5 * this->PCFSize + 1.0
+        : this->Filter == POISSON ? this->PoissonRadius + 1.0
+                                  : 1.0);
+  p.caster_time = frame.CasterTime;
+  vsh_csm_selection selection;
+  vsh_csm_select_reusable(&p, impl.Plan.tiles.tiles, impl.Plan.tiles.tile_count,
+    impl.Rendered.data(), &selection);
+  this->NumberOfMapsReused = selection.reused_count;
+  bake.assign(selection.bake, selection.bake + selection.bake_count);
+}
+
+//------------------------------------------------------------------------------
+// Render the casters into the listed tiles of the atlas.
+void vtkCascadedShadowMapPass::BakeMaps(
+  vtkOpenGLRenderWindow* window, const Frame& frame, const std::vector<int>& bake, int resolution)
+{
+  if (bake.empty())
   {
-    Tile& tile = impl.Tiles[t];
-    Internals::RenderedTile& held = impl.Rendered[t];
-    // A map of the same light and casters: the same one, or perhaps reusable.
-    const bool comparable =
-      held.Valid && held.CasterTime == casterTime && held.Map.Light == tile.Light;
-    bool same = comparable && held.Map.View.perspective == tile.View.perspective;
-    // Two empty maps (nothing in front of a cube face, no receiver in a
-    // slice) are the same whatever their placeholder matrices say.
-    const bool empty = tile.View.texel_world <= 0.0;
-    if (same && empty)
-    {
-      same = held.Map.View.texel_world <= 0.0;
-    }
-    for (int k = 0; same && !empty && k < 16; ++k)
-    {
-      const double a = tile.Absolute[k], b = held.Map.Absolute[k];
-      same = std::abs(a - b) <= 1e-12 * std::max(1.0, std::max(std::abs(a), std::abs(b)));
-    }
-    // (The core refuses perspective and empty maps itself.)
-    if (!same && comparable && this->Stable && tile.Near > 0.0)
-    {
-      double region[6];
-      const double lookupNear = tile.Near * (1.0 - (tile.Near > depthRange[0] ? this->BlendBand : 0.0));
-      if (vsh_csm_lookup_region(&cam, aspect, lookupNear, tile.Far, &receiverBounds, &casterBounds,
-            &tile.View, region) == 0 &&
-        vsh_csm_view_covers(&held.Map.View, held.Origin, &tile.View, cam.position, region, resolution,
-          reach))
-      {
-        // Sample the held map: its view, re-expressed relative to this
-        // frame's camera position (a small shift, exact enough in double).
-        const double shift[3] = { cam.position[0] - held.Origin[0],
-          cam.position[1] - held.Origin[1], cam.position[2] - held.Origin[2] };
-        double toHeld[16];
-        vsh_mat4_translation(shift, toHeld);
-        const double far = tile.Far, near = tile.Near, pixels = tile.TexelPixels;
-        tile = held.Map;
-        vsh_mat4_multiply(held.Map.View.world_to_clip, toHeld, tile.View.world_to_clip);
-        tile.Near = near;
-        tile.Far = far;
-        tile.TexelPixels = pixels;
-        ++this->NumberOfMapsReused;
-        same = true;
-      }
-    }
-    if (!same)
-    {
-      dirty.push_back(t);
-      held.Valid = true;
-      held.Map = tile;
-      std::copy_n(cam.position, 3, held.Origin);
-      held.CasterTime = casterTime;
-    }
+    return;
   }
-  if (!dirty.empty())
+  Internals& impl = *this->Impl;
+  vtkOpenGLState* state = window->GetState();
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vtkShadowMapDepthVS, vtkShadowMapDepthFS, "");
+  state->PushFramebufferBindings();
+  impl.FBO->Bind();
+  impl.FBO->AddDepthAttachment(impl.Atlas);
+  impl.FBO->DeactivateDrawBuffers();
   {
-    vtkShaderProgram* program =
-      window->GetShaderCache()->ReadyShaderProgram(vtkShadowMapDepthVS, vtkShadowMapDepthFS, "");
-    state->PushFramebufferBindings();
-    impl.FBO->Bind();
-    impl.FBO->AddDepthAttachment(impl.Atlas);
-    impl.FBO->DeactivateDrawBuffers();
+    vtkOpenGLState::ScopedglViewport viewport(state);
+    vtkOpenGLState::ScopedglScissor scissor(state);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable scissorTest(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglDepthFunc(GL_LEQUAL);
+    // Slope-scaled offset while baking: steep receivers need more.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(
+      1.5f * static_cast<float>(this->BiasScale), 2.0f * static_cast<float>(this->BiasScale));
+    for (vtkActor* actor : frame.Casters)
     {
-      vtkOpenGLState::ScopedglViewport viewport(state);
-      vtkOpenGLState::ScopedglScissor scissor(state);
-      vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
-      vtkOpenGLState::ScopedglEnableDisable scissorTest(state, GL_SCISSOR_TEST);
-      vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
-      vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
-      vtkOpenGLState::ScopedglDepthMask depthMask(state);
-      vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
-      state->vtkglEnable(GL_DEPTH_TEST);
-      state->vtkglEnable(GL_SCISSOR_TEST);
-      state->vtkglDisable(GL_BLEND);
-      state->vtkglDisable(GL_CULL_FACE);
-      state->vtkglDepthMask(GL_TRUE);
-      state->vtkglDepthFunc(GL_LEQUAL);
-      // Slope-scaled offset while baking: steep receivers need more.
-      glEnable(GL_POLYGON_OFFSET_FILL);
-      glPolygonOffset(1.5f * static_cast<float>(this->BiasScale), 2.0f * static_cast<float>(this->BiasScale));
-      for (vtkActor* actor : casters)
+      auto& geometry = impl.Casters[actor];
+      if (!geometry)
       {
-        auto& geometry = impl.Casters[actor];
-        if (!geometry)
-        {
-          geometry.reset(new vtkShadowCasterGeometry);
-        }
-        geometry->Update(actor);
+        geometry.reset(new vtkShadowCasterGeometry);
       }
-      for (int t : dirty)
-      {
-        const Tile& tile = impl.Tiles[t];
-        const int x = (t % columns) * resolution, y = (t / columns) * resolution;
-        state->vtkglViewport(x, y, resolution, resolution);
-        state->vtkglScissor(x, y, resolution, resolution);
-        state->vtkglClearDepth(1.0);
-        state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-        ++this->NumberOfMapsRendered;
-        if (tile.View.texel_world <= 0.0)
-        {
-          continue; // an empty map
-        }
-        for (vtkActor* actor : casters)
-        {
-          vtkShadowCasterGeometry* geometry = impl.Casters[actor].get();
-          if (geometry->GetNumberOfTriangles() == 0)
-          {
-            continue;
-          }
-          double modelRelative[16];
-          geometry->GetModelRelativeMatrix(actor, cam.position, modelRelative);
-          double mcdc[16];
-          vsh_mat4_multiply(tile.View.world_to_clip, modelRelative, mcdc);
-          float mcdcF[16];
-          ToFloatTransposed(mcdc, mcdcF);
-          program->SetUniformMatrix4x4("mapMCDC", mcdcF);
-          geometry->Draw(program);
-        }
-      }
-      glDisable(GL_POLYGON_OFFSET_FILL);
+      geometry->Update(actor);
     }
-    impl.FBO->RemoveDepthAttachment();
-    state->PopFramebufferBindings();
-    this->TotalMapsRendered += this->NumberOfMapsRendered;
+    const int columns = impl.TileGrid[0];
+    for (int t : bake)
+    {
+      const int x = (t % columns) * resolution, y = (t / columns) * resolution;
+      state->vtkglViewport(x, y, resolution, resolution);
+      state->vtkglScissor(x, y, resolution, resolution);
+      state->vtkglClearDepth(1.0);
+      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+      ++this->NumberOfMapsRendered;
+      this->DrawCasters(program, frame, impl.Plan.tiles.tiles[t]);
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
   }
+  impl.FBO->RemoveDepthAttachment();
+  state->PopFramebufferBindings();
+  this->TotalMapsRendered += this->NumberOfMapsRendered;
+}
+
+//------------------------------------------------------------------------------
+// Every caster's depth into the current tile (an empty map stays cleared).
+void vtkCascadedShadowMapPass::DrawCasters(
+  vtkShaderProgram* program, const Frame& frame, const vsh_csm_tile& tile)
+{
+  if (tile.view.texel_world <= 0.0)
+  {
+    return;
+  }
+  for (vtkActor* actor : frame.Casters)
+  {
+    vtkShadowCasterGeometry* geometry = this->Impl->Casters[actor].get();
+    if (geometry->GetNumberOfTriangles() == 0)
+    {
+      continue;
+    }
+    double modelRelative[16];
+    geometry->GetModelRelativeMatrix(actor, frame.Scene.camera.position, modelRelative);
+    double mcdc[16];
+    vsh_mat4_multiply(tile.view.world_to_clip, modelRelative, mcdc);
+    float mcdcF[16];
+    ToFloatTransposed(mcdc, mcdcF);
+    program->SetUniformMatrix4x4("mapMCDC", mcdcF);
+    geometry->Draw(program);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Drop the GL geometry of actors that no longer cast.
+void vtkCascadedShadowMapPass::ReleaseRemovedCasters(vtkOpenGLRenderWindow* window, const Frame& frame)
+{
+  Internals& impl = *this->Impl;
   for (auto it = impl.Casters.begin(); it != impl.Casters.end();)
   {
-    if (std::find(casters.begin(), casters.end(), it->first) == casters.end())
+    if (std::find(frame.Casters.begin(), frame.Casters.end(), it->first) == frame.Casters.end())
     {
       it->second->ReleaseGraphicsResources(window);
       it = impl.Casters.erase(it);
@@ -752,11 +597,6 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
       ++it;
     }
   }
-
-  // The scene, with every receiver's lighting reading the maps.
-  impl.Atlas->Activate();
-  this->RenderDelegateWithShaderHooks(s);
-  impl.Atlas->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -777,17 +617,17 @@ bool vtkCascadedShadowMapPass::PreReplaceShaderValues(
   for (int l = 0; l < MaxLights; ++l)
   {
     const std::string n = std::to_string(l);
-    const int kind = l < impl.LightCount ? impl.Kind[l] : NoShadow;
-    if (kind == Cascades)
+    const int kind = l < impl.Plan.tiles.light_count ? impl.Plan.tiles.kind[l] : VSH_CSM_NO_SHADOW;
+    if (kind == VSH_CSM_CASCADES)
     {
       code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowCascades(" + n +
         ", depth, posVC, normalVC), fade);\n";
     }
-    else if (kind == Spot)
+    else if (kind == VSH_CSM_SPOT)
     {
       code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowSpot(" + n + ", posVC, normalVC), fade);\n";
     }
-    else if (kind == Point)
+    else if (kind == VSH_CSM_POINT)
     {
       code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowPoint(" + n + ", posVC, normalVC), fade);\n";
     }
@@ -832,14 +672,15 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
   {
     return true;
   }
-  const int tiles = std::min<int>(static_cast<int>(impl.Tiles.size()), MaxTiles);
+  vsh_csm_tile_plan& plan = impl.Plan.tiles;
+  const int tiles = std::min<int>(plan.tile_count, MaxTiles);
   program->SetUniformi("vshShadowAtlas", impl.Atlas->GetTextureUnit());
   const float texel[2] = { 1.0f / std::max(impl.AtlasSize[0], 1), 1.0f / std::max(impl.AtlasSize[1], 1) };
   program->SetUniform2f("vshAtlasTexel", texel);
-  program->SetUniformi("vshShadowLightCount", std::min(impl.LightCount, MaxLights));
-  program->SetUniform1iv("vshShadowKind", MaxLights, impl.Kind);
-  program->SetUniform1iv("vshShadowFirst", MaxLights, impl.First);
-  program->SetUniform1iv("vshShadowCount", MaxLights, impl.Count);
+  program->SetUniformi("vshShadowLightCount", std::min(plan.light_count, MaxLights));
+  program->SetUniform1iv("vshShadowKind", MaxLights, plan.kind);
+  program->SetUniform1iv("vshShadowFirst", MaxLights, plan.first);
+  program->SetUniform1iv("vshShadowCount", MaxLights, plan.count);
   program->SetUniform3fv("vshShadowLightVC", MaxLights, impl.LightVC);
   program->SetUniformMatrix3x3("vshViewToWorld", impl.ViewToWorld);
   program->SetUniformf("vshPoissonRadius", static_cast<float>(this->PoissonRadius));
@@ -870,9 +711,9 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
   }
   for (int t = 0; t < tiles; ++t)
   {
-    const Tile& tile = impl.Tiles[t];
+    const vsh_csm_tile& tile = plan.tiles[t];
     double m[16];
-    vsh_mat4_multiply(tile.View.world_to_clip, viewToRelative, m);
+    vsh_mat4_multiply(tile.view.world_to_clip, viewToRelative, m);
     ToFloatTransposed(m, &matrices[16 * t]);
     const int columns = impl.TileGrid[0];
     const double w = static_cast<double>(this->UsedResolution) / impl.AtlasSize[0];
@@ -881,13 +722,13 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
     rects[4 * t + 1] = static_cast<float>((t / columns) * h);
     rects[4 * t + 2] = static_cast<float>(w);
     rects[4 * t + 3] = static_cast<float>(h);
-    bias[2 * t + 0] = static_cast<float>(tile.Bias[0]);
-    bias[2 * t + 1] = static_cast<float>(tile.Bias[1]);
-    fars[t] = static_cast<float>(tile.Far);
-    if (tile.View.perspective)
+    bias[2 * t + 0] = static_cast<float>(tile.bias[0]);
+    bias[2 * t + 1] = static_cast<float>(tile.bias[1]);
+    fars[t] = static_cast<float>(tile.far_depth);
+    if (tile.view.perspective)
     {
       double terms[2];
-      vsh_csm_perspective_depth_terms(&tile.View, terms);
+      vsh_csm_perspective_depth_terms(&tile.view, terms);
       depth[2 * t + 0] = static_cast<float>(terms[0]);
       depth[2 * t + 1] = static_cast<float>(terms[1]);
     }

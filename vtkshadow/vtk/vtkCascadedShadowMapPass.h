@@ -37,6 +37,12 @@
 #include "vtkshadowModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
+
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+struct vsh_csm_settings;
+struct vsh_csm_tile;
 
 class VTKSHADOW_EXPORT vtkCascadedShadowMapPass : public vtkShadowPassBase
 {
@@ -221,6 +227,22 @@ private:
 
   struct Internals;
   std::unique_ptr<Internals> Impl;
+
+  // The stages of Render(), in order. Planning (depth range, resolution,
+  // tiles per light kind, reuse) is plain C in vsh_csm_plan.h; these turn
+  // VTK's state into its inputs and its plan into GL work.
+  struct Frame;
+  void GatherScene(const vtkRenderState* s, Frame& frame);
+  void GatherLights(vtkRenderer* renderer, Frame& frame);
+  void GatherSettings(vsh_csm_settings& out) const;
+  void PlanMaps(const Frame& frame);
+  void UpdateShaderState(const Frame& frame);
+  int AllocateAtlas(vtkOpenGLRenderWindow* window);
+  void SelectReusable(const Frame& frame, int resolution, std::vector<int>& bake);
+  void BakeMaps(vtkOpenGLRenderWindow* window, const Frame& frame, const std::vector<int>& bake,
+    int resolution);
+  void DrawCasters(vtkShaderProgram* program, const Frame& frame, const vsh_csm_tile& tile);
+  void ReleaseRemovedCasters(vtkOpenGLRenderWindow* window, const Frame& frame);
 };
 
 #endif
