@@ -168,8 +168,10 @@ std::vector<PropRange> BoxRanges(vtkRenderer* renderer, const ViewFrame& frame, 
       reach += d * d;
     }
     reach = 2.0 * std::sqrt(reach) + 1e-300;
+    const vsh_csm_depth_range_params depthParams = { &frame.Camera, aspect, reach * 1e-15, reach,
+      &box };
     double range[2];
-    if (vsh_csm_visible_depth_range(&frame.Camera, aspect, reach * 1e-15, reach, &box, range) == 0)
+    if (vsh_csm_visible_depth_range(&depthParams, range) == VSH_CSM_OK)
     {
       ranges.push_back({ prop, range[0], range[1] });
     }
