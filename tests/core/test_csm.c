@@ -96,6 +96,60 @@ static void check_split_invariants(const double *s, int count, double n, double 
   for (int i = 0; i < count; ++i) CHECK(s[i + 1] > s[i]);
 }
 
+/* PRACTICAL with max_ratio: where the count allows it, every cascade's
+ * far/near stays within the ratio, the splits never fall below the
+ * logarithmic ones, and they equal the plain blend wherever the blend keeps
+ * the ratio anyway; where the count cannot (ratio^count < f/n) or no ratio
+ * is given, the result is the plain blend. Bad ratios are refused. */
+static void test_splits_max_ratio(void) {
+  vsh_test_seed(4242);
+  for (int trial = 0; trial < 4000; ++trial) {
+    const double n = pow(10.0, vsh_test_rnd(-6.0, 3.0));
+    const double f = n * pow(10.0, vsh_test_rnd(0.01, 7.0));
+    const double ratio = vsh_test_rnd(1.5, 50.0);
+    const double lambda = vsh_test_rnd(0.0, 1.0);
+    const int count = 1 + (int)(vsh_test_rnd(0.0, 1.0) * VSH_CSM_MAX_CASCADES) %
+                              VSH_CSM_MAX_CASCADES;
+    double capped[VSH_CSM_MAX_CASCADES + 1], plain[VSH_CSM_MAX_CASCADES + 1];
+    CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_PRACTICAL, .count = count,
+        .near_depth = n, .far_depth = f, .lambda = lambda, .max_ratio = ratio}, capped) ==
+          VSH_CSM_OK);
+    CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_PRACTICAL, .count = count,
+        .near_depth = n, .far_depth = f, .lambda = lambda}, plain) == VSH_CSM_OK);
+    check_split_invariants(capped, count, n, f);
+    const int reachable = count * log(ratio) >= log(f / n);
+    for (int i = 1; i <= count; ++i) {
+      const double logarithmic = n * pow(f / n, (double)i / count);
+      if (!reachable) {
+        CHECK(capped[i] == plain[i]);
+        continue;
+      }
+      CHECK(capped[i] / capped[i - 1] <= ratio * (1 + 1e-12));
+      CHECK(capped[i] >= logarithmic * (1 - 1e-12));
+      CHECK(capped[i] <= plain[i]);
+      if (plain[i] <= capped[i - 1] * ratio)
+        CHECK(capped[i] == plain[i]);
+    }
+  }
+  /* The near-far-1e5 shape: 6 cascades of ratio 8 over [1, 1e5], lambda
+   * 0.75: the plain blend's first cascade is ~4000 deep, the capped one 8. */
+  double s[VSH_CSM_MAX_CASCADES + 1];
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_PRACTICAL, .count = 6,
+      .near_depth = 1, .far_depth = 1e5, .lambda = 0.75}, s) == VSH_CSM_OK);
+  CHECK(s[1] > 4000);
+  CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_PRACTICAL, .count = 6,
+      .near_depth = 1, .far_depth = 1e5, .lambda = 0.75, .max_ratio = 8}, s) == VSH_CSM_OK);
+  CHECK_NEAR(s[1], 8.0, 1e-12);
+  const double bad[] = {-1.0, 0.5, 1.0, NAN, INFINITY};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+    s[0] = -7;
+    CHECK(vsh_csm_splits(&(vsh_csm_split_params){.scheme = VSH_SPLIT_PRACTICAL, .count = 3,
+        .near_depth = 1, .far_depth = 100, .lambda = 0.5, .max_ratio = bad[k]}, s) ==
+          VSH_CSM_BAD_INPUT);
+    CHECK(s[0] == -7); /* untouched */
+  }
+}
+
 static void test_splits_closed_forms(void) {
   const double ranges[][2] = {{1, 100}, {0.1, 1000}, {1e-3, 1e6}, {5, 6}, {0.5, 0.5000001}};
   for (size_t q = 0; q < sizeof ranges / sizeof ranges[0]; ++q) {
@@ -1720,6 +1774,7 @@ static void test_perspective_resolution(void) {
 
 int main(void) {
   test_splits_closed_forms();
+  test_splits_max_ratio();
   test_splits_bad_input();
   test_default_count();
   test_visible_depth_known();

@@ -76,9 +76,17 @@ typedef struct vsh_csm_split_params {
   double far_depth;
   double lambda;           /* PRACTICAL only, in [0, 1] */
   const double *fractions; /* EXPLICIT only: count - 1 values in (0, 1), increasing */
+  double max_ratio;        /* PRACTICAL only: > 1 caps each cascade's far/near (0: no cap) */
 } vsh_csm_split_params;
 
 /* Split depths out[0] = near ... out[count] = far, strictly increasing.
+ * PRACTICAL with max_ratio > 1: each split is also at most max_ratio times
+ * the one before, where that can hold for every cascade (max_ratio^count >=
+ * far/near). The uniform half of the blend otherwise gives a wide depth
+ * range (1e5) a first cascade thousands of times deeper than its near end,
+ * whose texels then cover thousands of pixels near the camera; the capped
+ * splits stay at or above the logarithmic ones, so the last cascade's ratio
+ * stays within max_ratio too.
  * OK, or BAD_INPUT (out untouched). */
 vsh_csm_status vsh_csm_splits(const vsh_csm_split_params *p, double *out);
 

@@ -54,7 +54,8 @@ static double worst_texel_px(double near_depth, double far_depth, double t, doub
                              double view_angle_deg, int viewport_height, int count, long long res)
 {
   double splits[VSH_CSM_MAX_CASCADES + 1];
-  const vsh_csm_split_params log_split = {VSH_SPLIT_LOG, count, near_depth, far_depth, 0.0, NULL};
+  const vsh_csm_split_params log_split = {VSH_SPLIT_LOG, count, near_depth, far_depth, 0.0, NULL,
+                                          0.0};
   if (vsh_csm_splits(&log_split, splits) != VSH_CSM_OK)
     return INFINITY;
   double worst = 0.0;

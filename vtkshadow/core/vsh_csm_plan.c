@@ -120,12 +120,13 @@ static void split_depths(const vsh_csm_settings *settings, const vsh_csm_depth_p
 {
   const vsh_csm_split_params asked = {settings->split_scheme, out->cascade_count,
                                       depth->range[0], depth->range[1], settings->split_lambda,
-                                      settings->split_fractions};
+                                      settings->split_fractions, settings->ratio_per_cascade};
   out->split_fallback = 0;
   if (vsh_csm_splits(&asked, out->splits) != VSH_CSM_OK) {
     out->split_fallback = settings->split_scheme == VSH_SPLIT_EXPLICIT;
     const vsh_csm_split_params practical = {VSH_SPLIT_PRACTICAL, out->cascade_count,
-                                            depth->range[0], depth->range[1], 0.75, NULL};
+                                            depth->range[0], depth->range[1], 0.75, NULL,
+                                            settings->ratio_per_cascade};
     vsh_csm_splits(&practical, out->splits);
   }
 }

@@ -129,6 +129,11 @@ vsh_csm_status vsh_csm_splits(const vsh_csm_split_params *p, double *out)
     return VSH_CSM_BAD_INPUT;
   if (scheme == VSH_SPLIT_PRACTICAL && !(lambda >= 0.0 && lambda <= 1.0))
     return VSH_CSM_BAD_INPUT;
+  if (!(p->max_ratio == 0.0 || (p->max_ratio > 1.0 && isfinite(p->max_ratio))))
+    return VSH_CSM_BAD_INPUT;
+  /* The cap only where every cascade can keep it (see vsh_csm.h). */
+  const int capped = p->max_ratio > 1.0 &&
+                     count * log(p->max_ratio) >= log(far_depth / near_depth) * (1.0 - 1e-12);
   double s[VSH_CSM_MAX_CASCADES + 1];
   s[0] = near_depth;
   s[count] = far_depth;
@@ -145,6 +150,8 @@ vsh_csm_status vsh_csm_splits(const vsh_csm_split_params *p, double *out)
       break;
     case VSH_SPLIT_PRACTICAL:
       s[i] = lambda * logarithmic + (1.0 - lambda) * uniform;
+      if (capped)
+        s[i] = fmin(s[i], s[i - 1] * p->max_ratio);
       break;
     case VSH_SPLIT_EXPLICIT:
       if (!fractions || !(fractions[i - 1] > 0.0 && fractions[i - 1] < 1.0))
