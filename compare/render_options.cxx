@@ -113,8 +113,8 @@ int ParseMaxError(const char* v, RenderOptions& options, std::string& error)
   char* end = nullptr;
   const double number = std::strtod(v, &end);
   const bool pixels = end && std::strcmp(end, "px") == 0;
-  if (end == v || !end || (*end != '\0' && !pixels) || !std::isfinite(number) ||
-    number < 0.0 || (!pixels && number > 100.0) || (pixels && number <= 0.0))
+  if (end == v || !end || (*end != '\0' && !pixels) || !std::isfinite(number) || number < 0.0 ||
+    (!pixels && number > 100.0) || (pixels && number <= 0.0))
   {
     error = std::string("--max-error: expected a wrong_pct in [0, 100] or a texel size "
                         "such as 2px (got \"") +
@@ -136,8 +136,8 @@ int ParseIntegerOption(
   const long high = arg == "--light" ? 1000000 : arg == "--frames" ? 100000 : 16384;
   if (!ParseInt(v, low, high, *target))
   {
-    error = arg + ": expected an integer in [" + std::to_string(low) + ", " +
-      std::to_string(high) + "] (got \"" + v + "\")";
+    error = arg + ": expected an integer in [" + std::to_string(low) + ", " + std::to_string(high) +
+      "] (got \"" + v + "\")";
     return 2;
   }
   return 0;
@@ -162,9 +162,9 @@ int ParseValueOption(const std::string& arg, const char* v, RenderOptions& optio
       return 2;
     }
     std::string& target = arg == "--image" ? options.Image
-      : arg == "--visibility"             ? options.Visibility
-      : arg == "--mask"                   ? options.Mask
-                                          : options.Stats;
+      : arg == "--visibility"              ? options.Visibility
+      : arg == "--mask"                    ? options.Mask
+                                           : options.Stats;
     target = v;
     return 0;
   }
@@ -213,8 +213,8 @@ int CheckRenderOptions(const RenderOptions& options, const ParseState& state, st
   }
   if (!state.TechniqueGiven)
   {
-    error = "missing --technique (known: " + std::string(vtkShadowTechnique::GetKnownTechniques()) +
-      ")";
+    error =
+      "missing --technique (known: " + std::string(vtkShadowTechnique::GetKnownTechniques()) + ")";
     return 2;
   }
   if (!vtkShadowTechnique::IsKnownTechnique(options.Technique.c_str()))

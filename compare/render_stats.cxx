@@ -58,8 +58,8 @@ std::string Quoted(const std::string& text)
 }
 }
 
-FrameTimes TimeFrames(
-  vtkRenderWindow* window, vtkRenderer* renderer, const vtkShadowScene* scene, int frames, int warmup)
+FrameTimes TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, const vtkShadowScene* scene,
+  int frames, int warmup)
 {
   for (int i = 0; i < warmup; ++i)
   {
@@ -89,9 +89,9 @@ FrameTimes TimeFrames(
   return t;
 }
 
-std::string StatsJson(const std::string& scene, const std::string& technique, int width,
-  int height, int frames, const FrameTimes& shadowed, const FrameTimes& unshadowed,
-  long long shadowMapBytes, const std::string& techniqueJson)
+std::string StatsJson(const std::string& scene, const std::string& technique, int width, int height,
+  int frames, const FrameTimes& shadowed, const FrameTimes& unshadowed, long long shadowMapBytes,
+  const std::string& techniqueJson)
 {
   std::ostringstream out;
   out.precision(6);

@@ -21,8 +21,8 @@ FrameTimes TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, const vtkS
   int frames, int warmup);
 
 // The stats JSON document.
-std::string StatsJson(const std::string& scene, const std::string& technique, int width,
-  int height, int frames, const FrameTimes& shadowed, const FrameTimes& unshadowed,
-  long long shadowMapBytes, const std::string& techniqueJson);
+std::string StatsJson(const std::string& scene, const std::string& technique, int width, int height,
+  int frames, const FrameTimes& shadowed, const FrameTimes& unshadowed, long long shadowMapBytes,
+  const std::string& techniqueJson);
 
 #endif

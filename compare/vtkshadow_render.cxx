@@ -150,8 +150,8 @@ std::string RenderColourAndStats(const Run& run, vtkWindowToImageFilter* grab)
     vtkNew<vtkShadowTechnique> none;
     none->Install(renderer);
     const FrameTimes unshadowed = TimeFrames(window, renderer, run.Scene, options.Frames, 3);
-    statsText = StatsJson(options.Scene, options.Technique, run.Width, run.Height,
-      options.Frames, shadowed, unshadowed, bytes, details);
+    statsText = StatsJson(options.Scene, options.Technique, run.Width, run.Height, options.Frames,
+      shadowed, unshadowed, bytes, details);
   }
   // Free the passes' GL objects while the context still exists; the image
   // is kept by the filter.
@@ -168,7 +168,8 @@ int WriteOutputs(const Run& run, vtkImageData* image, vtkShadowVisibility* visib
   const RenderOptions& options = run.Options;
   std::string error;
   WrittenFiles written;
-  auto writePNG = [&](vtkImageData* data, const std::string& path) {
+  auto writePNG = [&](vtkImageData* data, const std::string& path)
+  {
     if (path.empty())
     {
       return true;

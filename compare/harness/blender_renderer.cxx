@@ -86,9 +86,9 @@ bool BlenderRenderer::ReadLight(const RenderJob& job, int k, LightPair& p, std::
 bool BlenderRenderer::Render(const RenderJob& job, RenderOutput& out, std::string& err) const
 {
   const int L = static_cast<int>(job.ex.lights.size());
-  std::vector<std::string> argv{ this->Opt.blender, "-b", "--factory-startup",
-    "--python-exit-code", "1", "-t", std::to_string(this->Opt.threads), "--python",
-    this->Opt.cycles_script, "--", job.work + "/scene.bin", job.work, this->Preset };
+  std::vector<std::string> argv{ this->Opt.blender, "-b", "--factory-startup", "--python-exit-code",
+    "1", "-t", std::to_string(this->Opt.threads), "--python", this->Opt.cycles_script, "--",
+    job.work + "/scene.bin", job.work, this->Preset };
   Progress(job.entry.id + ": " + this->Preset + " " + std::to_string(L) +
     " light(s) x shadows on/off ...");
   // All lights in one process (start-up ~0.7 s): the limit grows with them.

@@ -80,7 +80,7 @@ void LoadKnownFailures(const std::string& path, CheckFiles& f)
 }
 
 CheckFiles& FilesFor(const Options& opt, const std::string& thresholds,
-                     std::map<std::string, std::unique_ptr<CheckFiles>>& cache)
+  std::map<std::string, std::unique_ptr<CheckFiles>>& cache)
 {
   auto& f = cache[thresholds];
   if (f)
@@ -159,21 +159,22 @@ void CheckKnown(KnownFailure& k, Row& r, CheckOutcome& out)
 }
 
 // Every limit of a row.
-void CheckLimits(const std::map<std::string, double>& limits, const CheckFiles& f, Row& r,
-                 CheckOutcome& out)
+void CheckLimits(
+  const std::map<std::string, double>& limits, const CheckFiles& f, Row& r, CheckOutcome& out)
 {
   const size_t before = out.failures.size();
   for (const auto& lim : limits)
   {
     bool known = false;
     const double value = RowMetric(r.m, lim.first, known);
-    const bool pct = lim.first.size() > 4 && lim.first.compare(lim.first.size() - 4, 4, "_pct") == 0;
+    const bool pct =
+      lim.first.size() > 4 && lim.first.compare(lim.first.size() - 4, 4, "_pct") == 0;
     ++out.comparisons;
     if (!known)
       out.failures.push_back(f.path + ": unknown metric '" + lim.first + "'");
     else if (pct && lim.second >= kRefusedPctLimit)
-      out.failures.push_back(Where(r) + ": the limit " + lim.first + " <= " +
-        Fmt(lim.second, "%.6g") + " in " + f.path + " is " + Fmt(kRefusedPctLimit, "%g") +
+      out.failures.push_back(Where(r) + ": the limit " + lim.first +
+        " <= " + Fmt(lim.second, "%.6g") + " in " + f.path + " is " + Fmt(kRefusedPctLimit, "%g") +
         "% or more, which bounds nothing: list the row in known-failures.json with its reason");
     else if (!(value <= lim.second))
       out.failures.push_back(Where(r) + ": " + lim.first + " = " + Fmt(value, "%.6g") +
@@ -201,10 +202,12 @@ void CheckRow(CheckFiles& f, Row& r, CheckOutcome& out)
     const std::string why = NoValidReason(f.root, r);
     r.check = why.empty() ? "FAILED: no valid pixels" : "no valid pixels: " + why;
     if (why.empty())
-      out.failures.push_back(Where(r) + ": no valid pixels (nothing lit in the reference), "
-                                        "so nothing is compared; fix the scene or give the "
-                                        "reason in " + f.path + " scenes[\"" + r.scene +
-        "\"].no_valid_pixels[\"" + std::to_string(r.light) + "\"]");
+      out.failures.push_back(Where(r) +
+        ": no valid pixels (nothing lit in the reference), "
+        "so nothing is compared; fix the scene or give the "
+        "reason in " +
+        f.path + " scenes[\"" + r.scene + "\"].no_valid_pixels[\"" + std::to_string(r.light) +
+        "\"]");
     return;
   }
   const std::map<std::string, double> limits = RowLimits(f.root, r);

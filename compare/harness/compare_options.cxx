@@ -106,15 +106,15 @@ bool SetFlag(Options& opt, const std::string& a)
 // An option with a value `v`; false with `error` set when it is bad or unknown.
 bool SetValue(Options& opt, const std::string& a, const std::string& v, std::string& error)
 {
-  std::string* text = a == "--out"               ? &opt.out
-    : a == "--thresholds"                        ? &opt.thresholds
-    : a == "--known-failures"                    ? &opt.known_failures
-    : a == "--cache"                             ? &opt.cache
-    : a == "--povray-binary"                     ? &opt.povray
-    : a == "--blender-binary"                    ? &opt.blender
-    : a == "--render-binary"                     ? &opt.render_bin
-    : a == "--cycles-script"                     ? &opt.cycles_script
-                                                 : nullptr;
+  std::string* text = a == "--out" ? &opt.out
+    : a == "--thresholds"          ? &opt.thresholds
+    : a == "--known-failures"      ? &opt.known_failures
+    : a == "--cache"               ? &opt.cache
+    : a == "--povray-binary"       ? &opt.povray
+    : a == "--blender-binary"      ? &opt.blender
+    : a == "--render-binary"       ? &opt.render_bin
+    : a == "--cycles-script"       ? &opt.cycles_script
+                                   : nullptr;
   char* end = nullptr;
   if (text)
     *text = v;
@@ -152,14 +152,14 @@ bool ValidateLists(const Options& opt, std::string& error)
     error = "no scene given";
   for (const auto& r : opt.renderers)
     if (error.empty() &&
-        std::find(KnownRenderers().begin(), KnownRenderers().end(), r) == KnownRenderers().end())
-      error = "--renderers: unknown renderer '" + r +
-        "' (known: vtk, povray, cycles, eevee, eevee-best)";
+      std::find(KnownRenderers().begin(), KnownRenderers().end(), r) == KnownRenderers().end())
+      error =
+        "--renderers: unknown renderer '" + r + "' (known: vtk, povray, cycles, eevee, eevee-best)";
   const std::vector<std::string> known = RegisteredTechniques();
   for (const auto& t : opt.techniques)
     if (error.empty() && std::find(known.begin(), known.end(), t) == known.end())
-      error = "--techniques: unknown technique '" + t + "' (known: " +
-        vtkShadowTechnique::GetKnownTechniques() + ")";
+      error = "--techniques: unknown technique '" + t +
+        "' (known: " + vtkShadowTechnique::GetKnownTechniques() + ")";
   return error.empty();
 }
 

@@ -113,7 +113,7 @@ std::string PovScene(const ExportScene& s)
     for (size_t i = 0; i < nt; ++i)
     {
       snprintf(buf, sizeof buf, "%s<%u,%u,%u>", i % 6 ? "," : ",\n  ", ob.triangles[3 * i],
-               ob.triangles[3 * i + 1], ob.triangles[3 * i + 2]);
+        ob.triangles[3 * i + 1], ob.triangles[3 * i + 2]);
       o += buf;
     }
     o += " }\n texture { VSH_T }\n";

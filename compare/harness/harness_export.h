@@ -25,10 +25,10 @@ struct ExportObject
 
 struct ExportLight
 {
-  int type = 0;          // 0 directional, 1 point, 2 spot
-  double position[3];    // normalized frame (point, spot; directional: far away)
-  double axis[3];        // unit: direction of travel (directional), cone axis (spot)
-  double cone = 0;       // half-angle, degrees
+  int type = 0;       // 0 directional, 1 point, 2 spot
+  double position[3]; // normalized frame (point, spot; directional: far away)
+  double axis[3];     // unit: direction of travel (directional), cone axis (spot)
+  double cone = 0;    // half-angle, degrees
 };
 
 // The scene in the renderers' frame: x' = (x - anchor) * scale, with anchor

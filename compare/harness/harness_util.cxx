@@ -23,7 +23,7 @@ namespace vsh_harness
 {
 
 RunResult RunProcess(const std::vector<std::string>& argv, const std::string& cwd,
-                     const std::string& log, double timeout_s)
+  const std::string& log, double timeout_s)
 {
   RunResult r;
   auto t0 = std::chrono::steady_clock::now();
@@ -121,16 +121,16 @@ RunResult RunProcess(const std::vector<std::string>& argv, const std::string& cw
   else if (WIFSIGNALED(status))
   {
     r.signal = WTERMSIG(status);
-    r.error = argv[0] + " crashed (signal " + std::to_string(r.signal) + ", " +
-      strsignal(r.signal) + ")";
+    r.error =
+      argv[0] + " crashed (signal " + std::to_string(r.signal) + ", " + strsignal(r.signal) + ")";
   }
   if (!r.error.empty() && !log.empty())
     r.error += "; log: " + log;
   return r;
 }
 
-std::string CommandVersion(const std::vector<std::string>& argv, const std::string& contains,
-                           double timeout_s)
+std::string CommandVersion(
+  const std::vector<std::string>& argv, const std::string& contains, double timeout_s)
 {
   char tmpl[] = "/tmp/vshversionXXXXXX";
   int fd = mkstemp(tmpl);
@@ -263,8 +263,8 @@ std::string MD5Hex(const std::string& data)
 {
   vtksysMD5* md5 = vtksysMD5_New();
   vtksysMD5_Initialize(md5);
-  vtksysMD5_Append(md5, reinterpret_cast<const unsigned char*>(data.data()),
-                   static_cast<int>(data.size()));
+  vtksysMD5_Append(
+    md5, reinterpret_cast<const unsigned char*>(data.data()), static_cast<int>(data.size()));
   char hex[33];
   vtksysMD5_FinalizeHex(md5, hex);
   hex[32] = 0;
@@ -272,8 +272,8 @@ std::string MD5Hex(const std::string& data)
   return hex;
 }
 
-bool ReadPNGChannel(const std::string& path, std::vector<float>& v, int& w, int& h,
-                    std::string& err)
+bool ReadPNGChannel(
+  const std::string& path, std::vector<float>& v, int& w, int& h, std::string& err)
 {
   FILE* f = fopen(path.c_str(), "rb");
   if (!f)
@@ -326,12 +326,23 @@ std::string HtmlEscape(const std::string& s)
   {
     switch (c)
     {
-      case '&': o += "&amp;"; break;
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '"': o += "&quot;"; break;
-      case '\'': o += "&#39;"; break;
-      default: o += c;
+      case '&':
+        o += "&amp;";
+        break;
+      case '<':
+        o += "&lt;";
+        break;
+      case '>':
+        o += "&gt;";
+        break;
+      case '"':
+        o += "&quot;";
+        break;
+      case '\'':
+        o += "&#39;";
+        break;
+      default:
+        o += c;
     }
   }
   return o;

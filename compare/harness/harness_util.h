@@ -11,12 +11,12 @@ namespace vsh_harness
 
 struct RunResult
 {
-  bool started = false;   // exec succeeded
+  bool started = false; // exec succeeded
   bool timed_out = false;
-  int exit_code = -1;     // when exited normally
-  int signal = 0;         // when killed by a signal
+  int exit_code = -1; // when exited normally
+  int signal = 0;     // when killed by a signal
   double seconds = 0;
-  std::string error;      // human-readable failure, empty on success
+  std::string error; // human-readable failure, empty on success
   bool ok() const { return error.empty(); }
 };
 
@@ -24,12 +24,12 @@ struct RunResult
 // stderr appended to `log`. Kills the whole process group after
 // `timeout_s` seconds (<= 0: no limit).
 RunResult RunProcess(const std::vector<std::string>& argv, const std::string& cwd,
-                     const std::string& log, double timeout_s);
+  const std::string& log, double timeout_s);
 
 // Reads stdout of a short command (e.g. "povray --version"), first line
 // matching `contains` (or the first non-empty line). Empty on failure.
-std::string CommandVersion(const std::vector<std::string>& argv, const std::string& contains,
-                           double timeout_s);
+std::string CommandVersion(
+  const std::vector<std::string>& argv, const std::string& contains, double timeout_s);
 
 bool ReadFile(const std::string& path, std::string& out);
 bool WriteFileAtomic(const std::string& path, const std::string& data, std::string& err);
@@ -49,8 +49,8 @@ std::string AbsPath(const std::string& path);
 std::string MD5Hex(const std::string& data);
 
 // A 16-bit (or 8-bit) PNG as floats in [0,1], first channel, row 0 on top.
-bool ReadPNGChannel(const std::string& path, std::vector<float>& v, int& w, int& h,
-                    std::string& err);
+bool ReadPNGChannel(
+  const std::string& path, std::vector<float>& v, int& w, int& h, std::string& err);
 
 std::string HtmlEscape(const std::string& s);
 std::string JsonEscape(const std::string& s);

@@ -51,8 +51,8 @@ public:
   }
 
 private:
-  bool RenderOne(const RenderJob& job, int k, int shadows, RenderOutput& out,
-                 std::string& err) const
+  bool RenderOne(
+    const RenderJob& job, int k, int shadows, RenderOutput& out, std::string& err) const
   {
     const std::string name = std::string(shadows ? "on" : "off") + std::to_string(k) + ".png";
     std::vector<std::string> argv{ this->Opt.povray, "-D", "-P", "-V", "-A", "+FN16",
@@ -63,8 +63,7 @@ private:
     RunResult r = RunProcess(argv, job.work, job.log, this->Opt.timeout);
     out.seconds += r.seconds;
     Progress(job.entry.id + ": povray light " + std::to_string(k) + " shadows " +
-      (shadows ? "on" : "off") + (r.ok() ? "" : " FAILED") + " (" + Fmt(r.seconds, "%.1f") +
-      " s)");
+      (shadows ? "on" : "off") + (r.ok() ? "" : " FAILED") + " (" + Fmt(r.seconds, "%.1f") + " s)");
     if (!r.ok())
     {
       err = "light " + std::to_string(k) + ": " + r.error;

@@ -32,8 +32,8 @@ bool ReadManifest(const std::string& path, std::map<std::string, std::string>& m
 }
 } // namespace
 
-CacheLoadResult CacheLoad(const std::string& cdir, const std::string& outdir, int lights,
-                          std::string& why)
+CacheLoadResult CacheLoad(
+  const std::string& cdir, const std::string& outdir, int lights, std::string& why)
 {
   const std::string marker = cdir + "/complete";
   if (!FileExists(marker))
@@ -70,7 +70,7 @@ CacheLoadResult CacheLoad(const std::string& cdir, const std::string& outdir, in
 }
 
 bool CacheStore(const std::string& cdir, const std::string& outdir, int lights,
-                const std::string& keytext, std::string& why)
+  const std::string& keytext, std::string& why)
 {
   if (!MakeDirs(cdir, why))
   {

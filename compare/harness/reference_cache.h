@@ -20,13 +20,13 @@ enum class CacheLoadResult
   Failed   // the entry is good but the output could not be written (`why`)
 };
 
-CacheLoadResult CacheLoad(const std::string& cdir, const std::string& outdir, int lights,
-                          std::string& why);
+CacheLoadResult CacheLoad(
+  const std::string& cdir, const std::string& outdir, int lights, std::string& why);
 
 // Stores the light images of `outdir` under `cdir`. A failure (full disk)
 // leaves no `complete` marker, so the entry is never used; `why` says what.
 bool CacheStore(const std::string& cdir, const std::string& outdir, int lights,
-                const std::string& keytext, std::string& why);
+  const std::string& keytext, std::string& why);
 
 } // namespace vsh_harness
 

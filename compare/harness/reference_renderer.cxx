@@ -54,8 +54,8 @@ bool RenderFresh(DriverState& s, const std::string& exported)
   if (ok && out.lights.size() != static_cast<size_t>(s.lights))
   {
     ok = false;
-    err = "rendered " + std::to_string(out.lights.size()) + " light(s) of " +
-      std::to_string(s.lights);
+    err =
+      "rendered " + std::to_string(out.lights.size()) + " light(s) of " + std::to_string(s.lights);
   }
   for (int k = 0; ok && k < s.lights; ++k)
   {
@@ -78,7 +78,7 @@ bool RenderFresh(DriverState& s, const std::string& exported)
 } // namespace
 
 bool RunReference(const ReferenceRenderer& r, const Options& opt, const SceneEntry& e,
-                  const ExportScene& ex, const std::string& content_key, SceneResult& res)
+  const ExportScene& ex, const std::string& content_key, SceneResult& res)
 {
   const std::string name = r.Name();
   DriverState s{ r, opt, e, ex, res, opt.out + "/" + e.dir_id + "/" + name,
@@ -90,8 +90,8 @@ bool RunReference(const ReferenceRenderer& r, const Options& opt, const SceneEnt
   if (!r.GetUnusable().empty())
     return s.Fail(r.GetUnusable());
   const std::string exported = r.ExportBytes(ex);
-  const std::string keytext = std::string(kFormatVersion) + "\nrenderer " + r.GetVersion() +
-    "\n" + r.KeySettings(ex) + content_key + "export " + MD5Hex(exported) + "\n";
+  const std::string keytext = std::string(kFormatVersion) + "\nrenderer " + r.GetVersion() + "\n" +
+    r.KeySettings(ex) + content_key + "export " + MD5Hex(exported) + "\n";
   const std::string key = MD5Hex(keytext);
   const std::string cdir = opt.cache + "/" + name + "/" + key;
   if (!opt.no_cache)

@@ -94,7 +94,7 @@ std::unique_ptr<ReferenceRenderer> MakeEeveeRenderer(const Options& opt, const s
 // stored). False after a failure: the reason is in res.errors and no image
 // of this renderer is left for the scene.
 bool RunReference(const ReferenceRenderer& r, const Options& opt, const SceneEntry& e,
-                  const ExportScene& ex, const std::string& content_key, SceneResult& res);
+  const ExportScene& ex, const std::string& content_key, SceneResult& res);
 
 } // namespace vsh_harness
 

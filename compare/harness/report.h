@@ -18,13 +18,13 @@ namespace vsh_harness
 bool WriteResults(const Options& opt, const std::vector<SceneResult>& all);
 
 // wrong_pct.png (worst light per test and scene); false when not made.
-bool WritePlot(const Options& opt, const std::vector<SceneResult>& all,
-               const std::vector<std::string>& tests);
+bool WritePlot(
+  const Options& opt, const std::vector<SceneResult>& all, const std::vector<std::string>& tests);
 
 // index.html: --check failures (when checked), known failures, and per scene
 // and light the images, heat maps and the table of rows.
-bool WriteHtml(const Options& opt, const std::vector<SceneResult>& all, bool plot,
-               const CheckOutcome& check);
+bool WriteHtml(
+  const Options& opt, const std::vector<SceneResult>& all, bool plot, const CheckOutcome& check);
 
 } // namespace vsh_harness
 

@@ -14,8 +14,8 @@
 namespace vsh_harness
 {
 
-bool WritePlot(const Options& opt, const std::vector<SceneResult>& all,
-               const std::vector<std::string>& tests)
+bool WritePlot(
+  const Options& opt, const std::vector<SceneResult>& all, const std::vector<std::string>& tests)
 {
   std::string dat = "scene";
   for (const auto& t : tests)
@@ -46,11 +46,13 @@ bool WritePlot(const Options& opt, const std::vector<SceneResult>& all,
     "set style fill solid border -1\nset boxwidth 0.9\nset logscale y\nset yrange [1e-4:100]\n"
     "set ylabel 'wrong pixels (%)'\nset xtics rotate by -45 scale 0\nset key outside right top\n"
     "set grid ytics\nset datafile missing 'NaN'\n"
-    "plot for [i=2:" + std::to_string(tests.size() + 1) + "] 'plot.dat' using i:xtic(1) title columnheader(i)\n";
+    "plot for [i=2:" +
+    std::to_string(tests.size() + 1) + "] 'plot.dat' using i:xtic(1) title columnheader(i)\n";
   if (!WriteFileAtomic(opt.out + "/wrong_pct.gp", gp, err))
     return false;
   RunResult r = RunProcess({ "gnuplot", "wrong_pct.gp" }, opt.out, opt.out + "/gnuplot.log", 120);
-  if (!r.ok() || rename((opt.out + "/wrong_pct.png.tmp").c_str(), (opt.out + "/wrong_pct.png").c_str()) != 0)
+  if (!r.ok() ||
+    rename((opt.out + "/wrong_pct.png.tmp").c_str(), (opt.out + "/wrong_pct.png").c_str()) != 0)
   {
     unlink((opt.out + "/wrong_pct.png.tmp").c_str());
     Progress("WARNING: plot not made (gnuplot: " + r.error + "; apt-get install gnuplot-nox)");
@@ -101,10 +103,9 @@ std::string CheckSection(const Options& opt, const CheckOutcome& check)
     const std::string state = !k.seen ? "not run"
       : k.still_failing               ? "still failing (" + k.measured + ")"
                                       : "NOW PASSES (" + k.measured + "): remove the entry";
-    h += "<tr class=\"known\"><td>" + HtmlEscape(k.scene) + "</td><td>" +
-      std::to_string(k.light) + "</td><td>" + HtmlEscape(k.test) + "</td><td>" +
-      HtmlEscape(k.reason) + "</td><td" + (k.seen && !k.still_failing ? " class=\"err\"" : "") +
-      ">" + HtmlEscape(state) + "</td></tr>";
+    h += "<tr class=\"known\"><td>" + HtmlEscape(k.scene) + "</td><td>" + std::to_string(k.light) +
+      "</td><td>" + HtmlEscape(k.test) + "</td><td>" + HtmlEscape(k.reason) + "</td><td" +
+      (k.seen && !k.still_failing ? " class=\"err\"" : "") + ">" + HtmlEscape(state) + "</td></tr>";
   }
   return h + "</table>\n";
 }
@@ -126,8 +127,8 @@ std::string RowTable(const SceneResult& sr, int k)
       r.m.valid_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px, r.m.false_shadow_pct,
       r.m.false_light_pct, known && std::isfinite(wos) ? Fmt(wos, "%.4g").c_str() : "");
     const char* cls = r.check.rfind("FAILED", 0) == 0 ? " class=\"err\""
-      : r.check.rfind("known failure", 0) == 0      ? " class=\"known\""
-                                                    : "";
+      : r.check.rfind("known failure", 0) == 0        ? " class=\"known\""
+                                                      : "";
     h += std::string("<tr") + cls + "><td>" + HtmlEscape(r.test) + "</td>" + buf + "<td>" +
       HtmlEscape(r.status) + "</td><td>" + HtmlEscape(r.check) + "</td></tr>";
   }
@@ -136,8 +137,8 @@ std::string RowTable(const SceneResult& sr, int k)
 
 std::string LightSection(const Options& opt, const SceneResult& sr, int k)
 {
-  std::string h = "<h3>light " + std::to_string(k) + " (" + HtmlEscape(sr.light_types[k]) +
-    ")</h3>\n<div>";
+  std::string h =
+    "<h3>light " + std::to_string(k) + " (" + HtmlEscape(sr.light_types[k]) + ")</h3>\n<div>";
   std::vector<std::string> imgs{ "povray" };
   for (const std::string& b : BlenderRenderers())
     imgs.push_back(b);
@@ -154,15 +155,15 @@ std::string LightSection(const Options& opt, const SceneResult& sr, int k)
   h += "</div><div>";
   for (const Row& r : sr.rows)
     if (r.light == k && !r.heatmap.empty())
-      h += "<figure><img src=\"" + HtmlEscape(r.heatmap) + "\"><figcaption>" +
-        HtmlEscape(r.test) + " &minus; povray</figcaption></figure>";
+      h += "<figure><img src=\"" + HtmlEscape(r.heatmap) + "\"><figcaption>" + HtmlEscape(r.test) +
+        " &minus; povray</figcaption></figure>";
   return h + "</div>\n" + RowTable(sr, k);
 }
 
 } // namespace
 
-bool WriteHtml(const Options& opt, const std::vector<SceneResult>& all, bool plot,
-               const CheckOutcome& check)
+bool WriteHtml(
+  const Options& opt, const std::vector<SceneResult>& all, bool plot, const CheckOutcome& check)
 {
   std::string h = Header(plot) + CheckSection(opt, check);
   h += "<h2>Scenes</h2><ul>";

@@ -64,7 +64,7 @@ double RowMetric(const vsh_metrics& m, const std::string& name, bool& known)
 }
 
 Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const std::string& test,
-                         const std::string& testdir, const std::string& light_type)
+  const std::string& testdir, const std::string& light_type)
 {
   Row row;
   row.scene = e.id;
@@ -105,8 +105,7 @@ Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const s
   char e2[1024] = "";
   std::string why;
   if (!MakeDirs(base + "/heatmap", why) ||
-    vsh_png_write_rgb8((opt.out + "/" + row.heatmap).c_str(), rgb.data(), w, h, e2, sizeof e2) !=
-      0)
+    vsh_png_write_rgb8((opt.out + "/" + row.heatmap).c_str(), rgb.data(), w, h, e2, sizeof e2) != 0)
   {
     // The metrics stand; the report shows no picture rather than a broken one.
     row.error = "heat map not written: " + (why.empty() ? std::string(e2) : why);
@@ -116,4 +115,3 @@ Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const s
 }
 
 } // namespace vsh_harness
-

@@ -13,7 +13,7 @@ namespace vsh_harness
 
 // `testdir`: the test's folder under OUT/<scene>/ (e.g. "vtk/csm", "cycles").
 Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const std::string& test,
-                         const std::string& testdir, const std::string& light_type);
+  const std::string& testdir, const std::string& light_type);
 
 } // namespace vsh_harness
 

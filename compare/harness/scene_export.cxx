@@ -3,8 +3,8 @@
 
 #include "harness_util.h"
 
-#include "vtkShadowScene.h"
 #include "vsh_scene.h"
+#include "vtkShadowScene.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -66,8 +66,8 @@ void ExportCamera(const vsh_camera& c, ExportScene& ex)
 }
 
 // One object's points, normals and triangles; grows the bounds lo/hi.
-void ExportPolyData(vtkPolyData* pd, const ExportScene& ex, ExportObject& eo, double lo[3],
-                    double hi[3])
+void ExportPolyData(
+  vtkPolyData* pd, const ExportScene& ex, ExportObject& eo, double lo[3], double hi[3])
 {
   vtkPoints* pts = pd->GetPoints();
   vtkDataArray* nrm = pd->GetPointData()->GetNormals();

@@ -17,9 +17,9 @@ std::string SafeName(const std::string& id)
 {
   std::string r;
   for (char c : id)
-    r += (c == '/') ? '-'
+    r += (c == '/')                                                                  ? '-'
       : (isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.') ? c
-                                                                                   : '_';
+                                                                                     : '_';
   return r;
 }
 
@@ -63,7 +63,7 @@ void CollectScenes(const std::string& input, std::vector<std::string>& out)
   for (const auto& n : names)
   {
     if (n == "." || n == ".." || n == "meshes" || n == "thresholds.json" ||
-        n == "known-failures.json")
+      n == "known-failures.json")
       continue;
     std::string p = input + "/" + n;
     if (vtksys::SystemTools::FileIsDirectory(p))
@@ -76,7 +76,7 @@ void CollectScenes(const std::string& input, std::vector<std::string>& out)
 } // namespace
 
 bool ListScenes(const std::vector<std::string>& inputs, const std::string& thresholds_option,
-                std::vector<SceneEntry>& scenes, std::string& error)
+  std::vector<SceneEntry>& scenes, std::string& error)
 {
   std::vector<std::string> files;
   for (const auto& in : inputs)

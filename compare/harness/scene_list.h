@@ -24,7 +24,7 @@ std::string SafeName(const std::string& id);
 // thresholds.json, known-failures.json and meshes/), in a stable order.
 // False with `error` when an input does not exist.
 bool ListScenes(const std::vector<std::string>& inputs, const std::string& thresholds_option,
-                std::vector<SceneEntry>& scenes, std::string& error);
+  std::vector<SceneEntry>& scenes, std::string& error);
 
 } // namespace vsh_harness
 

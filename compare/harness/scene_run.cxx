@@ -6,8 +6,8 @@
 #include "scene_export.h"
 #include "vtk_runner.h"
 
-#include "vtkShadowScene.h"
 #include "vsh_scene.h"
+#include "vtkShadowScene.h"
 
 #include <vtkNew.h>
 
@@ -26,7 +26,7 @@ namespace
 // loaded (then nothing can run). `have_export` is false when only the
 // export failed (the VTK techniques can still run).
 bool LoadScene(const Options& opt, const SceneEntry& e, SceneResult& res, ExportScene& ex,
-               std::string& content_key, bool& have_export)
+  std::string& content_key, bool& have_export)
 {
   char err[VSH_SCENE_ERROR_MAX];
   vsh_scene* s = nullptr;
@@ -49,8 +49,8 @@ bool LoadScene(const Options& opt, const SceneEntry& e, SceneResult& res, Export
   for (int k = 0; k < res.lights; ++k)
     res.light_types.push_back(vsh_light_type_name(s->lights[k].type));
   std::string kerr;
-  have_export = ContentKey(s, e.path, content_key, kerr) &&
-    BuildExport(vs, s, res.width, res.height, ex);
+  have_export =
+    ContentKey(s, e.path, content_key, kerr) && BuildExport(vs, s, res.width, res.height, ex);
   if (!have_export)
     res.errors.push_back(
       "export: " + (kerr.empty() ? std::string("cannot build the scene") : kerr));
@@ -60,8 +60,7 @@ bool LoadScene(const Options& opt, const SceneEntry& e, SceneResult& res, Export
 } // namespace
 
 SceneResult RunScene(const Options& opt,
-                     const std::vector<std::unique_ptr<ReferenceRenderer>>& references,
-                     const SceneEntry& e)
+  const std::vector<std::unique_ptr<ReferenceRenderer>>& references, const SceneEntry& e)
 {
   SceneResult res;
   res.entry = e;
@@ -96,19 +95,21 @@ SceneResult RunScene(const Options& opt,
   }
   for (const Row& r : res.rows)
     if (!r.error.empty())
-      res.errors.push_back("metrics " + r.test + " light " + std::to_string(r.light) + ": " + r.error);
+      res.errors.push_back(
+        "metrics " + r.test + " light " + std::to_string(r.light) + ": " + r.error);
   for (const std::string& m : res.errors)
     Progress("ERROR " + e.id + ": " + m);
   return res;
 }
 
 std::vector<SceneResult> RunScenes(const Options& opt,
-                                   const std::vector<std::unique_ptr<ReferenceRenderer>>& references,
-                                   const std::vector<SceneEntry>& scenes)
+  const std::vector<std::unique_ptr<ReferenceRenderer>>& references,
+  const std::vector<SceneEntry>& scenes)
 {
   std::vector<SceneResult> results(scenes.size());
   std::atomic<size_t> next{ 0 };
-  auto worker = [&]() {
+  auto worker = [&]()
+  {
     for (size_t i; (i = next++) < scenes.size();)
       results[i] = RunScene(opt, references, scenes[i]);
   };

@@ -15,13 +15,12 @@ namespace vsh_harness
 // Never throws: every failure is recorded in the result's errors and the
 // other renderers of the scene still run.
 SceneResult RunScene(const Options& opt,
-                     const std::vector<std::unique_ptr<ReferenceRenderer>>& references,
-                     const SceneEntry& e);
+  const std::vector<std::unique_ptr<ReferenceRenderer>>& references, const SceneEntry& e);
 
 // RunScene for every scene, opt.jobs at a time; results in scene order.
 std::vector<SceneResult> RunScenes(const Options& opt,
-                                   const std::vector<std::unique_ptr<ReferenceRenderer>>& references,
-                                   const std::vector<SceneEntry>& scenes);
+  const std::vector<std::unique_ptr<ReferenceRenderer>>& references,
+  const std::vector<SceneEntry>& scenes);
 
 } // namespace vsh_harness
 

@@ -16,12 +16,12 @@ std::vector<std::string> LightFileNames(int k)
 }
 
 bool WriteVisibility(const std::string& dir, int k, const std::vector<float>& v,
-                     const std::vector<unsigned char>& mask, int w, int h, std::string& err)
+  const std::vector<unsigned char>& mask, int w, int h, std::string& err)
 {
   char e[1024] = "";
   const std::vector<std::string> names = LightFileNames(k);
   if (vsh_png_write_gray16_float((dir + "/" + names[0]).c_str(), v.data(), w, h, e, sizeof e) !=
-        0 ||
+      0 ||
     vsh_png_write_gray8((dir + "/" + names[1]).c_str(), mask.data(), w, h, e, sizeof e) != 0)
   {
     err = e;
@@ -38,7 +38,7 @@ void RemoveLightFiles(const std::string& dir, int lights)
 }
 
 void OnOff(const std::vector<float>& on, const std::vector<float>& off, double eps,
-           std::vector<float>& v, std::vector<unsigned char>& mask)
+  std::vector<float>& v, std::vector<unsigned char>& mask)
 {
   v.assign(on.size(), 0.0f);
   mask.assign(on.size(), 0);

@@ -13,7 +13,7 @@ namespace
 {
 // One technique, every light; false after the first failed light.
 bool RenderTechnique(const Options& opt, const SceneEntry& e, const std::string& t, int w, int h,
-                     int lights, SceneResult& res)
+  int lights, SceneResult& res)
 {
   const std::string outdir = opt.out + "/" + e.dir_id + "/vtk/" + t;
   std::string why;
@@ -49,8 +49,8 @@ bool RenderTechnique(const Options& opt, const SceneEntry& e, const std::string&
 }
 } // namespace
 
-void RenderVtk(const Options& opt, const SceneEntry& e, int w, int h, int lights,
-               SceneResult& res, std::set<std::string>& ok_techniques)
+void RenderVtk(const Options& opt, const SceneEntry& e, int w, int h, int lights, SceneResult& res,
+  std::set<std::string>& ok_techniques)
 {
   for (const std::string& t : opt.techniques)
     if (RenderTechnique(opt, e, t, w, h, lights, res))

@@ -14,8 +14,8 @@ namespace vsh_harness
 
 // Renders every technique of opt.techniques; the ones that succeeded for
 // every light go into `ok_techniques`, failures into res.errors.
-void RenderVtk(const Options& opt, const SceneEntry& e, int w, int h, int lights,
-               SceneResult& res, std::set<std::string>& ok_techniques);
+void RenderVtk(const Options& opt, const SceneEntry& e, int w, int h, int lights, SceneResult& res,
+  std::set<std::string>& ok_techniques);
 
 } // namespace vsh_harness
 

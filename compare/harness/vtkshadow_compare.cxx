@@ -29,8 +29,8 @@ using namespace vsh_harness;
 namespace
 {
 // Exit status: 1 render or metric failures, 3 check failures, else 0.
-int Summarize(const Options& opt, const std::vector<SceneResult>& results,
-              const CheckOutcome& check)
+int Summarize(
+  const Options& opt, const std::vector<SceneResult>& results, const CheckOutcome& check)
 {
   int failed_scenes = 0;
   for (const SceneResult& sr : results)
@@ -47,12 +47,13 @@ int Summarize(const Options& opt, const std::vector<SceneResult>& results,
     int known = 0;
     for (const KnownFailure& k : check.known)
       known += k.seen && k.still_failing;
-    fprintf(stderr, "vtkshadow-compare: --check: %d comparisons, %zu failure(s), %d known "
-                    "failure(s) still failing\n",
+    fprintf(stderr,
+      "vtkshadow-compare: --check: %d comparisons, %zu failure(s), %d known "
+      "failure(s) still failing\n",
       check.comparisons, check.failures.size(), known);
   }
-  fprintf(stderr, "vtkshadow-compare: %zu scene(s), %d with errors\n", results.size(),
-    failed_scenes);
+  fprintf(
+    stderr, "vtkshadow-compare: %zu scene(s), %d with errors\n", results.size(), failed_scenes);
   if (opt.report)
     printf("%s/index.html\n", opt.out.c_str());
   if (failed_scenes)

@@ -3,26 +3,26 @@
 #include "vtkCamera.h"
 
 #include "vtkActor.h"
-#include "vtkDataObject.h"
-#include "vtkMapper.h"
-#include "vtkMatrix4x4.h"
-#include "vtkNew.h"
 #include "vtkCascadedShadowMapPass.h"
+#include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMapper.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlanarShadowPass.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkShadowTechniqueSet.h"
-#include "vtkRenderer.h"
 
 #include "vsh_auto.h"
 
@@ -122,8 +122,8 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     double homogeneous[4];
     vtkshadow::LightHomogeneous(light, homogeneous);
     const vsh_auto_light_choice c =
-      vsh_auto_choose_light(impl.Objects.data(), static_cast<int>(impl.Objects.size()),
-        homogeneous, light->LightTypeIsHeadlight() ? 1 : 0, concave);
+      vsh_auto_choose_light(impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous,
+        light->LightTypeIsHeadlight() ? 1 : 0, concave);
     if (c.technique == VSH_AUTO_CSM)
     {
       // What the map's texels must resolve: the casters' outlines, and how
@@ -201,8 +201,8 @@ std::string vtkAutoShadowPass::LightReasonText(int reason, int a, int b) const
       return Centre("an object that is not convex", objects[a]) + " may shadow itself";
     case VSH_AUTO_REASON_SHADOWS_OTHER:
       return Centre("an object", objects[a]) + " may shadow " +
-        Centre(objects[b].receiver ? "a receiver that is not a plane" : "a non-receiver",
-          objects[b]);
+        Centre(
+          objects[b].receiver ? "a receiver that is not a plane" : "a non-receiver", objects[b]);
     case VSH_AUTO_REASON_PLANES_ONLY:
       return "every shadow falls on plane receivers: planar is exact and cheapest";
     default:
@@ -229,8 +229,7 @@ void vtkAutoShadowPass::ApplyLightMasks()
 }
 
 //------------------------------------------------------------------------------
-void vtkAutoShadowPass::ChooseTexelTarget(
-  vtkRenderer* renderer, double edgeLength, double stretch)
+void vtkAutoShadowPass::ChooseTexelTarget(vtkRenderer* renderer, double edgeLength, double stretch)
 {
   const int* size = renderer->GetSize();
   this->UsedTexelTarget = vsh_auto_frame_texel_target(this->MaxTexelPixels, this->MaxError,
@@ -295,8 +294,7 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-double vtkAutoShadowPass::MapOutlinePixels(
-  const double light[4], int index, vtkRenderer* renderer)
+double vtkAutoShadowPass::MapOutlinePixels(const double light[4], int index, vtkRenderer* renderer)
 {
   // The outline of every shadow this light's map must draw: the silhouettes
   // of the (non-receiver) casters in view, in pixels.
@@ -384,7 +382,7 @@ const char* vtkAutoShadowPass::GetLightChoice(int light) const
 const char* vtkAutoShadowPass::GetLightReason(int light) const
 {
   return light >= 0 && light < this->GetNumberOfLightChoices() ? this->LightReasons[light].c_str()
-                                                                : nullptr;
+                                                               : nullptr;
 }
 
 //------------------------------------------------------------------------------

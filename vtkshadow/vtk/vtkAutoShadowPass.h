@@ -35,7 +35,7 @@
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
-#include <vector>  // for std::vector
+#include <vector> // for std::vector
 
 class vtkActor;
 class vtkCascadedShadowMapPass;
@@ -153,8 +153,8 @@ private:
   // Pixels of shadow outline the casters in view throw under light number
   // `index` (`light` homogeneous, world coordinates), and of one actor.
   double MapOutlinePixels(const double light[4], int index, vtkRenderer* renderer);
-  double OutlinePixels(vtkActor* actor, const double light[4], int index,
-    const double center[3], double radius, vtkRenderer* renderer);
+  double OutlinePixels(vtkActor* actor, const double light[4], int index, const double center[3],
+    double radius, vtkRenderer* renderer);
 };
 
 #endif

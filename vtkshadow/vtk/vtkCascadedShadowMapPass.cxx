@@ -66,11 +66,11 @@ void ToFloatTransposed(const double m[16], float out[16])
 struct vtkCascadedShadowMapPass::Frame
 {
   std::vector<vtkActor*> Casters;
-  vtkMTimeType CasterTime = 0;      // changes when a caster moves, changes or leaves
+  vtkMTimeType CasterTime = 0;       // changes when a caster moves, changes or leaves
   std::vector<vsh_csm_light> Lights; // switched on, in the mappers' numbering
-  vsh_csm_scene Scene{};            // its `lights` point into Lights
+  vsh_csm_scene Scene{};             // its `lights` point into Lights
   vsh_csm_settings Settings{};
-  double ViewRotation[16];          // world -> view, rotation only
+  double ViewRotation[16]; // world -> view, rotation only
 };
 
 struct vtkCascadedShadowMapPass::Internals
@@ -273,8 +273,8 @@ void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame
       vsh_bounds_merge(&scene.casters, &ab);
       // The actor's placement, not its own MTime: VTK's pass machinery gives
       // actors property keys during the first frame, which bumps it.
-      frame.CasterTime = std::max(
-        { frame.CasterTime, actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor) });
+      frame.CasterTime =
+        std::max({ frame.CasterTime, actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor) });
     }
   }
   frame.CasterTime += frame.Casters.size(); // a caster leaving the scene changes it too
@@ -410,10 +410,9 @@ int vtkCascadedShadowMapPass::AllocateAtlas(vtkOpenGLRenderWindow* window)
   vsh_csm_atlas_layout_for(tiles, impl.Plan.resolution.resolution, maxSize, &layout);
   if (layout.clamped)
   {
-    vtkWarningMacro("shadow map resolution " << impl.Plan.resolution.resolution << " x "
-                                             << layout.columns << " x " << layout.rows
-                                             << " exceeds the GL limit " << maxSize
-                                             << ": using " << layout.resolution);
+    vtkWarningMacro("shadow map resolution "
+      << impl.Plan.resolution.resolution << " x " << layout.columns << " x " << layout.rows
+      << " exceeds the GL limit " << maxSize << ": using " << layout.resolution);
   }
   this->UsedResolution = layout.resolution;
   if (!impl.Atlas)
@@ -479,13 +478,13 @@ void vtkCascadedShadowMapPass::SelectReusable(
   p.resolution = resolution;
   // How far from a lookup the filter and the bias read, in texels.
   p.reach_texels = 2.0 + this->BiasScale * 2.0 +
-    (this->Filter == PCF           ? 0.5 * this->PCFSize + 1.0
+    (this->Filter == PCF          ? 0.5 * this->PCFSize + 1.0
         : this->Filter == POISSON ? this->PoissonRadius + 1.0
                                   : 1.0);
   p.caster_time = frame.CasterTime;
   vsh_csm_selection selection;
-  vsh_csm_select_reusable(&p, impl.Plan.tiles.tiles, impl.Plan.tiles.tile_count,
-    impl.Rendered.data(), &selection);
+  vsh_csm_select_reusable(
+    &p, impl.Plan.tiles.tiles, impl.Plan.tiles.tile_count, impl.Rendered.data(), &selection);
   this->NumberOfMapsReused = selection.reused_count;
   bake.assign(selection.bake, selection.bake + selection.bake_count);
 }
@@ -582,7 +581,8 @@ void vtkCascadedShadowMapPass::DrawCasters(
 
 //------------------------------------------------------------------------------
 // Drop the GL geometry of actors that no longer cast.
-void vtkCascadedShadowMapPass::ReleaseRemovedCasters(vtkOpenGLRenderWindow* window, const Frame& frame)
+void vtkCascadedShadowMapPass::ReleaseRemovedCasters(
+  vtkOpenGLRenderWindow* window, const Frame& frame)
 {
   Internals& impl = *this->Impl;
   for (auto it = impl.Casters.begin(); it != impl.Casters.end();)
@@ -625,11 +625,13 @@ bool vtkCascadedShadowMapPass::PreReplaceShaderValues(
     }
     else if (kind == VSH_CSM_SPOT)
     {
-      code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowSpot(" + n + ", posVC, normalVC), fade);\n";
+      code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowSpot(" + n +
+        ", posVC, normalVC), fade);\n";
     }
     else if (kind == VSH_CSM_POINT)
     {
-      code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowPoint(" + n + ", posVC, normalVC), fade);\n";
+      code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowPoint(" + n +
+        ", posVC, normalVC), fade);\n";
     }
     else
     {
@@ -656,8 +658,9 @@ bool vtkCascadedShadowMapPass::PostReplaceShaderValues(
     // The debug view tints the final colour by cascade.
     const std::string output = "gl_FragData[0] = vec4(ambientColor + diffuse + specular, opacity);";
     vtkShaderProgram::Substitute(fragmentShader, output,
-      output + "\n  if (vshDebugCascades != 0 && vshShadowCascadeShown >= 0) "
-               "{ gl_FragData[0].rgb *= vshCascadeTint(vshShadowCascadeShown); }",
+      output +
+        "\n  if (vshDebugCascades != 0 && vshShadowCascadeShown >= 0) "
+        "{ gl_FragData[0].rgb *= vshCascadeTint(vshShadowCascadeShown); }",
       false);
   }
   return true;
@@ -675,7 +678,8 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
   vsh_csm_tile_plan& plan = impl.Plan.tiles;
   const int tiles = std::min<int>(plan.tile_count, MaxTiles);
   program->SetUniformi("vshShadowAtlas", impl.Atlas->GetTextureUnit());
-  const float texel[2] = { 1.0f / std::max(impl.AtlasSize[0], 1), 1.0f / std::max(impl.AtlasSize[1], 1) };
+  const float texel[2] = { 1.0f / std::max(impl.AtlasSize[0], 1),
+    1.0f / std::max(impl.AtlasSize[1], 1) };
   program->SetUniform2f("vshAtlasTexel", texel);
   program->SetUniformi("vshShadowLightCount", std::min(plan.light_count, MaxLights));
   program->SetUniform1iv("vshShadowKind", MaxLights, plan.kind);
@@ -799,8 +803,8 @@ bool vtkCascadedShadowMapPass::SetOption(const char* key, double v)
   const std::string k = key;
   auto in = [&](double lo, double hi) { return v >= lo && v <= hi; };
   auto integral = [&](double lo, double hi) { return in(lo, hi) && v == std::floor(v); };
-  const bool splitFraction = k.rfind("split_fraction_", 0) == 0 && k.size() == 16 &&
-    k[15] >= '0' && k[15] <= '6';
+  const bool splitFraction =
+    k.rfind("split_fraction_", 0) == 0 && k.size() == 16 && k[15] >= '0' && k[15] <= '6';
   if (k == "map_resolution" && integral(16, 16384))
   {
     this->SetMapResolution(static_cast<int>(v));

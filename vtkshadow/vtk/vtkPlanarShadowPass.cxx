@@ -10,23 +10,23 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
-#include "vtkOpenGLVertexArrayObject.h"
-#include "vtkSmartPointer.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkShadowActorFlags.h"
-#include "vtkShadowCasterGeometry.h"
-#include "vtkShadowLightingHook.h"
-#include "vtkShadowReceiverPlane.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowActorFlags.h"
+#include "vtkShadowCasterGeometry.h"
+#include "vtkShadowLightingHook.h"
+#include "vtkShadowReceiverPlane.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
@@ -51,7 +51,6 @@ namespace
 {
 constexpr int MaxPairs = VSH_PLANAR_MAX_PAIRS;
 constexpr int MaxExplicitPlanes = 8;
-
 
 // Row vector (plane) times matrix: a plane acting on the matrix's input space.
 void PlaneTimesMatrix(const double plane[4], const double m[16], double out[4])
@@ -493,8 +492,8 @@ void vtkPlanarShadowPass::AttachStencil(const FrameState& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const FrameState& frame,
-  const std::vector<vsh_planar_pair>& pairs)
+void vtkPlanarShadowPass::DrawMask(
+  vtkOpenGLRenderWindow* window, const FrameState& frame, const std::vector<vsh_planar_pair>& pairs)
 {
   Internals& impl = *this->Impl;
   this->AllocateMask(window, frame);
@@ -771,8 +770,8 @@ void vtkPlanarShadowPass::ForgetRemovedCasters(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-bool vtkPlanarShadowPass::PreReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
+bool vtkPlanarShadowPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
   if (!this->Impl->CanReceive(prop))
   {
@@ -788,8 +787,8 @@ bool vtkPlanarShadowPass::PreReplaceShaderValues(std::string&, std::string&,
 }
 
 //------------------------------------------------------------------------------
-bool vtkPlanarShadowPass::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkPlanarShadowPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
   if (fragmentShader.find("vshPlanarLit") == std::string::npos)
   {
@@ -797,7 +796,8 @@ bool vtkPlanarShadowPass::PostReplaceShaderValues(std::string&, std::string&,
   }
   // Each light's diffuse and specular terms times its mask bit; the mask is
   // read once per fragment.
-  vtkshadow::InjectLightFactors(fragmentShader, "vshPlanarLit(%d)", "vshPlanarPrepare(vertexVC.xyz);");
+  vtkshadow::InjectLightFactors(
+    fragmentShader, "vshPlanarLit(%d)", "vshPlanarPrepare(vertexVC.xyz);");
   return true;
 }
 
@@ -818,8 +818,8 @@ bool vtkPlanarShadowPass::SetShaderParameters(
   program->SetUniformi("vshPlanarPlaneCount", impl.PlaneCount);
   if (impl.PlaneCount > 0)
   {
-    program->SetUniform4fv("vshPlanarPlaneVC", impl.PlaneCount,
-      reinterpret_cast<const float(*)[4]>(impl.PlaneVC));
+    program->SetUniform4fv(
+      "vshPlanarPlaneVC", impl.PlaneCount, reinterpret_cast<const float(*)[4]>(impl.PlaneVC));
     program->SetUniform1iv("vshPlanarPlaneReceiver", impl.PlaneCount, impl.PlaneReceiver);
     program->SetUniform1fv("vshPlanarPlaneTolerance", impl.PlaneCount, impl.PlaneTolerance);
   }

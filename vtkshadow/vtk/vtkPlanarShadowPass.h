@@ -72,8 +72,8 @@ public:
    * Every opaque fragment within the tolerance (relative to its distance from
    * the camera, default 1e-5) of the plane receives the shadow.
    */
-  void AddReceiverPlane(double originX, double originY, double originZ, double normalX,
-    double normalY, double normalZ);
+  void AddReceiverPlane(
+    double originX, double originY, double originZ, double normalX, double normalY, double normalZ);
   void RemoveAllReceivers();
   vtkSetMacro(PlaneTolerance, double);
   vtkGetMacro(PlaneTolerance, double);

@@ -3,11 +3,9 @@
 #include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
-#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
-#include "vtkMultiBlockDataSet.h"
-#include "vtkMultiPieceDataSet.h"
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
@@ -15,6 +13,8 @@
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkMultiPieceDataSet.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPointData.h"
@@ -126,9 +126,8 @@ void GlyphMatrix(vtkGlyph3DMapper* m, vtkDataSet* input, vtkIdType i, vtkDataArr
   {
     const double* range = m->GetRange();
     const double den = range[1] - range[0] != 0 ? range[1] - range[0] : 1.0;
-    auto clamp = [&](double v) {
-      return m->GetClamping() ? (std::min(std::max(v, range[0]), range[1]) - range[0]) / den : v;
-    };
+    auto clamp = [&](double v)
+    { return m->GetClamping() ? (std::min(std::max(v, range[0]), range[1]) - range[0]) / den : v; };
     if (m->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_MAGNITUDE)
     {
       s[0] = s[1] = s[2] = clamp(vtkMath::Norm(scale->GetTuple(i), scale->GetNumberOfComponents()));
@@ -259,7 +258,8 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
     auto* cpdm = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
     vtkCompositeDataDisplayAttributes* attributes =
       cpdm ? cpdm->GetCompositeDataDisplayAttributes() : nullptr;
-    std::function<void(vtkDataObject*, bool)> visit = [&](vtkDataObject* node, bool visible) {
+    std::function<void(vtkDataObject*, bool)> visit = [&](vtkDataObject* node, bool visible)
+    {
       if (!node)
       {
         return;
@@ -351,8 +351,8 @@ void vtkShadowCasterGeometry::Draw(vtkShaderProgram* program)
   }
   this->VAO->Bind();
   this->Indices->Bind();
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(3 * this->TriangleCount), GL_UNSIGNED_INT,
-    nullptr);
+  glDrawElements(
+    GL_TRIANGLES, static_cast<GLsizei>(3 * this->TriangleCount), GL_UNSIGNED_INT, nullptr);
   this->Indices->Release();
   this->VAO->Release();
 }
@@ -372,9 +372,9 @@ void vtkShadowCasterGeometry::Analyse()
   const std::vector<double> positions(this->Positions.begin(), this->Positions.end());
   static_assert(sizeof(unsigned int) == sizeof(uint32_t), "triangle indices are 32-bit");
   this->Topology.reset(new vsh_mesh_topology());
-  const vsh_mesh_status status = vsh_mesh_topology_build(positions.data(),
-    positions.size() / 3, reinterpret_cast<const uint32_t*>(this->Triangles.data()),
-    this->Triangles.size() / 3, 0.0, this->Topology.get());
+  const vsh_mesh_status status = vsh_mesh_topology_build(positions.data(), positions.size() / 3,
+    reinterpret_cast<const uint32_t*>(this->Triangles.data()), this->Triangles.size() / 3, 0.0,
+    this->Topology.get());
   // A mesh that cannot be analysed is treated as not closed: the passes then
   // draw its triangles, which is always right.
   this->Closed = status == VSH_MESH_OK && this->Topology->closed ? 1 : 0;

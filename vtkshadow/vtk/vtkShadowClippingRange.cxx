@@ -73,7 +73,8 @@ double ClippedMinDepth(std::vector<std::array<double, 3>>& in, const ViewFrame& 
       if ((da >= 0) != (db >= 0))
       {
         const double t = da / (da - db);
-        out.push_back({ a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]) });
+        out.push_back(
+          { a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]) });
       }
     }
     in.swap(out);

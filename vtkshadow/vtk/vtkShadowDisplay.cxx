@@ -41,8 +41,8 @@ std::string NoDisplayMessage()
   {
     return "no X display (DISPLAY is not set)" + advice;
   }
-  return std::string("cannot open the X display DISPLAY=\"") + name + "\" (no X server answers there)" +
-    advice;
+  return std::string("cannot open the X display DISPLAY=\"") + name +
+    "\" (no X server answers there)" + advice;
 }
 
 // Open under the lock; the caller holds it.

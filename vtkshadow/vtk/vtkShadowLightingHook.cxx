@@ -48,8 +48,8 @@ void LightHomogeneous(vtkLight* light, double out[4])
   out[3] = positional ? 1.0 : 0.0;
 }
 
-bool InjectLightFactors(std::string& fs, const std::string& factor, const std::string& prepare,
-  int maxLights)
+bool InjectLightFactors(
+  std::string& fs, const std::string& factor, const std::string& prepare, int maxLights)
 {
   // Each term is found by its head ("diffuse += (df * lightColor3") followed
   // by anything but a digit, and the factor goes right after the head: so a

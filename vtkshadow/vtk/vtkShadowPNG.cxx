@@ -48,7 +48,8 @@ bool WritePNGAtomically(vtkImageData* image, const std::string& path, std::strin
   writer->Write();
   if (writer->GetErrorCode() != 0)
   {
-    error = path + ": PNG writer failed (error code " + std::to_string(writer->GetErrorCode()) + ")";
+    error =
+      path + ": PNG writer failed (error code " + std::to_string(writer->GetErrorCode()) + ")";
     std::remove(temporary.c_str());
     return false;
   }

@@ -31,10 +31,10 @@ class ReceiverPlaneCache
 public:
   struct Entry
   {
-    vtkMTimeType Time = 0; // placement and mesh time it was computed for
-    bool Flat = false;     // the geometry is a plane ...
+    vtkMTimeType Time = 0;            // placement and mesh time it was computed for
+    bool Flat = false;                // the geometry is a plane ...
     double Plane[4] = { 0, 0, 0, 0 }; // ... this one
-    bool Reported = false; // a "not flat" warning was given for this computation
+    bool Reported = false;            // a "not flat" warning was given for this computation
   };
 
   /**

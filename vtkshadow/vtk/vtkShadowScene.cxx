@@ -10,6 +10,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFloatArray.h"
+#include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -18,7 +19,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
 #include "vtkPlanarShadowPass.h"
-#include "vtkInformation.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -77,8 +77,8 @@ vtkSmartPointer<vtkPolyData> PolyDataFromMesh(const vsh_mesh& mesh)
     normals->SetTypedTuple(static_cast<vtkIdType>(i), mesh.normals + 3 * i);
   }
   vtkNew<vtkCellArray> triangles;
-  triangles->AllocateExact(static_cast<vtkIdType>(mesh.triangle_count),
-    static_cast<vtkIdType>(3 * mesh.triangle_count));
+  triangles->AllocateExact(
+    static_cast<vtkIdType>(mesh.triangle_count), static_cast<vtkIdType>(3 * mesh.triangle_count));
   for (size_t t = 0; t < mesh.triangle_count; ++t)
   {
     const vtkIdType ids[3] = { mesh.triangles[3 * t], mesh.triangles[3 * t + 1],
@@ -277,7 +277,8 @@ vtkSmartPointer<vtkPolyData> ReadTriangles(const vsh_object& object, std::string
   vtkPolyData* decoded = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!readerError.empty() || !decoded)
   {
-    error = "unreadable mesh " + got + ": " + (readerError.empty() ? "no output" : readerError) + ")";
+    error =
+      "unreadable mesh " + got + ": " + (readerError.empty() ? "no output" : readerError) + ")";
     return nullptr;
   }
   std::string why;
@@ -332,8 +333,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const vsh_object& object, std::string& err
   {
     if (!std::isfinite(v))
     {
-      error = "mesh has a non-finite point coordinate (got \"" + std::string(object.mesh_path) +
-        "\")";
+      error =
+        "mesh has a non-finite point coordinate (got \"" + std::string(object.mesh_path) + "\")";
       return nullptr;
     }
   }

@@ -20,7 +20,7 @@
 
 #include "vtkObject.h"
 #include "vtkShadowPassBase.h" // for CreatePass()
-#include "vtkshadowModule.h" // for export macro
+#include "vtkshadowModule.h"   // for export macro
 
 #include <string>  // for std::string
 #include <utility> // for std::pair

@@ -29,7 +29,8 @@ vtkShadowPassBase* Make()
 
 // The table. Order is the order tools list and run techniques in.
 const Technique Techniques[] = {
-  { "none", "VTK's standard passes, no shadows (the cost and error floor)", &Make<vtkNoShadowPass> },
+  { "none", "VTK's standard passes, no shadows (the cost and error floor)",
+    &Make<vtkNoShadowPass> },
   { "vtk", "VTK 9.1's own shadow maps (vtkShadowMapPass) at map_resolution, the baseline",
     &Make<vtkBuiltinShadowMapPass> },
   { "planar", "exact projected shadows on plane receivers, every light type",
@@ -76,7 +77,8 @@ int vtkShadowTechniqueRegistry::FindTechnique(const char* name)
 //------------------------------------------------------------------------------
 const char* vtkShadowTechniqueRegistry::GetNames()
 {
-  static const std::string names = [] {
+  static const std::string names = []
+  {
     std::string all;
     for (const Technique& t : Techniques)
     {

@@ -41,8 +41,8 @@ vtkImageData* NewImage(int w, int h, int type)
 // Render the renderer's window through `pass` wrapped in a float framebuffer
 // and return the summed RGB of every pixel (row 0 at the bottom). Float
 // targets keep the dim, grazing-angle pixels as exact as the bright ones.
-bool RenderFloatIntensity(vtkRenderWindow* window, vtkOpenGLRenderer* renderer,
-  vtkRenderPass* pass, int w, int h, std::vector<float>& intensity)
+bool RenderFloatIntensity(vtkRenderWindow* window, vtkOpenGLRenderer* renderer, vtkRenderPass* pass,
+  int w, int h, std::vector<float>& intensity)
 {
   vtkNew<vtkFramebufferPass> capture;
   capture->SetColorFormat(vtkTextureObject::Float32);

@@ -21,74 +21,69 @@
 #include <stddef.h>
 
 #ifdef __cplusplus
-extern "C" {
+extern "C"
+{
 #endif
 
-typedef struct vtkshadow_scene vtkshadow_scene;
-typedef struct vtkshadow_technique vtkshadow_technique;
+  typedef struct vtkshadow_scene vtkshadow_scene;
+  typedef struct vtkshadow_technique vtkshadow_technique;
 
-/* "MAJOR.MINOR.PATCH" of this library. */
-VTKSHADOW_EXPORT const char *vtkshadow_version(void);
+  /* "MAJOR.MINOR.PATCH" of this library. */
+  VTKSHADOW_EXPORT const char* vtkshadow_version(void);
 
-/* Load and validate a scene file; NULL on failure with the message in error. */
-VTKSHADOW_EXPORT vtkshadow_scene *vtkshadow_scene_load(const char *path, char *error,
-                                                       size_t error_size);
-VTKSHADOW_EXPORT void vtkshadow_scene_free(vtkshadow_scene *scene);
-VTKSHADOW_EXPORT int vtkshadow_scene_light_count(const vtkshadow_scene *scene);
-VTKSHADOW_EXPORT int vtkshadow_scene_object_count(const vtkshadow_scene *scene);
-VTKSHADOW_EXPORT void vtkshadow_scene_size(const vtkshadow_scene *scene, int *width,
-                                           int *height);
-/* Add the scene's actors, lights and camera to a vtkRenderer (passed as void*). */
-VTKSHADOW_EXPORT int vtkshadow_scene_populate(const vtkshadow_scene *scene,
-                                              void *vtk_renderer, char *error,
-                                              size_t error_size);
+  /* Load and validate a scene file; NULL on failure with the message in error. */
+  VTKSHADOW_EXPORT vtkshadow_scene* vtkshadow_scene_load(
+    const char* path, char* error, size_t error_size);
+  VTKSHADOW_EXPORT void vtkshadow_scene_free(vtkshadow_scene* scene);
+  VTKSHADOW_EXPORT int vtkshadow_scene_light_count(const vtkshadow_scene* scene);
+  VTKSHADOW_EXPORT int vtkshadow_scene_object_count(const vtkshadow_scene* scene);
+  VTKSHADOW_EXPORT void vtkshadow_scene_size(const vtkshadow_scene* scene, int* width, int* height);
+  /* Add the scene's actors, lights and camera to a vtkRenderer (passed as void*). */
+  VTKSHADOW_EXPORT int vtkshadow_scene_populate(
+    const vtkshadow_scene* scene, void* vtk_renderer, char* error, size_t error_size);
 
-/* The registered techniques (vtkShadowTechniqueRegistry): their number, and
- * the name and one-line description of technique i (NULL out of range). */
-VTKSHADOW_EXPORT int vtkshadow_technique_count(void);
-VTKSHADOW_EXPORT const char *vtkshadow_technique_name_at(int index);
-VTKSHADOW_EXPORT const char *vtkshadow_technique_description_at(int index);
+  /* The registered techniques (vtkShadowTechniqueRegistry): their number, and
+   * the name and one-line description of technique i (NULL out of range). */
+  VTKSHADOW_EXPORT int vtkshadow_technique_count(void);
+  VTKSHADOW_EXPORT const char* vtkshadow_technique_name_at(int index);
+  VTKSHADOW_EXPORT const char* vtkshadow_technique_description_at(int index);
 
-/* A technique by name ("none", "vtk", ...); NULL for an unknown name. */
-VTKSHADOW_EXPORT vtkshadow_technique *vtkshadow_technique_new(const char *name, char *error,
-                                                              size_t error_size);
-VTKSHADOW_EXPORT void vtkshadow_technique_free(vtkshadow_technique *technique);
-VTKSHADOW_EXPORT const char *vtkshadow_technique_name(const vtkshadow_technique *technique);
-/* Shadow-map edge length in texels (16..16384) for map-based techniques. */
-VTKSHADOW_EXPORT int vtkshadow_technique_set_map_resolution(vtkshadow_technique *technique,
-                                                            int resolution);
-/* A technique setting by name, as vtkShadowTechnique::SetOption: e.g.
- * "cascades", "filter" for csm, "max_error" (wrong_pct) or "max_texel_px"
- * for auto. Returns 0, or 1 for an unknown key or a value out of range
- * (nothing changed; the message names both). Set before install. */
-VTKSHADOW_EXPORT int vtkshadow_technique_set_option(vtkshadow_technique *technique,
-                                                    const char *key, double value, char *error,
-                                                    size_t error_size);
-/* Switch the technique on for a vtkOpenGLRenderer (passed as void*). */
-VTKSHADOW_EXPORT int vtkshadow_technique_install(vtkshadow_technique *technique,
-                                                 void *vtk_renderer, char *error,
-                                                 size_t error_size);
+  /* A technique by name ("none", "vtk", ...); NULL for an unknown name. */
+  VTKSHADOW_EXPORT vtkshadow_technique* vtkshadow_technique_new(
+    const char* name, char* error, size_t error_size);
+  VTKSHADOW_EXPORT void vtkshadow_technique_free(vtkshadow_technique* technique);
+  VTKSHADOW_EXPORT const char* vtkshadow_technique_name(const vtkshadow_technique* technique);
+  /* Shadow-map edge length in texels (16..16384) for map-based techniques. */
+  VTKSHADOW_EXPORT int vtkshadow_technique_set_map_resolution(
+    vtkshadow_technique* technique, int resolution);
+  /* A technique setting by name, as vtkShadowTechnique::SetOption: e.g.
+   * "cascades", "filter" for csm, "max_error" (wrong_pct) or "max_texel_px"
+   * for auto. Returns 0, or 1 for an unknown key or a value out of range
+   * (nothing changed; the message names both). Set before install. */
+  VTKSHADOW_EXPORT int vtkshadow_technique_set_option(
+    vtkshadow_technique* technique, const char* key, double value, char* error, size_t error_size);
+  /* Switch the technique on for a vtkOpenGLRenderer (passed as void*). */
+  VTKSHADOW_EXPORT int vtkshadow_technique_install(
+    vtkshadow_technique* technique, void* vtk_renderer, char* error, size_t error_size);
 
-/* Planar shadows: mark a vtkActor (passed as void*) as a receiver (its flat
- * geometry is the plane and the area shadows may cover), or opt it out of
- * casting. Technique "planar" uses these marks; vtkshadow_scene_populate sets
- * them from the scene's "receiver" and "casts" fields. */
-VTKSHADOW_EXPORT int vtkshadow_actor_set_receiver(void *vtk_actor, int receiver);
-VTKSHADOW_EXPORT int vtkshadow_actor_set_casts(void *vtk_actor, int casts);
+  /* Planar shadows: mark a vtkActor (passed as void*) as a receiver (its flat
+   * geometry is the plane and the area shadows may cover), or opt it out of
+   * casting. Technique "planar" uses these marks; vtkshadow_scene_populate sets
+   * them from the scene's "receiver" and "casts" fields. */
+  VTKSHADOW_EXPORT int vtkshadow_actor_set_receiver(void* vtk_actor, int receiver);
+  VTKSHADOW_EXPORT int vtkshadow_actor_set_casts(void* vtk_actor, int casts);
 
-/* Render the scene in colour with the technique to a PNG file (offscreen;
- * needs an X display with Debian's VTK). */
-VTKSHADOW_EXPORT int vtkshadow_render_png(const vtkshadow_scene *scene,
-                                          vtkshadow_technique *technique, const char *path,
-                                          char *error, size_t error_size);
+  /* Render the scene in colour with the technique to a PNG file (offscreen;
+   * needs an X display with Debian's VTK). */
+  VTKSHADOW_EXPORT int vtkshadow_render_png(const vtkshadow_scene* scene,
+    vtkshadow_technique* technique, const char* path, char* error, size_t error_size);
 
-/* Visibility of one light under the technique (see docs/metrics.md).
- * Reports the mean visibility and the count of valid pixels; writes the
- * 16-bit visibility PNG when png_path is not NULL. */
-VTKSHADOW_EXPORT int vtkshadow_visibility(const vtkshadow_scene *scene,
-                                          vtkshadow_technique *technique, int light,
-                                          const char *png_path, double *mean_visibility,
-                                          long *valid_pixels, char *error, size_t error_size);
+  /* Visibility of one light under the technique (see docs/metrics.md).
+   * Reports the mean visibility and the count of valid pixels; writes the
+   * 16-bit visibility PNG when png_path is not NULL. */
+  VTKSHADOW_EXPORT int vtkshadow_visibility(const vtkshadow_scene* scene,
+    vtkshadow_technique* technique, int light, const char* png_path, double* mean_visibility,
+    long* valid_pixels, char* error, size_t error_size);
 
 #ifdef __cplusplus
 }

@@ -4,12 +4,12 @@
 #include "vtkActor.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
-#include "vtkPlanarShadowPass.h"
 #include "vtkNew.h"
+#include "vtkPlanarShadowPass.h"
 #include "vtkRenderWindow.h"
-#include "vtkShadowDisplay.h"
 #include "vtkRenderer.h"
 #include "vtkShadowActorFlags.h"
+#include "vtkShadowDisplay.h"
 #include "vtkShadowPNG.h"
 #include "vtkShadowScene.h"
 #include "vtkShadowTechnique.h"
@@ -51,7 +51,10 @@ void SetError(char* error, size_t size, const std::string& message)
 
 extern "C"
 {
-  const char* vtkshadow_version(void) { return "0.1.0"; }
+  const char* vtkshadow_version(void)
+  {
+    return "0.1.0";
+  }
 
   vtkshadow_scene* vtkshadow_scene_load(const char* path, char* error, size_t error_size)
   {
@@ -66,7 +69,10 @@ extern "C"
     return handle;
   }
 
-  void vtkshadow_scene_free(vtkshadow_scene* scene) { delete scene; }
+  void vtkshadow_scene_free(vtkshadow_scene* scene)
+  {
+    delete scene;
+  }
 
   int vtkshadow_scene_light_count(const vtkshadow_scene* scene)
   {
@@ -102,7 +108,10 @@ extern "C"
     return scene->Scene->Populate(renderer) ? 0 : 1;
   }
 
-  int vtkshadow_technique_count(void) { return vtkShadowTechniqueRegistry::GetNumberOfTechniques(); }
+  int vtkshadow_technique_count(void)
+  {
+    return vtkShadowTechniqueRegistry::GetNumberOfTechniques();
+  }
 
   const char* vtkshadow_technique_name_at(int index)
   {
@@ -129,7 +138,10 @@ extern "C"
     return handle;
   }
 
-  void vtkshadow_technique_free(vtkshadow_technique* technique) { delete technique; }
+  void vtkshadow_technique_free(vtkshadow_technique* technique)
+  {
+    delete technique;
+  }
 
   const char* vtkshadow_technique_name(const vtkshadow_technique* technique)
   {
@@ -207,7 +219,8 @@ extern "C"
     // The process's one X connection (vtkShadowDisplay); none: say so, not abort.
     if (!vtkShadowDisplay::Attach(window))
     {
-      SetError(error, error_size, std::string("vtkshadow_render_png: ") + vtkShadowDisplay::GetErrorMessage());
+      SetError(error, error_size,
+        std::string("vtkshadow_render_png: ") + vtkShadowDisplay::GetErrorMessage());
       return 1;
     }
     window->SetOffScreenRendering(1);
@@ -235,8 +248,8 @@ extern "C"
     return 0;
   }
 
-  int vtkshadow_visibility(const vtkshadow_scene* scene, vtkshadow_technique* technique,
-    int light, const char* png_path, double* mean_visibility, long* valid_pixels, char* error,
+  int vtkshadow_visibility(const vtkshadow_scene* scene, vtkshadow_technique* technique, int light,
+    const char* png_path, double* mean_visibility, long* valid_pixels, char* error,
     size_t error_size)
   {
     if (!scene || !technique)
