@@ -78,5 +78,17 @@ run_case([good, "--technique", "vtk", "--bogus"], ['unknown option "--bogus"'], 
 run_case([os.path.join(args.out, "missing.json"), "--technique", "vtk"],
          ["missing.json"], "cli-missing-scene")
 
-print(f"cli.bad_input: {count} cases, {len(failures)} failed")
+# How many cases ran: a moved data directory or an empty glob must not pass
+# as "0 failed". tests/scene/data/bad held 65 bad scenes when this was
+# written (only ever grows); every one of them runs, plus at least the 3 mesh
+# cases and 7 command lines above.
+n_bad_scenes = len(glob.glob(os.path.join(bad_dir, "*.json")))
+if n_bad_scenes < 65:
+    failures.append("scene-count")
+    print(f"FAIL: {n_bad_scenes} bad scenes in {bad_dir}, expected at least 65")
+if count < n_bad_scenes + 3 + 7:
+    failures.append("case-count")
+    print(f"FAIL: ran {count} cases, expected at least {n_bad_scenes} scenes + 3 meshes + 7 "
+          f"command lines")
+print(f"cli.bad_input: {count} cases ({n_bad_scenes} bad scenes), {len(failures)} failed")
 sys.exit(1 if failures else 0)
