@@ -5,4 +5,4 @@ set -eu
 cd "$(dirname "$0")/.."
 sh scripts/install-deps.sh
 sh scripts/build.sh
-ctest --test-dir build --output-on-failure -j2 --timeout 1500
+ctest --test-dir build --output-on-failure -j2 --timeout 1500 --no-tests=error

@@ -78,7 +78,11 @@ char *metrics_json_format(const metrics_cli_args *a, int width, int height,
   sb_printf(&b, "  \"wrong_pct\": %.9g,\n", m->wrong_pct);
   sb_printf(&b, "  \"edge_px\": %.9g,\n", m->edge_px);
   sb_printf(&b, "  \"false_shadow_pct\": %.9g,\n", m->false_shadow_pct);
-  sb_printf(&b, "  \"false_light_pct\": %.9g\n", m->false_light_pct);
+  sb_printf(&b, "  \"false_light_pct\": %.9g,\n", m->false_light_pct);
+  sb_printf(&b, "  \"ref_shadow_pixels\": %ld,\n", m->ref_shadow_pixels);
+  sb_printf(&b, "  \"test_shadow_pixels\": %ld,\n", m->test_shadow_pixels);
+  sb_printf(&b, "  \"wrong_of_shadow_pct\": %.9g,\n", m->wrong_of_shadow_pct);
+  sb_printf(&b, "  \"wrong_of_test_shadow_pct\": %.9g\n", m->wrong_of_test_shadow_pct);
   sb_printf(&b, "}\n");
   if (b.oom) {
     free(b.s);

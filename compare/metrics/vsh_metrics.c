@@ -1,6 +1,7 @@
 /* vsh_metrics.c - the per-pixel metrics; edge_px is in vsh_edge.c. */
 #include "vsh_metrics.h"
 
+#include "vsh_boundary.h"
 #include "vsh_metrics_size.h"
 
 #include <math.h>
@@ -16,6 +17,7 @@ int vsh_metrics_compute(const float *v, const float *v_ref, const unsigned char 
 
   size_t n = (size_t)width * (size_t)height;
   long n_valid = 0, n_cmp = 0, n_wrong = 0, n_fshadow = 0, n_flight = 0;
+  long n_ref_shadow = 0, n_test_shadow = 0;
   double sum_abs = 0.0; /* double: a float sum of 10^7 terms loses digits */
   for (size_t i = 0; i < n; ++i) {
     if (!valid[i]) continue;
@@ -28,6 +30,8 @@ int vsh_metrics_compute(const float *v, const float *v_ref, const unsigned char 
     if (e > 0.5) ++n_wrong;
     if (r > 0.9 && t < 0.5) ++n_fshadow;
     if (r < 0.1 && t > 0.5) ++n_flight;
+    n_ref_shadow += !vsh_is_lit(v_ref[i]);
+    n_test_shadow += !vsh_is_lit(v[i]);
   }
   out->valid_pixels = n_valid;
   if (n_cmp == 0) return VSH_METRICS_EMPTY;
@@ -44,5 +48,10 @@ int vsh_metrics_compute(const float *v, const float *v_ref, const unsigned char 
   out->false_shadow_pct = 100.0 * (double)n_fshadow / (double)n_cmp;
   out->false_light_pct = 100.0 * (double)n_flight / (double)n_cmp;
   out->edge_px = edge;
+  out->ref_shadow_pixels = n_ref_shadow;
+  out->test_shadow_pixels = n_test_shadow;
+  out->wrong_of_shadow_pct = 100.0 * (double)n_wrong / (double)(n_ref_shadow > 0 ? n_ref_shadow : 1);
+  out->wrong_of_test_shadow_pct =
+      100.0 * (double)n_wrong / (double)(n_test_shadow > 0 ? n_test_shadow : 1);
   return VSH_METRICS_OK;
 }

@@ -30,6 +30,20 @@ typedef struct vsh_metrics {
   double edge_px;       /* symmetric mean boundary distance, see vsh_edge_px */
   double false_shadow_pct; /* 100 * fraction with v_ref > 0.9 and v < 0.5 */
   double false_light_pct;  /* 100 * fraction with v_ref < 0.1 and v > 0.5 */
+  /* Errors relative to the shadow, so that losing a small shadow is a large
+   * number (wrong_pct divides by the whole frame, where a small shadow is a
+   * fraction of a percent). Counted over the compared pixels, like
+   * wrong_pct: the same wrong pixels, the same exclusions. */
+  long ref_shadow_pixels;  /* compared pixels with v_ref < 0.5 */
+  long test_shadow_pixels; /* compared pixels with v < 0.5 */
+  /* 100 * wrong / max(ref_shadow_pixels, 1) and
+   * 100 * wrong / max(test_shadow_pixels, 1): an empty shadow counts as one
+   * pixel, so the figure is finite, 0 exactly when nothing is wrong, and
+   * 100 per wrong pixel when there is no shadow at all. Both can exceed 100
+   * (false shadows outside the reference's, or lit pixels missing from a
+   * lost shadow). */
+  double wrong_of_shadow_pct;      /* of the reference's shadow */
+  double wrong_of_test_shadow_pct; /* of the technique's shadow */
 } vsh_metrics;
 
 /* Computes every metric over the compared pixels (valid and not excluded).

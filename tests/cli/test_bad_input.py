@@ -102,8 +102,14 @@ run_case([good, "--technique", "csm", "--set", "cascades=9"],
          ["technique csm", '"cascades=9'], "cli-set-out-of-range")
 run_case([good, "--technique", "csm", "--set", "bogus=1"], ['"bogus=1'], "cli-set-unknown")
 
-# The case count is fixed: a lost glob or table entry must not pass quietly.
+# How many cases ran: a moved data directory, an empty glob or a lost table
+# entry must not pass as "0 failed". tests/scene/data/bad held 65 bad scenes
+# when this was written (only ever grows); every one of them runs, plus the 3
+# mesh cases, every malformed mesh and the 10 command lines above.
 bad_scenes = len(glob.glob(os.path.join(bad_dir, "*.json")))
+if bad_scenes < 65:
+    failures.append("scene-count")
+    print(f"FAIL: {bad_scenes} bad scenes in {bad_dir}, expected at least 65")
 expected = bad_scenes + 3 + len(BAD_MESHES) + 10
 if count != expected:
     failures.append("count")
@@ -111,5 +117,6 @@ if count != expected:
 if len(BAD_MESHES) < 47:
     failures.append("mesh-table")
     print(f"FAIL only {len(BAD_MESHES)} malformed mesh cases, expected at least 47")
-print(f"cli.bad_input: {count} cases ({len(BAD_MESHES)} malformed meshes), {len(failures)} failed")
+print(f"cli.bad_input: {count} cases ({bad_scenes} bad scenes, {len(BAD_MESHES)} malformed meshes), "
+      f"{len(failures)} failed")
 sys.exit(1 if failures else 0)

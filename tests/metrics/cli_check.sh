@@ -47,7 +47,13 @@ case $case in
     out_has '"wrong_pct": 12.5,'
     out_has '"edge_px": 1,'
     out_has '"false_shadow_pct": 12.5,'
-    out_has '"false_light_pct": 0'
+    out_has '"false_light_pct": 0,'
+    # shadow: columns 0-3 of rows 1-7 (28), test 0-4 (35); 7 wrong
+    out_has '"ref_shadow_pixels": 28,'
+    out_has '"test_shadow_pixels": 35,'
+    out_has '"wrong_of_shadow_pct": 25,'
+    grep -x -q '  "wrong_of_test_shadow_pct": 20' out.txt ||
+      say "stdout lacks the line wrong_of_test_shadow_pct 20: $(cat out.txt)"
     cmp -s out.txt out.json || say "--json file differs from stdout"
     [ -s heat.png ] || say "no heat map written"
     head -c 8 heat.png | od -An -c | grep -q 'P   N   G' || say "heat map is not a PNG"
@@ -58,7 +64,11 @@ case $case in
     out_has '"band": 1,'
     out_has '"compared_pixels": 42,'
     out_has '"wrong_pct": 0,'
-    out_has '"edge_px": 1,' ;;
+    out_has '"edge_px": 1,'
+    # columns 3 and 4 leave: both shadows are columns 0-2 (21 pixels)
+    out_has '"ref_shadow_pixels": 21,'
+    out_has '"test_shadow_pixels": 21,'
+    out_has '"wrong_of_shadow_pct": 0,' ;;
   exclude)
     run 0 --reference "$R" --mask "$M" --test "$T" --exclude "$data/exclude_right8.png"
     out_has '"compared_pixels": 28,'

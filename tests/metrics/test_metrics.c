@@ -86,11 +86,70 @@ int main(void) {
   CHECK(m.valid_pixels == 0 && m.compared_pixels == 0);
   CHECK(m.vis_mae == 0.0 && m.wrong_pct == 0.0 && m.edge_px == 0.0);
   CHECK(m.false_shadow_pct == 0.0 && m.false_light_pct == 0.0);
+  CHECK(m.ref_shadow_pixels == 0 && m.wrong_of_shadow_pct == 0.0 &&
+        m.wrong_of_test_shadow_pct == 0.0);
 
   /* all valid but all excluded: EMPTY too, valid_pixels still reported */
   for (int i = 0; i < N; ++i) valid[i] = ex[i] = 1;
   CHECK(vsh_metrics_compute(v, r, valid, ex, W, H, &m) == VSH_METRICS_EMPTY);
   CHECK(m.valid_pixels == N && m.compared_pixels == 0 && m.wrong_pct == 0.0);
+
+  /* Errors relative to the shadow. Reference shadowed in rows 0-2 (30
+   * pixels); the test keeps row 0 only and adds 4 false shadow pixels in
+   * row 9: test shadow 10 + 4 = 14 pixels, wrong 20 (rows 1-2 lost) + 4 =
+   * 24. Of the reference's shadow: 100 * 24 / 30 = 80; of the test's:
+   * 100 * 24 / 14. */
+  for (int i = 0; i < N; ++i) {
+    valid[i] = 1;
+    r[i] = i < 30 ? 0.0f : 1.0f;
+    v[i] = i < 10 || (i >= 90 && i < 94) ? 0.0f : 1.0f;
+  }
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.ref_shadow_pixels == 30 && m.test_shadow_pixels == 14);
+  CHECK_NEAR(m.wrong_pct, 24.0, 1e-12);
+  CHECK_NEAR(m.wrong_of_shadow_pct, 80.0, 1e-12);
+  CHECK_NEAR(m.wrong_of_test_shadow_pct, 2400.0 / 14.0, 1e-9);
+  /* counted over compared pixels only: excluding row 2 (10 lost pixels)
+   * leaves reference shadow 20, wrong 14, test shadow still 14 */
+  for (int i = 0; i < N; ++i) ex[i] = (i >= 20 && i < 30);
+  CHECK(vsh_metrics_compute(v, r, valid, ex, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.ref_shadow_pixels == 20 && m.test_shadow_pixels == 14);
+  CHECK_NEAR(m.wrong_of_shadow_pct, 70.0, 1e-12);
+  CHECK_NEAR(m.wrong_of_test_shadow_pct, 100.0, 1e-12);
+
+  /* a small shadow lost entirely: 3 of 100 pixels, wrong_pct only 3 but
+   * 100 % of the shadow; the test has no shadow, which counts as one
+   * pixel: 100 * 3 / 1 = 300 */
+  for (int i = 0; i < N; ++i) {
+    r[i] = i < 3 ? 0.0f : 1.0f;
+    v[i] = 1.0f;
+  }
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.ref_shadow_pixels == 3 && m.test_shadow_pixels == 0);
+  CHECK_NEAR(m.wrong_pct, 3.0, 1e-12);
+  CHECK_NEAR(m.wrong_of_shadow_pct, 100.0, 1e-12);
+  CHECK_NEAR(m.wrong_of_test_shadow_pct, 300.0, 1e-12);
+  /* ... the reverse: a false shadow of 2 pixels where the reference has
+   * none: 200 of the (one-pixel) reference shadow, 100 of the test's */
+  for (int i = 0; i < N; ++i) {
+    r[i] = 1.0f;
+    v[i] = i < 2 ? 0.2f : 1.0f;
+  }
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.ref_shadow_pixels == 0 && m.test_shadow_pixels == 2);
+  CHECK_NEAR(m.wrong_of_shadow_pct, 200.0, 1e-12);
+  CHECK_NEAR(m.wrong_of_test_shadow_pct, 100.0, 1e-12);
+  /* no shadow on either side and nothing wrong: exactly 0, not 0/0 */
+  fill(v, 1.0f);
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.ref_shadow_pixels == 0 && m.test_shadow_pixels == 0);
+  CHECK(m.wrong_of_shadow_pct == 0.0 && m.wrong_of_test_shadow_pct == 0.0);
+  /* v = 0.5 is lit (the thresholded state), 0.49 is shadowed */
+  fill(r, 0.5f);
+  fill(v, 0.49f);
+  CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+  CHECK(m.ref_shadow_pixels == 0 && m.test_shadow_pixels == N);
+  CHECK(m.wrong_of_shadow_pct == 0.0 && m.wrong_of_test_shadow_pct == 0.0);
 
   /* bad arguments */
   CHECK(vsh_metrics_compute(NULL, r, valid, NULL, W, H, &m) == VSH_METRICS_EINVAL);

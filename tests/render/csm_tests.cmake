@@ -1,44 +1,65 @@
-# Cascaded shadow maps (--technique csm) against the exact answer by ray
+# Cascaded shadow maps (--technique csm) and the automatic choice (--technique
+# auto: planar where every shadow falls on plane receivers, cascaded maps
+# otherwise, nothing when nothing casts) against the exact answer by ray
 # casting, with shadows on every surface (--reference all), using the scene
-# builders of test_planar.py. Bound: wrong_pct <= 0.5% of valid pixels outside
-# a one-pixel band along the exact boundary (issue #4).
-set(_csm_cases
-  sphere-floor-directional-4x3
-  sphere-floor-point-4x3
-  sphere-floor-spot-4x3
-  sphere-floor-directional-16x9
-  box-tilted-plane-directional
-  box-tilted-plane-point
-  box-tilted-plane-spot
-  grazing-85
-  light-below-camera-below
-  caster-above-point-light
-  near-far-1e5
-  offset-1e6
-  scale-1e-6
-  two-lights
-  big-floor-200
-  thin-plate)
-foreach(case IN LISTS _csm_cases)
-  add_test(NAME render.csm.${case}
-    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_planar.py
-            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/csm --case ${case}
-            --technique csm --reference all --max-wrong-pct 0.5)
-  set_tests_properties(render.csm.${case} PROPERTIES LABELS "render" TIMEOUT 300)
-endforeach()
-# A unit sphere over a 200 x 200 floor must keep its shadow: false_light_pct
-# is part of wrong_pct above; VTK 9.1's own pass measured 3.8% wrong there.
+# builders of test_planar.py, outside a one-pixel band along the exact
+# boundary. Rows: case, light, max wrong_pct, max wrong_of_shadow_pct, each
+# bound by the margin rule of render_bounds.cmake (included by
+# planar_tests.cmake); the comment gives what was measured (wrong_pct /
+# wrong_of_shadow_pct). Every light of the multi-light scenes is checked.
+# A unit sphere over a 200 x 200 floor (big-floor-200) must keep its shadow:
+# VTK 9.1's own pass measured 3.8% wrong there.
+vtkshadow_exact_cases(csm all
+  "sphere-floor-directional-4x3 0 0.02 1.0"   # 0 / 0
+  "sphere-floor-point-4x3 0 0.02 1.0"         # 0 / 0
+  "sphere-floor-spot-4x3 0 0.02 1.0"          # 0 / 0
+  "sphere-floor-directional-16x9 0 0.02 1.0"  # 0 / 0
+  "box-tilted-plane-directional 0 0.026 1.2"  # 0.0060 / 0.1307
+  "box-tilted-plane-point 0 0.02 1.0"         # 0 / 0
+  "box-tilted-plane-spot 0 0.02 1.0"          # 0 / 0
+  "grazing-85 0 0.48 5.0"                     # 0.2394 / 2.4562
+  "light-below-camera-below 0 0.02 1.0"       # 0 / 0 (no shadow at all)
+  "caster-above-point-light 0 0.02 1.0"       # 0 / 0
+  "near-far-1e5 0 0.027 1.4"                  # 0.0069 / 0.3387
+  "offset-1e6 0 0.02 1.0"                     # 0 / 0
+  "scale-1e-6 0 0.02 1.0"                     # 0 / 0
+  "two-lights 0 0.02 1.0"                     # 0 / 0
+  "two-lights 1 0.02 1.0"                     # 0 / 0
+  "many-receivers 0 0.02 1.0"                 # 0 / 0
+  "many-receivers 1 0.02 1.0"                 # 0 / 0
+  "many-receivers 2 0.02 1.0"                 # 0 / 0
+  "big-floor-200 0 0.02 1.0"                  # 0 / 0
+  "thin-plate 0 0.021 1.1")                   # 0.0004 / 0.0186
+# Known failure: with the light 89.9 degrees from the floor normal csm loses
+# the whole shadow of the low slabs (shadows 573 times longer than the slabs
+# are high): measured wrong_pct 10.78, wrong_of_shadow_pct 100 (issue 18).
+# The test passes while csm still misses the floor bounds and fails once it
+# meets them: then move the case into the rows above.
+vtkshadow_exact_case(csm all grazing-89.9 0 0.02 1.0
+  KNOWN_FAILURE "issue 18: csm loses the grazing-89.9 shadow (measured 10.78 / 100)")
 
-# The automatic choice (--technique auto: planar where every shadow falls on
-# plane receivers, cascaded maps otherwise, nothing when nothing casts) must
-# meet the same bound on every case.
-foreach(case IN LISTS _csm_cases)
-  add_test(NAME render.auto.${case}
-    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_planar.py
-            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/auto --case ${case}
-            --technique auto --reference all --max-wrong-pct 0.5)
-  set_tests_properties(render.auto.${case} PROPERTIES LABELS "render" TIMEOUT 300)
-endforeach()
+vtkshadow_exact_cases(auto all
+  "sphere-floor-directional-4x3 0 0.02 1.0"   # 0 / 0
+  "sphere-floor-point-4x3 0 0.02 1.0"         # 0 / 0
+  "sphere-floor-spot-4x3 0 0.02 1.0"          # 0 / 0
+  "sphere-floor-directional-16x9 0 0.02 1.0"  # 0 / 0
+  "box-tilted-plane-directional 0 0.62 14"    # 0.3067 / 6.7286
+  "box-tilted-plane-point 0 0.19 2.8"         # 0.0949 / 1.3673
+  "box-tilted-plane-spot 0 0.21 2.5"          # 0.1007 / 1.2339
+  "grazing-85 0 0.02 1.0"                     # 0 / 0
+  "grazing-89.9 0 0.02 1.0"                   # 0 / 0 (auto chooses planar here)
+  "light-below-camera-below 0 0.02 1.0"       # 0 / 0
+  "caster-above-point-light 0 0.02 1.0"       # 0 / 0
+  "near-far-1e5 0 0.02 1.0"                   # 0 / 0
+  "offset-1e6 0 0.02 1.0"                     # 0 / 0
+  "scale-1e-6 0 0.02 1.0"                     # 0 / 0
+  "two-lights 0 0.02 1.0"                     # 0 / 0
+  "two-lights 1 0.02 1.0"                     # 0 / 0
+  "many-receivers 0 0.02 1.0"                 # 0 / 0
+  "many-receivers 1 0.02 1.0"                 # 0 / 0
+  "many-receivers 2 0.02 1.0"                 # 0 / 0
+  "big-floor-200 0 0.02 1.0"                  # 0 / 0
+  "thin-plate 0 0.027 1.4")                   # 0.0068 / 0.3351
 
 # auto's choice per light (mixed planar + csm in one frame, a light with no
 # visible shadow, a receiver out of view, a box (convex, corners repeated

@@ -61,7 +61,19 @@ visible depth range, and fails if a visible surface lies outside the range.
 
   test_planar.py --bin BUILD/bin --out DIR --case CASE [--light K]
       [--technique planar] [--reference planar|unshadowed|all]
-      [--max-wrong-pct 0.05] [--min-mask-agreement 99.9]
+      [--max-wrong-pct 0.05] [--max-wrong-of-shadow-pct P]
+      [--min-mask-agreement 99.9] [--known-failure REASON]
+
+--max-wrong-of-shadow-pct bounds wrong_of_shadow_pct: the same wrong pixels
+as a percentage of the exact shadow's compared pixels (docs/metrics.md), so a
+small shadow that vanishes fails even where it is a fraction of a percent of
+the frame (thin-plate: 0.30 %). The bounds the .cmake files pass sit near the
+measured values (the margin rule is in tests/render/csm_tests.cmake).
+
+--known-failure REASON: the case is known to miss its bounds (REASON says
+why, e.g. an issue number). The test then passes only while it still misses
+them (the render and metrics must still run cleanly), and fails once the case
+meets its bounds, so that the case moves to the bounded list when it is fixed.
 
 --technique none --reference unshadowed validates the geometry (camera rays,
 objects, transforms, masks) before planar exists: then wrong_pct must be 0.
@@ -362,7 +374,7 @@ def vtk_clipping_range(scene_path):
 
 
 def run_case(bin_dir, out, case, scene, light, technique, reference, max_wrong_pct,
-             min_agreement, shadow_fact):
+             min_agreement, shadow_fact, max_wrong_of_shadow_pct=None, known_failure=None):
     """Render, compare, print one line; returns (failed, trace, metrics)."""
     width, height = scene["size"]
     os.makedirs(out, exist_ok=True)
@@ -428,7 +440,10 @@ def run_case(bin_dir, out, case, scene, light, technique, reference, max_wrong_p
             failed = True
     print(f"{name}: wrong_pct {metrics['wrong_pct']:.4f}  vis_mae {metrics['vis_mae']:.5f}  "
           f"edge_px {metrics['edge_px']:.3f}  false_shadow_pct {metrics['false_shadow_pct']:.4f}  "
-          f"false_light_pct {metrics['false_light_pct']:.4f}  compared {metrics['compared_pixels']}"
+          f"false_light_pct {metrics['false_light_pct']:.4f}  "
+          f"wrong_of_shadow_pct {metrics['wrong_of_shadow_pct']:.4f}  "
+          f"wrong_of_test_shadow_pct {metrics['wrong_of_test_shadow_pct']:.4f}  "
+          f"compared {metrics['compared_pixels']}"
           f"  exact shadow px {shadow_px}  mask agreement {agreement:.4f}%{extra}")
     if shadow_fact == "no shadow":
         if shadow_px or np.any(planar["blocked"]):
@@ -444,8 +459,24 @@ def run_case(bin_dir, out, case, scene, light, technique, reference, max_wrong_p
     if agreement < min_agreement:
         print(f"FAIL: mask agreement {agreement:.4f}% < {min_agreement}%")
         failed = True
+    # Facts about the scene and the measurement fail in any case; the bounds
+    # on the result are what a known failure is known to miss.
+    missed = []
     if metrics["wrong_pct"] > max_wrong_pct:
-        print(f"FAIL: wrong_pct {metrics['wrong_pct']:.4f} > {max_wrong_pct}")
+        missed.append(f"wrong_pct {metrics['wrong_pct']:.4f} > {max_wrong_pct}")
+    if (max_wrong_of_shadow_pct is not None
+            and metrics["wrong_of_shadow_pct"] > max_wrong_of_shadow_pct):
+        missed.append(f"wrong_of_shadow_pct {metrics['wrong_of_shadow_pct']:.4f} > "
+                      f"{max_wrong_of_shadow_pct}")
+    if known_failure is None:
+        for m in missed:
+            print(f"FAIL: {m}")
+        failed |= bool(missed)
+    elif missed:
+        print(f"known failure ({known_failure}), still failing as recorded: {'; '.join(missed)}")
+    else:
+        print(f"FAIL: known failure ({known_failure}) now meets its bounds: register the case "
+              f"as a bounded test instead")
         failed = True
     return failed, trace, metrics
 
@@ -459,11 +490,14 @@ def main():
     ap.add_argument("--technique", default="planar")
     ap.add_argument("--reference", default="planar", choices=["planar", "unshadowed", "all"])
     ap.add_argument("--max-wrong-pct", type=float, default=0.05)
+    ap.add_argument("--max-wrong-of-shadow-pct", type=float)
     ap.add_argument("--min-mask-agreement", type=float, default=99.9)
+    ap.add_argument("--known-failure", metavar="REASON")
     args = ap.parse_args()
     builder, fact = CASES[args.case]
     failed, _, _ = run_case(args.bin, args.out, args.case, builder(), args.light, args.technique,
-                            args.reference, args.max_wrong_pct, args.min_mask_agreement, fact)
+                            args.reference, args.max_wrong_pct, args.min_mask_agreement, fact,
+                            args.max_wrong_of_shadow_pct, args.known_failure)
     sys.exit(1 if failed else 0)
 
 

@@ -8,7 +8,10 @@ the renderer draws tessellated triangles, the reference analytic shapes.
 
   test_visibility.py --bin BUILD/bin --out DIR --technique vtk --size 512x512
       --light directional (--max-wrong-pct P | --expect-wrong-pct LO HI)
-      [--reference unshadowed]
+      [--reference unshadowed] [--beats OTHER [--by 10]]
+
+--beats OTHER: measure technique OTHER the same way too, and require its
+wrong_pct to be at least --by times ours (and above 0).
 """
 import argparse
 import json
@@ -44,21 +47,10 @@ def sphere_over_plane(light, width, height):
     }
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--bin", required=True)
-    ap.add_argument("--out", required=True)
-    ap.add_argument("--technique", required=True)
-    ap.add_argument("--size", required=True)
-    ap.add_argument("--light", default="directional", choices=sorted(LIGHTS))
-    ap.add_argument("--reference", default="shadowed", choices=["shadowed", "unshadowed"])
-    ap.add_argument("--max-wrong-pct", type=float)
-    ap.add_argument("--expect-wrong-pct", type=float, nargs=2)
-    ap.add_argument("--min-valid-agreement", type=float, default=99.9)
-    args = ap.parse_args()
-    width, height = (int(v) for v in args.size.split("x"))
-    os.makedirs(args.out, exist_ok=True)
-    name = f"{args.technique}-{args.light}-{width}x{height}"
+def measure(args, technique, width, height):
+    """Render with `technique`, compare with the exact answer; returns
+    (metrics, mask agreement in percent)."""
+    name = f"{technique}-{args.light}-{width}x{height}"
     scene = sphere_over_plane(args.light, width, height)
     scene_path = os.path.join(args.out, name + ".json")
     with open(scene_path, "w") as f:
@@ -67,7 +59,7 @@ def main():
     vis_path = os.path.join(args.out, name + "-visibility.png")
     mask_path = os.path.join(args.out, name + "-mask.png")
     run = subprocess.run(
-        [os.path.join(args.bin, "vtkshadow-render"), scene_path, "--technique", args.technique,
+        [os.path.join(args.bin, "vtkshadow-render"), scene_path, "--technique", technique,
          "--image", os.path.join(args.out, name + "-image.png"), "--visibility", vis_path,
          "--mask", mask_path, "--quiet"], capture_output=True, text=True)
     if run.returncode != 0:
@@ -103,8 +95,30 @@ def main():
     agreement = 100.0 * np.mean(mask[outside] == valid[outside])
     print(f"{name}: wrong_pct {metrics['wrong_pct']:.4f}  vis_mae {metrics['vis_mae']:.5f}  "
           f"edge_px {metrics['edge_px']:.3f}  false_shadow_pct {metrics['false_shadow_pct']:.4f}  "
-          f"false_light_pct {metrics['false_light_pct']:.4f}  compared {metrics['compared_pixels']}"
-          f"  mask agreement {agreement:.4f}%")
+          f"false_light_pct {metrics['false_light_pct']:.4f}  "
+          f"wrong_of_shadow_pct {metrics['wrong_of_shadow_pct']:.4f}  "
+          f"compared {metrics['compared_pixels']}  mask agreement {agreement:.4f}%")
+    return metrics, agreement
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bin", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--technique", required=True)
+    ap.add_argument("--size", required=True)
+    ap.add_argument("--light", default="directional", choices=sorted(LIGHTS))
+    ap.add_argument("--reference", default="shadowed", choices=["shadowed", "unshadowed"])
+    ap.add_argument("--max-wrong-pct", type=float)
+    ap.add_argument("--expect-wrong-pct", type=float, nargs=2)
+    ap.add_argument("--beats", metavar="TECHNIQUE",
+                    help="also measure TECHNIQUE; its wrong_pct must be at least --by times ours")
+    ap.add_argument("--by", type=float, default=10.0)
+    ap.add_argument("--min-valid-agreement", type=float, default=99.9)
+    args = ap.parse_args()
+    width, height = (int(v) for v in args.size.split("x"))
+    os.makedirs(args.out, exist_ok=True)
+    metrics, agreement = measure(args, args.technique, width, height)
     failed = False
     if metrics["compared_pixels"] < 0.2 * width * height:
         print(f"FAIL: only {metrics['compared_pixels']} pixels compared")
@@ -120,6 +134,17 @@ def main():
         if not lo <= metrics["wrong_pct"] <= hi:
             print(f"FAIL: wrong_pct {metrics['wrong_pct']:.4f} outside the recorded [{lo}, {hi}]")
             failed = True
+    if args.beats:
+        # A ratio, not a recorded value of the other technique: the claim is
+        # about ours. The other must show a real error (> 0), else "beats by
+        # a factor" means nothing.
+        other, _ = measure(args, args.beats, width, height)
+        ours, theirs = metrics["wrong_pct"], other["wrong_pct"]
+        ok = theirs > 0 and theirs >= args.by * ours
+        print(f"{args.technique} wrong_pct {ours:.4f} vs {args.beats} {theirs:.4f}: "
+              f"{'x%.1f' % (theirs / ours) if ours > 0 else 'ours is 0'} "
+              f"(need >= x{args.by:g}: {'ok' if ok else 'FAIL'})")
+        failed |= not ok
     sys.exit(1 if failed else 0)
 
 
