@@ -86,13 +86,15 @@ static void test_depth(void) {
             visible) == VSH_CSM_OK);
   CHECK(d.have_scene == 1);
   CHECK(d.range[0] == visible[0] && d.range[1] == visible[1]);
-  CHECK(d.max_distance == d.range[1]);
+  /* No shadow distance: no fade (shadows reach the receivers' far end). */
+  CHECK(d.max_distance == 0.0);
   CHECK_NEAR(d.fade_start, d.range[1] - 0.1 * (d.range[1] - d.range[0]), 1e-12);
-  /* A shadow distance inside the range ends it there; one before its near
-   * end keeps a sliver. */
+  /* A shadow distance inside the range ends it there, fading over the last
+   * tenth; one before its near end keeps a sliver. */
   t.max_shadow_distance = 0.5 * (visible[0] + visible[1]);
   CHECK(vsh_csm_plan_depth(&s, &t, &d) == VSH_CSM_OK);
   CHECK(d.range[1] == t.max_shadow_distance && d.max_distance == t.max_shadow_distance);
+  CHECK_NEAR(d.fade_start, d.range[1] - 0.1 * (d.range[1] - d.range[0]), 1e-12);
   t.max_shadow_distance = 0.5 * visible[0];
   CHECK(vsh_csm_plan_depth(&s, &t, &d) == VSH_CSM_OK);
   CHECK(d.range[1] == visible[0] * 1.001);

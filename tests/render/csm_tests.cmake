@@ -17,7 +17,6 @@ vtkshadow_exact_cases(csm all
   "box-tilted-plane-directional 0 0.026 1.2"  # 0.0060 / 0.1307
   "box-tilted-plane-point 0 0.02 1.0"         # 0 / 0
   "box-tilted-plane-spot 0 0.02 1.0"          # 0 / 0
-  "grazing-85 0 0.48 5.0"                     # 0.2394 / 2.4562
   "light-below-camera-below 0 0.02 1.0"       # 0 / 0 (no shadow at all)
   "caster-above-point-light 0 0.02 1.0"       # 0 / 0
   "near-far-1e5 0 0.027 1.4"                  # 0.0069 / 0.3387
@@ -35,6 +34,13 @@ vtkshadow_exact_cases(csm all
 # are high): measured wrong_pct 10.78, wrong_of_shadow_pct 100 (issue 18).
 # The test passes while csm still misses the floor bounds and fails once it
 # meets them: then move the case into the rows above.
+# grazing-85 measured 0.2394 / 2.4562 (bound 0.48 / 5.0) until the clipping
+# range came from the visible geometry (issue 11): the shadows now fade out
+# towards their far ends, 0.9073 / 9.3099. Registered as a known failure with
+# the old bounds, so it fails (and must move back to the list above) once csm
+# meets them again.
+vtkshadow_exact_case(csm all grazing-85 0 0.48 5.0
+  KNOWN_FAILURE "issue 11 regression: csm on grazing-85 with the tight clipping range (measured 0.9073 / 9.3099)")
 vtkshadow_exact_case(csm all grazing-89.9 0 0.02 1.0
   KNOWN_FAILURE "issue 18: csm loses the grazing-89.9 shadow (measured 10.78 / 100)")
 

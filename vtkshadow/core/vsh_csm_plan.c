@@ -43,10 +43,13 @@ vsh_csm_status vsh_csm_plan_depth(const vsh_csm_scene *scene, const vsh_csm_sett
   }
   if (settings->max_shadow_distance > 0.0)
     range[1] = max_d(min_d(range[1], settings->max_shadow_distance), range[0] * 1.001);
-  out->max_distance = range[1];
+  /* Shadows fade out only before a cut-off the user asked for. Without one
+   * the far end is where the receivers end, and a fade there would erase
+   * real shadows on the farthest tenth of them (found when the clipping
+   * range came to hug the visible geometry: grazing-85 lost 0.7% of its
+   * pixels' shadows). */
+  out->max_distance = settings->max_shadow_distance > 0.0 ? range[1] : 0.0;
   out->fade_start = range[1] - settings->fade_fraction * (range[1] - range[0]);
-  if (settings->max_shadow_distance <= 0.0 && settings->fade_fraction <= 0.0)
-    out->max_distance = 0.0;
   return out->have_scene ? VSH_CSM_OK : VSH_CSM_EMPTY;
 }
 

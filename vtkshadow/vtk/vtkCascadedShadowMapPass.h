@@ -136,8 +136,9 @@ public:
   vtkGetMacro(BlendBand, double);
 
   /**
-   * Shadows end at this view depth (default 0: at the visible geometry's far
-   * end), fading out over the last FadeFraction of it (default 0.1).
+   * Shadows end at this view depth, fading out over the last FadeFraction
+   * of the shadowed depth range (default 0.1). Default 0: no cut-off and no
+   * fade, shadows reach the visible receivers' far end.
    */
   vtkSetMacro(MaxShadowDistance, double);
   vtkGetMacro(MaxShadowDistance, double);
