@@ -93,7 +93,8 @@ endforeach()
 # a crash (tests/mesh; the seeds are VSH_MESH_SEEDS from tests/mesh/CMakeLists.txt).
 add_executable(test_mesh_read_fuzz mesh/test_mesh_read_fuzz.cxx)
 target_link_libraries(test_mesh_read_fuzz PRIVATE vtkshadow::vtkshadow)
-target_include_directories(test_mesh_read_fuzz PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/mesh)
+target_include_directories(test_mesh_read_fuzz PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/mesh
+  ${CMAKE_CURRENT_SOURCE_DIR})
 file(MAKE_DIRECTORY "${VTKSHADOW_TEST_OUT}/mesh-read-fuzz")
 add_test(NAME mesh.read_fuzz
   COMMAND test_mesh_read_fuzz ${VTKSHADOW_TEST_OUT}/mesh-read-fuzz ${VSH_MESH_SEEDS})

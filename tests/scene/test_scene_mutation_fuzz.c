@@ -12,60 +12,23 @@
  * Usage: test_scene_mutation_fuzz GOOD.json... (env VSH_FUZZ_ITERATIONS, default 20000)
  */
 #include "vsh_check.h"
+#include "vsh_mutate.h"
 #include "vsh_scene.h"
 
 #include <stdint.h>
 #include <stdlib.h>
 #include <time.h>
 
-static uint64_t rng_state;
-
-static uint64_t next(void) { /* splitmix64: tiny, good enough, reproducible everywhere */
-  uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-static size_t below(size_t n) { return n ? (size_t)(next() % n) : 0; }
-
-typedef struct buf {
-  char *data;
-  size_t len, cap;
-} buf;
-
-static void reserve(buf *b, size_t extra) {
-  if (b->len + extra + 1 > b->cap) {
-    b->cap = (b->len + extra + 1) * 2;
-    b->data = (char *)realloc(b->data, b->cap);
-    if (!b->data) abort();
-  }
-}
-static void insert(buf *b, size_t at, const char *s, size_t n) {
-  reserve(b, n);
-  memmove(b->data + at + n, b->data + at, b->len - at);
-  memcpy(b->data + at, s, n);
-  b->len += n;
-}
-static void erase(buf *b, size_t at, size_t n) {
-  if (at + n > b->len) n = b->len - at;
-  memmove(b->data + at, b->data + at + n, b->len - at - n);
-  b->len -= n;
-}
-
-static int is_num_char(char c) {
-  return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
-}
-
 /* Finds a token of the given class starting at a random place; returns its
  * start and length, or 0 if there is none. */
-static int find_number(const buf *b, size_t *at, size_t *n) {
-  size_t i, start = below(b->len);
+static int find_number(const mm_buf *b, size_t *at, size_t *n) {
+  size_t i, start = mm_below(b->len);
   for (i = 0; i < b->len; ++i) {
     size_t p = (start + i) % b->len;
     if (b->data[p] >= '0' && b->data[p] <= '9') {
       size_t s = p, e = p;
-      while (s > 0 && is_num_char(b->data[s - 1])) --s;
-      while (e < b->len && is_num_char(b->data[e])) ++e;
+      while (s > 0 && mm_num_char(b->data[s - 1])) --s;
+      while (e < b->len && mm_num_char(b->data[e])) ++e;
       *at = s;
       *n = e - s;
       return 1;
@@ -73,8 +36,8 @@ static int find_number(const buf *b, size_t *at, size_t *n) {
   }
   return 0;
 }
-static int find_string(const buf *b, size_t *at, size_t *n) {
-  size_t i, start = below(b->len);
+static int find_string(const mm_buf *b, size_t *at, size_t *n) {
+  size_t i, start = mm_below(b->len);
   for (i = 0; i < b->len; ++i) {
     size_t p = (start + i) % b->len, e;
     if (b->data[p] != '"') continue;
@@ -103,52 +66,52 @@ static const char *const keys[] = {
     "\"meshes/nope.ply\"", "\"/\"",   "\"meshes\"",     "\"recever\"",  "\"\\u0000\""};
 static const char punct[] = "0123456789\"[]{},:-.e \n\\";
 
-static void mutate(buf *b) {
+static void mutate(mm_buf *b) {
   size_t at, n;
-  switch (below(8)) {
+  switch (mm_below(8)) {
   case 0: /* flip a bit */
-    if (b->len) b->data[below(b->len)] ^= (char)(1u << below(8));
+    if (b->len) b->data[mm_below(b->len)] ^= (char)(1u << mm_below(8));
     break;
   case 1: /* delete a span */
     if (b->len) {
-      at = below(b->len);
-      erase(b, at, 1 + below(8));
+      at = mm_below(b->len);
+      mm_erase(b, at, 1 + mm_below(8));
     }
     break;
   case 2: { /* insert JSON punctuation or digits */
-    char c = punct[below(sizeof punct - 1)];
-    insert(b, below(b->len + 1), &c, 1);
+    char c = punct[mm_below(sizeof punct - 1)];
+    mm_insert(b, mm_below(b->len + 1), &c, 1);
     break;
   }
   case 3: /* swap a number for an odd value */
     if (find_number(b, &at, &n)) {
-      const char *v = values[below(sizeof values / sizeof values[0])];
-      erase(b, at, n);
-      insert(b, at, v, strlen(v));
+      const char *v = values[mm_below(sizeof values / sizeof values[0])];
+      mm_erase(b, at, n);
+      mm_insert(b, at, v, strlen(v));
     }
     break;
   case 4: /* swap a string (key or value) for another valid-looking one */
     if (find_string(b, &at, &n)) {
-      const char *k = keys[below(sizeof keys / sizeof keys[0])];
-      erase(b, at, n);
-      insert(b, at, k, strlen(k));
+      const char *k = keys[mm_below(sizeof keys / sizeof keys[0])];
+      mm_erase(b, at, n);
+      mm_insert(b, at, k, strlen(k));
     }
     break;
   case 5: /* duplicate a span elsewhere (duplicate keys, nested arrays) */
     if (b->len) {
       char tmp[64];
-      at = below(b->len);
-      n = 1 + below(sizeof tmp);
+      at = mm_below(b->len);
+      n = 1 + mm_below(sizeof tmp);
       if (at + n > b->len) n = b->len - at;
       memcpy(tmp, b->data + at, n);
-      insert(b, below(b->len + 1), tmp, n);
+      mm_insert(b, mm_below(b->len + 1), tmp, n);
     }
     break;
   case 6: /* truncate */
-    if (b->len) b->len = below(b->len + 1);
+    if (b->len) b->len = mm_below(b->len + 1);
     break;
   default: /* negate a number */
-    if (find_number(b, &at, &n)) insert(b, at, "-", 1);
+    if (find_number(b, &at, &n)) mm_insert(b, at, "-", 1);
     break;
   }
 }
@@ -233,12 +196,12 @@ int main(int argc, char **argv) {
     CHECK(seed != NULL);
     if (!seed) continue;
     for (it = 0; it < iterations; ++it) {
-      buf b = {NULL, 0, 0};
+      mm_buf b = {NULL, 0, 0};
       char err[VSH_SCENE_ERROR_MAX];
       vsh_scene *s = (vsh_scene *)&b; /* any non-NULL value: parse must reset it */
       int m, mutations = 1 + (int)(it % 4), rc;
-      rng_state = 0x5eed0000ull + (uint64_t)f * 1000003ull + (uint64_t)it;
-      reserve(&b, seed_len);
+      mm_state = 0x5eed0000ull + (uint64_t)f * 1000003ull + (uint64_t)it;
+      mm_reserve(&b, seed_len);
       memcpy(b.data, seed, seed_len);
       b.len = seed_len;
       for (m = 0; m < mutations; ++m) mutate(&b);
