@@ -1,11 +1,12 @@
 /* vsh_mutate.h - the byte-buffer primitives of the deterministic mutation
  * fuzz tests (scene files, mesh files): a seeded splitmix64 generator, a
- * growable buffer with insert and erase, and what counts as part of a
- * number. Same seed, same sequence, on every machine. */
+ * growable buffer with insert and erase, what counts as part of a
+ * number, and reading a seed file whole. Same seed, same sequence, on every machine. */
 #ifndef VSH_MUTATE_H
 #define VSH_MUTATE_H
 
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,6 +45,27 @@ static void mm_erase(mm_buf *b, size_t at, size_t n) {
 
 static int mm_num_char(char c) {
   return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+}
+
+/* The whole file at `path` (caller frees), its size in *len; NULL when it
+ * cannot be read. */
+static char *mm_read_file(const char *path, size_t *len) {
+  FILE *f = fopen(path, "rb");
+  char *data;
+  long size;
+  if (!f) return NULL;
+  if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+    fclose(f);
+    return NULL;
+  }
+  data = (char *)malloc((size_t)size + 1);
+  if (data && fread(data, 1, (size_t)size, f) != (size_t)size) {
+    free(data);
+    data = NULL;
+  }
+  fclose(f);
+  *len = (size_t)size;
+  return data;
 }
 
 #endif

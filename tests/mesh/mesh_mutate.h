@@ -106,23 +106,4 @@ static void mm_make(mm_buf *b, const char *seed, size_t seed_len, int file, long
   for (m = 0; m < count; ++m) mm_mutate(b);
 }
 
-static char *mm_read_file(const char *path, size_t *len) {
-  FILE *f = fopen(path, "rb");
-  char *data;
-  long size;
-  if (!f) return NULL;
-  if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
-    fclose(f);
-    return NULL;
-  }
-  data = (char *)malloc((size_t)size + 1);
-  if (data && fread(data, 1, (size_t)size, f) != (size_t)size) {
-    free(data);
-    data = NULL;
-  }
-  fclose(f);
-  *len = (size_t)size;
-  return data;
-}
-
 #endif

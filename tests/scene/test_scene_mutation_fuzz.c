@@ -116,28 +116,6 @@ static void mutate(mm_buf *b) {
   }
 }
 
-static char *read_file(const char *path, size_t *len) {
-  FILE *f = fopen(path, "rb");
-  char *data;
-  long size;
-  if (!f) return NULL;
-  fseek(f, 0, SEEK_END);
-  size = ftell(f);
-  fseek(f, 0, SEEK_SET);
-  if (size < 0) {
-    fclose(f);
-    return NULL;
-  }
-  data = (char *)malloc((size_t)size + 1);
-  if (data && fread(data, 1, (size_t)size, f) != (size_t)size) {
-    free(data);
-    data = NULL;
-  }
-  fclose(f);
-  *len = (size_t)size;
-  return data;
-}
-
 /* A validated scene must tessellate: the parser's checks and the
  * tessellator's preconditions have to agree. */
 static void check_scene(const vsh_scene *s, const char *path, long iteration) {
@@ -191,7 +169,7 @@ int main(int argc, char **argv) {
   for (f = 1; f < argc; ++f) {
     const char *path = argv[f];
     size_t seed_len = 0, path_len = strlen(path);
-    char *seed = read_file(path, &seed_len);
+    char *seed = mm_read_file(path, &seed_len);
     long ok = 0, failed = 0;
     CHECK(seed != NULL);
     if (!seed) continue;
