@@ -98,6 +98,12 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w) override;
   vtkMTimeType GetShaderStageMTime() override;
 
+  /**
+   * The renderer's viewport in the render target: its tiled size and origin
+   * when drawing to the window, the target's size (origin 0) for an FBO.
+   */
+  static void GetViewport(const vtkRenderState* s, int size[2], int origin[2]);
+
 protected:
   vtkShadowPassBase();
   ~vtkShadowPassBase() override;
@@ -115,11 +121,6 @@ protected:
   void RenderDelegate(const vtkRenderState* s);
   void RenderDelegateWithShaderHooks(const vtkRenderState* s);
 
-  /**
-   * The renderer's viewport in the render target: its tiled size and origin
-   * when drawing to the window, the target's size (origin 0) for an FBO.
-   */
-  static void GetViewport(const vtkRenderState* s, int size[2], int origin[2]);
 
   /**
    * Mark the generated shader code as changed (mappers rebuild).

@@ -1,0 +1,471 @@
+#include "vtkShadowScreenMask.h"
+
+#include "vtkActor.h"
+#include "vtkLightsPass.h"
+#include "vtkOpaquePass.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkProp.h"
+#include "vtkProperty.h"
+#include "vtkRenderPassCollection.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkSequencePass.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowLightingHook.h"
+#include "vtkShadowPassBase.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkShadowScreenLightFS.h"
+#include "vtkShadowScreenQuadFS.h"
+#include "vtkShadowScreenQuadVS.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+constexpr int LayerCount = 2;
+
+int LayerOf(int light)
+{
+  return light / 4;
+}
+}
+
+struct vtkShadowScreenMask::Internals
+{
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
+  vtkSmartPointer<vtkTextureObject> DepthStencil;
+  vtkSmartPointer<vtkTextureObject> Layers[LayerCount];
+  // The opaque scene, lights first so the mappers build the same shader
+  // variant as in the main pass.
+  vtkSmartPointer<vtkSequencePass> DepthScene;
+  vtkSmartPointer<vtkOpenGLBufferObject> Quad;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> QuadVAO;
+  vtkShaderProgram* QuadProgram = nullptr;
+  // CPU copies for UploadLight: RGBA8 per layer, and which layers changed.
+  std::vector<unsigned char> Staged[LayerCount];
+  bool Dirty[LayerCount] = { false, false };
+  bool Drawing = false;
+  int SavedViewport[4] = { 0, 0, 0, 0 };
+  int SavedScissor[4] = { 0, 0, 0, 0 };
+};
+
+//------------------------------------------------------------------------------
+vtkShadowScreenMask::vtkShadowScreenMask()
+  : Impl(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkShadowScreenMask::~vtkShadowScreenMask()
+{
+  delete this->Impl;
+}
+
+//------------------------------------------------------------------------------
+long long vtkShadowScreenMask::GetMemoryBytes() const
+{
+  if (!this->Impl->FBO)
+  {
+    return 0;
+  }
+  const long long pixels = static_cast<long long>(this->Size[0]) * this->Size[1];
+  // Depth-stencil (4 bytes) plus 4 bytes per layer in use.
+  return pixels * 4 * (1 + (this->LightCount > 4 ? 2 : 1));
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScreenMask::Allocate(vtkOpenGLRenderWindow* window)
+{
+  Internals& impl = *this->Impl;
+  if (impl.Window != window && impl.Window)
+  {
+    this->ReleaseGraphicsResources(impl.Window);
+  }
+  impl.Window = window;
+  if (!impl.FBO)
+  {
+    impl.FBO = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    impl.DepthStencil = vtkSmartPointer<vtkTextureObject>::New();
+    for (auto& layer : impl.Layers)
+    {
+      layer = vtkSmartPointer<vtkTextureObject>::New();
+    }
+  }
+  impl.FBO->SetContext(window);
+  impl.DepthStencil->SetContext(window);
+  const int w = this->Size[0], h = this->Size[1];
+  if (impl.DepthStencil->GetWidth() != static_cast<unsigned int>(w) ||
+    impl.DepthStencil->GetHeight() != static_cast<unsigned int>(h) ||
+    !impl.DepthStencil->GetHandle())
+  {
+    impl.DepthStencil->ReleaseGraphicsResources(window);
+    impl.DepthStencil->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.DepthStencil->SetMagnificationFilter(vtkTextureObject::Nearest);
+    if (!impl.DepthStencil->AllocateDepthStencil(w, h))
+    {
+      this->Error = "cannot allocate a " + std::to_string(w) + "x" + std::to_string(h) +
+        " depth-stencil texture";
+      return false;
+    }
+  }
+  for (auto& layer : impl.Layers)
+  {
+    layer->SetContext(window);
+    if (layer->GetWidth() != static_cast<unsigned int>(w) ||
+      layer->GetHeight() != static_cast<unsigned int>(h) || !layer->GetHandle())
+    {
+      layer->ReleaseGraphicsResources(window);
+      layer->SetMinificationFilter(vtkTextureObject::Nearest);
+      layer->SetMagnificationFilter(vtkTextureObject::Nearest);
+      layer->SetInternalFormat(GL_RGBA8);
+      layer->SetFormat(GL_RGBA);
+      layer->SetDataType(GL_UNSIGNED_BYTE);
+      if (!layer->Allocate2D(w, h, 4, VTK_UNSIGNED_CHAR))
+      {
+        this->Error = "cannot allocate a " + std::to_string(w) + "x" + std::to_string(h) +
+          " visibility texture";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScreenMask::RenderDepth(const vtkRenderState* s, int lightCount)
+{
+  this->Error.clear();
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window)
+  {
+    this->Error = "the screen-space mask needs an OpenGL render window";
+    return false;
+  }
+  vtkShadowPassBase::GetViewport(s, this->Size, this->Origin);
+  this->Size[0] = std::max(this->Size[0], 1);
+  this->Size[1] = std::max(this->Size[1], 1);
+  this->LightCount = std::max(0, std::min(lightCount, MaxLights));
+  if (!this->Allocate(window))
+  {
+    return false;
+  }
+  Internals& impl = *this->Impl;
+  if (!impl.DepthScene)
+  {
+    vtkNew<vtkRenderPassCollection> passes;
+    vtkNew<vtkLightsPass> lights;
+    vtkNew<vtkOpaquePass> opaque;
+    passes->AddItem(lights);
+    passes->AddItem(opaque);
+    impl.DepthScene = vtkSmartPointer<vtkSequencePass>::New();
+    impl.DepthScene->SetPasses(passes);
+  }
+  vtkOpenGLState* state = window->GetState();
+  this->BeginDraw(0);
+  if (!this->Error.empty())
+  {
+    this->EndDraw();
+    return false;
+  }
+  {
+    vtkOpenGLState::ScopedglColorMask colorMask(state);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglStencilMask(0xff);
+    glClearStencil(0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    impl.DepthScene->Render(s);
+  }
+  // Every light lit until a technique says otherwise.
+  for (int layer = 0; layer < LayerCount; ++layer)
+  {
+    impl.FBO->AddColorAttachment(0, impl.Layers[layer]);
+    impl.FBO->ActivateDrawBuffers(1);
+    vtkOpenGLState::ScopedglColorMask colorMask(state);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    const GLfloat one[4] = { 1, 1, 1, 1 };
+    glClearBufferfv(GL_COLOR, 0, one);
+  }
+  this->EndDraw();
+  return this->Error.empty();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::BeginDraw(int light)
+{
+  Internals& impl = *this->Impl;
+  vtkOpenGLState* state = impl.Window->GetState();
+  state->PushFramebufferBindings();
+  impl.FBO->Bind();
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+    impl.DepthStencil->GetHandle(), 0);
+  const int layer = std::max(0, std::min(LayerOf(light), LayerCount - 1));
+  impl.FBO->AddColorAttachment(0, impl.Layers[layer]);
+  impl.FBO->ActivateDrawBuffers(1);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+  {
+    this->Error = "the screen-space mask's framebuffer is incomplete";
+  }
+  state->vtkglGetIntegerv(GL_VIEWPORT, impl.SavedViewport);
+  state->vtkglGetIntegerv(GL_SCISSOR_BOX, impl.SavedScissor);
+  state->vtkglViewport(0, 0, this->Size[0], this->Size[1]);
+  state->vtkglScissor(0, 0, this->Size[0], this->Size[1]);
+  impl.Drawing = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::EndDraw()
+{
+  Internals& impl = *this->Impl;
+  if (!impl.Drawing)
+  {
+    return;
+  }
+  vtkOpenGLState* state = impl.Window->GetState();
+  state->vtkglScissor(
+    impl.SavedScissor[0], impl.SavedScissor[1], impl.SavedScissor[2], impl.SavedScissor[3]);
+  state->vtkglViewport(
+    impl.SavedViewport[0], impl.SavedViewport[1], impl.SavedViewport[2], impl.SavedViewport[3]);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+  impl.FBO->RemoveColorAttachment(0);
+  state->PopFramebufferBindings();
+  impl.Drawing = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::DrawQuad(vtkOpenGLRenderWindow* window)
+{
+  Internals& impl = *this->Impl;
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
+  if (!program)
+  {
+    this->Error = "the screen-space mask's quad shader did not compile";
+    return;
+  }
+  if (!impl.Quad)
+  {
+    const std::vector<float> corners = { -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, -1, 1,
+      0 };
+    impl.Quad = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    impl.Quad->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+    impl.Quad->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
+    impl.QuadVAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+    impl.QuadProgram = nullptr;
+  }
+  if (impl.QuadProgram != program)
+  {
+    impl.QuadVAO->ShaderProgramChanged();
+    impl.QuadVAO->Bind();
+    impl.QuadVAO->AddAttributeArray(
+      program, impl.Quad, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    impl.QuadProgram = program;
+  }
+  const float blocked[4] = { 0, 0, 0, 0 };
+  program->SetUniform4f("value", blocked);
+  impl.QuadVAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+  impl.QuadVAO->Release();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::ResolveStencil(int light)
+{
+  Internals& impl = *this->Impl;
+  if (!impl.Drawing || light < 0 || light >= this->LightCount)
+  {
+    return;
+  }
+  vtkOpenGLState* state = impl.Window->GetState();
+  vtkOpenGLState::ScopedglColorMask colorMask(state);
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
+  const int channel = light % 4;
+  state->vtkglColorMask(channel == 0, channel == 1, channel == 2, channel == 3);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_NOTEQUAL, 0, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  this->DrawQuad(impl.Window);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::ReadDepth(std::vector<float>& depth)
+{
+  Internals& impl = *this->Impl;
+  depth.assign(static_cast<size_t>(this->Size[0]) * this->Size[1], 1.0f);
+  if (!impl.FBO)
+  {
+    return;
+  }
+  this->BeginDraw(0);
+  glReadBuffer(GL_NONE);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, this->Size[0], this->Size[1], GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  this->EndDraw();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::UploadLight(int light, const float* visibility)
+{
+  if (light < 0 || light >= this->LightCount || !visibility)
+  {
+    return;
+  }
+  Internals& impl = *this->Impl;
+  const int layer = LayerOf(light);
+  const size_t pixels = static_cast<size_t>(this->Size[0]) * this->Size[1];
+  std::vector<unsigned char>& staged = impl.Staged[layer];
+  if (staged.size() != 4 * pixels)
+  {
+    staged.assign(4 * pixels, 255);
+  }
+  const int channel = light % 4;
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    const float v = std::min(1.0f, std::max(0.0f, visibility[p]));
+    staged[4 * p + channel] = static_cast<unsigned char>(std::lround(v * 255.0f));
+  }
+  impl.Dirty[layer] = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::FinishUploads()
+{
+  Internals& impl = *this->Impl;
+  for (int layer = 0; layer < LayerCount; ++layer)
+  {
+    if (!impl.Dirty[layer] || !impl.Layers[layer])
+    {
+      continue;
+    }
+    impl.Layers[layer]->Bind();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, this->Size[0], this->Size[1], GL_RGBA,
+      GL_UNSIGNED_BYTE, impl.Staged[layer].data());
+    impl.Dirty[layer] = false;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScreenMask::PreReplaceShaderValues(std::string& fragmentShader, vtkProp* prop)
+{
+  // Translucent surfaces are not in the depth pass: the mask describes
+  // whatever opaque surface lies behind them, so they keep VTK's shader.
+  if (prop && prop->HasTranslucentPolygonalGeometry() && !prop->HasOpaqueGeometry())
+  {
+    return true;
+  }
+  if (fragmentShader.find("//VTK::Light::Dec") != std::string::npos)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
+      std::string("//VTK::Light::Dec\n") + vtkShadowScreenLightFS, false);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScreenMask::PostReplaceShaderValues(std::string& fragmentShader)
+{
+  if (fragmentShader.find("vshScreenPrepare") == std::string::npos)
+  {
+    return true;
+  }
+  if (vtkshadow::InjectLightFactors(
+        fragmentShader, "vshScreenLit(%d)", "vshScreenPrepare();", MaxLights))
+  {
+    ++this->HookedShaders;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::SetShaderParameters(vtkShaderProgram* program)
+{
+  Internals& impl = *this->Impl;
+  if (!program->IsUniformUsed("vshScreenMask0") || !impl.FBO)
+  {
+    return;
+  }
+  program->SetUniformi("vshScreenMask0", impl.Layers[0]->GetTextureUnit());
+  program->SetUniformi("vshScreenMask1",
+    impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
+  program->SetUniform2i("vshScreenMaskOrigin", this->Origin);
+  program->SetUniformi("vshScreenMaskLights", this->LightCount);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::Activate()
+{
+  Internals& impl = *this->Impl;
+  if (!impl.FBO)
+  {
+    return;
+  }
+  impl.Layers[0]->Activate();
+  if (this->LightCount > 4)
+  {
+    impl.Layers[1]->Activate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::Deactivate()
+{
+  Internals& impl = *this->Impl;
+  if (!impl.FBO)
+  {
+    return;
+  }
+  impl.Layers[0]->Deactivate();
+  if (this->LightCount > 4)
+  {
+    impl.Layers[1]->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::ReleaseGraphicsResources(vtkWindow* w)
+{
+  Internals& impl = *this->Impl;
+  if (impl.FBO)
+  {
+    impl.FBO->ReleaseGraphicsResources(w);
+    impl.DepthStencil->ReleaseGraphicsResources(w);
+    for (auto& layer : impl.Layers)
+    {
+      layer->ReleaseGraphicsResources(w);
+    }
+  }
+  if (impl.DepthScene)
+  {
+    impl.DepthScene->ReleaseGraphicsResources(w);
+  }
+  if (impl.Quad)
+  {
+    impl.Quad->ReleaseGraphicsResources();
+    impl.QuadVAO->ReleaseGraphicsResources();
+    impl.QuadProgram = nullptr;
+  }
+  impl.Window = nullptr;
+}

@@ -1,0 +1,125 @@
+// vtkShadowScreenMask.h - per-light visibility of the visible surface, one
+// value per pixel, that the mappers' lighting reads once per fragment.
+//
+// Screen-space techniques (shadow volumes, ray-traced shadows, and the
+// per-pixel resolve of shadow maps) work in three stages each frame:
+//
+//   1. RenderDepth(): the opaque scene's depth (with an 8-bit stencil) at
+//      the viewport's size, into the mask's own framebuffer. The mappers
+//      draw it with their usual vertex shaders, so the main pass produces the
+//      same depths afterwards.
+//   2. The technique writes each light's visibility of the surface at every
+//      pixel: on the GPU with the framebuffer bound (BeginDraw/EndDraw, then
+//      e.g. ResolveStencil() after stencil counting), or on the CPU from
+//      ReadDepth() and UploadLight().
+//   3. The scene is rendered as usual with the owning pass's shader hooks
+//      forwarding to PreReplaceShaderValues/PostReplaceShaderValues/
+//      SetShaderParameters here: light I's diffuse and specular terms are
+//      multiplied by channel I of the mask at the fragment's pixel.
+//
+// Only opaque actors read the mask (translucent surfaces are not in the
+// depth pass, so the mask says nothing about them); actors with lighting off
+// have no light terms to multiply. Lights past MaxLights stay unshadowed and
+// GetLightCount() says how many are covered.
+#ifndef vtkShadowScreenMask_h
+#define vtkShadowScreenMask_h
+
+#include "vtkSmartPointer.h"
+#include "vtkType.h"
+
+#include <string>
+#include <vector>
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkProp;
+class vtkRenderPass;
+class vtkRenderState;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkShadowScreenMask
+{
+public:
+  // Four lights per RGBA8 texture, two textures.
+  static constexpr int MaxLights = 8;
+
+  vtkShadowScreenMask();
+  ~vtkShadowScreenMask();
+  vtkShadowScreenMask(const vtkShadowScreenMask&) = delete;
+  void operator=(const vtkShadowScreenMask&) = delete;
+
+  /**
+   * Size the framebuffer to the renderer's viewport for `lightCount` lights
+   * (mapper numbering; clamped to MaxLights) and render the opaque scene's
+   * depth into it (colour writes off). Every channel then reads 1 (lit) and
+   * the stencil 0. Returns false (with a reason in GetError()) when the
+   * window is not an OpenGL window or the framebuffer is incomplete.
+   */
+  bool RenderDepth(const vtkRenderState* s, int lightCount);
+
+  /**
+   * Bind the mask's framebuffer (depth, stencil and the light's texture as
+   * colour attachment 0) with the viewport set to the whole mask; EndDraw
+   * restores the previous bindings. Between them a technique draws with
+   * depth test on and depth writes off, for instance stencil volumes.
+   */
+  void BeginDraw(int light);
+  void EndDraw();
+
+  /**
+   * Inside BeginDraw(light): set the light's channel to 0 (blocked) where
+   * the stencil is not 0, 1 elsewhere, and leave the stencil as it was.
+   */
+  void ResolveStencil(int light);
+
+  /**
+   * Copy the depth of the last RenderDepth() to `depth` (window depth in
+   * [0,1], row 0 at the bottom, width * height values).
+   */
+  void ReadDepth(std::vector<float>& depth);
+
+  /**
+   * Set a light's channel from the CPU: `visibility` holds width * height
+   * values in [0,1], row 0 at the bottom. The upload happens once per
+   * texture in FinishUploads(), so four lights cost one transfer.
+   */
+  void UploadLight(int light, const float* visibility);
+  void FinishUploads();
+
+  // Shader hooks, forwarded from the owning pass.
+  bool PreReplaceShaderValues(std::string& fragmentShader, vtkProp* prop);
+  bool PostReplaceShaderValues(std::string& fragmentShader);
+  void SetShaderParameters(vtkShaderProgram* program);
+
+  /**
+   * Textures bound to texture units for the main pass (around the delegate).
+   */
+  void Activate();
+  void Deactivate();
+
+  const int* GetSize() const { return this->Size; }
+  const int* GetOrigin() const { return this->Origin; }
+  int GetLightCount() const { return this->LightCount; }
+  long long GetMemoryBytes() const;
+  const std::string& GetError() const { return this->Error; }
+  // Number of mapper shaders the hook went into (since the last Reset).
+  vtkIdType GetNumberOfHookedShaders() const { return this->HookedShaders; }
+
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+private:
+  bool Allocate(vtkOpenGLRenderWindow* window);
+  void DrawQuad(vtkOpenGLRenderWindow* window);
+
+  struct Internals;
+  Internals* Impl;
+  int Size[2] = { 0, 0 };
+  int Origin[2] = { 0, 0 };
+  int LightCount = 0;
+  vtkIdType HookedShaders = 0;
+  std::string Error;
+};
+
+#endif
