@@ -93,23 +93,75 @@ void WorldReflection(const double planeRel[4], const double eye[3], double out[1
   vsh_mat4_multiply(t, tmp, out);
 }
 
-// Whether the bound draw framebuffer has stencil bits.
-bool TargetHasStencil()
+// The stencil of the bound draw framebuffer. VTK 9.1's own framebuffers
+// hold a depth-stencil texture attached as depth only: then its stencil is
+// attached for the mirrors' mask (Attached = the object to detach after).
+struct TargetStencil
 {
-  GLint bound = 0;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
-  GLint type = GL_NONE;
-  glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER,
-    bound == 0 ? GL_STENCIL : GL_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
-  if (type == GL_NONE)
+  bool Usable = false;
+  GLint Attached = 0;
+  GLint AttachedType = GL_NONE;
+
+  void Find()
   {
-    return false;
+    GLint bound = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    const GLenum stencil = bound == 0 ? GL_STENCIL : GL_STENCIL_ATTACHMENT;
+    GLint type = GL_NONE, bits = 0;
+    glGetFramebufferAttachmentParameteriv(
+      GL_DRAW_FRAMEBUFFER, stencil, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type != GL_NONE)
+    {
+      glGetFramebufferAttachmentParameteriv(
+        GL_DRAW_FRAMEBUFFER, stencil, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &bits);
+      this->Usable = bits > 0;
+      return;
+    }
+    if (bound == 0)
+    {
+      return;
+    }
+    GLint name = 0;
+    glGetFramebufferAttachmentParameteriv(
+      GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    glGetFramebufferAttachmentParameteriv(
+      GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &bits);
+    glGetFramebufferAttachmentParameteriv(
+      GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+    if (bits <= 0 || name == 0 || (type != GL_TEXTURE && type != GL_RENDERBUFFER))
+    {
+      return;
+    }
+    this->Attach(type, name);
+    this->Usable = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    this->Attached = name;
+    this->AttachedType = type;
+    if (!this->Usable)
+    {
+      this->Release();
+    }
   }
-  GLint bits = 0;
-  glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER,
-    bound == 0 ? GL_STENCIL : GL_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &bits);
-  return bits > 0;
-}
+
+  static void Attach(GLint type, GLint name)
+  {
+    if (type == GL_TEXTURE)
+      glFramebufferTexture2D(
+        GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D, static_cast<GLuint>(name), 0);
+    else
+      glFramebufferRenderbuffer(
+        GL_DRAW_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, static_cast<GLuint>(name));
+  }
+
+  // Leave VTK's framebuffer as it was.
+  void Release()
+  {
+    if (this->Attached)
+    {
+      Attach(this->AttachedType, 0);
+      this->Attached = 0;
+    }
+  }
+};
 
 // The plane of a mirror actor relative to the eye, facing its normals;
 // false when it is not flat or has no points.
@@ -231,18 +283,21 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
   {
     return;
   }
-  impl.Stencil = TargetHasStencil();
-  if (!impl.Stencil)
-  {
-    return;
-  }
   for (const Mirror& mirror : impl.Mirrors)
   {
-    if (this->RenderMirrored(s, mirror))
+    if (!this->RenderMirrored(s, mirror))
+    {
+      continue;
+    }
+    TargetStencil stencil;
+    stencil.Find();
+    impl.Stencil = stencil.Usable;
+    if (stencil.Usable)
     {
       this->Composite(s, mirror);
       ++impl.Drawn;
     }
+    stencil.Release();
   }
 }
 
