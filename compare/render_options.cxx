@@ -47,7 +47,8 @@ const char* RenderUsage()
          "       vtkshadow-render --list-techniques\n"
          "         [--visibility V.png] [--mask M.png] [--light K] [--stats S.json]\n"
          "         [--frames N] [--map-resolution R] [--size WxH] [--set KEY=VALUE]...\n"
-         "         [--max-error E | --max-error Npx] [--quiet]\n"
+         "         [--max-error E | --max-error Npx] [--reflections auto|on|off|no-shadows]\n"
+         "         [--matte] [--image-light K] [--quiet]\n"
          "\n"
          "Render SCENE (a vtkshadow scene file) with shadow technique T.\n"
          "  --technique T        one of the known techniques (required)\n"
@@ -64,6 +65,12 @@ const char* RenderUsage()
          "  --max-error E        auto only: the error target, wrong_pct E (percent of\n"
          "                       the pixels, default 0.5), or Npx: an on-screen\n"
          "                       shadow-map texel size of N pixels\n"
+         "  --reflections R      planar mirrors (\"mirror\": R on planes): auto (default, on\n"
+         "                       when the scene has mirrors), on, off, or no-shadows\n"
+         "                       (reflections drawn without the technique's shadows)\n"
+         "  --matte              colour image shaded as the ray tracers do (diffuse 1,\n"
+         "                       no ambient, no specular)\n"
+         "  --image-light K      colour image with light K only (default every light)\n"
          "  --quiet              no progress output\n"
          "  --list-techniques    print each technique with its description and exit\n"
          "Exit status: 0 success, 1 rendering failure, 2 bad input.\n";
@@ -176,6 +183,30 @@ int ParseValueOption(const std::string& arg, const char* v, RenderOptions& optio
   {
     return ParseSize(v, options, error);
   }
+  if (arg == "--reflections")
+  {
+    const std::string r = v;
+    if (r != "auto" && r != "on" && r != "off" && r != "no-shadows")
+    {
+      error = "--reflections: expected auto, on, off or no-shadows (got \"" + r + "\")";
+      return 2;
+    }
+    options.Reflections = r;
+    return 0;
+  }
+  if (arg == "--image-light")
+  {
+    char* end = nullptr;
+    errno = 0;
+    const long k = std::strtol(v, &end, 10);
+    if (!*v || *end || errno || k < 0 || k > 1000000)
+    {
+      error = std::string("--image-light: expected a light index >= 0 (got \"") + v + "\")";
+      return 2;
+    }
+    options.ImageLight = static_cast<int>(k);
+    return 0;
+  }
   if (arg == "--set")
   {
     return ParseSetting(v, options, error);
@@ -191,7 +222,8 @@ int ParseValueOption(const std::string& arg, const char* v, RenderOptions& optio
 bool TakesValue(const std::string& arg)
 {
   static const char* const withValue[] = { "--technique", "--image", "--visibility", "--mask",
-    "--stats", "--light", "--frames", "--map-resolution", "--size", "--set", "--max-error" };
+    "--stats", "--light", "--frames", "--map-resolution", "--size", "--set", "--max-error",
+    "--reflections", "--image-light" };
   for (const char* name : withValue)
   {
     if (arg == name)
@@ -281,6 +313,10 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::stri
     else if (arg == "--quiet")
     {
       options.Quiet = true;
+    }
+    else if (arg == "--matte")
+    {
+      options.Matte = true;
     }
     else if (!arg.empty() && arg[0] == '-')
     {

@@ -22,6 +22,13 @@ struct RenderOptions
   int Width = 0; // 0: the scene's size
   int Height = 0;
   bool Quiet = false;
+  // Planar mirrors: "auto" (on when the scene has mirrors), "on", "off",
+  // "no-shadows" (mirrors on, the reflection drawn without shadows).
+  std::string Reflections = "auto";
+  // Colour image as the ray tracers shade it (diffuse 1, no ambient or
+  // specular), and with only light ImageLight (-1: every light).
+  bool Matte = false;
+  int ImageLight = -1;
   // --set KEY=VALUE technique settings, in order.
   std::vector<std::pair<std::string, double>> Settings;
 };

@@ -5,6 +5,7 @@
 
 #include "vtkNew.h"
 #include "vtkOpenGLRenderer.h"
+#include "vtkPlanarReflectionPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkShadowDisplay.h"
 #include "vtkShadowPNG.h"
@@ -78,6 +79,12 @@ int Prepare(Run& run)
       "--light: light " + std::to_string(options.Light) + " out of range (" + options.Scene +
         " has " + std::to_string(run.Scene->GetNumberOfLights()) + " lights)");
   }
+  if (options.ImageLight >= run.Scene->GetNumberOfLights())
+  {
+    return Fail(2,
+      "--image-light: light " + std::to_string(options.ImageLight) + " out of range (" +
+        options.Scene + " has " + std::to_string(run.Scene->GetNumberOfLights()) + " lights)");
+  }
   // Debian's VTK is built for X only and aborts without a display: open the
   // process's one connection now (every window below shares it, so Xvfb
   // never sees its last client leave mid-run) and say what to run if none.
@@ -128,10 +135,24 @@ std::string RenderColourAndStats(const Run& run, vtkWindowToImageFilter* grab)
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
   window->SetSize(run.Width, run.Height);
+  const bool mirrors = options.Reflections == "on" || options.Reflections == "no-shadows" ||
+    (options.Reflections == "auto" && run.Scene->HasMirrors());
+  window->SetStencilCapable(mirrors ? 1 : 0); // the mirrors' mask
   vtkNew<vtkOpenGLRenderer> renderer;
   window->AddRenderer(renderer);
-  run.Scene->Populate(renderer);
+  if (options.Matte)
+    run.Scene->PopulateMatte(renderer, options.ImageLight);
+  else
+    run.Scene->Populate(renderer, false, options.ImageLight);
   run.Technique->Install(renderer);
+  if (mirrors)
+  {
+    // The technique's pass becomes the delegate of the mirrors' pass.
+    vtkNew<vtkPlanarReflectionPass> reflections;
+    reflections->SetDelegatePass(renderer->GetPass());
+    reflections->SetReflectShadows(options.Reflections != "no-shadows");
+    renderer->SetPass(reflections);
+  }
   window->Render();
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();

@@ -81,6 +81,22 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/harness/harness_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/depth_range_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/display_soak_tests.cmake)
 
+# Planar mirrors (vtkPlanarReflectionPass): mirrored silhouettes against ray
+# casting in the test, and colour against POV-Ray per light type
+# (tests/render/test_reflection.py).
+foreach(case basic grazing wide offset-1e6 below two-mirrors)
+  add_test(NAME render.reflection_${case}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/reflection --case ${case})
+  set_tests_properties(render.reflection_${case} PROPERTIES LABELS "render")
+endforeach()
+foreach(case pov-directional pov-point pov-spot)
+  add_test(NAME harness.reflection_${case}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/reflection --case ${case})
+  set_tests_properties(harness.reflection_${case} PROPERTIES LABELS "harness")
+endforeach()
+
 # Every test of this directory may use the shared X server.
 get_property(vtkshadow_vtk_tests DIRECTORY PROPERTY TESTS)
 foreach(test IN LISTS vtkshadow_vtk_tests)
@@ -102,3 +118,4 @@ add_test(NAME mesh.read_fuzz
 # VSH_FUZZ_ITERATIONS=5000 by hand for a longer run.
 set_tests_properties(mesh.read_fuzz PROPERTIES LABELS "unit" TIMEOUT 900
   ENVIRONMENT VSH_FUZZ_ITERATIONS=1000)
+

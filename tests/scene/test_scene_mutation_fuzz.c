@@ -63,7 +63,8 @@ static const char *const keys[] = {
     "\"type\"",     "\"directional\"", "\"point\"",      "\"spot\"",     "\"cone_angle\"",
     "\"position\"", "\"focal_point\"", "\"view_up\"",    "\"radius\"",   "\"resolution\"",
     "\"size\"",     "\"lights\"",     "\"objects\"",    "\"camera\"",   "\"meshes/tri.obj\"",
-    "\"meshes/nope.ply\"", "\"/\"",   "\"meshes\"",     "\"recever\"",  "\"\\u0000\""};
+    "\"meshes/nope.ply\"", "\"/\"",   "\"meshes\"",     "\"recever\"",  "\"\\u0000\"",
+    "\"mirror\""};
 static const char punct[] = "0123456789\"[]{},:-.e \n\\";
 
 static void mutate(mm_buf *b) {
@@ -131,6 +132,9 @@ static void check_scene(const vsh_scene *s, const char *path, long iteration) {
     const vsh_object *o = &s->objects[i];
     vsh_mesh m;
     int rc;
+    /* A mirror is a plane with a reflectance the renderers can blend by. */
+    if (o->has_mirror) CHECK(o->kind == VSH_OBJECT_PLANE && o->mirror >= 0 && o->mirror <= 1);
+    if (!o->has_mirror) CHECK(o->mirror == 0);
     if (o->kind == VSH_OBJECT_MESH) {
       CHECK(o->mesh_path && o->mesh_resolved_path);
       continue;

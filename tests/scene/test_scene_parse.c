@@ -129,6 +129,27 @@ static void test_meshes(void) {
   vsh_scene_free(s);
 }
 
+/* "mirror": R on planes; absent means no mirror (R = 0), 0 and 1 are valid. */
+static void test_mirror(void) {
+  char err[VSH_SCENE_ERROR_MAX];
+  vsh_scene *s = NULL;
+  int rc = vsh_scene_load(data("good/mirror.json"), &s, err, sizeof err);
+  CHECK(rc == 0);
+  if (rc) {
+    fprintf(stderr, "unexpected error: %s\n", err);
+    return;
+  }
+  CHECK(s->object_count == 4);
+  if (s->object_count == 4) {
+    CHECK(s->objects[0].has_mirror == 0 && s->objects[0].mirror == 0);
+    CHECK(s->objects[1].has_mirror == 1 && s->objects[1].mirror == 0.75);
+    CHECK(s->objects[1].receiver == 1);
+    CHECK(s->objects[2].has_mirror == 1 && s->objects[2].mirror == 0);
+    CHECK(s->objects[3].has_mirror == 1 && s->objects[3].mirror == 1);
+  }
+  vsh_scene_free(s);
+}
+
 /* One file per rule: the message must start with the file name and contain
  * the field path, the problem and the offending value. */
 typedef struct bad_case {
@@ -182,6 +203,13 @@ static const bad_case bad_cases[] = {
     {"receiver_on_sphere", ": objects[0].receiver: only flat objects (plane) can be receivers",
      "(got true)"},
     {"receiver_not_bool", ": objects[0].receiver: expected true or false (got 1)", NULL},
+    {"mirror_range", ": objects[0].mirror: must be in [0, 1] (got 1.5)", NULL},
+    {"mirror_negative", ": objects[0].mirror: must be in [0, 1] (got -0.25)", NULL},
+    {"mirror_string", ": objects[0].mirror: expected a number (got \"0.5\")", NULL},
+    {"mirror_bool", ": objects[0].mirror: expected a number (got true)", NULL},
+    {"mirror_infinite", ": objects[0].mirror: must be a finite number (got inf)", NULL},
+    {"mirror_on_sphere", ": objects[0].mirror: only a plane can be a mirror, and a sphere is not",
+     "(got 0.5)"},
     {"casts_string", ": objects[0].casts: expected true or false (got \"yes\")", NULL},
     {"name_number", ": objects[0].name: expected a string (got 5)", NULL},
     {"color_range", ": objects[0].color[0]: must be in [0, 1] (got 1.5)", NULL},
@@ -354,6 +382,7 @@ int main(int argc, char **argv) {
   test_full();
   test_defaults();
   test_meshes();
+  test_mirror();
   test_bad_files();
   test_load_errors();
   test_memory();

@@ -63,6 +63,8 @@ typedef struct vsh_object {
   int has_transform;
   int receiver;         /* planar shadows fall on it (flat objects only) */
   int casts;            /* default 1 */
+  int has_mirror;       /* plane only: "mirror" given, the plane reflects */
+  double mirror;        /* reflectance in [0, 1]; 0 when absent */
   double color[3];      /* default 1 1 1 */
   char *name;           /* optional; NULL when absent */
 } vsh_object;

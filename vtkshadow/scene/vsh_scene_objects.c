@@ -22,7 +22,7 @@
 
 static const char *const object_keys[] = {"sphere",   "plane", "box",   "cylinder",  "mesh",
                                           "receiver", "casts", "color", "name", "transform",
-                                          NULL};
+                                          "mirror",   NULL};
 static const char *const shape_keys[] = {"sphere", "plane", "box", "cylinder", "mesh", NULL};
 static const char *const sphere_keys[] = {"center", "radius", "resolution", NULL};
 static const char *const plane_keys[] = {"origin", "point1", "point2", NULL};
@@ -215,6 +215,22 @@ static int parse_mesh(const vsh_ctx *ctx, const cJSON *item, const char *f,
   return 0;
 }
 
+/* "mirror": R, the reflectance of a planar mirror. Only a plane has one
+ * reflection plane, and R outside [0, 1] would create or destroy light. */
+static int parse_mirror(const vsh_ctx *ctx, const cJSON *item, const char *field,
+                        vsh_object *o) {
+  char got[VSH_GOT_MAX];
+  if (vsh__number(ctx, item, field, &o->mirror)) return -1;
+  vsh__fmt_json(item, got, sizeof got);
+  if (!(o->mirror >= 0.0 && o->mirror <= 1.0))
+    return vsh__fail(ctx, field, got, "must be in [0, 1]");
+  if (o->kind != VSH_OBJECT_PLANE)
+    return vsh__fail(ctx, field, got, "only a plane can be a mirror, and a %s is not a plane",
+                     vsh_object_kind_name(o->kind));
+  o->has_mirror = 1;
+  return 0;
+}
+
 int vsh__parse_object(const vsh_ctx *ctx, const cJSON *obj, size_t index,
                       const char *scene_path, vsh_object *o) {
   char f[VSH_FIELD_MAX], sub[VSH_FIELD_MAX], got[VSH_GOT_MAX];
@@ -273,6 +289,10 @@ int vsh__parse_object(const vsh_ctx *ctx, const cJSON *obj, size_t index,
                        "only flat objects (plane) can be receivers, and a %s is not flat",
                        vsh_object_kind_name(o->kind));
     }
+  }
+  if ((item = cJSON_GetObjectItemCaseSensitive(obj, "mirror"))) {
+    vsh__field(sub, f, "mirror");
+    if (parse_mirror(ctx, item, sub, o)) return -1;
   }
   o->casts = 1;
   if ((item = cJSON_GetObjectItemCaseSensitive(obj, "casts"))) {

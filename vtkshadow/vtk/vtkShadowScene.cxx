@@ -1,4 +1,6 @@
 #include "vtkShadowScene.h"
+
+#include "vtkPlanarReflectionPass.h"
 #include "vtkShadowClippingRange.h"
 #include "vtkShadowDisplay.h"
 
@@ -606,6 +608,40 @@ void vtkShadowScene::ConfigureCamera(vtkCamera* camera) const
 //------------------------------------------------------------------------------
 bool vtkShadowScene::Populate(vtkRenderer* renderer, bool lambertian, int onlyLight) const
 {
+  return this->PopulateWith(renderer, lambertian ? 1 : 0, onlyLight);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScene::PopulateMatte(vtkRenderer* renderer, int onlyLight) const
+{
+  return this->PopulateWith(renderer, 2, onlyLight);
+}
+
+//------------------------------------------------------------------------------
+double vtkShadowScene::GetObjectMirror(int object) const
+{
+  return object >= 0 && object < this->GetNumberOfObjects() &&
+      this->Impl->Scene->objects[object].has_mirror
+    ? this->Impl->Scene->objects[object].mirror
+    : 0.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScene::HasMirrors() const
+{
+  for (int i = 0; i < this->GetNumberOfObjects(); ++i)
+    if (this->GetObjectMirror(i) > 0)
+      return true;
+  return false;
+}
+
+//------------------------------------------------------------------------------
+// mode 0: the scene's colours with a little ambient and specular; 1: white
+// Lambertian; 2: matte, the scene's colours, diffuse 1, no ambient or
+// specular (what the ray tracers render).
+bool vtkShadowScene::PopulateWith(vtkRenderer* renderer, int mode, int onlyLight) const
+{
+  const bool lambertian = mode == 1;
   if (!renderer || !this->Impl->Scene)
   {
     vtkErrorMacro("Populate: no renderer or no scene loaded");
@@ -644,15 +680,19 @@ bool vtkShadowScene::Populate(vtkRenderer* renderer, bool lambertian, int onlyLi
       double color[3];
       this->GetObjectColor(i, color);
       p->SetColor(color);
-      p->SetAmbient(0.05);
-      p->SetDiffuse(0.9);
-      p->SetSpecular(0.1);
+      p->SetAmbient(mode == 2 ? 0.0 : 0.05);
+      p->SetDiffuse(mode == 2 ? 1.0 : 0.9);
+      p->SetSpecular(mode == 2 ? 0.0 : 0.1);
       p->SetSpecularPower(30.0);
     }
     // Tell shadow techniques which objects receive and which do not cast.
     vtkNew<vtkInformation> keys;
     keys->Set(vtkShadowPassBase::RECEIVER(), this->GetObjectIsReceiver(i) ? 1 : 0);
     keys->Set(vtkShadowPassBase::NO_CAST(), this->GetObjectCasts(i) ? 0 : 1);
+    if (this->GetObjectMirror(i) > 0)
+    {
+      keys->Set(vtkPlanarReflectionPass::MIRROR(), this->GetObjectMirror(i));
+    }
     actor->SetPropertyKeys(keys);
     renderer->AddActor(actor);
   }

@@ -105,6 +105,19 @@ public:
   bool Populate(vtkRenderer* renderer, bool lambertian = false, int onlyLight = -1) const;
 
   /**
+   * Populate with the scene's colours as the ray tracers render them:
+   * diffuse 1, no ambient, no specular (the reflection comparisons).
+   */
+  bool PopulateMatte(vtkRenderer* renderer, int onlyLight = -1) const;
+
+  /**
+   * Reflectance R of object `object` ("mirror": R), 0 when it is no mirror.
+   * Populate() marks mirrors with vtkPlanarReflectionPass::MIRROR().
+   */
+  double GetObjectMirror(int object) const;
+  bool HasMirrors() const;
+
+  /**
    * Set the renderer's camera clipping range from the geometry it sees:
    * near just in front of the nearest visible point of any visible prop,
    * far just behind the farthest. Use it instead of
@@ -115,6 +128,8 @@ public:
   static void ResetCameraClippingRange(vtkRenderer* renderer);
 
 protected:
+  bool PopulateWith(vtkRenderer* renderer, int mode, int onlyLight) const;
+
   vtkShadowScene();
   ~vtkShadowScene() override;
 

@@ -1,0 +1,217 @@
+"""Planar mirrors (vtkPlanarReflectionPass through vtkshadow-render) against
+answers computed here, not from our own output:
+
+- geometry: a sphere over a black mirror floor (R 1) under an ambient-lit
+  sphere; each pixel's expected state (reflection of the sphere or not) by
+  ray casting the camera ray, reflecting it at the floor and intersecting the
+  sphere analytically (one bounce, as the pass draws). Wrong pixels outside a
+  one-pixel band along the expected boundary must stay <= 0.05 %.
+- colour: the same kind of scene in POV-Ray (finish reflection R, diffuse
+  1 - R, no fresnel), per light type; reflection_mae (mean absolute linear
+  colour error over the mirror's visible pixels) <= 0.02.
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+ap = argparse.ArgumentParser()
+ap.add_argument("--bin", required=True)
+ap.add_argument("--out", required=True)
+ap.add_argument("--case", required=True)
+ap.add_argument("--povray", default="povray")
+args = ap.parse_args()
+os.makedirs(args.out, exist_ok=True)
+
+
+def read_rgb(path):
+    r = vtkPNGReader()
+    r.SetFileName(path)
+    r.Update()
+    w, h, _ = r.GetOutput().GetDimensions()
+    a = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars()).reshape(h, w, -1)[::-1]
+    return a[:, :, :3].astype(np.float64) / 255.0
+
+
+def rays(cam, w, h, offset):
+    e = np.array(cam["position"], float) - offset
+    f = np.array(cam["focal_point"], float) - offset - e
+    f /= np.linalg.norm(f)
+    r = np.cross(f, np.array(cam["view_up"], float))
+    r /= np.linalg.norm(r)
+    u = np.cross(r, f)
+    t = math.tan(math.radians(cam["view_angle"]) / 2)
+    i = (np.arange(w) + 0.5) / w * 2 - 1
+    j = 1 - (np.arange(h) + 0.5) / h * 2
+    d = f[None, None, :] + i[None, :, None] * t * (w / h) * r + j[:, None, None] * t * u
+    return e, d / np.linalg.norm(d, axis=2, keepdims=True)
+
+
+def hit_sphere(o, d, c, rad):
+    oc = o - c
+    b = np.sum(d * oc, axis=-1)
+    disc = b * b - (np.sum(oc * oc, axis=-1) - rad * rad)
+    t = -b - np.sqrt(np.maximum(disc, 0))
+    return np.where((disc > 0) & (t > 1e-9), t, np.inf)
+
+
+def hit_rect(o, d, origin, p1, p2):
+    e1, e2 = p1 - origin, p2 - origin
+    n = np.cross(e1, e2)
+    n /= np.linalg.norm(n)
+    dn = d @ n
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = ((origin - o) @ n) / dn
+        x = o + t[..., None] * d - origin
+        s = (x @ e1) / (e1 @ e1)
+        v = (x @ e2) / (e2 @ e2)
+    ok = (t > 1e-9) & (s >= 0) & (s <= 1) & (v >= 0) & (v <= 1)
+    # Both faces occlude; only the one the normal points out of reflects.
+    return np.where(ok, t, np.inf), n, dn < 0
+
+
+def render(scene, tag, technique, extra=()):
+    path = os.path.join(args.out, tag + ".json")
+    with open(path, "w") as fh:
+        json.dump(scene, fh)
+    image = os.path.join(args.out, tag + ".png")
+    cmd = [os.path.join(args.bin, "vtkshadow-render"), path, "--technique", technique,
+           "--image", image, "--reflections", "on", "--quiet"] + list(extra)
+    subprocess.run(cmd, check=True, timeout=600)
+    return image
+
+
+def band(mask):
+    """Pixels within one pixel (8-neighbourhood) of a pixel of the other state."""
+    b = np.zeros_like(mask)
+    for dy in (-1, 0, 1):
+        for dx in (-1, 0, 1):
+            sh = np.roll(np.roll(mask, dy, 0), dx, 1)
+            b |= sh != mask
+    b[0, :] = b[-1, :] = b[:, 0] = b[:, -1] = True
+    return b
+
+
+def geometric(tag, cam, size, mirrors, offset=0.0, extra=()):
+    """Expected pixels: reflection of the sphere in a mirror, one bounce."""
+    off = np.array([offset, offset, offset])
+    c, rad = np.array([0.0, 0.0, 1.2]), 0.8
+    objects = [{"sphere": {"center": list(c + off), "radius": rad, "resolution": 256}}]
+    for m in mirrors:
+        objects.append({"plane": {k: list(np.array(v, float) + off) for k, v in m.items()},
+                        "mirror": 1.0, "color": [0, 0, 0]})
+    scene = {"size": list(size), "camera": {k: (list(np.array(v, float) + off)
+                                                if isinstance(v, list) and k != "view_up" else v)
+                                            for k, v in cam.items()},
+             "lights": [{"type": "directional", "direction": [0, 0, -1], "intensity": 0}],
+             "objects": objects}
+    image = read_rgb(render(scene, tag, "none", extra))
+    w, h = size
+    e, d = rays(cam, w, h, 0.0)
+    o = np.broadcast_to(e, d.shape)
+    t_best = hit_sphere(o, d, c, rad)
+    expected = np.zeros((h, w), bool)
+    for m in mirrors:
+        t, n, facing = hit_rect(o, d, *(np.array(m[k], float) for k in ("origin", "point1", "point2")))
+        front = t < t_best
+        p = o + np.where(np.isfinite(t), t, 0)[..., None] * d
+        rd = d - 2 * (d @ n)[..., None] * n
+        refl = np.isfinite(hit_sphere(p, rd, c, rad))
+        expected = np.where(front, refl & facing, expected)
+        t_best = np.minimum(t_best, t)
+    expected |= np.isfinite(hit_sphere(o, d, c, rad)) & (hit_sphere(o, d, c, rad) <= t_best)
+    got = image.max(axis=2) > 6 / 255  # ambient 0.05 lights every sphere pixel
+    considered = ~band(expected)
+    wrong = (got != expected) & considered
+    pct = 100.0 * wrong.sum() / considered.sum()
+    reflected = (got & ~band(expected)).sum()
+    print(f"{tag}: {wrong.sum()} wrong of {considered.sum()} ({pct:.4f} %), "
+          f"{int(expected.sum())} expected sphere/reflection pixels, {int(reflected)} drawn")
+    # The camera below the mirror: nothing but the background may show.
+    return pct <= 0.05 and (expected.sum() > 0 or got.sum() == 0)
+
+
+FLOOR = {"origin": [-5, -5, 0], "point1": [5, -5, 0], "point2": [-5, 5, 0]}
+WALL = {"origin": [-5, 3, 0], "point1": [5, 3, 0], "point2": [-5, 3, 4]}  # normal -y
+CAM = {"position": [0, -8, 4], "focal_point": [0, 0, 0.5], "view_up": [0, 0, 1], "view_angle": 30}
+
+
+def pov_compare(light):
+    """reflection_mae of VTK (planar shadows, matte) against POV-Ray."""
+    R, col = 0.5, [0.9, 0.3, 0.2]
+    w, h = 320, 240
+    scene = {"size": [w, h], "camera": CAM, "lights": [light],
+             "objects": [{"sphere": {"center": [0, 0, 1.2], "radius": 0.8, "resolution": 256},
+                          "color": col},
+                         {"plane": FLOOR, "mirror": R, "receiver": True, "color": [0.7, 0.7, 0.7]}]}
+    vtk = read_rgb(render(scene, "pov-" + light["type"], "planar", ["--matte"]))
+    a = w / h
+    t = math.tan(math.radians(30) / 2)
+    angle = math.degrees(2 * math.atan(a * t))
+    v = lambda p: "<%r, %r, %r>" % tuple(p)
+    if light["type"] == "directional":
+        dd = np.array(light["direction"], float)
+        L = "light_source { %s color rgb 1 parallel point_at %s }" % (v(-1e4 * dd), v([0, 0, 0]))
+    elif light["type"] == "point":
+        L = "light_source { %s color rgb 1 }" % v(light["position"])
+    else:
+        c = light["cone_angle"]
+        L = ("light_source { %s color rgb 1 spotlight point_at %s radius %r falloff %r "
+             "tightness 0 }" % (v(light["position"]), v(light["focal_point"]), c, c))
+    fin = "ambient 0 diffuse %r specular 0 phong 0 reflection { %r }"
+    pov = "\n".join([
+        "#version 3.7;", "global_settings { assumed_gamma 1.0 ambient_light 0 max_trace_level 2 }",
+        "background { rgb 0 }",
+        "camera { perspective location %s sky <0,0,1> up y right -x*%r angle %r look_at %s }"
+        % (v(CAM["position"]), a, angle, v(CAM["focal_point"])),
+        L,
+        "sphere { <0,0,1.2>, 0.8 pigment { rgb %s } finish { ambient 0 diffuse 1 specular 0 "
+        "phong 0 } }" % v(col),
+        "mesh { triangle { <-5,-5,0>, <5,-5,0>, <5,5,0> } triangle { <-5,-5,0>, <5,5,0>, "
+        "<-5,5,0> } pigment { rgb 0.7 } finish { %s } }" % (fin % (1 - R, R)),
+    ])
+    pov_path = os.path.join(args.out, "pov-%s.pov" % light["type"])
+    with open(pov_path, "w") as fh:
+        fh.write(pov)
+    out_png = "pov-%s-ref.png" % light["type"]
+    subprocess.run([args.povray, "-D", "-P", "-V", "-A", "+FN8", "File_Gamma=1.0",
+                    "Display_Gamma=1.0", "+W%d" % w, "+H%d" % h, "+WT2",
+                    "+I" + os.path.basename(pov_path), "+O" + out_png],
+                   cwd=args.out, check=True, timeout=600, capture_output=True)
+    ref = read_rgb(os.path.join(args.out, out_png))
+    # The mirror's visible pixels, by ray casting (not from either image).
+    e, d = rays(CAM, w, h, 0.0)
+    o = np.broadcast_to(e, d.shape)
+    tf, _, _ = hit_rect(o, d, *(np.array(FLOOR[k], float) for k in ("origin", "point1", "point2")))
+    mask = np.isfinite(tf) & (tf < hit_sphere(o, d, np.array([0, 0, 1.2]), 0.8))
+    mae = float(np.abs(np.clip(vtk, 0, 1) - np.clip(ref, 0, 1)).mean(axis=2)[mask].mean())
+    refl = ref[mask].max() > 0
+    print(f"pov-{light['type']}: reflection_mae {mae:.4f} over {int(mask.sum())} mirror pixels")
+    return mae <= 0.02 and refl and mask.sum() > 1000
+
+
+cases = {
+    "basic": lambda: geometric("geo-basic", CAM, (320, 240), [FLOOR]),
+    "grazing": lambda: geometric("geo-grazing", {"position": [0, -30, 0.9], "focal_point": [0, 0, 0.9],
+                                                  "view_up": [0, 0, 1], "view_angle": 20},
+                                 (400, 200), [FLOOR]),
+    "wide": lambda: geometric("geo-wide", CAM, (480, 160), [FLOOR]),
+    "offset-1e6": lambda: geometric("geo-offset", CAM, (320, 240), [FLOOR], offset=1e6),
+    "below": lambda: geometric("geo-below", {"position": [0, -8, -3], "focal_point": [0, 0, 0.5],
+                                              "view_up": [0, 0, 1], "view_angle": 30},
+                               (320, 240), [FLOOR]),
+    "two-mirrors": lambda: geometric("geo-two", CAM, (320, 240), [FLOOR, WALL]),
+    "pov-directional": lambda: pov_compare({"type": "directional", "direction": [-3, -2, -6]}),
+    "pov-point": lambda: pov_compare({"type": "point", "position": [3, -2, 6]}),
+    "pov-spot": lambda: pov_compare({"type": "spot", "position": [3, -2, 6],
+                                     "focal_point": [0, 0, 0], "cone_angle": 40}),
+}
+ok = cases[args.case]()
+print("PASS" if ok else "FAIL", args.case)
+sys.exit(0 if ok else 1)
