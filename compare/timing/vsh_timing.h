@@ -8,13 +8,16 @@
  * entry is then compared with the reference entry (`none`) of the same
  * round.
  *
- * Schedule: a Williams design. The rows of a balanced Latin square are
- * followed by the same rows reversed, which gives a cycle of 2n rounds for n
- * entries. Over a whole cycle every entry runs in every position twice, and
- * every entry directly follows every other entry twice, so neither position
- * nor predecessor favours one entry. A run shorter than a cycle takes rounds
- * spread evenly over it. With an even number of rounds each forward row is
- * paired with its reverse, so every entry's mean position is the middle.
+ * Schedule: a Williams design, the rows of a balanced Latin square. For an
+ * even number n of entries the square's n rows are the cycle (row k + n/2
+ * is row k reversed); for odd n its rows are followed by the same rows
+ * reversed, a cycle of 2n rounds. Over a whole cycle every entry runs in
+ * every position equally often (once, or twice for odd n), and every entry
+ * directly follows every other entry equally often, so neither position nor
+ * predecessor favours one entry. A run shorter than a cycle takes rows
+ * spread evenly over it; with an even number of rounds, round r and round
+ * r + rounds/2 run a row and its reverse, so every entry's mean position is
+ * the middle.
  *
  * Statistics: the median of each block (entry, round) is the round's
  * figure, which ignores single slow frames such as the first frame after a
@@ -39,17 +42,19 @@ extern "C" {
 #define VSH_TIMING_MAX_ROUNDS 1000
 #define VSH_TIMING_MAX_FRAMES 100000
 
-/* Rounds in one full cycle of the schedule for n entries: 2n (n >= 1), 0
- * for n out of range. */
+/* Rounds in one full cycle of the schedule for n entries: n for even n, 2n
+ * for odd n, 0 for n out of range. */
 int vsh_timing_cycle_length(int n);
 
-/* Row `row` of the cycle (0 <= row < 2n): order[p] = the entry run at
- * position p. Rows 0..n-1 are the Williams square, rows n..2n-1 the same
- * rows reversed. Returns 0, or -1 for arguments out of range. */
+/* Row `row` of the cycle (0 <= row < cycle length): order[p] = the entry
+ * run at position p. Rows 0..n-1 are the Williams square (row k: entry
+ * (f[p] + k) mod n at position p, f = 0, 1, n-1, 2, n-2, ...); for odd n,
+ * rows n..2n-1 are rows 0..n-1 reversed. Returns 0, or -1 for arguments
+ * out of range. */
 int vsh_timing_cycle_row(int n, int row, int* order);
 
 /* The order of round `round` (0-based) of a run of `rounds` rounds: cycle
- * row floor(round * 2n / rounds). A short run takes rows spread evenly over
+ * row floor(round * cycle length / rounds). A short run takes rows spread evenly over
  * the cycle; a run of k whole cycles takes every row k times. For an even
  * number of rounds, rounds r and r + rounds/2 take a row and its reverse.
  * Returns 0, or -1 for arguments out of range. */
@@ -57,7 +62,7 @@ int vsh_timing_round_order(int n, int rounds, int round, int* order);
 
 /* How balanced a run of `rounds` rounds is for n entries:
  *   2  every entry in every position equally often and after every other
- *      entry equally often (rounds is a multiple of 2n);
+ *      entry equally often (rounds is a multiple of the cycle length);
  *   1  every entry's mean position is the middle (an even number of rounds);
  *   0  neither (an odd number of rounds that is not a whole cycle);
  *  -1  arguments out of range. */

@@ -4,7 +4,11 @@
 
 int vsh_timing_cycle_length(int n)
 {
-  return n >= 1 && n <= VSH_TIMING_MAX_ENTRIES ? 2 * n : 0;
+  if (n < 1 || n > VSH_TIMING_MAX_ENTRIES)
+  {
+    return 0;
+  }
+  return n % 2 ? 2 * n : n;
 }
 
 /* Position j of the Williams square's first row: 0, 1, n-1, 2, n-2, ...
@@ -22,10 +26,12 @@ static int williams_first(int n, int j)
 
 int vsh_timing_cycle_row(int n, int row, int* order)
 {
-  if (!order || n < 1 || n > VSH_TIMING_MAX_ENTRIES || row < 0 || row >= 2 * n)
+  if (!order || row < 0 || row >= vsh_timing_cycle_length(n))
   {
     return -1;
   }
+  /* Even n: the square itself holds the reverses (row k + n/2 is row k
+   * reversed), so it is the whole cycle. Odd n: the reversed rows follow. */
   const int reversed = row >= n;
   const int shift = reversed ? row - n : row;
   for (int j = 0; j < n; ++j)
@@ -43,7 +49,7 @@ int vsh_timing_round_order(int n, int rounds, int round, int* order)
   {
     return -1;
   }
-  const long long cycle = 2LL * n;
+  const long long cycle = vsh_timing_cycle_length(n);
   const int row = (int)((round * cycle) / rounds);
   return vsh_timing_cycle_row(n, row, order);
 }
@@ -54,7 +60,7 @@ int vsh_timing_balance(int n, int rounds)
   {
     return -1;
   }
-  if (rounds % (2 * n) == 0)
+  if (rounds % vsh_timing_cycle_length(n) == 0)
   {
     return 2;
   }

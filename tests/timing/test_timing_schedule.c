@@ -55,8 +55,9 @@ static int count_run(int n, int rounds, int* position, int* follows, long* sum_p
   return 1;
 }
 
-/* Whole cycles (k = 1, 2): each entry k*2 times per position, each ordered
- * pair of distinct entries k*2 times as neighbours. */
+/* Whole cycles (k = 1, 2) of c = n (even n) or 2n (odd n) rounds: each
+ * entry k*c/n times per position, each ordered pair of distinct entries
+ * k*c/n times as neighbours. */
 static void test_whole_cycles(void)
 {
   for (int n = 1; n <= 24; ++n)
@@ -67,7 +68,8 @@ static void test_whole_cycles(void)
     for (int k = 1; k <= 2; ++k)
     {
       const int rounds = k * vsh_timing_cycle_length(n);
-      CHECK(rounds == k * 2 * n);
+      const int per = rounds / n;
+      CHECK(rounds == k * (n % 2 ? 2 * n : n));
       CHECK(vsh_timing_balance(n, rounds) == 2);
       CHECK(count_run(n, rounds, position, follows, sum));
       int positions_ok = 1, follows_ok = 1;
@@ -75,8 +77,8 @@ static void test_whole_cycles(void)
       {
         for (int b = 0; b < n; ++b)
         {
-          positions_ok &= position[a * n + b] == 2 * k;
-          follows_ok &= follows[a * n + b] == (a == b ? 0 : 2 * k);
+          positions_ok &= position[a * n + b] == per;
+          follows_ok &= follows[a * n + b] == (a == b ? 0 : per);
         }
       }
       CHECK(positions_ok);
@@ -102,11 +104,12 @@ static void test_even_rounds(void)
     int* position = calloc((size_t)(n * n), sizeof *position);
     int* follows = calloc((size_t)(n * n), sizeof *follows);
     long sum[VSH_TIMING_MAX_ENTRIES];
+    const int cycle = vsh_timing_cycle_length(n);
     for (int rounds = 1; rounds <= 3 * 2 * n; ++rounds)
     {
       const int balance = vsh_timing_balance(n, rounds);
       CHECK(count_run(n, rounds, position, follows, sum));
-      CHECK(balance == (rounds % (2 * n) == 0 ? 2 : rounds % 2 == 0 ? 1 : 0));
+      CHECK(balance == (rounds % cycle == 0 ? 2 : rounds % 2 == 0 ? 1 : 0));
       if (balance >= 1)
       {
         int middle = 1;
@@ -129,7 +132,8 @@ static void test_even_rounds(void)
 
 /* The issue's default: 4 rounds of 3 entries (technique, none, none#2)
  * starts with the Williams row 0, 1, 2 and has its reverse two rounds
- * later. */
+ * later; 4 rounds of 4 entries are the whole square, four distinct orders
+ * (row 2 is row 0 reversed). */
 static void test_known_rows(void)
 {
   int order[4];
@@ -144,6 +148,20 @@ static void test_known_rows(void)
   CHECK(vsh_timing_round_order(3, 4, 2, order) == 0);
   CHECK(order[0] == 2 && order[1] == 1 && order[2] == 0);
   CHECK(vsh_timing_round_order(1, 3, 2, order) == 0 && order[0] == 0);
+  int rows[4][4];
+  for (int r = 0; r < 4; ++r)
+  {
+    CHECK(vsh_timing_round_order(4, 4, r, rows[r]) == 0);
+  }
+  for (int a = 0; a < 4; ++a)
+  {
+    for (int b = a + 1; b < 4; ++b)
+    {
+      CHECK(memcmp(rows[a], rows[b], sizeof rows[a]) != 0);
+    }
+  }
+  CHECK(rows[2][0] == rows[0][3] && rows[2][1] == rows[0][2] && rows[2][3] == rows[0][0]);
+  CHECK(vsh_timing_cycle_length(4) == 4 && vsh_timing_cycle_length(3) == 6);
 }
 
 static void test_bad_arguments(void)
@@ -153,6 +171,7 @@ static void test_bad_arguments(void)
   CHECK(vsh_timing_cycle_length(VSH_TIMING_MAX_ENTRIES + 1) == 0);
   CHECK(vsh_timing_cycle_row(3, -1, order) == -1);
   CHECK(vsh_timing_cycle_row(3, 6, order) == -1);
+  CHECK(vsh_timing_cycle_row(4, 4, order) == -1);
   CHECK(vsh_timing_cycle_row(3, 0, NULL) == -1);
   CHECK(vsh_timing_round_order(3, 0, 0, order) == -1);
   CHECK(vsh_timing_round_order(3, 4, 4, order) == -1);
