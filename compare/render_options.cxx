@@ -171,7 +171,7 @@ struct IntegerOption
 };
 const IntegerOption IntegerOptions[] = {
   { "--light", &RenderOptions::Light, 0, 1000000, false },
-  { "--frames", &RenderOptions::Frames, 1, 100000, true },
+  { "--frames", &RenderOptions::Frames, 1, 100000, false }, // accepted alone, as before
   { "--rounds", &RenderOptions::Rounds, 1, 1000, true },
   { "--warmup", &RenderOptions::Warmup, 0, 10000, true },
   { "--map-resolution", &RenderOptions::MapResolution, 16, 16384, false },
