@@ -664,7 +664,7 @@ def main():
         for f in os.listdir(os.path.join(a.out, key)) if os.path.isdir(os.path.join(a.out, key)) else []:
             if f.startswith("plot_") and f.endswith(".dat"):
                 os.remove(os.path.join(a.out, key, f))
-        png = plot(key, rows, front, a.out)
+        png = None if a.timing_only else plot(key, rows, front, a.out)  # no errors to plot
         results.append((key, size, tsize, rows, front, png))
         allrows += rows
         log("%s: done; %s" % (key, auto_check(rows)))

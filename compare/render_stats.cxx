@@ -1,5 +1,6 @@
 #include "render_stats.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -145,7 +146,7 @@ std::string StatsJson(const StatsHeader& header, const TimingRun& run)
 std::string TimingSummary(const StatsHeader& header, const TimingRun& run)
 {
   std::ostringstream out;
-  char line[512];
+  char line[1024];
   std::snprintf(line, sizeof line,
     "timing: %d rounds x %d frames per technique after %d warm-up frames each, %dx%d, "
     "order rotated per round (%s)\n",
@@ -154,13 +155,18 @@ std::string TimingSummary(const StatsHeader& header, const TimingRun& run)
       : run.Balance == 1 ? "mirrored"
                          : "unbalanced");
   out << line;
-  std::snprintf(line, sizeof line, "  %-32s %10s %21s %8s %17s\n", "technique", "median ms",
+  int width = 9; // "technique"; labels of --time-also can be long
+  for (const auto& entry : run.Entries)
+  {
+    width = std::max(width, static_cast<int>(std::min<size_t>(entry.Label.size(), 200)));
+  }
+  std::snprintf(line, sizeof line, "  %-*s %10s %21s %8s %17s\n", width, "technique", "median ms",
     "rounds min-max ms", "x none", "rounds min-max");
   out << line;
   for (const auto& entry : run.Entries)
   {
     const vsh_timing_stats& s = entry.Stats;
-    std::snprintf(line, sizeof line, "  %-32s %10.2f %10.2f-%-10.2f %8.3f %8.3f-%-8.3f\n",
+    std::snprintf(line, sizeof line, "  %-*s %10.2f %10.2f-%-10.2f %8.3f %8.3f-%-8.3f\n", width,
       entry.Label.c_str(), s.median, s.min, s.max, s.ratio, s.ratio_min, s.ratio_max);
     out << line;
   }
