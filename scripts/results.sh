@@ -9,7 +9,8 @@
 # own size (800x600), with none timed twice as the noise floor
 # (docs/performance.md, "How frames are timed"); errors are measured at half
 # size against POV-Ray.
-# About 40 minutes on 2 cores (less with the reference cache); progress goes to stderr. Run from anywhere,
+# About an hour on 2 otherwise idle cores (the timing runs every configuration at
+# 800x600; much longer on a loaded machine); progress goes to stderr. Run from anywhere,
 # after the README's main command (`sh scripts/main.sh`: it installs
 # POV-Ray, Blender and gnuplot, which this needs, and builds).
 # OUT (default out/results) keeps the raw runs: bench.csv, plots, stats; it
