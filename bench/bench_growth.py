@@ -1,17 +1,21 @@
 """How each technique's frame time grows with triangle count and with pixel count.
 
   tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py --out DIR
-                  [--frames 30] [--rounds 2]
+                  [--frames 15] [--rounds 4] [--warmup 5] [--noise-tolerance 0.03]
 
 Scenes (written to DIR, in the vtkshadow scene format): a sphere over a floor
 lit by one directional light, the sphere tessellated to about 10k, 100k and
 1M triangles, at 640x480; and the 100k scene at 320x240, 640x480 and
 1280x960. Each scene is rendered with every technique of the registry
 (vtkShadowTechnique.GetKnownTechniques(): none, vtk (map 2048), planar, csm,
-auto, ...) by vtkshadow-render --stats (the same camera orbit for every technique;
-frames interleaved per round, the order rotated each round). For each row:
-the median ms per frame, and the median over rounds of its ratio to none of
-the same round (the figure to compare: the machine is shared and noisy).
+auto, ...) in one vtkshadow-render --stats process per scene: every
+technique in the same window, interleaved in blocks (--warmup frames each,
+then --rounds rounds of one block of --frames frames per technique, the order
+changed every round), the same camera orbit for all. For each cell: the
+median over rounds of the block medians, and the median over rounds of its
+ratio to none of the same round (the figure to compare: the machine is
+shared and noisy). none is timed twice; none#2 / none is the noise floor of
+the row, and a row outside 1 +- --noise-tolerance is marked too noisy.
 
 Writes DIR/growth.json and DIR/growth.md (a Markdown section). Progress
 lines go to stderr.
@@ -25,7 +29,7 @@ import sys
 import vtkshadow
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtkshadow_bench import log, run_render  # noqa: E402
+from vtkshadow_bench import log, run_timing  # noqa: E402
 
 # Every registered technique, in registry order ("none" first: the ratios
 # are against it).
@@ -76,47 +80,54 @@ def resolution_for(out, target):
 
 
 def measure(cases, a):
-    """cases: [(label, path, size)] -> {label: {technique: (ms, ratio)}}"""
+    """cases: [(label, path, size)] -> {label: {technique: (ms, ratio, min ms, max ms)},
+    with "none#2" (the noise floor) and "too_noisy"}."""
     results = {}
     for label, path, size in cases:
-        times = {t: [] for t in TECHNIQUES}
-        ratios = {t: [] for t in TECHNIQUES}
-        for rnd in range(a.rounds):
-            k = rnd % len(TECHNIQUES)
-            order = TECHNIQUES[k:] + TECHNIQUES[:k]
-            this_round = {}
-            for t in order:
-                d = os.path.join(a.out, "runs", label.replace(" ", "_"), t)
-                st = run_render(path, ["--technique", t], size, 0, a.frames, d, want_images=False)
-                if st is None:
-                    sys.exit(f"bench_growth: {label} {t}: vtkshadow-render failed (see {d})")
-                this_round[t] = st["shadowed_ms"]["median"]
-                times[t].append(this_round[t])
-                log(f"growth {label}: round {rnd + 1}/{a.rounds} {t}: {this_round[t]:.1f} ms")
-            # Paired: each technique against none of the same round.
-            for t in TECHNIQUES:
-                ratios[t].append(this_round[t] / this_round["none"])
-        results[label] = {t: (statistics.median(times[t]), statistics.median(ratios[t]))
-                          for t in TECHNIQUES}
+        d = os.path.join(a.out, "runs", label.replace(" ", "_").replace(",", ""))
+        st = run_timing(path, TECHNIQUES, size, d, (a.frames, a.rounds, a.warmup,
+                                                    a.noise_tolerance))
+        if st is None:
+            sys.exit(f"bench_growth: {label}: vtkshadow-render failed (see {d})")
+        entries = {e["label"]: e for e in st["timing"]["entries"]}
+        results[label] = {t: (entries[t]["ms"]["median"], entries[t]["ratio_to_none"]["median"],
+                              entries[t]["ms"]["min"], entries[t]["ms"]["max"])
+                          for t in TECHNIQUES + ["none#2"]}
+        results[label]["too_noisy"] = st["noise_floor"]["too_noisy"]
+        log(f"growth {label}: " + ", ".join(f"{t} {results[label][t][0]:.1f} ms "
+                                            f"({results[label][t][1]:.2f})"
+                                            for t in TECHNIQUES + ["none#2"]))
     return results
 
 
 def table(title, results, labels):
-    lines = [f"| {title} | " + " | ".join(f"{t} ms (x none)" for t in TECHNIQUES) + " |",
-             "|---|" + "---:|" * len(TECHNIQUES)]
+    lines = [f"| {title} | " + " | ".join(f"{t} ms (x none)" for t in TECHNIQUES) +
+             " | noise floor none#2 / none |",
+             "|---|" + "---:|" * (len(TECHNIQUES) + 1)]
     for label in labels:
         r = results[label]
         lines.append(f"| {label} | " + " | ".join(
-            f"{r[t][0]:.1f} ({r[t][1]:.2f})" for t in TECHNIQUES) + " |")
+            f"{r[t][0]:.1f} ({r[t][1]:.2f})" for t in TECHNIQUES) +
+            f" | {r['none#2'][1]:.3f}{' TOO NOISY' if r['too_noisy'] else ''} |")
     return lines
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--out", required=True)
-    ap.add_argument("--frames", type=int, default=30)
-    ap.add_argument("--rounds", type=int, default=2)
+    ap.add_argument("--frames", type=int, default=15, help="timed frames per block")
+    ap.add_argument("--rounds", type=int, default=4)
+    ap.add_argument("--warmup", type=int, default=5, help="untimed frames per technique first")
+    ap.add_argument("--noise-tolerance", type=float, default=0.03)
     a = ap.parse_args()
+    for name, value, ok, want in (
+            ("--frames", a.frames, 1 <= a.frames <= 100000, "an integer in [1, 100000]"),
+            ("--rounds", a.rounds, 1 <= a.rounds <= 1000, "an integer in [1, 1000]"),
+            ("--warmup", a.warmup, 0 <= a.warmup <= 10000, "an integer in [0, 10000]"),
+            ("--noise-tolerance", a.noise_tolerance, 0 < a.noise_tolerance < 1,
+             "a number in (0, 1)")):
+        if not ok:
+            ap.error(f"{name}: expected {want} (got {value!r})")
     os.makedirs(a.out, exist_ok=True)
     tri_cases, size_cases = [], []
     res_100k = None
@@ -134,13 +145,19 @@ def main():
     with open(os.path.join(a.out, "growth.json"), "w") as f:
         json.dump(results, f, indent=1)
     cmd = (f"tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py --out {a.out} "
-           f"--frames {a.frames} --rounds {a.rounds}")
+           f"--frames {a.frames} --rounds {a.rounds} --warmup {a.warmup} "
+           f"--noise-tolerance {a.noise_tolerance}")
+    noisy = sum(1 for r in results.values() if r["too_noisy"])
     lines = ["## How cost grows with triangles and pixels", "",
              f"Produced by `{cmd}` (also run by `sh scripts/results.sh`). A sphere over a floor, "
-             f"one directional light, camera orbit of vtkshadow-render; {a.rounds} interleaved "
-             f"rounds of {a.frames} frames (techniques interleaved, order rotated). Each cell: "
-             "median ms per frame, and in brackets the median over rounds of (technique / none "
-             "of the same round).", ""]
+             "one directional light, camera orbit of vtkshadow-render. Each row is one "
+             "vtkshadow-render process timing every technique in one window, interleaved: "
+             f"{a.warmup} warm-up frames each, then {a.rounds} rounds of one {a.frames}-frame "
+             "block per technique, the order changed every round. Each cell: median over rounds "
+             "of the block medians in ms, and in brackets the median over rounds of (technique / "
+             "none of the same round). The last column is none timed again against none: the "
+             f"row's noise floor, TOO NOISY outside 1.00 +- {a.noise_tolerance:.2f}"
+             f" ({noisy} of {len(results)} rows)." , ""]
     lines += table("triangles, 640x480", results, [c[0] for c in tri_cases]) + [""]
     lines += table(f"pixels, {res_100k[1]:,} triangles", results, [c[0] for c in size_cases])
     lines.append("")

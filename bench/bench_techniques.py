@@ -3,22 +3,23 @@ vtkshadow-render --stats (same camera orbit for all), written as a section of
 docs/performance.md.
 
   tests/gl-run.sh build/bin/vtkshadow-python bench/bench_techniques.py \
-      [--frames 20] [--rounds 3] [--size 800x600] SCENE...
+      [--frames 15] [--rounds 4] [--warmup 5] [--size 800x600] SCENE...
 
-Timings on a shared machine drift: techniques are interleaved per round and
-each row also gives the median over rounds of (technique / none) of the same
-round.
+Timings on a shared machine drift: per scene one vtkshadow-render process
+times every technique in one window, interleaved in blocks with the order
+changed every round, and each row gives the median over rounds of
+(technique / none) of the same round; none#2 / none is the noise floor.
 """
 import argparse
-import json
 import os
-import statistics
-import subprocess
 import sys
 import tempfile
 import time
 
 import vtkshadow
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtkshadow_bench import run_timing  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Every registered technique, in registry order ("none" first: the ratios
@@ -27,66 +28,69 @@ TECHNIQUES = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()
 BEGIN, END = "<!-- bench_techniques begin -->", "<!-- bench_techniques end -->"
 
 
-def run(scene, technique, frames, size, out):
-    stats = os.path.join(out, "stats.json")
-    cmd = [os.path.join(REPO, "build", "bin", "vtkshadow-render"), scene, "--technique", technique,
-           "--image", os.path.join(out, "image.png"), "--stats", stats, "--frames", str(frames),
-           "--size", size, "--quiet"]
-    done = subprocess.run(cmd, capture_output=True, text=True)
-    if done.returncode != 0:
-        sys.exit(f"{' '.join(cmd)} failed ({done.returncode}): {done.stderr.strip()}")
-    with open(stats) as f:
-        return json.load(f)
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scenes", nargs="+")
-    ap.add_argument("--frames", type=int, default=20)
-    ap.add_argument("--rounds", type=int, default=3)
+    ap.add_argument("--frames", type=int, default=15)
+    ap.add_argument("--rounds", type=int, default=4)
+    ap.add_argument("--warmup", type=int, default=5)
     ap.add_argument("--size", default="800x600")
     ap.add_argument("--output", default=os.path.join(REPO, "docs", "performance.md"))
     args = ap.parse_args()
-    rows = []
+    try:
+        size = tuple(int(v) for v in args.size.split("x"))
+        assert len(size) == 2 and min(size) >= 1
+    except (ValueError, AssertionError):
+        ap.error(f"--size: expected WxH (got {args.size!r})")
+    if not (1 <= args.frames and 1 <= args.rounds and 0 <= args.warmup):
+        ap.error(f"--frames {args.frames} / --rounds {args.rounds} / --warmup {args.warmup}: "
+                 "expected frames >= 1, rounds >= 1, warmup >= 0")
+    rows, floors = [], []
     with tempfile.TemporaryDirectory() as out:
         for scene in args.scenes:
-            times = {t: [] for t in TECHNIQUES}
-            ratios = {t: [] for t in TECHNIQUES}
-            details = {}
-            for r in range(args.rounds):
-                order = TECHNIQUES[r % len(TECHNIQUES):] + TECHNIQUES[:r % len(TECHNIQUES)]
-                this_round = {}
-                for t in order:
-                    s = run(scene, t, args.frames, args.size, out)
-                    this_round[t] = s["shadowed_ms"]["median"]
-                    times[t].append(this_round[t])
-                    details[t] = s
-                    print(f"[{os.path.basename(scene)}] round {r + 1}/{args.rounds} {t}: "
-                          f"{this_round[t]:.1f} ms", file=sys.stderr)
-                for t in TECHNIQUES:
-                    ratios[t].append(this_round[t] / this_round["none"])
-            for t in TECHNIQUES:
-                tech = details[t].get("technique_stats", {})
+            st = run_timing(scene, TECHNIQUES, size, out, (args.frames, args.rounds,
+                                                           args.warmup, 0.03))
+            if st is None:
+                sys.exit(f"bench_techniques: {scene}: vtkshadow-render failed")
+            entries = {e["label"]: e for e in st["timing"]["entries"]}
+            noise = st["noise_floor"]
+            floors.append((os.path.relpath(scene, REPO), noise))
+            for t in TECHNIQUES + ["none#2"]:
+                e = entries[t]
+                tech = e.get("technique_stats") or {}
                 note = ""
                 if t == "auto":
                     note = f"chose {tech.get('choice', '?')}"
                 elif t == "csm" and tech.get("lights"):
                     px = [round(v, 2) for light in tech["lights"] for v in light.get("texel_px", [])]
                     note = f"texel px {px}"
-                rows.append((os.path.relpath(scene, REPO), t, statistics.median(times[t]),
-                             statistics.median(ratios[t]), details[t]["shadow_map_bytes"], note))
+                elif t == "none#2":
+                    note = "noise floor" + (" TOO NOISY" if noise["too_noisy"] else "")
+                rows.append((os.path.relpath(scene, REPO), t, e["ms"], e["ratio_to_none"],
+                             e["shadow_map_bytes"], note))
     command = ("tests/gl-run.sh build/bin/vtkshadow-python bench/bench_techniques.py "
-               f"--frames {args.frames} --rounds {args.rounds} --size {args.size} "
-               + " ".join(os.path.relpath(s, REPO) for s in args.scenes))
+               f"--frames {args.frames} --rounds {args.rounds} --warmup {args.warmup} "
+               f"--size {args.size} " + " ".join(os.path.relpath(s, REPO) for s in args.scenes))
     lines = [BEGIN, "## Frame time of every technique", "",
              "Produced by (from the repository root):", "", "    " + command, "",
              f"Run {time.strftime('%Y-%m-%d %H:%M')}; llvmpipe on 2 shared cores, so compare "
-             "within a scene: *ratio* is the median over rounds of technique / none in the same "
-             "round (techniques interleaved, order rotated). Camera: vtkshadow-render's orbit.",
-             "", "| scene | technique | ms/frame | ratio to none | shadow memory | note |",
-             "|---|---|---:|---:|---:|---|"]
+             "within a scene. Per scene one vtkshadow-render process times every technique in "
+             f"one window, interleaved: {args.warmup} warm-up frames each, then {args.rounds} "
+             f"rounds of one {args.frames}-frame block per technique, the order changed every "
+             "round. *ms/frame*: median over rounds of the block medians [min-max over rounds]; "
+             "*ratio*: median over rounds of technique / none in the same round [min-max]. "
+             "none#2 is none timed again: the noise floor (TOO NOISY outside 1.00 +- 0.03). "
+             "Camera: vtkshadow-render's orbit.",
+             "", "| scene | technique | ms/frame [rounds] | ratio to none [rounds] | shadow memory "
+             "| note |", "|---|---|---:|---:|---:|---|"]
     for scene, t, ms, ratio, mem, note in rows:
-        lines.append(f"| {scene} | {t} | {ms:.1f} | {ratio:.2f} | {mem / 2**20:.1f} MiB | {note} |")
+        lines.append(f"| {scene} | {t} | {ms['median']:.1f} [{ms['min']:.1f}-{ms['max']:.1f}] | "
+                     f"{ratio['median']:.2f} [{ratio['min']:.2f}-{ratio['max']:.2f}] | "
+                     f"{mem / 2**20:.1f} MiB | {note} |")
+    lines += [""] + [f"- {scene}: noise floor none#2 / none = {n['ratio']:.3f} "
+                     f"[{n['min']:.3f}-{n['max']:.3f}]"
+                     f"{': TOO NOISY' if n['too_noisy'] else ': within 1.00 +- 0.03'}"
+                     for scene, n in floors]
     lines += ["", END]
     text = open(args.output).read() if os.path.exists(args.output) else "# vtkshadow results\n"
     if BEGIN in text and END in text:

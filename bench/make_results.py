@@ -20,7 +20,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from vtkshadow_bench import WRONG_FLOOR, fmt, front_position, goal_figures  # noqa: E402
+from vtkshadow_bench import (NOISE_LABEL, WRONG_FLOOR, fmt, front_position,  # noqa: E402
+                             goal_figures)
 
 
 def by_scene(rows):
@@ -38,9 +39,9 @@ def pick(rows, tech, settings):
 def goals_table(scenes):
     lines = ["| scene | csm wrong_pct | vtk 2048 wrong_pct | error ratio (goal >= 10) | "
              "csm / vtk time (goal <= 1.2) | planar overhead (goal <= 15%) | auto chose | "
-             "auto / front (goal <= 1.10) |",
-             "|---|---:|---:|---:|---:|---:|---|---:|"]
-    tally = {"err": [0, 0], "time": [0, 0], "planar": [0, 0], "auto": [0, 0]}
+             "auto / front (goal <= 1.10) | noise floor none#2 / none |",
+             "|---|---:|---:|---:|---:|---:|---|---:|---:|"]
+    tally = {"err": [0, 0], "time": [0, 0], "planar": [0, 0], "auto": [0, 0], "noisy": [0, 0]}
     for key in sorted(scenes):
         rows = scenes[key]
         g = goal_figures(rows)
@@ -60,12 +61,19 @@ def goals_table(scenes):
         if rel is not None:
             tally["auto"][0] += rel <= 1.10
             tally["auto"][1] += 1
-        lines.append("| %s%s | %s | %s | %s | %s | %s | %s | %s |" % (
+        floor = next((r for r in rows if r["technique"] == NOISE_LABEL
+                      and r.get("ratio") is not None), None)
+        if floor:
+            tally["noisy"][0] += bool(floor.get("too_noisy"))
+            tally["noisy"][1] += 1
+        lines.append("| %s%s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             key, " (hard)" if hard else "", fmt(csm and csm["wrong_pct"], 3),
             fmt(vtk and vtk["wrong_pct"], 3), "-" if err is None else "%.1fx" % err,
             "-" if time_ratio is None else "%.2fx" % time_ratio,
             "-" if ov is None else "%.0f%%" % (100 * ov),
-            (auto or {}).get("auto_choice") or "-", "-" if rel is None else "%.2fx" % rel))
+            (auto or {}).get("auto_choice") or "-", "-" if rel is None else "%.2fx" % rel,
+            "-" if not floor else "%.3f%s" % (floor["ratio"],
+                                             " TOO NOISY" if floor.get("too_noisy") else "")))
     return lines, tally
 
 
@@ -141,11 +149,18 @@ def main():
            "- csm error at least 10x lower than vtk: %s non-hard scenes" % count("err"),
            "- csm frame time at most 1.2x vtk: %s non-hard scenes" % count("time"),
            "- planar overhead at most 15%%: %s non-hard scenes with receivers" % count("planar"),
-           "- auto within 10%% of the front: %s scenes" % count("auto"), "",
-           "Error ratio: vtk wrong_pct / csm wrong_pct (csm floored at %g). Times: the ratio of "
-           "shadowed to unshadowed frame of the same vtkshadow-render process. *auto / front*: "
-           "auto's time over that of the fastest manual configuration with wrong_pct no higher "
-           "than auto's." % WRONG_FLOOR, ""] + goals + [""]
+           "- auto within 10%% of the front: %s scenes" % count("auto"),
+           "- timing too noisy (noise floor none#2 / none outside 1.00 +- tolerance): %s scenes"
+           % count("noisy"), "",
+           "Error ratio: vtk wrong_pct / csm wrong_pct (csm floored at %g). Times: every "
+           "configuration of a scene is timed in one vtkshadow-render process and one window, "
+           "interleaved in blocks with the order changed every round; a ratio is the median over "
+           "rounds of (configuration / none of the same round), and csm / vtk divides those. "
+           "*Noise floor*: none timed again against none the same way; where it is marked TOO "
+           "NOISY the scene's ratios cannot resolve differences of that size (method: "
+           "[performance.md](performance.md#how-frames-are-timed)). *auto / front*: auto's time "
+           "over that of the fastest manual configuration with wrong_pct no higher than "
+           "auto's." % WRONG_FLOOR, ""] + goals + [""]
     if peers:
         out += ["## Peer: Blender EEVEE", "",
                 "EEVEE (Blender's rasterizer with cascaded soft shadow maps) renders the same "

@@ -1,43 +1,59 @@
 #!/usr/bin/env python3
 """vtkshadow-bench: speed against error for every shadow technique.
 
-    bench/vtkshadow-bench SCENE... --out DIR [--scale F] [--frames N]
-                          [--grid small|full] [--rounds R] [--light K]
-                          [--peers PREFIXES] [--cache DIR]
+    bench/vtkshadow-bench SCENE... --out DIR [--scale F] [--timing-scale F]
+                          [--frames N] [--rounds R] [--warmup W]
+                          [--noise-tolerance T] [--grid small|full] [--light K]
+                          [--peers PREFIXES] [--cache DIR] [--timing-only]
 
 SCENE may be a folder (every scene file under it). --scale F multiplies
-each scene's image size (renders and references alike; scripts/results.sh
-uses 0.5).
+each scene's image size for the error measurement (renders and references
+alike; scripts/results.sh uses 0.5); --timing-scale F (default: --scale)
+the size the frames are timed at (scripts/results.sh: 1, the scenes'
+800x600).
 
 (bench/vtkshadow-bench runs this file with build/bin/vtkshadow-python under
 tests/gl-run.sh when no X display is set.)
 
-For each scene (light K, default 0) it runs build/bin/vtkshadow-render with
-every technique of the registry (vtkShadowTechnique.GetKnownTechniques()), each
-with its settings from SETTINGS below: none; vtk at map 1024, 2048, 4096;
-planar when the scene has a receiver; csm at its defaults and over a grid
-(small: cascades 1,2,4 x map 512,1024,2048 x filter 0 (hardware); full:
-cascades 1..4 x map 512..4096 x filter 0,1,2); auto; a technique with no
-SETTINGS entry once at its defaults. Each render gives the visibility and mask of light K (scored with
+For each scene (light K, default 0) it takes every technique of the registry
+(vtkShadowTechnique.GetKnownTechniques()), each with its settings from
+SETTINGS below: none; vtk at map 1024, 2048, 4096; planar when the scene has
+a receiver; csm at its defaults and over a grid (small: cascades 1,2,4 x map
+512,1024,2048 x filter 0 (hardware); full: cascades 1..4 x map 512..4096 x
+filter 0,1,2); auto; a technique with no SETTINGS entry once at its
+defaults. Each configuration is rendered once by build/bin/vtkshadow-render
+for the visibility and mask of light K, scored with
 build/bin/vtkshadow-metrics against the POV-Ray reference of
-build/bin/vtkshadow-compare --renderers povray, cached in DIR/refs) and
---stats timings: the median ms per frame over --frames (>= 30) frames along
-vtkshadow-render's camera orbit, shadowed and unshadowed in the same process.
+build/bin/vtkshadow-compare --renderers povray (cached in DIR/refs).
 
-Timing on a shared machine is noisy, so: the configurations of one scene are
-interleaved in --rounds rounds (the order rotates every round); every run
-reports its own unshadowed time, and `ratio` = shadowed / unshadowed of the
-same run (median over rounds) is the number to compare. `ms_per_frame` is
-ratio x the scene's median unshadowed time over all its runs (a noise-reduced
-absolute time); `raw_ms` is the plain median of the shadowed medians;
-overhead_ms = ms_per_frame - unshadowed. Timings cover all lights of a scene
-(vtkshadow-render renders every light); errors are for light K only.
+Timing: one vtkshadow-render --stats process per scene times every
+configuration of the scene in one window (--time-also), interleaved: after
+--warmup frames each, --rounds rounds, each a block of --frames frames per
+configuration along vtkshadow-render's camera orbit, the order changed every
+round (a Williams design: every configuration in every position, and after
+every other, equally often over a whole cycle; docs/performance.md). Each
+configuration's pass stays alive across rounds, so its caches are warm as in
+an application. `ms_per_frame` is the median over rounds of the block
+medians, `ms_min`/`ms_max` their spread; `ratio` is the median over rounds
+of (configuration / none of the same round), with `ratio_min`/`ratio_max`;
+overhead_ms = ms_per_frame - none's. A second none (`none#2`) is timed like
+the others: its ratio to none is the noise floor of the scene's run
+(`noise_floor`), and a floor outside 1 +- --noise-tolerance (default 0.03)
+marks the scene `too_noisy` (a warning, a column, a line in the summary).
+Timings cover all lights of a scene (vtkshadow-render renders every light);
+errors are for light K only.
 
-Outputs: DIR/bench.csv (one row per scene and configuration), DIR/bench.json,
-DIR/<scene>/<config>/ (visibility, mask, stats, metrics of each run),
+--timing-only skips references, visibility and metrics (no POV-Ray): the
+timing rows alone.
+
+Outputs: DIR/bench.csv (one row per scene and configuration, plus the
+none#2 row), DIR/bench.json,
+DIR/<scene>/<config>/ (visibility, mask, metrics of each configuration),
+DIR/<scene>/timing.json (the vtkshadow-render stats of the timing run),
 DIR/<scene>.png (gnuplot: wrong_pct, log, floored at 1e-3, against
 ms_per_frame, log; one series per technique family; Pareto front drawn),
-DIR/summary.md (tables, auto's position against the Pareto front, goals).
+DIR/summary.md (tables, auto's position against the Pareto front, goals,
+the noise floor).
 With --peers PREFIXES, scenes whose key starts with one of them also get
 Blender EEVEE rows (technique eevee, settings default / best) from
 vtkshadow-compare --renderers povray,eevee,eevee-best, scored against the
@@ -61,10 +77,11 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BIN = os.path.join(ROOT, "build", "bin")
 WRONG_FLOOR = 1e-3
 
-COLUMNS = ["scene", "technique", "settings", "ms_per_frame", "overhead_ms",
-           "unshadowed_ms", "ratio", "raw_ms", "memory_bytes", "wrong_pct",
-           "vis_mae", "edge_px", "false_shadow_pct", "false_light_pct",
-           "auto_choice", "texel_px", "auto_reason"]
+COLUMNS = ["scene", "technique", "settings", "ms_per_frame", "ms_min", "ms_max", "overhead_ms",
+           "unshadowed_ms", "ratio", "ratio_min", "ratio_max", "noise_floor", "too_noisy",
+           "memory_bytes", "wrong_pct", "vis_mae", "edge_px", "false_shadow_pct",
+           "false_light_pct", "auto_choice", "texel_px", "auto_reason"]
+NOISE_LABEL = "none#2"
 
 
 def log(msg):
@@ -126,18 +143,17 @@ def _grid_csm(grid):
         for m in maps:
             for fl in filters:
                 out.append(("cascades=%d map=%d filter=%d" % (c, m, fl),
-                            ["--map-resolution", str(m), "--set", "cascades=%d" % c,
-                             "--set", "filter=%d" % fl]))
+                            [("map_resolution", m), ("cascades", c), ("filter", fl)]))
     return out
 
 
 # The settings each technique is benchmarked with, as data: technique ->
-# (needs a receiver in the scene, grid -> [(settings label, extra
-# vtkshadow-render args)]). A registered technique not listed here runs once,
-# as ("default", []).
+# (needs a receiver in the scene, grid -> [(settings label, [(technique
+# setting, value)])]). A registered technique not listed here runs once, as
+# ("default", []).
 SETTINGS = {
     "none": (False, lambda grid: [("-", [])]),
-    "vtk": (False, lambda grid: [("map=%d" % r, ["--map-resolution", str(r)])
+    "vtk": (False, lambda grid: [("map=%d" % r, [("map_resolution", r)])
                                  for r in (1024, 2048, 4096)]),
     "planar": (True, lambda grid: [("-", [])]),
     "csm": (False, _grid_csm),
@@ -146,15 +162,29 @@ SETTINGS = {
 
 
 def configs_for(receivers, grid, techniques=None):
-    """(technique, settings label, extra vtkshadow-render args) for every
-    registered technique, in registry order."""
+    """(technique, settings label, [(setting, value)]) for every registered
+    technique, in registry order."""
     out = []
     for tech in techniques if techniques is not None else registered_techniques():
         needs_receiver, settings = SETTINGS.get(tech, (False, lambda grid: [("default", [])]))
         if needs_receiver and not receivers:
             continue
-        out.extend((tech, label, args) for label, args in settings(grid))
+        out.extend((tech, label, values) for label, values in settings(grid))
     return out
+
+
+def render_args(values):
+    """vtkshadow-render arguments for [(setting, value)]."""
+    out = []
+    for key, value in values:
+        out += ["--set", "%s=%s" % (key, value)]
+    return out
+
+
+def timing_label(tech, values):
+    """The --time-also SPEC of a configuration, which is also its label in
+    vtkshadow-render's stats: TECH[:KEY=VALUE,...]."""
+    return tech + (":" + ",".join("%s=%s" % kv for kv in values) if values else "")
 
 
 def config_dir(tech, settings):
@@ -214,22 +244,46 @@ def peer_rows(scenes, out, scale, light):
     return rows
 
 
-def run_render(scene, args, size, light, frames, d, want_images):
+def run_render(scene, args, size, light, d):
+    """One render of a configuration for its visibility and mask of light K.
+    True on success."""
     os.makedirs(d, exist_ok=True)
-    stats = os.path.join(d, "stats.json")
     cmd = [os.path.join(BIN, "vtkshadow-render"), scene, "--image",
-           os.path.join(d, "image.png"), "--light", str(light), "--stats", stats,
-           "--frames", str(frames), "--size", "%dx%d" % size, "--quiet"] + args
-    if want_images:
-        cmd += ["--visibility", os.path.join(d, "visibility.png"),
-                "--mask", os.path.join(d, "mask.png")]
-    if os.path.exists(stats):
-        os.remove(stats)
+           os.path.join(d, "image.png"), "--light", str(light), "--size", "%dx%d" % size,
+           "--quiet", "--visibility", os.path.join(d, "visibility.png"),
+           "--mask", os.path.join(d, "mask.png")] + args
     p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     with open(os.path.join(d, "render.log"), "a") as f:
         f.write(" ".join(cmd) + "\n" + p.stdout)
-    if p.returncode != 0 or not os.path.exists(stats):
+    if p.returncode != 0:
         log("  FAILED (%d): %s" % (p.returncode, " ".join(cmd)))
+        return False
+    return True
+
+
+def run_timing(scene, labels, size, d, timing):
+    """Every configuration of a scene timed in one vtkshadow-render process,
+    interleaved (labels: --time-also SPECs; "none" and "none#2" are always
+    timed). `timing`: (frames, rounds, warmup, noise tolerance). The stats
+    document, or None when the run failed."""
+    os.makedirs(d, exist_ok=True)
+    stats = os.path.join(d, "timing.json")
+    frames, rounds, warmup, tolerance = timing
+    cmd = [os.path.join(BIN, "vtkshadow-render"), scene, "--technique", "none", "--image",
+           os.path.join(d, "timing.png"), "--stats", stats, "--size", "%dx%d" % size,
+           "--frames", str(frames), "--rounds", str(rounds), "--warmup", str(warmup),
+           "--noise-tolerance", repr(tolerance)]
+    for label in labels:
+        if label != "none":
+            cmd += ["--time-also", label]
+    if os.path.exists(stats):
+        os.remove(stats)
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    with open(os.path.join(d, "timing.log"), "w") as f:
+        f.write(" ".join(cmd) + "\n" + p.stderr)
+    sys.stderr.write(p.stderr)
+    if p.returncode != 0 or not os.path.exists(stats):
+        log("  timing FAILED (%d): %s" % (p.returncode, " ".join(cmd)))
         return None
     with open(stats) as f:
         return json.load(f)
@@ -258,75 +312,78 @@ def pareto(rows):
     return front
 
 
+def timing_row(key, tech, settings, entry, none, noise):
+    """A result row from a timing entry of vtkshadow-render's stats."""
+    row = {c: None for c in COLUMNS}
+    row.update(scene=key, technique=tech, settings=settings)
+    if entry is None:
+        return row
+    ms, ratio = entry["ms"], entry["ratio_to_none"]
+    row.update(ms_per_frame=ms["median"], ms_min=ms["min"], ms_max=ms["max"],
+               unshadowed_ms=none["ms"]["median"], ratio=ratio["median"],
+               ratio_min=ratio["min"], ratio_max=ratio["max"],
+               overhead_ms=ms["median"] - none["ms"]["median"],
+               memory_bytes=entry.get("shadow_map_bytes"),
+               noise_floor=noise["ratio"], too_noisy=noise["too_noisy"])
+    return row
+
+
+def technique_details(row, tech, ts, light):
+    """auto's choice and the csm texel sizes of light K from technique_stats."""
+    if tech == "auto":
+        lc = ts.get("light_choices") or []
+        row["auto_choice"] = "%s [%s]%s" % (
+            ts.get("choice"), ", ".join(lc),
+            " texel <= %.2f px" % ts["texel_target_px"]
+            if "csm" in str(ts.get("choice")) and ts.get("texel_target_px") else "")
+        row["auto_reason"] = ts.get("reason")
+    lights = ts.get("lights")
+    if tech in ("csm", "auto") and isinstance(lights, list) and len(lights) > light:
+        tp = lights[light].get("texel_px")
+        if tp:
+            row["texel_px"] = "/".join("%.2f" % v for v in tp)
+
+
 def bench_scene(scene, a, refs):
     key = scene_key(scene)
     size0, receivers = scene_info(scene)
     size = (max(1, round(size0[0] * a.scale)), max(1, round(size0[1] * a.scale)))
-    ref_vis = os.path.join(refs, key, "povray", "light%d_visibility.png" % a.light)
-    ref_mask = os.path.join(refs, key, "povray", "light%d_mask.png" % a.light)
-    have_ref = os.path.exists(ref_vis) and os.path.exists(ref_mask)
-    if not have_ref:
-        log("%s: no POV-Ray reference at %s: errors left empty" % (key, ref_vis))
+    tsize = (max(1, round(size0[0] * a.timing_scale)), max(1, round(size0[1] * a.timing_scale)))
     cfgs = configs_for(receivers, a.grid)
-    runs = {i: [] for i in range(len(cfgs))}
-    stats_last = {}
-    for rnd in range(a.rounds):
-        order = list(range(len(cfgs)))
-        k = (rnd * len(cfgs)) // a.rounds
-        order = order[k:] + order[:k]
-        if rnd % 2 == 1:
-            order.reverse()
-        for n, i in enumerate(order):
-            tech, settings, extra = cfgs[i]
-            d = os.path.join(a.out, key, config_dir(tech, settings))
-            t0 = time.time()
-            st = run_render(scene, ["--technique", tech] + extra, size, a.light,
-                            a.frames, d, want_images=(rnd == 0))
-            if st is None:
-                continue
-            runs[i].append(st)
-            stats_last[i] = st
-            log("%s: round %d/%d, %d/%d %s %s: %.1f ms (unshadowed %.1f) [%.0f s]" % (
-                key, rnd + 1, a.rounds, n + 1, len(cfgs), tech, settings,
-                st["shadowed_ms"]["median"], st["unshadowed_ms"]["median"],
-                time.time() - t0))
-    all_unsh = [s["unshadowed_ms"]["median"] for i in runs for s in runs[i]]
-    unsh = statistics.median(all_unsh) if all_unsh else None
+    labels = [timing_label(t, v) for t, _, v in cfgs]
+    t0 = time.time()
+    st = run_timing(scene, labels, tsize, os.path.join(a.out, key),
+                    (a.frames, a.rounds, a.warmup, a.noise_tolerance))
+    entries = {e["label"]: e for e in (st or {}).get("timing", {}).get("entries", [])}
+    noise = (st or {}).get("noise_floor")
+    log("%s: timed %d configurations interleaved at %dx%d [%.0f s]; noise floor %s" % (
+        key, len(cfgs), tsize[0], tsize[1], time.time() - t0,
+        "-" if not noise else "%.3f%s" % (noise["ratio"] or float("nan"),
+                                          " TOO NOISY" if noise["too_noisy"] else "")))
+    ref_vis = os.path.join(refs, key, "povray", "light%d_visibility.png" % a.light) if refs else ""
+    ref_mask = os.path.join(refs, key, "povray", "light%d_mask.png" % a.light) if refs else ""
+    have_ref = bool(refs) and os.path.exists(ref_vis) and os.path.exists(ref_mask)
+    if refs and not have_ref:
+        log("%s: no POV-Ray reference at %s: errors left empty" % (key, ref_vis))
     rows = []
-    for i, (tech, settings, extra) in enumerate(cfgs):
+    none = entries.get("none")
+    for (tech, settings, values), label in zip(cfgs, labels):
+        entry = entries.get(label) if none else None
+        row = timing_row(key, tech, settings, entry, none, noise)
+        if entry is not None:
+            technique_details(row, tech, entry.get("technique_stats") or {}, a.light)
         d = os.path.join(a.out, key, config_dir(tech, settings))
-        row = {c: None for c in COLUMNS}
-        row.update(scene=key, technique=tech, settings=settings)
-        if runs[i]:
-            ratio = statistics.median(s["shadowed_ms"]["median"] / s["unshadowed_ms"]["median"]
-                                      for s in runs[i])
-            row["ratio"] = ratio
-            row["raw_ms"] = statistics.median(s["shadowed_ms"]["median"] for s in runs[i])
-            row["ms_per_frame"] = ratio * unsh
-            row["unshadowed_ms"] = unsh
-            row["overhead_ms"] = (ratio - 1.0) * unsh
-            st = stats_last[i]
-            row["memory_bytes"] = st.get("shadow_map_bytes")
-            ts = st.get("technique_stats") or {}
-            if tech == "auto":
-                lc = ts.get("light_choices") or []
-                row["auto_choice"] = "%s [%s]%s" % (
-                    ts.get("choice"), ", ".join(lc),
-                    " texel <= %.2f px" % ts["texel_target_px"]
-                    if "csm" in str(ts.get("choice")) and ts.get("texel_target_px") else "")
-                row["auto_reason"] = ts.get("reason")
-            lights = ts.get("lights")
-            if tech in ("csm", "auto") and isinstance(lights, list) and len(lights) > a.light:
-                tp = lights[a.light].get("texel_px")
-                if tp:
-                    row["texel_px"] = "/".join("%.2f" % v for v in tp)
-        vis = os.path.join(d, "visibility.png")
-        if have_ref and os.path.exists(vis):
-            m = metrics(ref_vis, ref_mask, vis, os.path.join(d, "metrics.json"))
+        if have_ref and run_render(scene, ["--technique", tech] + render_args(values), size,
+                                   a.light, d):
+            m = metrics(ref_vis, ref_mask, os.path.join(d, "visibility.png"),
+                        os.path.join(d, "metrics.json"))
             for k in ("wrong_pct", "vis_mae", "edge_px", "false_shadow_pct", "false_light_pct"):
                 row[k] = m.get(k)
         rows.append(row)
-    return key, size, rows
+    # The noise floor: none timed a second time, like every configuration.
+    rows.append(timing_row(key, NOISE_LABEL, "noise floor", entries.get(NOISE_LABEL) if none
+                           else None, none, noise))
+    return key, size, tsize, rows
 
 
 def fmt(v, nd=2):
@@ -381,7 +438,7 @@ def plot(key, rows, front, out):
         "set terminal png size 720,480 noenhanced",
         "set output '%s'" % png,
         "set title '%s: wrong_pct (light 0) against ms/frame'" % key,
-        "set label 1 'time = same-run shadowed/unshadowed ratio x median unshadowed' at graph 0.02,0.04 font ',8'",
+        "set label 1 'time = median over interleaved rounds (one window per scene)' at graph 0.02,0.04 font ',8'",
         "set logscale xy",
         "set xlabel 'ms per frame (log)'",
         "set ylabel 'wrong_pct (log, floor %g)'" % WRONG_FLOOR,
@@ -462,6 +519,8 @@ def goal_figures(rows):
 def goals(key, rows):
     out = []
     g = goal_figures(rows)
+    floor = next((r for r in rows if r["technique"] == NOISE_LABEL and r.get("too_noisy")), None)
+    noisy = (" (timing too noisy: noise floor %.3f)" % floor["ratio"]) if floor else ""
     csm, vtk, planar = g["csm"], g["vtk"], g["planar"]
     hard = key.startswith("hard-")
     if g["error_ratio"] is not None:
@@ -471,35 +530,61 @@ def goals(key, rows):
                    "of vtk's -> %s%s" % (
                        fmt(csm["wrong_pct"], 3), fmt(vtk["wrong_pct"], 3), f_err,
                        ", csm floored at %g" % WRONG_FLOOR if csm["wrong_pct"] < WRONG_FLOOR else "",
-                       f_time, "met" if ok else "MISSED", " (hard scene: not part of the goal)" if hard else ""))
+                       f_time, "met" if ok else "MISSED", " (hard scene: not part of the goal)" if hard else "") + noisy)
     if g["planar_overhead"] is not None:
         ov = g["planar_overhead"]
         out.append("planar overhead %.1f ms = %.0f%% of the unshadowed frame (goal <= 15%%) -> %s" % (
-            planar["overhead_ms"], 100 * ov, "met" if ov <= 0.15 else "MISSED by %.0f points" % (100 * ov - 15)))
+            planar["overhead_ms"], 100 * ov, "met" if ov <= 0.15 else "MISSED by %.0f points" % (100 * ov - 15)) + noisy)
     return out
 
 
+def timing_method(a):
+    """How the timings were taken, in one paragraph (summary.md, results.md)."""
+    return ("Timing: per scene one vtkshadow-render process times every configuration in one "
+            "window, interleaved: %d warm-up frames each, then %d rounds of one block of %d frames "
+            "per configuration on vtkshadow-render's camera orbit, the order changed every round "
+            "(Williams design); each configuration's pass stays alive, so its caches are warm. "
+            "ms/frame = median over rounds of the block medians, [min-max] their spread; `ratio` = "
+            "median over rounds of (configuration / none of the same round) [min-max]; overhead = "
+            "ms/frame - none's. `none#2` is none timed again: its ratio is the noise floor, and a "
+            "scene whose floor is outside 1.00 +- %.2f is marked TOO NOISY (its ratios cannot "
+            "resolve differences of that size). Shared 2-core llvmpipe machine: compare ratios "
+            "within a scene. Times include every light of the scene; errors are light %d against "
+            "POV-Ray." % (a.warmup, a.rounds, a.frames, a.noise_tolerance, a.light))
+
+
+def noise_line(rows, tolerance):
+    """The scene's noise-floor verdict."""
+    r = next((r for r in rows if r["technique"] == NOISE_LABEL and r.get("ratio") is not None),
+             None)
+    if r is None:
+        return "noise floor: no timing"
+    return "noise floor none#2 / none = %.3f [%.3f-%.3f]: %s 1.00 +- %.2f" % (
+        r["ratio"], r["ratio_min"], r["ratio_max"],
+        "TOO NOISY, outside" if r["too_noisy"] else "within", tolerance)
+
+
 def summary(results, a, cmdline):
-    lines = ["Command: `%s`" % cmdline, "",
-             "Timing: per scene the configurations are interleaved in %d round(s) (order rotated), "
-             "%d timed frames each on vtkshadow-render's camera orbit; `ratio` = shadowed / unshadowed "
-             "median of the same vtkshadow-render process (median over rounds); ms/frame = ratio x the "
-             "scene's median unshadowed time; overhead = ms/frame - unshadowed. Compare ratios, not "
-             "absolute times (shared 2-core llvmpipe machine). Times include every light of the scene; "
-             "errors are light %d against POV-Ray." % (a.rounds, a.frames, a.light), ""]
-    for key, size, rows, front, png in results:
-        lines += ["### %s (%dx%d)" % (key, size[0], size[1]), "",
-                  "| technique | settings | ms/frame | overhead ms | ratio | memory | wrong_pct | "
-                  "vis_mae | edge_px | false_shadow_pct | false_light_pct |",
+    lines = ["Command: `%s`" % cmdline, "", timing_method(a), ""]
+    for key, size, tsize, rows, front, png in results:
+        lines += ["### %s (errors %dx%d, timing %dx%d)" % (key, size[0], size[1], tsize[0],
+                                                             tsize[1]), "",
+                  "| technique | settings | ms/frame [rounds] | overhead ms | ratio [rounds] | "
+                  "memory | wrong_pct | vis_mae | edge_px | false_shadow_pct | false_light_pct |",
                   "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
         fset = set(id(r) for r in front)
         for r in rows:
-            lines.append("| %s | %s%s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            spread = (" [%s-%s]" % (fmt(r["ms_min"], 1), fmt(r["ms_max"], 1))
+                      if r.get("ms_min") is not None else "")
+            rspread = (" [%s-%s]" % (fmt(r["ratio_min"], 2), fmt(r["ratio_max"], 2))
+                       if r.get("ratio_min") is not None else "")
+            lines.append("| %s | %s%s | %s%s | %s | %s%s | %s | %s | %s | %s | %s | %s |" % (
                 r["technique"], r["settings"], " (front)" if id(r) in fset else "",
-                fmt(r["ms_per_frame"], 1), fmt(r["overhead_ms"], 1), fmt(r["ratio"], 2),
+                fmt(r["ms_per_frame"], 1), spread, fmt(r["overhead_ms"], 1),
+                fmt(r["ratio"], 2), rspread,
                 mib(r["memory_bytes"]), fmt(r["wrong_pct"], 3), fmt(r["vis_mae"], 4),
                 fmt(r["edge_px"], 2), fmt(r["false_shadow_pct"], 3), fmt(r["false_light_pct"], 3)))
-        lines += ["", "- " + auto_check(rows)]
+        lines += ["", "- " + noise_line(rows, a.noise_tolerance), "- " + auto_check(rows)]
         for g in goals(key, rows):
             lines.append("- " + g)
         if png:
@@ -508,15 +593,40 @@ def summary(results, a, cmdline):
     return "\n".join(lines)
 
 
+def check_options(p, a):
+    """Ranges of the numeric options (p.error: exit status 2, naming the
+    option and the value)."""
+    a.timing_scale = a.scale if a.timing_scale is None else a.timing_scale
+    for name, value, ok, want in (
+            ("--frames", a.frames, 1 <= a.frames <= 100000, "an integer in [1, 100000]"),
+            ("--rounds", a.rounds, 1 <= a.rounds <= 1000, "an integer in [1, 1000]"),
+            ("--warmup", a.warmup, 0 <= a.warmup <= 10000, "an integer in [0, 10000]"),
+            ("--noise-tolerance", a.noise_tolerance, 0 < a.noise_tolerance < 1,
+             "a number in (0, 1)"),
+            ("--scale", a.scale, 0 < a.scale <= 8, "a number in (0, 8]"),
+            ("--timing-scale", a.timing_scale, 0 < a.timing_scale <= 8, "a number in (0, 8]"),
+            ("--light", a.light, a.light >= 0, "an integer >= 0")):
+        if not ok:
+            p.error("%s: expected %s (got %r)" % (name, want, value))
+
+
 def main():
     p = argparse.ArgumentParser(prog="vtkshadow-bench", description=__doc__.split("\n\n")[0])
     p.add_argument("scenes", nargs="+")
     p.add_argument("--out", required=True)
     p.add_argument("--scale", type=float, default=1.0,
                    help="multiply each scene's image size (renders and references)")
-    p.add_argument("--frames", type=int, default=30)
+    p.add_argument("--timing-scale", type=float, default=None,
+                   help="multiply each scene's image size for the timing (default: --scale)")
+    p.add_argument("--frames", type=int, default=15, help="timed frames per block (default 15)")
+    p.add_argument("--rounds", type=int, default=4, help="interleaved rounds (default 4)")
+    p.add_argument("--warmup", type=int, default=5,
+                   help="untimed frames per configuration before the rounds (default 5)")
+    p.add_argument("--noise-tolerance", type=float, default=0.03,
+                   help="a scene is too noisy when none#2 / none is outside 1 +- T (default 0.03)")
+    p.add_argument("--timing-only", action="store_true",
+                   help="no references, visibility or metrics: timing rows only")
     p.add_argument("--grid", choices=("small", "full"), default="small")
-    p.add_argument("--rounds", type=int, default=2)
     p.add_argument("--light", type=int, default=0)
     p.add_argument("--cache", default=None,
                    help="reference cache of vtkshadow-compare (default DIR/cache); keyed by scene "
@@ -527,8 +637,7 @@ def main():
     a = p.parse_args()
     global CACHE
     CACHE = os.path.abspath(a.cache) if a.cache else None
-    if a.frames < 30:
-        p.error("--frames must be >= 30")
+    check_options(p, a)
     scenes = []
     for s in a.scenes:
         if os.path.isdir(s):
@@ -539,25 +648,26 @@ def main():
         else:
             scenes.append(s)
     os.makedirs(a.out, exist_ok=True)
-    for x in ("vtkshadow-render", "vtkshadow-metrics", "vtkshadow-compare"):
+    for x in ("vtkshadow-render",) + (() if a.timing_only else
+                                       ("vtkshadow-metrics", "vtkshadow-compare")):
         if not os.access(os.path.join(BIN, x), os.X_OK):
             p.error("missing %s (build first)" % os.path.join(BIN, x))
-    refs = ensure_refs(scenes, a.out, a.scale)
-    prefixes = [x for x in a.peers.split(",") if x]
+    refs = None if a.timing_only else ensure_refs(scenes, a.out, a.scale)
+    prefixes = [x for x in a.peers.split(",") if x] if not a.timing_only else []
     peer_scenes = [s for s in scenes if any(scene_key(s).startswith(x) for x in prefixes)]
     peers = peer_rows(peer_scenes, a.out, a.scale, a.light) if peer_scenes else {}
-    log("timings: techniques interleaved in %d rounds; compare ratios within a run, "
-        "not absolute times" % a.rounds)
+    log("timings: every configuration of a scene interleaved in one window, %d rounds x %d "
+        "frames; compare ratios within a scene, not absolute times" % (a.rounds, a.frames))
     results, allrows = [], []
     for s in scenes:
-        key, size, rows = bench_scene(s, a, refs)
+        key, size, tsize, rows = bench_scene(s, a, refs)
         front = pareto(rows)  # peers have no same-run ratio: never on the front
         rows += peers.get(key, [])
         for f in os.listdir(os.path.join(a.out, key)) if os.path.isdir(os.path.join(a.out, key)) else []:
             if f.startswith("plot_") and f.endswith(".dat"):
                 os.remove(os.path.join(a.out, key, f))
-        png = plot(key, rows, front, a.out)
-        results.append((key, size, rows, front, png))
+        png = None if a.timing_only else plot(key, rows, front, a.out)  # no errors to plot
+        results.append((key, size, tsize, rows, front, png))
         allrows += rows
         log("%s: done; %s" % (key, auto_check(rows)))
     with open(os.path.join(a.out, "bench.csv"), "w", newline="") as f:
@@ -571,8 +681,12 @@ def main():
     md = summary(results, a, cmdline)
     with open(os.path.join(a.out, "summary.md"), "w") as f:
         f.write(md + "\n")
+    noisy = [r["scene"] for r in allrows if r["technique"] == NOISE_LABEL and r.get("too_noisy")]
     print("NOTE: timings are interleaved per scene; compare ratios within this run, "
           "not absolute times across runs.")
+    if noisy:
+        print("WARNING: timing too noisy (none#2 / none outside 1.00 +- %.2f) on %d of %d scenes: %s"
+              % (a.noise_tolerance, len(noisy), len(results), ", ".join(noisy)))
     print(md)
     print(os.path.join(a.out, "bench.csv"))
 

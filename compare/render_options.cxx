@@ -4,6 +4,7 @@
 #include "vtkShadowTechnique.h"
 #include "vtkShadowTechniqueRegistry.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -46,7 +47,9 @@ const char* RenderUsage()
   return "usage: vtkshadow-render SCENE --technique T --image OUT.png\n"
          "       vtkshadow-render --list-techniques\n"
          "         [--visibility V.png] [--mask M.png] [--light K] [--stats S.json]\n"
-         "         [--frames N] [--map-resolution R] [--size WxH] [--set KEY=VALUE]...\n"
+         "         [--frames N] [--rounds R] [--warmup W] [--time-also SPEC]...\n"
+         "         [--noise-tolerance T] [--fail-if-noisy]\n"
+         "         [--map-resolution R] [--size WxH] [--set KEY=VALUE]...\n"
          "         [--max-error E | --max-error Npx] [--reflections auto|on|off|no-shadows]\n"
          "         [--matte] [--image-light K] [--quiet]\n"
          "\n"
@@ -56,8 +59,19 @@ const char* RenderUsage()
          "  --visibility V.png   16-bit visibility of light K (65535 lit, 0 blocked)\n"
          "  --mask M.png         8-bit mask, 255 where light K reaches a visible surface\n"
          "  --light K            light index for --visibility and --mask (default 0)\n"
-         "  --stats S.json       timings over --frames frames and shadow-map memory\n"
-         "  --frames N           timed frames after warm-up (default 30)\n"
+         "  --stats S.json       interleaved timing and shadow-map memory: T, none and\n"
+         "                       none#2 (the noise floor) and every --time-also\n"
+         "                       technique take turns in one window, a block of N\n"
+         "                       frames each per round, the order rotated per round\n"
+         "  --frames N           timed frames per block (default 15)\n"
+         "  --rounds R           rounds (default 4)\n"
+         "  --warmup W           untimed frames per technique before the rounds\n"
+         "                       (default 5)\n"
+         "  --time-also SPEC     also time SPEC = TECH[:KEY=VALUE[,KEY=VALUE]...],\n"
+         "                       e.g. vtk:map_resolution=1024 or csm:cascades=2\n"
+         "  --noise-tolerance T  the run is too noisy when none#2 / none is outside\n"
+         "                       1 +- T (default 0.03)\n"
+         "  --fail-if-noisy      exit with status 3 when the run is too noisy\n"
          "  --map-resolution R   shadow-map size for map techniques (default 2048)\n"
          "  --size WxH           override the scene's image size\n"
          "  --set KEY=VALUE      a technique setting, e.g. cascades=4, filter=1,\n"
@@ -73,7 +87,28 @@ const char* RenderUsage()
          "  --image-light K      colour image with light K only (default every light)\n"
          "  --quiet              no progress output\n"
          "  --list-techniques    print each technique with its description and exit\n"
-         "Exit status: 0 success, 1 rendering failure, 2 bad input.\n";
+         "Exit status: 0 success, 1 rendering failure, 2 bad input, 3 timing too\n"
+         "noisy with --fail-if-noisy (all outputs written).\n";
+}
+
+std::string MainTimingLabel(const RenderOptions& options)
+{
+  std::string settings;
+  auto add = [&](const std::string& key, double value)
+  {
+    char number[64];
+    std::snprintf(number, sizeof number, "%.17g", value);
+    settings += (settings.empty() ? ":" : ",") + key + "=" + number;
+  };
+  for (const auto& setting : options.Settings)
+  {
+    add(setting.first, setting.second);
+  }
+  if (options.MapResolution != 2048)
+  {
+    add("map_resolution", options.MapResolution);
+  }
+  return options.Technique + settings;
 }
 
 namespace
@@ -83,6 +118,7 @@ struct ParseState
 {
   bool TechniqueGiven = false;
   bool MaxErrorGiven = false;
+  std::string TimingOption; // the first option that only --stats uses
 };
 
 // --size WxH.
@@ -132,21 +168,103 @@ int ParseMaxError(const char* v, RenderOptions& options, std::string& error)
   return 0;
 }
 
-// --light, --frames, --map-resolution: integers in their ranges.
-int ParseIntegerOption(
-  const std::string& arg, const char* v, RenderOptions& options, std::string& error)
+// The integer options, their targets and ranges.
+struct IntegerOption
 {
-  int* target = arg == "--light" ? &options.Light
-    : arg == "--frames"          ? &options.Frames
-                                 : &options.MapResolution;
-  const long low = arg == "--light" ? 0 : arg == "--frames" ? 1 : 16;
-  const long high = arg == "--light" ? 1000000 : arg == "--frames" ? 100000 : 16384;
-  if (!ParseInt(v, low, high, *target))
+  const char* Name;
+  int RenderOptions::*Target;
+  long Low, High;
+  bool Timing; // used only by --stats
+};
+const IntegerOption IntegerOptions[] = {
+  { "--light", &RenderOptions::Light, 0, 1000000, false },
+  { "--frames", &RenderOptions::Frames, 1, 100000, false }, // accepted alone, as before
+  { "--rounds", &RenderOptions::Rounds, 1, 1000, true },
+  { "--warmup", &RenderOptions::Warmup, 0, 10000, true },
+  { "--map-resolution", &RenderOptions::MapResolution, 16, 16384, false },
+};
+
+const IntegerOption* FindIntegerOption(const std::string& arg)
+{
+  for (const auto& option : IntegerOptions)
+  {
+    if (arg == option.Name)
+    {
+      return &option;
+    }
+  }
+  return nullptr;
+}
+
+// --light, --frames, --rounds, --warmup, --map-resolution: integers in their
+// ranges.
+int ParseIntegerOption(const IntegerOption& option, const char* v, RenderOptions& options,
+  ParseState& state, std::string& error)
+{
+  const std::string arg = option.Name;
+  const long low = option.Low, high = option.High;
+  if (option.Timing && state.TimingOption.empty())
+  {
+    state.TimingOption = arg;
+  }
+  if (!ParseInt(v, low, high, options.*option.Target))
   {
     error = arg + ": expected an integer in [" + std::to_string(low) + ", " + std::to_string(high) +
       "] (got \"" + v + "\")";
     return 2;
   }
+  return 0;
+}
+
+// --time-also TECH[:KEY=VALUE[,KEY=VALUE]...]: the form only; the technique
+// and its keys are checked with the rest of the command line.
+int ParseTimedSpec(const char* v, RenderOptions& options, std::string& error)
+{
+  const std::string text = v;
+  const size_t colon = text.find(':');
+  TimedSpec spec;
+  spec.Label = text;
+  spec.Technique = text.substr(0, colon);
+  bool ok = !spec.Technique.empty();
+  std::string rest = colon == std::string::npos ? "" : text.substr(colon + 1);
+  if (colon != std::string::npos && rest.empty())
+  {
+    ok = false;
+  }
+  while (ok && !rest.empty())
+  {
+    const size_t comma = rest.find(',');
+    const std::string item = rest.substr(0, comma);
+    rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
+    const size_t eq = item.find('=');
+    char* end = nullptr;
+    const double number = eq == std::string::npos ? 0.0 : std::strtod(item.c_str() + eq + 1, &end);
+    ok = eq != std::string::npos && eq > 0 && end && end != item.c_str() + eq + 1 && *end == '\0' &&
+      std::isfinite(number) && !(comma != std::string::npos && rest.empty());
+    spec.Settings.emplace_back(item.substr(0, eq), number);
+  }
+  if (!ok)
+  {
+    error = "--time-also: expected TECH or TECH:KEY=NUMBER[,KEY=NUMBER]... (got \"" + text + "\")";
+    return 2;
+  }
+  options.TimeAlso.push_back(spec);
+  return 0;
+}
+
+// --noise-tolerance T: a fraction in (0, 1).
+int ParseNoiseTolerance(const char* v, RenderOptions& options, std::string& error)
+{
+  char* end = nullptr;
+  const double number = std::strtod(v, &end);
+  if (end == v || !end || *end != '\0' || !std::isfinite(number) || !(number > 0.0) ||
+    !(number < 1.0))
+  {
+    error =
+      std::string("--noise-tolerance: expected a number in (0, 1), e.g. 0.03 (got \"") + v + "\")";
+    return 2;
+  }
+  options.NoiseTolerance = number;
   return 0;
 }
 
@@ -175,9 +293,15 @@ int ParseValueOption(const std::string& arg, const char* v, RenderOptions& optio
     target = v;
     return 0;
   }
-  if (arg == "--light" || arg == "--frames" || arg == "--map-resolution")
+  if (const IntegerOption* integer = FindIntegerOption(arg))
   {
-    return ParseIntegerOption(arg, v, options, error);
+    return ParseIntegerOption(*integer, v, options, state, error);
+  }
+  if (arg == "--time-also" || arg == "--noise-tolerance")
+  {
+    state.TimingOption = state.TimingOption.empty() ? arg : state.TimingOption;
+    return arg == "--time-also" ? ParseTimedSpec(v, options, error)
+                                : ParseNoiseTolerance(v, options, error);
   }
   if (arg == "--size")
   {
@@ -222,8 +346,8 @@ int ParseValueOption(const std::string& arg, const char* v, RenderOptions& optio
 bool TakesValue(const std::string& arg)
 {
   static const char* const withValue[] = { "--technique", "--image", "--visibility", "--mask",
-    "--stats", "--light", "--frames", "--map-resolution", "--size", "--set", "--max-error",
-    "--reflections", "--image-light" };
+    "--stats", "--light", "--frames", "--rounds", "--warmup", "--map-resolution", "--size", "--set",
+    "--max-error", "--time-also", "--noise-tolerance", "--reflections", "--image-light" };
   for (const char* name : withValue)
   {
     if (arg == name)
@@ -232,6 +356,56 @@ bool TakesValue(const std::string& arg)
     }
   }
   return false;
+}
+
+// --time-also: a known technique with settings it takes, each label once
+// (none and none#2 are always timed).
+int CheckTimedSpec(const TimedSpec& spec, const std::vector<std::string>& taken, std::string& error)
+{
+  const std::string prefix = "--time-also: \"" + spec.Label + "\": ";
+  if (!vtkShadowTechnique::IsKnownTechnique(spec.Technique.c_str()))
+  {
+    error = prefix + "unknown technique \"" + spec.Technique +
+      "\" (known: " + vtkShadowTechnique::GetKnownTechniques() + ")";
+    return 2;
+  }
+  vtkNew<vtkShadowTechnique> probe;
+  probe->SetName(spec.Technique.c_str());
+  for (const auto& setting : spec.Settings)
+  {
+    if (!probe->SetOption(setting.first.c_str(), setting.second))
+    {
+      error = prefix + "technique " + spec.Technique + " has no setting \"" + setting.first +
+        "\" or the value is out of range (see docs/techniques.md)";
+      return 2;
+    }
+  }
+  if (std::find(taken.begin(), taken.end(), spec.Label) != taken.end())
+  {
+    error = prefix + "timed twice (none and none#2 are always timed, and so is --technique)";
+    return 2;
+  }
+  return 0;
+}
+
+// The timing options: only with --stats; every --time-also entry valid.
+int CheckTimingOptions(const RenderOptions& options, const ParseState& state, std::string& error)
+{
+  if (!state.TimingOption.empty() && options.Stats.empty())
+  {
+    error = state.TimingOption + ": only with --stats S.json (it sets how the timing runs)";
+    return 2;
+  }
+  std::vector<std::string> taken = { "none", "none#2", MainTimingLabel(options) };
+  for (const auto& spec : options.TimeAlso)
+  {
+    if (CheckTimedSpec(spec, taken, error) != 0)
+    {
+      return 2;
+    }
+    taken.push_back(spec.Label);
+  }
+  return 0;
 }
 
 // The whole command line is consistent: scene, technique and its settings,
@@ -278,7 +452,7 @@ int CheckRenderOptions(const RenderOptions& options, const ParseState& state, st
     error = "missing --image OUT.png";
     return 2;
   }
-  return 0;
+  return CheckTimingOptions(options, state, error);
 }
 }
 
@@ -317,6 +491,11 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::stri
     else if (arg == "--matte")
     {
       options.Matte = true;
+    }
+    else if (arg == "--fail-if-noisy")
+    {
+      options.FailIfNoisy = true;
+      state.TimingOption = state.TimingOption.empty() ? arg : state.TimingOption;
     }
     else if (!arg.empty() && arg[0] == '-')
     {

@@ -8,6 +8,14 @@
 #include <utility>
 #include <vector>
 
+// A technique timed next to the main one (--time-also TECH[:KEY=VALUE,...]).
+struct TimedSpec
+{
+  std::string Label; // the text as given: how the stats name the entry
+  std::string Technique;
+  std::vector<std::pair<std::string, double>> Settings;
+};
+
 struct RenderOptions
 {
   std::string Scene;
@@ -17,7 +25,14 @@ struct RenderOptions
   std::string Mask;
   std::string Stats;
   int Light = 0;
-  int Frames = 30;
+  // Interleaved timing (--stats): rounds of one block of Frames frames per
+  // timed technique, after Warmup frames each; see compare/timing/vsh_timing.h.
+  int Frames = 15;
+  int Rounds = 4;
+  int Warmup = 5;
+  double NoiseTolerance = 0.03;
+  bool FailIfNoisy = false;
+  std::vector<TimedSpec> TimeAlso;
   int MapResolution = 2048;
   int Width = 0; // 0: the scene's size
   int Height = 0;
@@ -42,5 +57,9 @@ void PrintTechniques(std::ostream& out);
 
 // The usage text.
 const char* RenderUsage();
+
+// The label of the main technique in the timing: its name, and its settings
+// as in --time-also (csm:cascades=2,map_resolution=1024) when it has any.
+std::string MainTimingLabel(const RenderOptions& options);
 
 #endif

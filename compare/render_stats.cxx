@@ -1,38 +1,12 @@
 #include "render_stats.h"
 
-#include "vtkCamera.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkShadowScene.h"
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace
 {
-// Put the camera on frame `i` of the path: always from the scene camera, so the
-// path is the same for every technique and never drifts.
-void PlaceCamera(vtkRenderer* renderer, const vtkShadowScene* scene, int i, int frames)
-{
-  vtkCamera* camera = renderer->GetActiveCamera();
-  scene->ConfigureCamera(camera);
-  const double phase = 2.0 * 3.14159265358979323846 * i / std::max(frames, 2);
-  camera->Azimuth(5.0 * std::sin(phase));
-  camera->Elevation(2.0 * std::cos(phase) - 2.0);
-  camera->OrthogonalizeViewUp();
-  vtkShadowScene::ResetCameraClippingRange(renderer); // near from the visible geometry
-}
-
-std::string Json(const FrameTimes& t)
-{
-  std::ostringstream out;
-  out.precision(6);
-  out << "{\"median\": " << t.Median << ", \"min\": " << t.Min << ", \"max\": " << t.Max << "}";
-  return out.str();
-}
-
 std::string Quoted(const std::string& text)
 {
   std::string out = "\"";
@@ -56,55 +30,167 @@ std::string Quoted(const std::string& text)
   }
   return out + "\"";
 }
-}
 
-FrameTimes TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, const vtkShadowScene* scene,
-  int frames, int warmup)
+// A number as JSON: non-finite values (a ratio to a zero time) as null.
+std::string Number(double value)
 {
-  for (int i = 0; i < warmup; ++i)
+  if (!std::isfinite(value))
   {
-    PlaceCamera(renderer, scene, i, frames);
-    window->Render();
-    window->WaitForCompletion();
+    return "null";
   }
-  std::vector<double> ms;
-  ms.reserve(frames);
-  for (int i = 0; i < frames; ++i)
-  {
-    PlaceCamera(renderer, scene, i, frames);
-    const auto start = std::chrono::steady_clock::now();
-    window->Render();
-    window->WaitForCompletion();
-    const auto stop = std::chrono::steady_clock::now();
-    ms.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
-  }
-  scene->ConfigureCamera(renderer->GetActiveCamera());
-  vtkShadowScene::ResetCameraClippingRange(renderer); // near from the visible geometry
-  FrameTimes t;
-  std::sort(ms.begin(), ms.end());
-  const size_t n = ms.size();
-  t.Median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
-  t.Min = ms.front();
-  t.Max = ms.back();
-  return t;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", value);
+  return buf;
 }
 
-std::string StatsJson(const std::string& scene, const std::string& technique, int width, int height,
-  int frames, const FrameTimes& shadowed, const FrameTimes& unshadowed, long long shadowMapBytes,
-  const std::string& techniqueJson)
+std::string Times(const vsh_timing_stats& s)
+{
+  return "{\"median\": " + Number(s.median) + ", \"min\": " + Number(s.min) +
+    ", \"max\": " + Number(s.max) + ", \"q1\": " + Number(s.q1) + ", \"q3\": " + Number(s.q3) + "}";
+}
+
+const char* BalanceName(int balance)
+{
+  return balance == 2 ? "whole cycles: every technique in every position and after every other "
+                        "equally often"
+    : balance == 1    ? "mirrored: every technique's mean position is the middle"
+                      : "unbalanced: an odd number of rounds shorter than a cycle";
+}
+
+std::string EntryJson(const TimedEntry& entry)
 {
   std::ostringstream out;
-  out.precision(6);
-  out << "{\n"
-      << "  \"scene\": " << Quoted(scene) << ",\n"
-      << "  \"technique\": " << Quoted(technique) << ",\n"
-      << "  \"size\": [" << width << ", " << height << "],\n"
-      << "  \"frames\": " << frames << ",\n"
-      << "  \"shadowed_ms\": " << Json(shadowed) << ",\n"
-      << "  \"unshadowed_ms\": " << Json(unshadowed) << ",\n"
-      << "  \"overhead_ms\": " << (shadowed.Median - unshadowed.Median) << ",\n"
-      << "  \"shadow_map_bytes\": " << shadowMapBytes << ",\n"
-      << "  \"technique_stats\": " << techniqueJson << "\n"
-      << "}\n";
+  out << "      {\"label\": " << Quoted(entry.Label)
+      << ", \"technique\": " << Quoted(entry.Technique) << ", \"settings\": {";
+  for (size_t i = 0; i < entry.Settings.size(); ++i)
+  {
+    out << (i ? ", " : "") << Quoted(entry.Settings[i].first) << ": "
+        << Number(entry.Settings[i].second);
+  }
+  const vsh_timing_stats& s = entry.Stats;
+  out << "},\n       \"ms\": " << Times(s)
+      << ",\n       \"ratio_to_none\": {\"median\": " << Number(s.ratio)
+      << ", \"min\": " << Number(s.ratio_min) << ", \"max\": " << Number(s.ratio_max)
+      << "},\n       \"round_medians_ms\": [";
+  for (size_t r = 0; r < entry.RoundMedians.size(); ++r)
+  {
+    out << (r ? ", " : "") << Number(entry.RoundMedians[r]);
+  }
+  out << "],\n       \"shadow_map_bytes\": " << entry.MemoryBytes
+      << ", \"pixels_changed_after_timing\": " << entry.ChangedPixels
+      << ",\n       \"technique_stats\": " << entry.Details << "}";
   return out.str();
+}
+
+std::string ScheduleJson(const TimingRun& run)
+{
+  std::ostringstream out;
+  out << "[";
+  for (size_t r = 0; r < run.Schedule.size(); ++r)
+  {
+    out << (r ? ",\n      [" : "\n      [");
+    for (size_t p = 0; p < run.Schedule[r].size(); ++p)
+    {
+      out << (p ? ", " : "") << Quoted(run.Entries[run.Schedule[r][p]].Label);
+    }
+    out << "]";
+  }
+  return out.str() + "]";
+}
+
+std::string NoiseJson(const TimingRun& run)
+{
+  const TimedEntry& floor = run.Entries[run.NoiseFloor];
+  return "{\"label\": " + Quoted(floor.Label + " / none") +
+    ", \"ratio\": " + Number(floor.Stats.ratio) + ", \"min\": " + Number(floor.Stats.ratio_min) +
+    ", \"max\": " + Number(floor.Stats.ratio_max) +
+    ", \"tolerance\": " + Number(run.NoiseTolerance) +
+    ", \"too_noisy\": " + (run.TooNoisy ? "true" : "false") + "}";
+}
+}
+
+std::string StatsJson(const StatsHeader& header, const TimingRun& run)
+{
+  const TimedEntry& main = run.Entries[header.Main];
+  const TimedEntry& none = run.Entries[run.Reference];
+  std::ostringstream out;
+  out << "{\n"
+      << "  \"scene\": " << Quoted(header.Scene) << ",\n"
+      << "  \"technique\": " << Quoted(header.Technique) << ",\n"
+      << "  \"size\": [" << header.Width << ", " << header.Height << "],\n"
+      << "  \"frames\": " << run.Frames << ",\n"
+      << "  \"rounds\": " << run.Rounds << ",\n"
+      << "  \"warmup_frames\": " << run.Warmup << ",\n"
+      << "  \"shadowed_ms\": " << Times(main.Stats) << ",\n"
+      << "  \"unshadowed_ms\": " << Times(none.Stats) << ",\n"
+      << "  \"overhead_ms\": " << Number(main.Stats.median - none.Stats.median) << ",\n"
+      << "  \"ratio\": " << Number(main.Stats.ratio) << ",\n"
+      << "  \"noise_floor\": " << NoiseJson(run) << ",\n"
+      << "  \"shadow_map_bytes\": " << main.MemoryBytes << ",\n"
+      << "  \"technique_stats\": " << main.Details << ",\n"
+      << "  \"timing\": {\n"
+      << "    \"method\": \"interleaved blocks in one window\",\n"
+      << "    \"reference\": " << Quoted(none.Label) << ",\n"
+      << "    \"main\": " << Quoted(main.Label) << ",\n"
+      << "    \"balance\": " << Quoted(BalanceName(run.Balance)) << ",\n"
+      << "    \"schedule\": " << ScheduleJson(run) << ",\n"
+      << "    \"entries\": [\n";
+  for (size_t e = 0; e < run.Entries.size(); ++e)
+  {
+    out << EntryJson(run.Entries[e]) << (e + 1 < run.Entries.size() ? ",\n" : "\n");
+  }
+  out << "    ]\n  }\n}\n";
+  return out.str();
+}
+
+std::string TimingSummary(const StatsHeader& header, const TimingRun& run)
+{
+  std::ostringstream out;
+  char line[1024];
+  std::snprintf(line, sizeof line,
+    "timing: %d rounds x %d frames per technique after %d warm-up frames each, %dx%d, "
+    "order rotated per round (%s)\n",
+    run.Rounds, run.Frames, run.Warmup, header.Width, header.Height,
+    run.Balance == 2     ? "whole cycles"
+      : run.Balance == 1 ? "mirrored"
+                         : "unbalanced");
+  out << line;
+  int width = 9; // "technique"; labels of --time-also can be long
+  for (const auto& entry : run.Entries)
+  {
+    width = std::max(width, static_cast<int>(std::min<size_t>(entry.Label.size(), 200)));
+  }
+  std::snprintf(line, sizeof line, "  %-*s %10s %21s %8s %17s\n", width, "technique", "median ms",
+    "rounds min-max ms", "x none", "rounds min-max");
+  out << line;
+  for (const auto& entry : run.Entries)
+  {
+    const vsh_timing_stats& s = entry.Stats;
+    std::snprintf(line, sizeof line, "  %-*s %10.2f %10.2f-%-10.2f %8.3f %8.3f-%-8.3f\n", width,
+      entry.Label.c_str(), s.median, s.min, s.max, s.ratio, s.ratio_min, s.ratio_max);
+    out << line;
+  }
+  const TimedEntry& floor = run.Entries[run.NoiseFloor];
+  std::snprintf(line, sizeof line,
+    "noise floor %s / none = %.3f (rounds %.3f-%.3f): %s 1.00 +- %.2f\n", floor.Label.c_str(),
+    floor.Stats.ratio, floor.Stats.ratio_min, floor.Stats.ratio_max,
+    run.TooNoisy ? "TOO NOISY, outside" : "within", run.NoiseTolerance);
+  out << line;
+  return out.str();
+}
+
+std::string NoiseWarning(const TimingRun& run)
+{
+  if (!run.TooNoisy)
+  {
+    return "";
+  }
+  const TimedEntry& floor = run.Entries[run.NoiseFloor];
+  char line[400];
+  std::snprintf(line, sizeof line,
+    "warning: timing too noisy: %s / none = %.3f (rounds %.3f-%.3f), outside 1.00 +- %.2f; "
+    "ratios are not reliable to better than that (more --rounds, a quieter machine)",
+    floor.Label.c_str(), floor.Stats.ratio, floor.Stats.ratio_min, floor.Stats.ratio_max,
+    run.NoiseTolerance);
+  return line;
 }

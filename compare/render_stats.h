@@ -1,28 +1,32 @@
-// render_stats.h - frame timings along a fixed camera path.
+// render_stats.h - the --stats JSON document and the timing summary text of
+// vtkshadow-render, from an interleaved timing run (render_timing.h).
 #ifndef vtkshadow_render_stats_h
 #define vtkshadow_render_stats_h
 
+#include "render_timing.h"
+
 #include <string>
-#include <vector>
 
-class vtkRenderWindow;
-class vtkRenderer;
-class vtkShadowScene;
-
-struct FrameTimes
+// What the document says besides the timing run.
+struct StatsHeader
 {
-  double Median = 0, Min = 0, Max = 0;
+  std::string Scene;
+  std::string Technique; // the main technique's name
+  int Width = 0;
+  int Height = 0;
+  int Main = 0; // the main technique's entry
 };
 
-// Render `frames` frames after `warmup` frames, the camera orbiting a small
-// fixed path around the scene camera (+-5 degrees azimuth, +-2 elevation), so
-// that caching is measured honestly; each frame ends with glFinish.
-FrameTimes TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, const vtkShadowScene* scene,
-  int frames, int warmup);
+// The stats JSON document. The top-level shadowed_ms / unshadowed_ms /
+// ratio / shadow_map_bytes / technique_stats are those of the main entry
+// and of none; "timing" holds every entry, the schedule and the noise floor.
+std::string StatsJson(const StatsHeader& header, const TimingRun& run);
 
-// The stats JSON document.
-std::string StatsJson(const std::string& scene, const std::string& technique, int width, int height,
-  int frames, const FrameTimes& shadowed, const FrameTimes& unshadowed, long long shadowMapBytes,
-  const std::string& techniqueJson);
+// A table of the entries for people: median ms, spread over rounds, ratio
+// to none, and the noise-floor line.
+std::string TimingSummary(const StatsHeader& header, const TimingRun& run);
+
+// The warning when the run is too noisy (empty otherwise).
+std::string NoiseWarning(const TimingRun& run);
 
 #endif

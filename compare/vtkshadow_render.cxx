@@ -2,6 +2,7 @@
 // the colour image, the per-light visibility and mask, and timing stats.
 #include "render_options.h"
 #include "render_stats.h"
+#include "render_timing.h"
 
 #include "vtkNew.h"
 #include "vtkOpenGLRenderer.h"
@@ -9,9 +10,11 @@
 #include "vtkRenderWindow.h"
 #include "vtkShadowDisplay.h"
 #include "vtkShadowPNG.h"
+#include "vtkShadowPassBase.h"
 #include "vtkShadowScene.h"
 #include "vtkShadowTechnique.h"
 #include "vtkShadowVisibility.h"
+#include "vtkSmartPointer.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <cstdio>
@@ -124,9 +127,94 @@ int ComputeVisibility(const Run& run, vtkShadowVisibility* visibility)
   return 0;
 }
 
+// A pass of `technique` with `settings` (checked while parsing).
+vtkSmartPointer<vtkShadowPassBase> MakePass(
+  const std::string& technique, const std::vector<std::pair<std::string, double>>& settings)
+{
+  vtkNew<vtkShadowTechnique> maker;
+  maker->SetName(technique.c_str());
+  for (const auto& setting : settings)
+  {
+    maker->SetOption(setting.first.c_str(), setting.second);
+  }
+  vtkSmartPointer<vtkShadowPassBase> pass;
+  pass.TakeReference(maker->CreatePass());
+  return pass;
+}
+
+// The timed entries: the main technique (its installed pass, which drew the
+// colour image), none, none#2 (the noise floor) and every --time-also.
+void SetUpTiming(const Run& run, vtkOpenGLRenderer* renderer, TimingRun& timing, int& main)
+{
+  const RenderOptions& options = run.Options;
+  timing.Rounds = options.Rounds;
+  timing.Frames = options.Frames;
+  timing.Warmup = options.Warmup;
+  timing.NoiseTolerance = options.NoiseTolerance;
+  auto add = [&](const std::string& label, const std::string& technique,
+               const std::vector<std::pair<std::string, double>>& settings, vtkShadowPassBase* pass)
+  {
+    TimedEntry entry;
+    entry.Label = label;
+    entry.Technique = technique;
+    entry.Settings = settings;
+    entry.Pass = pass ? vtkSmartPointer<vtkShadowPassBase>(pass) : MakePass(technique, settings);
+    timing.Entries.push_back(entry);
+  };
+  auto* installed = vtkShadowPassBase::SafeDownCast(renderer->GetPass());
+  const bool mainIsNone = MainTimingLabel(options) == "none";
+  if (!mainIsNone)
+  {
+    add(MainTimingLabel(options), options.Technique, options.Settings, installed);
+  }
+  timing.Reference = static_cast<int>(timing.Entries.size());
+  add("none", "none", {}, mainIsNone ? installed : nullptr);
+  timing.NoiseFloor = static_cast<int>(timing.Entries.size());
+  add("none#2", "none", {}, nullptr);
+  for (const auto& spec : options.TimeAlso)
+  {
+    add(spec.Label, spec.Technique, spec.Settings, nullptr);
+  }
+  main = mainIsNone ? timing.Reference : 0;
+}
+
+// The timing run as the stats JSON text; noisy set when the noise floor is
+// outside the tolerance. Empty with an error message on failure.
+std::string TimeTechniques(const Run& run, vtkRenderWindow* window, vtkOpenGLRenderer* renderer,
+  bool& noisy, std::string& error)
+{
+  TimingRun timing;
+  StatsHeader header;
+  SetUpTiming(run, renderer, timing, header.Main);
+  header.Scene = run.Options.Scene;
+  header.Technique = run.Options.Technique;
+  header.Width = run.Width;
+  header.Height = run.Height;
+  run.Progress("timing " + std::to_string(timing.Entries.size()) + " techniques interleaved: " +
+    std::to_string(timing.Rounds) + " rounds x " + std::to_string(timing.Frames) + " frames");
+  const bool ok = RunInterleavedTiming(window, renderer, run.Scene, timing, error);
+  ReleaseTimingPasses(window, timing);
+  if (!ok)
+  {
+    return "";
+  }
+  if (!run.Options.Quiet)
+  {
+    std::cerr << TimingSummary(header, timing);
+  }
+  const std::string warning = NoiseWarning(timing);
+  if (!warning.empty())
+  {
+    std::cerr << "vtkshadow-render: " << warning << "\n"; // also with --quiet
+  }
+  noisy = timing.TooNoisy;
+  return StatsJson(header, timing);
+}
+
 // The colour image with every light into `grab`, then (optionally) the
-// timings, shadowed and unshadowed, as the stats JSON text.
-std::string RenderColourAndStats(const Run& run, vtkWindowToImageFilter* grab)
+// interleaved timings as the stats JSON text.
+int RenderColourAndStats(
+  const Run& run, vtkWindowToImageFilter* grab, std::string& statsText, bool& noisy)
 {
   const RenderOptions& options = run.Options;
   run.Progress("colour image with " + options.Technique);
@@ -158,28 +246,17 @@ std::string RenderColourAndStats(const Run& run, vtkWindowToImageFilter* grab)
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->Update();
+  grab->SetInput(nullptr); // the image is kept by the filter
 
-  std::string statsText;
+  std::string error;
   if (!options.Stats.empty())
   {
-    run.Progress("timing " + std::to_string(options.Frames) + " frames, shadowed and unshadowed");
-    const FrameTimes shadowed = TimeFrames(window, renderer, run.Scene, options.Frames, 3);
-    // Memory and details of the technique's pass, before it is replaced.
-    const long long bytes = run.Technique->GetShadowMapMemory(renderer);
-    window->Render(); // the scene camera again, for the details
-    const std::string details = run.Technique->GetStatsJSON(renderer);
-    vtkNew<vtkShadowTechnique> none;
-    none->Install(renderer);
-    const FrameTimes unshadowed = TimeFrames(window, renderer, run.Scene, options.Frames, 3);
-    statsText = StatsJson(options.Scene, options.Technique, run.Width, run.Height, options.Frames,
-      shadowed, unshadowed, bytes, details);
+    statsText = TimeTechniques(run, window, renderer, noisy, error);
   }
-  // Free the passes' GL objects while the context still exists; the image
-  // is kept by the filter.
-  grab->SetInput(nullptr);
+  // Free the passes' GL objects while the context still exists.
   renderer->ReleaseGraphicsResources(window);
   renderer->SetPass(nullptr);
-  return statsText;
+  return options.Stats.empty() || !statsText.empty() ? 0 : Fail(1, error);
 }
 
 // Every output, each written atomically; all removed again if one fails.
@@ -245,6 +322,16 @@ int main(int argc, char* argv[])
     return status;
   }
   vtkNew<vtkWindowToImageFilter> grab;
-  const std::string statsText = RenderColourAndStats(run, grab);
-  return WriteOutputs(run, grab->GetOutput(), visibility, statsText);
+  std::string statsText;
+  bool noisy = false;
+  if (const int status = RenderColourAndStats(run, grab, statsText, noisy))
+  {
+    return status;
+  }
+  if (const int status = WriteOutputs(run, grab->GetOutput(), visibility, statsText))
+  {
+    return status;
+  }
+  // Everything is written; a too-noisy timing fails only when asked to.
+  return noisy && run.Options.FailIfNoisy ? 3 : 0;
 }

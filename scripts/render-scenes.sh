@@ -26,7 +26,7 @@ for scene in $(find "$scenes" -name '*.json' | sort); do
       if ! "$bin/vtkshadow-render" "$scene" \
           --technique "$technique" --image "$dir/image.png" --light "$k" \
           --visibility "$dir/light${k}_visibility.png" --mask "$dir/light${k}_mask.png" \
-          $stats --frames 30 --quiet; then
+          $stats --quiet; then
         echo "FAILED: $scene $technique light $k" >&2
         failed=$((failed + 1))
         status=1

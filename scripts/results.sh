@@ -3,7 +3,14 @@
 # scene in scenes/ (bench/vtkshadow-bench, with POV-Ray references and the
 # Blender EEVEE peer through vtkshadow-compare), how cost grows with triangles
 # and pixels (bench/bench_growth.py), assembled by bench/make_results.py.
-# About 40 minutes on 2 cores (less with the reference cache); progress goes to stderr. Run from anywhere,
+# Timing: per scene (and per growth row) one vtkshadow-render process times
+# every configuration in one window, interleaved in blocks (5 warm-up frames
+# each, 4 rounds of 15 frames, the order changed every round) at the scenes'
+# own size (800x600), with none timed twice as the noise floor
+# (docs/performance.md, "How frames are timed"); errors are measured at half
+# size against POV-Ray.
+# About an hour on 2 otherwise idle cores (the timing runs every configuration at
+# 800x600; much longer on a loaded machine); progress goes to stderr. Run from anywhere,
 # after the README's main command (`sh scripts/main.sh`: it installs
 # POV-Ray, Blender and gnuplot, which this needs, and builds).
 # OUT (default out/results) keeps the raw runs: bench.csv, plots, stats; it
@@ -24,9 +31,10 @@ mkdir -p "$OUT"
 # entries go; POV-Ray's references stay cached.
 rm -rf out/results-cache/eevee out/results-cache/eevee-best
 sh tests/gl-run.sh build/bin/vtkshadow-python bench/vtkshadow_bench.py scenes \
-  --out "$OUT/bench" --scale 0.5 --frames 30 --grid small --rounds 2 \
+  --out "$OUT/bench" --scale 0.5 --timing-scale 1 --frames 15 --rounds 4 --warmup 5 \
+  --grid small \
   --peers basic,scivis,cad --cache out/results-cache > "$OUT/bench.txt"
 sh tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py \
-  --out "$OUT/growth" --frames 30 --rounds 3 > "$OUT/growth.txt"
+  --out "$OUT/growth" --frames 15 --rounds 4 --warmup 5 > "$OUT/growth.txt"
 /usr/bin/python3 bench/make_results.py --bench "$OUT/bench" --growth "$OUT/growth" \
   --command "sh scripts/results.sh" --output docs/results.md

@@ -50,6 +50,12 @@ add_test(NAME cli.list_techniques
 add_test(NAME cli.outputs
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_outputs.py
           --bin ${VTKSHADOW_BIN} --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/outputs)
+# --stats and vtkshadow-bench time techniques interleaved in one window: the
+# structure of their output, none against itself, no state leaked (never a speed).
+add_test(NAME cli.timing
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_timing.py
+          --bin ${VTKSHADOW_BIN} --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/timing)
+set_tests_properties(cli.timing PROPERTIES LABELS "render" TIMEOUT 1800)
 
 # Visibility against the exact answer by ray casting (tests/render/).
 function(vtkshadow_visibility_test name)

@@ -23,7 +23,7 @@ failures = []
 count = 0
 
 
-def run_case(argv, expect_in_message, label):
+def run_case(argv, expect_in_message, label, stats=True):
     global count
     count += 1
     outputs = [os.path.join(args.out, f"{label}.{ext}") for ext in
@@ -32,7 +32,8 @@ def run_case(argv, expect_in_message, label):
         if os.path.exists(p):
             os.remove(p)
     full = [render] + argv + ["--image", outputs[0], "--visibility", outputs[1],
-                              "--mask", outputs[2], "--stats", outputs[3], "--quiet"]
+                              "--mask", outputs[2], "--quiet"] + (
+                                  ["--stats", outputs[3]] if stats else [])
     env = dict(os.environ)
     env.pop("DISPLAY", None)  # bad input must be caught before any rendering
     run = subprocess.run(full, capture_output=True, text=True, env=env, timeout=120)
@@ -102,6 +103,35 @@ run_case([good, "--technique", "csm", "--set", "cascades=9"],
          ["technique csm", '"cascades=9'], "cli-set-out-of-range")
 run_case([good, "--technique", "csm", "--set", "bogus=1"], ['"bogus=1'], "cli-set-unknown")
 
+# The interleaved timing's options: each bad value names the option and the
+# value; the timing options without --stats are refused.
+TIMING_CASES = [
+    (["--rounds", "0"], ["--rounds", '(got "0")'], "cli-rounds-zero"),
+    (["--rounds", "x"], ["--rounds", '(got "x")'], "cli-rounds-junk"),
+    (["--warmup", "-1"], ["--warmup", '(got "-1")'], "cli-warmup"),
+    (["--frames", "100001"], ["--frames", '(got "100001")'], "cli-frames-big"),
+    (["--noise-tolerance", "0"], ["--noise-tolerance", '(got "0")'], "cli-noise-zero"),
+    (["--noise-tolerance", "1"], ["--noise-tolerance", '(got "1")'], "cli-noise-one"),
+    (["--noise-tolerance", "nan"], ["--noise-tolerance", '(got "nan")'], "cli-noise-nan"),
+    (["--time-also", "bogus"], ["--time-also", '"bogus"', "unknown technique"], "cli-also-tech"),
+    (["--time-also", "csm:bogus=1"], ["--time-also", '"csm:bogus=1"', 'no setting "bogus"'],
+     "cli-also-key"),
+    (["--time-also", "csm:cascades=9"], ["--time-also", '"csm:cascades=9"'], "cli-also-range"),
+    (["--time-also", "csm:cascades"], ["--time-also", '(got "csm:cascades")'], "cli-also-form"),
+    (["--time-also", "csm:"], ["--time-also", '(got "csm:")'], "cli-also-empty"),
+    (["--time-also", "csm:cascades=2,"], ["--time-also", '(got "csm:cascades=2,")'],
+     "cli-also-comma"),
+    (["--time-also", "none"], ["--time-also", '"none"', "timed twice"], "cli-also-none"),
+    (["--time-also", "vtk"], ["--time-also", '"vtk"', "timed twice"], "cli-also-main"),
+    (["--time-also", "csm", "--time-also", "csm"], ["--time-also", '"csm"', "timed twice"],
+     "cli-also-twice"),
+]
+for extra, needles, label in TIMING_CASES:
+    run_case([good, "--technique", "vtk"] + extra, needles, label)
+for option, value in (("--rounds", "3"), ("--time-also", "csm"), ("--fail-if-noisy", None)):
+    run_case([good, "--technique", "vtk", option] + ([value] if value else []),
+             [option, "only with --stats"], "cli-no-stats" + option, stats=False)
+
 # How many cases ran: a moved data directory, an empty glob or a lost table
 # entry must not pass as "0 failed". tests/scene/data/bad held 65 bad scenes
 # when this was written (only ever grows); every one of them runs, plus the 3
@@ -110,7 +140,7 @@ bad_scenes = len(glob.glob(os.path.join(bad_dir, "*.json")))
 if bad_scenes < 65:
     failures.append("scene-count")
     print(f"FAIL: {bad_scenes} bad scenes in {bad_dir}, expected at least 65")
-expected = bad_scenes + 3 + len(BAD_MESHES) + 10
+expected = bad_scenes + 3 + len(BAD_MESHES) + 10 + len(TIMING_CASES) + 3
 if count != expected:
     failures.append("count")
     print(f"FAIL ran {count} cases, expected {expected}")

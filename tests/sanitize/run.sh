@@ -24,11 +24,11 @@ here=$(cd "$(dirname "$0")" && pwd)
 # The product tests. Without GL: the CLI's bad input (every error path must
 # exit 2, not crash or leak; no display) and the harness's error paths (fake
 # POV-Ray, hostile scene, unknown renderer). With GL: the C API (both
-# techniques' C tests), the CLI's outputs, one render test per technique and
+# techniques' C tests), the CLI's outputs and interleaved timing, one render test per technique and
 # light type (planar; csm directional / point / spot and two lights, light 1;
 # auto on the thin plate).
 NOGL_TESTS='^(cli\.bad_input|harness\.(crash|hostile|renderers))$'
-GL_TESTS='^(capi\.c|capi\.c\.planar|cli\.outputs'\
+GL_TESTS='^(capi\.c|capi\.c\.planar|cli\.outputs|cli\.timing'\
 '|render\.planar\.sphere-floor-directional-4x3'\
 '|render\.csm\.(sphere-floor-directional-4x3|sphere-floor-point-4x3|box-tilted-plane-spot|two-lights-light1)'\
 '|render\.auto\.thin-plate)$'
