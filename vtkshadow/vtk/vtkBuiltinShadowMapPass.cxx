@@ -1,10 +1,13 @@
 #include "vtkBuiltinShadowMapPass.h"
 
+#include "vtkActor.h"
 #include "vtkCameraPass.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
@@ -17,9 +20,85 @@
 
 vtkStandardNewMacro(vtkBuiltinShadowMapPass);
 
+namespace
+{
+/**
+ * VTK's vtkShadowMapPass with two changes made from outside its code:
+ *
+ * - Only lit actors drawn by a polydata mapper get its shadow code. VTK's
+ *   pass puts `calcShadow(vertexVC, ...)` into every shader it is
+ *   registered with, but a mapper declares vertexVC only when it lights:
+ *   an actor with lighting off (an outline, say) then fails to compile and
+ *   VTK 9.1 crashes using the missing program. Unlit actors and other
+ *   mappers (volumes) keep their own shaders, which are right without
+ *   shadows.
+ * - The residual light: VTK's own per-light vtkLight::ShadowAttenuation a
+ *   gives the factor 1 - a + a * visibility; scaling a by (1 - residual)
+ *   leaves `residual` of the light in full shadow, as in every vtkshadow
+ *   technique.
+ */
+class vtkShadowMapPassGuarded : public vtkShadowMapPass
+{
+public:
+  static vtkShadowMapPassGuarded* New();
+  vtkTypeMacro(vtkShadowMapPassGuarded, vtkShadowMapPass);
+
+  double Residual = 0.0;
+
+  static bool Shadowable(vtkAbstractMapper* mapper, vtkProp* prop)
+  {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    return actor && actor->GetProperty() && actor->GetProperty()->GetLighting() &&
+      vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+  }
+
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override
+  {
+    return !Shadowable(mapper, prop) ||
+      this->Superclass::PreReplaceShaderValues(
+        vertexShader, geometryShader, fragmentShader, mapper, prop);
+  }
+
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override
+  {
+    return !Shadowable(mapper, prop) ||
+      this->Superclass::PostReplaceShaderValues(
+        vertexShader, geometryShader, fragmentShader, mapper, prop);
+  }
+
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* vao) override
+  {
+    if (!Shadowable(mapper, prop))
+    {
+      return true;
+    }
+    const std::vector<float> attenuation = this->ShadowAttenuation;
+    for (float& a : this->ShadowAttenuation)
+    {
+      a = static_cast<float>(a * (1.0 - this->Residual));
+    }
+    const bool ok = this->Superclass::SetShaderParameters(program, mapper, prop, vao);
+    this->ShadowAttenuation = attenuation;
+    return ok;
+  }
+
+protected:
+  vtkShadowMapPassGuarded() = default;
+  ~vtkShadowMapPassGuarded() override = default;
+
+private:
+  vtkShadowMapPassGuarded(const vtkShadowMapPassGuarded&) = delete;
+  void operator=(const vtkShadowMapPassGuarded&) = delete;
+};
+vtkStandardNewMacro(vtkShadowMapPassGuarded);
+}
+
 //------------------------------------------------------------------------------
 vtkBuiltinShadowMapPass::vtkBuiltinShadowMapPass()
-  : Shadows(vtkShadowMapPass::New())
+  : Shadows(vtkShadowMapPassGuarded::New())
   , MapResolution(2048)
   , ShadowingLights(0)
 {
@@ -67,6 +146,8 @@ bool vtkBuiltinShadowMapPass::SetOption(const char* key, double value)
 void vtkBuiltinShadowMapPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
+  // The attenuation is a uniform in VTK's code: no shader rebuild needed.
+  static_cast<vtkShadowMapPassGuarded*>(this->Shadows)->Residual = this->ResidualLight;
   // The lights VTK's baker gives a map: switched on, not the headlight, and
   // directional or a spot (VTK's pass skips point lights).
   this->ShadowingLights = 0;
