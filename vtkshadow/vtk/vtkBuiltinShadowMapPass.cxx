@@ -6,6 +6,8 @@
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOverlayPass.h"
+#include "vtkVolumetricPass.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
@@ -25,13 +27,15 @@ namespace
 /**
  * VTK's vtkShadowMapPass with two changes made from outside its code:
  *
- * - Only lit actors drawn by a polydata mapper get its shadow code. VTK's
- *   pass puts `calcShadow(vertexVC, ...)` into every shader it is
- *   registered with, but a mapper declares vertexVC only when it lights:
- *   an actor with lighting off (an outline, say) then fails to compile and
- *   VTK 9.1 crashes using the missing program. Unlit actors and other
- *   mappers (volumes) keep their own shaders, which are right without
- *   shadows.
+ * - No shader without vertexVC gets its shadow code. VTK's pass puts
+ *   `calcShadow(vertexVC, ...)` into every shader it is registered with,
+ *   but a polydata mapper declares vertexVC only when its light complexity
+ *   is not 0: an actor with lighting off (an outline, say), or lit lines
+ *   and points without normals (the cube axes' lines). Such a shader fails
+ *   to compile and VTK 9.1 crashes drawing with the missing program.
+ *   Actors with lighting off and other mappers (volumes) keep their own
+ *   shaders; a lit actor whose primitive is drawn unlit gets a dummy
+ *   vertexVC (its factors then go into no light term).
  * - The residual light: VTK's own per-light vtkLight::ShadowAttenuation a
  *   gives the factor 1 - a + a * visibility; scaling a by (1 - residual)
  *   leaves `residual` of the light in full shadow, as in every vtkshadow
@@ -63,9 +67,23 @@ public:
   bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override
   {
-    return !Shadowable(mapper, prop) ||
-      this->Superclass::PostReplaceShaderValues(
-        vertexShader, geometryShader, fragmentShader, mapper, prop);
+    if (!Shadowable(mapper, prop))
+    {
+      return true;
+    }
+    const std::string call = "calcShadow(vertexVC";
+    const size_t first = fragmentShader.find(call);
+    if (first != std::string::npos && fragmentShader.find("vec4 vertexVC =") == std::string::npos)
+    {
+      const size_t line = fragmentShader.rfind('\n', first);
+      const size_t at = fragmentShader.rfind("vec2 factor", first);
+      const size_t where = at != std::string::npos && (line == std::string::npos || at > line)
+        ? at
+        : (line == std::string::npos ? 0 : line + 1);
+      fragmentShader.insert(where, "vec4 vertexVC = vec4(0.0, 0.0, 0.0, 1.0); // unlit: unused\n");
+    }
+    return this->Superclass::PostReplaceShaderValues(
+      vertexShader, geometryShader, fragmentShader, mapper, prop);
   }
 
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
@@ -106,6 +124,14 @@ vtkBuiltinShadowMapPass::vtkBuiltinShadowMapPass()
   vtkNew<vtkRenderPassCollection> passes;
   passes->AddItem(this->Shadows->GetShadowMapBakerPass());
   passes->AddItem(this->Shadows);
+  // VTK's assembly (TestShadowMapPass) draws opaque geometry only; volumes
+  // and 2D overlays (scalar bars, text) follow as in vtkRenderStepsPass, so
+  // the baseline runs ordinary scenes without losing them. (Volumes cast no
+  // shadow here either.)
+  vtkNew<vtkVolumetricPass> volumes;
+  vtkNew<vtkOverlayPass> overlays;
+  passes->AddItem(volumes);
+  passes->AddItem(overlays);
   vtkNew<vtkSequencePass> sequence;
   sequence->SetPasses(passes);
   vtkNew<vtkCameraPass> camera;
