@@ -6,9 +6,8 @@
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkOverlayPass.h"
-#include "vtkVolumetricPass.h"
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOverlayPass.h"
 #include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
@@ -16,6 +15,7 @@
 #include "vtkSequencePass.h"
 #include "vtkShadowMapBakerPass.h"
 #include "vtkShadowMapPass.h"
+#include "vtkVolumetricPass.h"
 
 #include <cmath>
 #include <cstring>

@@ -346,8 +346,8 @@ void vtkPlanarShadowPass::GatherReceivers(const std::vector<vtkActor*>& actors, 
   impl.ReceiverIndex.clear();
   // Marked actors, or else the flat ones (detection).
   const vtkshadow::ReceiverChoice choice = this->ChooseReceivers(actors);
-  impl.Detected.assign(choice.Detected ? choice.Receivers.begin() : choice.Receivers.end(),
-    choice.Receivers.end());
+  impl.Detected.assign(
+    choice.Detected ? choice.Receivers.begin() : choice.Receivers.end(), choice.Receivers.end());
   for (vtkActor* actor : choice.Receivers)
   {
     vtkshadow::ReceiverPlaneCache::Entry& plane = impl.ReceiverPlanes.Get(actor);
@@ -808,8 +808,7 @@ bool vtkPlanarShadowPass::PostReplaceShaderValues(
   }
   // Each light's diffuse and specular terms times its mask bit; the mask is
   // read once per fragment.
-  this->InjectLightFactors(
-    fragmentShader, "vshPlanarLit(%d)", "vshPlanarPrepare(vertexVC.xyz);");
+  this->InjectLightFactors(fragmentShader, "vshPlanarLit(%d)", "vshPlanarPrepare(vertexVC.xyz);");
   return true;
 }
 

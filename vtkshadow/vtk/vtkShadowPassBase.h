@@ -146,7 +146,6 @@ protected:
   void RenderDelegate(const vtkRenderState* s);
   void RenderDelegateWithShaderHooks(const vtkRenderState* s);
 
-
   /**
    * Mark the generated shader code as changed (mappers rebuild).
    */

@@ -140,7 +140,10 @@ public:
    * was, and what was done ("" when nothing).
    */
   vtkLight* GetAddedKeyLight() const;
-  const char* GetLightMessage() const { return this->LightMessage.c_str(); }
+  const char* GetLightMessage() const
+  {
+    return this->LightMessage.c_str();
+  }
 
   /**
    * The actors the installed pass detected as plane receivers in its last

@@ -207,7 +207,8 @@ extern "C"
   vtkshadow_technique* vtkshadow_enable_shadows(
     void* vtk_renderer, const char* name, double max_error, char* error, size_t error_size)
   {
-    vtkshadow_technique* technique = vtkshadow_technique_new(name ? name : "auto", error, error_size);
+    vtkshadow_technique* technique =
+      vtkshadow_technique_new(name ? name : "auto", error, error_size);
     if (!technique)
     {
       return nullptr;
