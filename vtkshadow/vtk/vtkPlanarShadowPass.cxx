@@ -251,8 +251,9 @@ vtkshadow::ReceiverPlaneCache& vtkPlanarShadowPass::GetReceiverPlaneCache()
 //------------------------------------------------------------------------------
 vtkshadow::ReceiverChoice vtkPlanarShadowPass::ChooseReceivers(const std::vector<vtkActor*>& actors)
 {
+  // Explicit planes (AddReceiverPlane) are marks too: no detection then.
   return vtkshadow::ChooseReceivers(actors, this->Impl->AddedActors(), RECEIVER(),
-    this->DetectReceivers, this->Impl->ReceiverPlanes);
+    this->DetectReceivers && this->Impl->Planes.empty(), this->Impl->ReceiverPlanes);
 }
 
 //------------------------------------------------------------------------------

@@ -16,8 +16,9 @@
  * Receivers: actors marked with RECEIVER() or added with AddReceiverActor()
  * (their flat geometry defines the plane and the area), or explicit planes
  * (AddReceiverPlane()), which receive on every opaque fragment lying on them.
- * When no actor is marked or added, every flat surface actor (all its points
- * on one plane: a floor, a cut plane, a slice) is detected as a receiver,
+ * When no actor is marked or added and no plane is given, every flat surface
+ * actor (all its points on one plane: a floor, a cut plane, a slice) is
+ * detected as a receiver,
  * unless it carries RECEIVER() = 0 or detection is off (DetectReceivers,
  * option detect_receivers); GetDetectedReceiver() lists them.
  * Casters: every visible opaque actor except receivers onto themselves and
