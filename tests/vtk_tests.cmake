@@ -24,6 +24,14 @@ add_test(NAME python.api
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_python_api.py
           ${PROJECT_SOURCE_DIR})
 
+# enable_shadows on a typical VTK pipeline (wavelet contour, glyphs, unlit
+# outline, cube axes, scalar bar, text, volume, composite data, floor), with
+# every registered technique (tests/python/test_enable_shadows.py).
+add_test(NAME python.enable_shadows
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_shadows.py
+          ${PROJECT_SOURCE_DIR})
+set_tests_properties(python.enable_shadows PROPERTIES LABELS "render" TIMEOUT 900)
+
 # C API from a .c file.
 add_executable(test_capi capi/test_capi.c)
 target_link_libraries(test_capi PRIVATE vtkshadow::vtkshadow)

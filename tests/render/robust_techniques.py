@@ -220,11 +220,6 @@ PROFILES = {
                 "the 'vtk' pipeline (VTK's TestShadowMapPass assembly) draws opaque "
                 "geometry only: translucent actors are not drawn",
             ("translucent", "translucent receiver renders"): "as above: not drawn",
-            ("lighting-off", "the unlit cube renders"):
-                "VTK 9.1's vtkShadowMapPass with a LightingOff actor: GL_INVALID_OPERATION "
-                "and VTK errors, the actor partly drawn",
-            ("lighting-off", "no VTK error messages"): "as above",
-            ("lighting-off", "no GL errors"): "as above",
             ("resize", "resized 640x480 -> 800x450 vs a fresh 800x450 render: visibility agrees"):
                 "VTK 9.1's shadow map after a window resize differs from a fresh window's "
                 "(92.5 % agreement)",

@@ -652,7 +652,7 @@ bool vtkCascadedShadowMapPass::PostReplaceShaderValues(
   {
     return true;
   }
-  if (vtkshadow::InjectLightFactors(fragmentShader, "vshShadowFactor[%d]",
+  if (this->InjectLightFactors(fragmentShader, "vshShadowFactor[%d]",
         "vshShadowPrepare(vertexVC.xyz, normalize(normalVCVSOutput));", MaxLights))
   {
     // The debug view tints the final colour by cascade.

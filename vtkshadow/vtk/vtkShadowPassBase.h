@@ -16,7 +16,12 @@
  *   BumpShaderTime() so VTK's mappers rebuild their shaders;
  * - virtuals for the GPU memory it holds, the last frame's details as JSON,
  *   and named options (SetOption), so the CLI, the C API, Python, the
- *   harness and the bench treat every technique alike.
+ *   harness and the bench treat every technique alike;
+ * - the residual light (option residual_light): how much of a light remains
+ *   in its shadow, applied where every pass's factor enters the lighting
+ *   (InjectLightFactors);
+ * - the receivers a pass detected (GetDetectedReceiver), for passes with
+ *   plane receivers.
  */
 #ifndef vtkShadowPassBase_h
 #define vtkShadowPassBase_h
@@ -26,6 +31,7 @@
 
 #include <string> // for std::string
 
+class vtkActor;
 class vtkInformationIntegerKey;
 class vtkLight;
 class vtkRenderer;
@@ -78,6 +84,24 @@ public:
   bool LightCasts(vtkLight* light, int index) const;
 
   /**
+   * How much of a light remains where it is shadowed: 0 (default) is the
+   * physical hard shadow (the light's diffuse and specular terms removed),
+   * 0.3 keeps 30% of them, 1 shows no shadow. Each light's shadow factor f
+   * becomes mix(ResidualLight, 1, f). Option residual_light (0..1).
+   * Changing it rebuilds the mappers' shaders (the value is a constant in
+   * them).
+   */
+  virtual void SetResidualLight(double residual);
+  vtkGetMacro(ResidualLight, double);
+
+  /**
+   * Actors the pass detected as plane receivers in its last frame (because
+   * none was marked with RECEIVER()); none for passes without receivers.
+   */
+  virtual int GetNumberOfDetectedReceivers() const { return 0; }
+  virtual vtkActor* GetDetectedReceiver(int) const { return nullptr; }
+
+  /**
    * Bytes of GPU memory the pass holds for shadows, as of its last frame.
    */
   virtual long long GetMemoryBytes() const { return 0; }
@@ -91,7 +115,8 @@ public:
   /**
    * Set a setting by name (command lines, the C API, vtkShadowTechnique).
    * Returns false for a key this pass does not have or a value out of its
-   * range; nothing changes then. The base knows cast_headlight (0 or 1).
+   * range; nothing changes then. The base knows cast_headlight (0 or 1)
+   * and residual_light (0..1).
    */
   virtual bool SetOption(const char* key, double value);
 
@@ -126,8 +151,24 @@ protected:
    */
   void BumpShaderTime();
 
+#ifndef __VTK_WRAP__
+  /**
+   * vtkshadow::InjectLightFactors with this pass's ResidualLight: every
+   * pass puts its factors into the lighting through this.
+   */
+  bool InjectLightFactors(std::string& fragmentShader, const std::string& factor,
+    const std::string& prepare, int maxLights = 16) const;
+#endif
+
+  /**
+   * The detected receivers as a JSON array of their indices in the
+   * renderer's actor list, "[]" for none.
+   */
+  std::string DetectedReceiversJSON(vtkRenderer* renderer) const;
+
   vtkRenderPass* DelegatePass;
   bool CastHeadlightShadows;
+  double ResidualLight;
   unsigned int SkippedLights;
   vtkMTimeType ShaderTime;
 
