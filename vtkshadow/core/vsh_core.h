@@ -15,5 +15,6 @@
 #include "vsh_silhouette.h"
 #include "vsh_plane.h"
 #include "vsh_frustum.h"
+#include "vsh_soft.h"
 
 #endif
