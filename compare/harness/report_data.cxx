@@ -49,7 +49,7 @@ std::string CsvRow(const Row& r)
     r.height, r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
     r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), false).c_str(),
     r.status.c_str());
-  return buf;
+  return buf + PenumbraFields(r.pen, ",", false) + "\n";
 }
 
 std::string JsonRow(const Row& r)
