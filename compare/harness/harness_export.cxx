@@ -95,6 +95,8 @@ void PovAreaLight(std::string& o, const ExportLight& L, int grid, int seed)
   Vec(o, a);
   o += ", ";
   Vec(o, b);
+  // No area_illumination: tried, it moved POV-Ray further from Cycles on a
+  // curved caster's terminator (docs/harness.md, "Lights with a size").
   o += ", " + std::to_string(grid) + ", " + std::to_string(grid) + " circular jitter";
   if (L.type != 0)
     o += " orient";
