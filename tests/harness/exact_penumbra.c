@@ -15,11 +15,13 @@
  * (vsh_penumbra.h) and its whole-image mean absolute error. Exit 0, or 2
  * on bad input. The exact image goes to EXACT_OUT.png when given.
  *
- *   exact_penumbra --noise A.png B.png MASK.png
+ *   exact_penumbra --noise A.png B.png MASK.png [SCENE LIGHT]
  *
  * A renderer's own noise from two renders with different seeds: over the
  * penumbra mask of A (vsh_penumbra_mask), sigma = std(A - B) / sqrt(2)
- * (the noise of one render, independent renders). */
+ * (the noise of one render, independent renders). With SCENE and LIGHT,
+ * only the plane's pixels count (as for the exact comparison): Cycles'
+ * per-sample N.L makes a curved caster's terminator far noisier. */
 #include "vsh_metrics.h"
 #include "vsh_penumbra.h"
 #include "vsh_png.h"
@@ -107,7 +109,8 @@ static int noise(int argc, char **argv) {
   char err[1024];
   float *a = NULL, *b = NULL, *m = NULL;
   int w, h, w2, h2, w3, h3;
-  if (argc != 5) return usage_error("usage: exact_penumbra --noise A.png B.png MASK.png", NULL);
+  if (argc != 5 && argc != 7)
+    return usage_error("usage: exact_penumbra --noise A.png B.png MASK.png [SCENE LIGHT]", NULL);
   if (vsh_png_read_gray(argv[2], &a, &w, &h, NULL, err, sizeof err) ||
       vsh_png_read_gray(argv[3], &b, &w2, &h2, NULL, err, sizeof err) ||
       vsh_png_read_gray(argv[4], &m, &w3, &h3, NULL, err, sizeof err) || w != w2 || w != w3 ||
@@ -118,6 +121,19 @@ static int noise(int argc, char **argv) {
   double sum = 0, sum2 = 0;
   long n = 0;
   for (size_t i = 0; i < np; ++i) valid[i] = m[i] > 0.5f;
+  if (argc == 7) {
+    vsh_scene *s = NULL;
+    cam c;
+    int k = atoi(argv[6]);
+    if (vsh_scene_load(argv[5], &s, err, sizeof err)) return usage_error(err, NULL);
+    if (k < 0 || (size_t)k >= s->light_count || s->object_count < 2)
+      return usage_error("bad scene or light: ", argv[5]);
+    camera_of(&s->camera, w, h, &c);
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i)
+        if (valid[(size_t)j * w + i] && pixel(s, &c, k, i, j, w, h) < 0) valid[(size_t)j * w + i] = 0;
+    vsh_scene_free(s);
+  }
   vsh_penumbra_mask(a, valid, w, h, mask);
   for (size_t i = 0; i < np; ++i)
     if (mask[i]) {
