@@ -2,8 +2,11 @@
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkLight.h"
+#include "vtkNew.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
@@ -11,9 +14,54 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 vtkInformationKeyMacro(vtkShadowPassBase, RECEIVER, Integer);
 vtkInformationKeyMacro(vtkShadowPassBase, NO_CAST, Integer);
+vtkInformationKeyMacro(vtkShadowPassBase, LIGHT_RADIUS, Double);
+vtkInformationKeyMacro(vtkShadowPassBase, LIGHT_ANGLE, Double);
+
+namespace
+{
+// A size key's value, or 0 when the light has none or an unusable one (a
+// light made by hand could carry anything; a pass must never see NaN).
+double LightSizeValue(vtkLight* light, vtkInformationDoubleKey* key, double limit)
+{
+  vtkInformation* info = light ? light->GetInformation() : nullptr;
+  if (!info || !info->Has(key))
+  {
+    return 0.0;
+  }
+  const double v = info->Get(key);
+  return (v >= 0.0 && v < limit) ? v : 0.0;
+}
+}
+
+double vtkShadowPassBase::GetLightRadius(vtkLight* light)
+{
+  return LightSizeValue(light, LIGHT_RADIUS(), std::numeric_limits<double>::infinity());
+}
+
+double vtkShadowPassBase::GetLightAngle(vtkLight* light)
+{
+  return LightSizeValue(light, LIGHT_ANGLE(), 180.0);
+}
+
+void vtkShadowPassBase::SetLightSize(vtkLight* light, double radius, double angleDegrees)
+{
+  if (!light)
+  {
+    return;
+  }
+  if (!light->GetInformation())
+  {
+    vtkNew<vtkInformation> info;
+    light->SetInformation(info);
+  }
+  light->GetInformation()->Set(LIGHT_RADIUS(), radius);
+  light->GetInformation()->Set(LIGHT_ANGLE(), angleDegrees);
+  light->Modified();
+}
 vtkCxxSetObjectMacro(vtkShadowPassBase, DelegatePass, vtkRenderPass);
 
 //------------------------------------------------------------------------------

@@ -32,6 +32,7 @@
 #include <string> // for std::string
 
 class vtkActor;
+class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
 class vtkLight;
 class vtkRenderer;
@@ -52,6 +53,27 @@ public:
    * Property key: an actor with NO_CAST() = 1 casts no shadow.
    */
   static vtkInformationIntegerKey* NO_CAST();
+
+  ///@{
+  /**
+   * A light's size, kept in the vtkLight's information
+   * (vtkLight::GetInformation): LIGHT_RADIUS() is the radius of a point or
+   * spot light's disk (world units; the disk is centred on the light's
+   * position and faces the shaded point, as Cycles 3.4 samples it),
+   * LIGHT_ANGLE() the angular diameter of a directional light in degrees
+   * (shadow rays leave within a cone of half-angle ANGLE/2 around the
+   * direction to the light). Absent or 0: a hard light. vtkShadowScene sets
+   * them from the scene's "radius" and "angle". Passes read them with
+   * GetLightRadius / GetLightAngle, which return 0 for a light without the
+   * key (any vtkLight made elsewhere) or with a value that is not finite and
+   * >= 0 (and, for the angle, < 180).
+   */
+  static vtkInformationDoubleKey* LIGHT_RADIUS();
+  static vtkInformationDoubleKey* LIGHT_ANGLE();
+  static double GetLightRadius(vtkLight* light);
+  static double GetLightAngle(vtkLight* light);
+  static void SetLightSize(vtkLight* light, double radius, double angleDegrees);
+  ///@}
 
   /**
    * The pass that renders the scene (default: a vtkRenderStepsPass, made on
