@@ -80,6 +80,7 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_extra_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/harness/harness_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/depth_range_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/display_soak_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/paraview/paraview_tests.cmake)
 
 # Every test of this directory may use the shared X server.
 get_property(vtkshadow_vtk_tests DIRECTORY PROPERTY TESTS)

@@ -2,7 +2,9 @@
 
 #include "vtkActor.h"
 #include "vtkInformation.h"
+#include "vtkCascadedShadowMapPass.h"
 #include "vtkMath.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
 #include "vtkPVSynchronizedRenderer.h"
@@ -129,9 +131,30 @@ void vtkPVRenderViewWithShadows::RebuildPass()
   vtkShadowPassBase* old = this->Pass;
   this->Pass = nullptr;
   this->Fallback.clear();
-  if (this->Technique != "none")
+  // Ranks that composite one image: only csm (maps planned from reduced
+  // bounds, min-reduced) and none are right across ranks. planar's screen
+  // mask, vtk's per-rank fitted maps and auto (whose planar choice and
+  // resolution depend on local data) are not: they fall back to csm.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
+  std::string technique = this->Technique;
+  if (parallel && technique != "none" && technique != "csm")
   {
-    this->Pass = vtkShadowTechniqueRegistry::CreatePass(this->Technique.c_str());
+    this->Fallback = technique + " is not right across " +
+      std::to_string(controller->GetNumberOfProcesses()) + " ranks: using csm";
+    technique = "csm";
+    if (controller->GetLocalProcessId() == 0)
+    {
+      vtkWarningMacro("ShadowTechnique: " << this->Fallback);
+    }
+  }
+  if (technique != "none")
+  {
+    this->Pass = vtkShadowTechniqueRegistry::CreatePass(technique.c_str());
+  }
+  if (auto* csm = vtkCascadedShadowMapPass::SafeDownCast(this->Pass))
+  {
+    csm->SetController(parallel ? controller : nullptr);
   }
   if (this->Pass)
   {
@@ -140,10 +163,14 @@ void vtkPVRenderViewWithShadows::RebuildPass()
     this->Pass->SetOption("map_resolution", this->MapResolution);
     this->Pass->SetOption("filter", this->Filter);
     // The scene itself is drawn the way ParaView draws it: lights, opaque,
-    // translucent (depth peeling), volumes, hidden-line removal.
-    vtkPVDefaultPass* scene = vtkPVDefaultPass::New();
-    this->Pass->SetDelegatePass(scene);
-    scene->Delete();
+    // translucent (depth peeling), volumes, hidden-line removal. "vtk" keeps
+    // its own pipeline (VTK's baker and shadow pass need their sequence).
+    if (!this->Pass->GetDelegatePass())
+    {
+      vtkPVDefaultPass* scene = vtkPVDefaultPass::New();
+      this->Pass->SetDelegatePass(scene);
+      scene->Delete();
+    }
   }
   // The old pass's GL objects go while the window's context still exists.
   vtkRenderWindow* window = this->GetRenderWindow();

@@ -1,0 +1,91 @@
+"""The plugin in pvpython: RenderViewWithShadows exists, lists the registry's
+techniques, rejects an unknown one, and renders a library scene with every
+technique with the shadow where it belongs.
+
+Run by build/bin/vtkshadow-pvpython (the plugin loaded by PV_PLUGIN_PATH):
+    vtkshadow-pvpython test_pv_view.py SCENE OUTDIR
+
+The measure: the floor at the point where the light's ray through the
+sphere's centre meets it (the middle of the shadow) must be at most 60% as
+bright as in the same view with technique "none", and a lit floor point away
+from the shadow within 10% of it (no acne, no global darkening).
+"""
+import os
+import sys
+
+from paraview.simple import CreateView, Render, SaveScreenshot
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import pv_scene  # noqa: E402
+
+scene_path, out = sys.argv[1], sys.argv[2]
+os.makedirs(out, exist_ok=True)
+scene = pv_scene.load(scene_path)
+failures = []
+
+view = CreateView("RenderViewWithShadows")
+view.ViewSize = [480, 360]
+pv_scene.populate(view, scene)
+
+view.UpdatePropertyInformation()
+names = list(view.GetProperty("ShadowTechniqueNames"))
+print("techniques from the view:", names)
+for required in ("none", "planar", "csm", "auto"):
+    if required not in names:
+        failures.append("ShadowTechniqueNames lacks %s (got %s)" % (required, names))
+if view.ShadowTechnique != "csm":
+    failures.append("default ShadowTechnique is %r, not csm" % view.ShadowTechnique)
+
+sphere = next(o["sphere"] for o in scene["objects"] if "sphere" in o)
+middle = pv_scene.shadow_point(scene, sphere["center"])
+# A lit floor point: the shadow's middle reflected through the sphere's foot
+# and moved three times as far (clear of the sphere and its shadow).
+lit = [sphere["center"][i] + 3 * (sphere["center"][i] - middle[i]) for i in range(2)] + [0.0]
+
+
+def shoot(technique):
+    view.ShadowTechnique = technique
+    Render(view)
+    png = os.path.join(out, "%s.png" % technique)
+    SaveScreenshot(png, view, ImageResolution=view.ViewSize)
+    return png
+
+
+base = shoot("none")
+shadow_px, lit_px = pv_scene.to_pixel(view, middle), pv_scene.to_pixel(view, lit)
+base_shadow = pv_scene.luminance(base, shadow_px)
+base_lit = pv_scene.luminance(base, lit_px)
+print("none: shadow point %s lum %.1f, lit point %s lum %.1f" % (
+    shadow_px, base_shadow, lit_px, base_lit))
+if base_shadow < 40 or base_lit < 40:
+    failures.append("the floor is not lit without shadows (%.1f, %.1f)" % (base_shadow, base_lit))
+
+for technique in names:
+    if technique == "none":
+        continue
+    png = shoot(technique)
+    s = pv_scene.luminance(png, shadow_px)
+    l = pv_scene.luminance(png, lit_px)
+    view.UpdatePropertyInformation()
+    print("%s: shadow %.1f (%.0f%% of none), lit %.1f (%.0f%%); status %s" % (
+        technique, s, 100 * s / base_shadow, l, 100 * l / base_lit, view.GetProperty("ShadowStatus")[0]))
+    if not s <= 0.6 * base_shadow:
+        failures.append("%s: no shadow: floor under the sphere %.1f vs %.1f without" % (
+            technique, s, base_shadow))
+    if not abs(l - base_lit) <= 0.1 * base_lit:
+        failures.append("%s: lit floor changed: %.1f vs %.1f without" % (technique, l, base_lit))
+
+# Bad input: an unknown technique is refused (an error naming it) and the
+# view keeps the technique it had.
+view.ShadowTechnique = "planar"
+Render(view)
+view.ShadowTechnique = "no-such-technique"
+Render(view)
+view.UpdatePropertyInformation()
+if '"technique": "planar"' not in view.GetProperty("ShadowStatus")[0]:
+    failures.append("an unknown technique changed the view: %s" % view.GetProperty("ShadowStatus")[0])
+
+if failures:
+    print("FAILED:\n  " + "\n  ".join(failures))
+    sys.exit(1)
+print("ok: %d techniques render shadows in RenderViewWithShadows" % (len(names) - 1))
