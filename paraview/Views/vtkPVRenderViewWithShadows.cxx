@@ -1,8 +1,8 @@
 #include "vtkPVRenderViewWithShadows.h"
 
 #include "vtkActor.h"
-#include "vtkInformation.h"
 #include "vtkCascadedShadowMapPass.h"
+#include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"

@@ -3,12 +3,12 @@
 #include "vtkActor.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
-#include "vtkSmartPointer.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkShadowActorFlags.h"
+#include "vtkSmartPointer.h"
 
 #include "vsh_mat4.h"
 #include "vsh_plane.h"
