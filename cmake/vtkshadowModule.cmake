@@ -2,7 +2,7 @@
 # wrap it with VTK's own Python wrapping (as VTK's Examples/Modules/Wrapping).
 set(VTKSHADOW_VTK_COMPONENTS
   CommonCore CommonDataModel CommonMath CommonSystem CommonTransforms
-  FiltersCore IOGeometry IOImage IOPLY IOXML
+  FiltersCore IOGeometry IOImage IOPLY IOXML ParallelCore
   RenderingCore RenderingOpenGL2 RenderingUI
   InteractionStyle RenderingFreeType)
 find_package(VTK 9.1 REQUIRED COMPONENTS ${VTKSHADOW_VTK_COMPONENTS} WrappingPythonCore Python)
