@@ -190,9 +190,13 @@ bool vtkShadowScreenMask::RenderDepth(const vtkRenderState* s, int lightCount)
     state->vtkglEnable(GL_DEPTH_TEST);
     impl.DepthScene->Render(s);
   }
-  // Every light lit until a technique says otherwise.
+  // Every light lit until a technique says otherwise: the textures, and the
+  // CPU copies UploadLight() writes into (a light not uploaded this frame
+  // must not bring back last frame's channel with another light's upload).
   for (int layer = 0; layer < LayerCount; ++layer)
   {
+    std::fill(impl.Staged[layer].begin(), impl.Staged[layer].end(), 255);
+    impl.Dirty[layer] = false;
     impl.FBO->AddColorAttachment(0, impl.Layers[layer]);
     impl.FBO->ActivateDrawBuffers(1);
     vtkOpenGLState::ScopedglColorMask colorMask(state);
