@@ -48,9 +48,9 @@ struct vtkRayTracedShadowPass::Internals
 struct vtkRayTracedShadowPass::FrameState
 {
   int Size[2] = { 0, 0 };
-  int LightCount = 0;                // switched-on lights (mapper numbering), <= MaxLights
-  std::vector<vsh_rt_light> Lights;  // the lights that cast, camera-relative
-  std::vector<int> Channels;         // their mask channels
+  int LightCount = 0;               // switched-on lights (mapper numbering), <= MaxLights
+  std::vector<vsh_rt_light> Lights; // the lights that cast, camera-relative
+  std::vector<int> Channels;        // their mask channels
   std::vector<vtkShadowEmbreeScene::Actor> Actors;
   double Eye[3] = { 0, 0, 0 };
   double View[16];
@@ -89,7 +89,15 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
   this->GatherFrame(s, frame);
   impl.Still = impl.HaveMask && frame.Key == impl.LastKey;
   this->NumberOfRaysTraced = 0;
-  if (!impl.Still)
+  if (impl.Still)
+  {
+    // Nothing traced: the mask keeps the last traced frame's visibility.
+    const long long pixels = static_cast<long long>(frame.Size[0]) * frame.Size[1];
+    impl.Counters = vtkShadowRayTracer::Counters();
+    impl.Counters.Pixels = pixels;
+    impl.LightsTraced = 0;
+  }
+  else
   {
     impl.HaveMask = this->Trace(s, frame);
     impl.LastKey = impl.HaveMask ? frame.Key : std::vector<double>();
@@ -123,7 +131,8 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
   camera->GetPosition(frame.Eye);
   vtkMatrix4x4::DeepCopy(frame.View, camera->GetViewTransformMatrix());
   vtkMatrix4x4::DeepCopy(frame.Projection,
-    camera->GetProjectionTransformMatrix(static_cast<double>(frame.Size[0]) / frame.Size[1], -1, 1));
+    camera->GetProjectionTransformMatrix(
+      static_cast<double>(frame.Size[0]) / frame.Size[1], -1, 1));
   std::vector<double>& key = frame.Key;
   key = { double(frame.Size[0]), double(frame.Size[1]), double(origin[0]), double(origin[1]),
     double(this->Samples), this->LightRadius, this->LightAngle };
@@ -148,15 +157,16 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
       focal[k] -= frame.Eye[k];
     }
     const bool casts = this->LightCasts(light, i);
-    key.insert(key.end(), { h[0], h[1], h[2], h[3], focal[0], focal[1], focal[2],
-                            light->GetConeAngle(), casts ? 1.0 : 0.0 });
+    key.insert(key.end(),
+      { h[0], h[1], h[2], h[3], focal[0], focal[1], focal[2], light->GetConeAngle(),
+        casts ? 1.0 : 0.0 });
     if (!casts)
     {
       continue;
     }
     vsh_rt_light rt;
-    vsh_rt_light_init(h, focal, light->GetConeAngle(), this->LightRadius,
-      this->LightAngle * toRadians, &rt);
+    vsh_rt_light_init(
+      h, focal, light->GetConeAngle(), this->LightRadius, this->LightAngle * toRadians, &rt);
     frame.Lights.push_back(rt);
     frame.Channels.push_back(i);
   }
@@ -313,11 +323,11 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
   std::ostringstream out;
   out << "\"still_frame\": " << (impl.Still ? "true" : "false")
       << ", \"traced\": " << (impl.Still || !impl.HaveMask ? "false" : "true")
-      << ", \"rays_traced\": " << (impl.Still ? 0 : (long long)rays)
-      << ", \"primary_rays\": " << (impl.Still ? 0 : c.PrimaryRays)
-      << ", \"shadow_rays\": " << (impl.Still ? 0 : c.ShadowRays)
-      << ", \"lights_traced\": " << (impl.Still ? 0 : impl.LightsTraced)
-      << ", \"samples\": " << this->Samples << ", \"pixels\": " << c.Pixels
+      << ", \"rays_traced\": " << static_cast<long long>(rays)
+      << ", \"primary_rays\": " << c.PrimaryRays << ", \"shadow_rays\": " << c.ShadowRays
+      << ", \"lights_traced\": " << impl.LightsTraced << ", \"samples\": " << this->Samples
+      << ", \"pixels\": " << c.Pixels
+      << ", \"skipped_still_frame_px\": " << (impl.Still ? c.Pixels : 0)
       << ", \"skipped_background_px\": " << c.Background
       << ", \"skipped_facing_away\": " << c.FacingAway
       << ", \"skipped_outside_cone\": " << c.OutsideCone

@@ -18,9 +18,9 @@ struct Surface
 {
   int Pixel = -1;
   double Point[3];
-  double Normal[3];    // unit, facing the camera
-  double Offset;       // how far the shadow rays start off the surface
-  bool HasNormal;      // false: the refinement missed, no facing test
+  double Normal[3]; // unit, facing the camera
+  double Offset;    // how far the shadow rays start off the surface
+  bool HasNormal;   // false: the refinement missed, no facing test
 };
 
 // Everything one thread needs, reused from tile to tile.
@@ -38,11 +38,33 @@ struct Worker
   vtkShadowRayTracer::Counters Count;
 
   void Tile(int begin, int end);
+  double Tolerance(int x, int y) const;
   void Refine(int begin, int end);
   void Land(int k);
   void Queue(const Surface& s, int surface);
   void Occlude();
 };
+
+double Worker::Tolerance(int x, int y) const
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  const int w = f.View.width, h = f.View.height;
+  const float d = f.Depth[y * w + x];
+  double slope = 0;
+  const int nx[4] = { x - 1, x + 1, x, x }, ny[4] = { y, y, y - 1, y + 1 };
+  for (int k = 0; k < 4; ++k)
+  {
+    if (nx[k] >= 0 && nx[k] < w && ny[k] >= 0 && ny[k] < h)
+    {
+      const float n = f.Depth[ny[k] * w + nx[k]];
+      if (n < 1.0f)
+      {
+        slope = std::max(slope, std::fabs(double(n) - double(d)));
+      }
+    }
+  }
+  return f.DepthTolerance + f.SlopeTolerance * slope;
+}
 
 void Worker::Refine(int begin, int end)
 {
@@ -54,8 +76,8 @@ void Worker::Refine(int begin, int end)
   for (int p = begin; p < end; ++p)
   {
     vsh_rt_pixel_ray ray;
-    if (vsh_rt_pixel_ray_init(&f.View, p % width, p / width, f.Depth[p], f.DepthTolerance, &ray) !=
-      VSH_RT_OK)
+    const int x = p % width, y = p / width;
+    if (vsh_rt_pixel_ray_init(&f.View, x, y, f.Depth[p], this->Tolerance(x, y), &ray) != VSH_RT_OK)
     {
       ++this->Count.Background;
       continue;
@@ -126,8 +148,9 @@ void Worker::Land(int k)
       s.Normal[r] = n[r] * scale;
     }
     s.HasNormal = len2 > 0;
-    const double magnitude = std::sqrt(s.Point[0] * s.Point[0] + s.Point[1] * s.Point[1] +
-                               s.Point[2] * s.Point[2]) + inst.Radius;
+    const double magnitude =
+      std::sqrt(s.Point[0] * s.Point[0] + s.Point[1] * s.Point[1] + s.Point[2] * s.Point[2]) +
+      inst.Radius;
     s.Offset = vsh_rt_offset_distance(magnitude);
     return;
   }
@@ -139,8 +162,9 @@ void Worker::Land(int k)
     s.Normal[r] = -dir[r];
   }
   s.HasNormal = false;
-  s.Offset = back + vsh_rt_offset_distance(std::sqrt(s.Point[0] * s.Point[0] +
-                      s.Point[1] * s.Point[1] + s.Point[2] * s.Point[2]));
+  s.Offset = back +
+    vsh_rt_offset_distance(
+      std::sqrt(s.Point[0] * s.Point[0] + s.Point[1] * s.Point[1] + s.Point[2] * s.Point[2]));
 }
 
 // The shadow rays of one surface point towards every light it can see.
@@ -243,8 +267,8 @@ void Worker::Tile(int begin, int end)
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& frame,
-  int threads, std::vector<std::vector<float>>& out, Counters& counters)
+void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& frame, int threads,
+  std::vector<std::vector<float>>& out, Counters& counters)
 {
   const auto start = std::chrono::steady_clock::now();
   const int pixels = frame.View.width * frame.View.height;
@@ -301,5 +325,6 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
     counters.OutsideCone += w.Count.OutsideCone;
     counters.ShadowRays += w.Count.ShadowRays;
   }
-  counters.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  counters.Seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -29,7 +29,13 @@ public:
     double Eye[3] = { 0, 0, 0 };  // world position of the camera-relative origin
     std::vector<vsh_rt_light> Lights;
     int Samples = 1;
-    double DepthTolerance = 16 * VSH_RT_DEPTH_QUANTUM;
+    // The depth buffer's error around a pixel's depth: DepthTolerance plus
+    // SlopeTolerance times the largest depth step to a drawn neighbour
+    // (llvmpipe interpolates depth in float across whole triangles: on large,
+    // steep triangles its error reaches hundreds of 24-bit steps, in
+    // proportion to the depth gradient).
+    double DepthTolerance = 64 * VSH_RT_DEPTH_QUANTUM;
+    double SlopeTolerance = 1.0;
   };
 
   struct Counters

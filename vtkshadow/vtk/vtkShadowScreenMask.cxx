@@ -215,8 +215,8 @@ void vtkShadowScreenMask::BeginDraw(int light)
   vtkOpenGLState* state = impl.Window->GetState();
   state->PushFramebufferBindings();
   impl.FBO->Bind();
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-    impl.DepthStencil->GetHandle(), 0);
+  glFramebufferTexture2D(
+    GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, impl.DepthStencil->GetHandle(), 0);
   const int layer = std::max(0, std::min(LayerOf(light), LayerCount - 1));
   impl.FBO->AddColorAttachment(0, impl.Layers[layer]);
   impl.FBO->ActivateDrawBuffers(1);
@@ -254,8 +254,8 @@ void vtkShadowScreenMask::EndDraw()
 void vtkShadowScreenMask::DrawQuad(vtkOpenGLRenderWindow* window)
 {
   Internals& impl = *this->Impl;
-  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-    vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
   if (!program)
   {
     this->Error = "the screen-space mask's quad shader did not compile";
@@ -365,8 +365,8 @@ void vtkShadowScreenMask::FinishUploads()
     }
     impl.Layers[layer]->Bind();
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, this->Size[0], this->Size[1], GL_RGBA,
-      GL_UNSIGNED_BYTE, impl.Staged[layer].data());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, this->Size[0], this->Size[1], GL_RGBA, GL_UNSIGNED_BYTE,
+      impl.Staged[layer].data());
     impl.Dirty[layer] = false;
   }
 }
@@ -412,8 +412,8 @@ void vtkShadowScreenMask::SetShaderParameters(vtkShaderProgram* program)
     return;
   }
   program->SetUniformi("vshScreenMask0", impl.Layers[0]->GetTextureUnit());
-  program->SetUniformi("vshScreenMask1",
-    impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
+  program->SetUniformi(
+    "vshScreenMask1", impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
   program->SetUniform2i("vshScreenMaskOrigin", this->Origin);
   program->SetUniformi("vshScreenMaskLights", this->LightCount);
 }
