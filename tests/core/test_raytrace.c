@@ -162,7 +162,7 @@ static void test_offset(void)
   CHECK(vsh_rt_offset_distance(NAN) > 0 && vsh_rt_offset_distance(NAN) < 1e-200);
   CHECK(isfinite(vsh_rt_offset_distance(INFINITY)));
   /* Larger than float rounding at the magnitude, smaller than 1e-4 of it. */
-  CHECK(VSH_RT_OFFSET_RELATIVE > 8 * 5.96e-8 && VSH_RT_OFFSET_RELATIVE < 1e-4);
+  CHECK(VSH_RT_OFFSET_RELATIVE >= 4 * 5.96e-8 && VSH_RT_OFFSET_RELATIVE < 1e-5);
   const double p[3] = { 1e6, 2, 3 }, n[3] = { 0, 0, 1 };
   double o[3];
   vsh_rt_offset_origin(p, n, 1e6, o);

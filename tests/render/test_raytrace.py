@@ -81,7 +81,7 @@ def thin_plate_point(size):
 
 
 EXTRA = {
-    "needles-directional": (lambda: needles("directional", S43), 1500),
+    "needles-directional": (lambda: needles("directional", S43), 600),
     "needles-point": (lambda: needles("point", S43), 1500),
     "needles-spot": (lambda: needles("spot", S169), 1000),
     "thin-plate-point": (lambda: thin_plate_point(S43), 500),

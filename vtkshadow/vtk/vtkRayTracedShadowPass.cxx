@@ -250,6 +250,12 @@ int vtkRayTracedShadowPass::GetNumberOfTopLevelCommits() const
 }
 
 //------------------------------------------------------------------------------
+vtkIdType vtkRayTracedShadowPass::GetNumberOfCasterTriangles() const
+{
+  return static_cast<vtkIdType>(this->Impl->Scene.GetNumberOfTriangles());
+}
+
+//------------------------------------------------------------------------------
 double vtkRayTracedShadowPass::EstimateFrameMilliseconds(
   double pixels, double coverage, int lights) const
 {

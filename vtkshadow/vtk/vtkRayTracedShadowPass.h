@@ -71,6 +71,7 @@ public:
   int GetNumberOfMeshBuilds() const;
   int GetNumberOfTopLevelCommits() const;
   vtkGetMacro(NumberOfRaysTraced, vtkIdType);
+  vtkIdType GetNumberOfCasterTriangles() const;
   vtkGetMacro(NumberOfTracedFrames, int);
 
   /**
