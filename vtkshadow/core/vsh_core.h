@@ -11,6 +11,7 @@
 #include "vsh_planar.h"
 #include "vsh_csm.h"
 #include "vsh_auto.h"
+#include "vsh_auto_general.h"
 #include "vsh_mesh_topology.h"
 #include "vsh_silhouette.h"
 #include "vsh_plane.h"

@@ -1,0 +1,182 @@
+/* vsh_auto_general.c - the general candidates' choice and the thin-caster
+ * measure (see vsh_auto_general.h). */
+#include "vsh_auto_general.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+int vsh_auto_pick_cheapest(const vsh_auto_candidate *candidates, int count,
+                           double max_error_pct, int *met)
+{
+  if (met)
+    *met = 0;
+  if (!candidates || count <= 0)
+    return -1;
+  int best = -1, fallback = -1;
+  for (int i = 0; i < count; ++i) {
+    const vsh_auto_candidate *c = &candidates[i];
+    if (!c->available || isnan(c->predicted_error_pct) || isnan(c->cost))
+      continue;
+    if (c->predicted_error_pct <= max_error_pct &&
+        (best < 0 || c->cost < candidates[best].cost))
+      best = i;
+    if (fallback < 0 || c->predicted_error_pct < candidates[fallback].predicted_error_pct ||
+        (c->predicted_error_pct == candidates[fallback].predicted_error_pct &&
+         c->cost < candidates[fallback].cost))
+      fallback = i;
+  }
+  if (best >= 0) {
+    if (met)
+      *met = 1;
+    return best;
+  }
+  return fallback;
+}
+
+int vsh_auto_map_resolves(double thickness_px, double texel_px, double min_texels)
+{
+  if (!(texel_px > 0.0) || isnan(thickness_px) || !(min_texels >= 0.0))
+    return 0;
+  return thickness_px >= min_texels * texel_px;
+}
+
+/* ---- principal extents per component ------------------------------------ */
+
+typedef struct component_sums {
+  size_t n;
+  double origin[3]; /* the first vertex: sums relative to it keep digits */
+  double sum[3];
+  double cov[6]; /* xx, xy, xz, yy, yz, zz (of positions - origin) */
+} component_sums;
+
+/* Eigenvectors of a symmetric 3x3 matrix (cyclic Jacobi), as rows of v. */
+static void symmetric_eigenvectors(const double m[6], double v[3][3])
+{
+  double a[3][3] = {{m[0], m[1], m[2]}, {m[1], m[3], m[4]}, {m[2], m[4], m[5]}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      v[i][j] = i == j ? 1.0 : 0.0;
+  for (int sweep = 0; sweep < 32; ++sweep) {
+    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+    const double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+    if (off <= 1e-30 * diag || off == 0.0)
+      break;
+    for (int p = 0; p < 2; ++p) {
+      for (int q = p + 1; q < 3; ++q) {
+        if (a[p][q] == 0.0)
+          continue;
+        const double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+        const double t = (theta >= 0.0 ? 1.0 : -1.0) / (fabs(theta) + sqrt(theta * theta + 1.0));
+        const double c = 1.0 / sqrt(t * t + 1.0), s = t * c;
+        for (int k = 0; k < 3; ++k) { /* columns p, q of a */
+          const double akp = a[k][p], akq = a[k][q];
+          a[k][p] = c * akp - s * akq;
+          a[k][q] = s * akp + c * akq;
+        }
+        for (int k = 0; k < 3; ++k) { /* rows p, q of a */
+          const double apk = a[p][k], aqk = a[q][k];
+          a[p][k] = c * apk - s * aqk;
+          a[q][k] = s * apk + c * aqk;
+        }
+        for (int k = 0; k < 3; ++k) { /* eigenvector rows */
+          const double vp = v[p][k], vq = v[q][k];
+          v[p][k] = c * vp - s * vq;
+          v[q][k] = s * vp + c * vq;
+        }
+      }
+    }
+  }
+}
+
+static void sort3(double e[3])
+{
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2 - i; ++j)
+      if (e[j] > e[j + 1]) {
+        const double t = e[j];
+        e[j] = e[j + 1];
+        e[j + 1] = t;
+      }
+}
+
+static void accumulate(component_sums *sums, const double *positions, size_t vertex_count,
+                       const unsigned int *component, size_t component_count)
+{
+  for (size_t v = 0; v < vertex_count; ++v) {
+    const unsigned int c = component[v];
+    if (c >= component_count)
+      continue;
+    component_sums *s = &sums[c];
+    const double *p = positions + 3 * v;
+    if (s->n == 0)
+      memcpy(s->origin, p, sizeof s->origin);
+    const double d[3] = {p[0] - s->origin[0], p[1] - s->origin[1], p[2] - s->origin[2]};
+    for (int k = 0; k < 3; ++k)
+      s->sum[k] += d[k];
+    s->cov[0] += d[0] * d[0];
+    s->cov[1] += d[0] * d[1];
+    s->cov[2] += d[0] * d[2];
+    s->cov[3] += d[1] * d[1];
+    s->cov[4] += d[1] * d[2];
+    s->cov[5] += d[2] * d[2];
+    ++s->n;
+  }
+}
+
+double vsh_mesh_thinnest_width(const double *positions, size_t vertex_count,
+                               const unsigned int *component, size_t component_count)
+{
+  double thinnest = INFINITY;
+  if (!positions || !component || component_count == 0 || vertex_count == 0)
+    return thinnest;
+  component_sums *sums = calloc(component_count, sizeof *sums);
+  double (*axes)[3][3] = calloc(component_count, sizeof *axes);
+  double (*lo)[3] = malloc(component_count * sizeof *lo);
+  double (*hi)[3] = malloc(component_count * sizeof *hi);
+  if (!sums || !axes || !lo || !hi)
+    goto done;
+  accumulate(sums, positions, vertex_count, component, component_count);
+  for (size_t c = 0; c < component_count; ++c) {
+    const component_sums *s = &sums[c];
+    if (s->n < 2)
+      continue;
+    const double n = (double)s->n, *m = s->sum;
+    const double cov[6] = {s->cov[0] - m[0] * m[0] / n, s->cov[1] - m[0] * m[1] / n,
+                           s->cov[2] - m[0] * m[2] / n, s->cov[3] - m[1] * m[1] / n,
+                           s->cov[4] - m[1] * m[2] / n, s->cov[5] - m[2] * m[2] / n};
+    symmetric_eigenvectors(cov, axes[c]);
+    for (int k = 0; k < 3; ++k) {
+      lo[c][k] = INFINITY;
+      hi[c][k] = -INFINITY;
+    }
+  }
+  /* Extents along the axes, relative to each component's first vertex. */
+  for (size_t v = 0; v < vertex_count; ++v) {
+    const unsigned int c = component[v];
+    if (c >= component_count || sums[c].n < 2)
+      continue;
+    const double *p = positions + 3 * v, *o = sums[c].origin;
+    const double d[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
+    for (int k = 0; k < 3; ++k) {
+      const double x = axes[c][k][0] * d[0] + axes[c][k][1] * d[1] + axes[c][k][2] * d[2];
+      lo[c][k] = fmin(lo[c][k], x);
+      hi[c][k] = fmax(hi[c][k], x);
+    }
+  }
+  for (size_t c = 0; c < component_count; ++c) {
+    if (sums[c].n < 2)
+      continue;
+    double e[3] = {hi[c][0] - lo[c][0], hi[c][1] - lo[c][1], hi[c][2] - lo[c][2]};
+    sort3(e);
+    if (isfinite(e[1]))
+      thinnest = fmin(thinnest, e[1]);
+  }
+done:
+  free(sums);
+  free(axes);
+  free(lo);
+  free(hi);
+  return thinnest;
+}

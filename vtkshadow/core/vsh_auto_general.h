@@ -1,0 +1,68 @@
+/* vsh_auto_general.h - auto's choice for a light whose shadows fall on
+ * more than plane receivers: cascaded maps, shadow volumes or ray tracing.
+ *
+ * Maps are approximate, volumes and rays are exact for the triangles they
+ * see. The choice is the cheapest candidate whose predicted error meets the
+ * target; exact candidates predict 0. A map's error is predicted by two
+ * terms: the texel model (vsh_auto_texel_target sizes the map so edges meet
+ * the target) and the thin-caster term below, which the texel model cannot
+ * see: a caster part narrower than about two map texels is sampled at texel
+ * centres and can lose its whole shadow. Plain data, no VTK. */
+#ifndef VSH_AUTO_GENERAL_H
+#define VSH_AUTO_GENERAL_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The general candidates, in the order of their bits in vtkshadow::TechniqueSet
+ * after planar (csm 2, volume 4, raytrace 8). */
+typedef enum vsh_auto_general {
+  VSH_AUTO_GENERAL_CSM = 0,
+  VSH_AUTO_GENERAL_VOLUME = 1,
+  VSH_AUTO_GENERAL_RAYTRACE = 2,
+  VSH_AUTO_GENERAL_COUNT = 3
+} vsh_auto_general;
+
+/* One candidate: whether it can draw this light at all, its predicted
+ * wrong_pct and its predicted cost (any unit shared by all candidates). */
+typedef struct vsh_auto_candidate {
+  int available;
+  double predicted_error_pct;
+  double cost;
+} vsh_auto_candidate;
+
+/* The index of the cheapest available candidate whose predicted error is at
+ * most max_error_pct (ties: the lower index). When none meets the target,
+ * the available one with the lowest predicted error (ties: cheaper, then
+ * lower index), and *met = 0. -1 when none is available or the input is bad
+ * (NULL, count <= 0, a NaN error or cost counts as unavailable). */
+int vsh_auto_pick_cheapest(const vsh_auto_candidate *candidates, int count,
+                           double max_error_pct, int *met);
+
+/* Whether a caster part `thickness_px` pixels wide on screen keeps its
+ * shadow in a map whose texels are `texel_px` pixels on screen: it must be
+ * at least `min_texels` texels wide (2: a part narrower than two texels can
+ * fall between texel centres). Returns 1 when it keeps it; 1 for no caster
+ * (thickness_px = +inf); 0 for NaN or non-positive texel sizes (the
+ * conservative answer: maps not trusted). */
+int vsh_auto_map_resolves(double thickness_px, double texel_px, double min_texels);
+
+/* The thinnest part of a mesh: for every connected component (`component`
+ * per vertex, VSH_MESH_NONE = 0xffffffff for unused vertices, values below
+ * `component_count`), the extents of its vertices along their principal
+ * axes (covariance eigenvectors), sorted e0 <= e1 <= e2; the component's
+ * width is e1, the narrowest shadow it casts from a generic direction (a
+ * needle is thin in two axes, a plate in one only: a plate seen from above
+ * casts a wide shadow). Returns the smallest width over components with at
+ * least 2 vertices, +inf when there is none. `positions` are 3 doubles per
+ * vertex. Components with a single vertex are ignored. */
+double vsh_mesh_thinnest_width(const double *positions, size_t vertex_count,
+                               const unsigned int *component, size_t component_count);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
