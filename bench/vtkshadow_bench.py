@@ -52,8 +52,10 @@ DIR/<scene>/<config>/ (visibility, mask, metrics of each configuration),
 DIR/<scene>/timing.json (the vtkshadow-render stats of the timing run),
 DIR/<scene>.png (gnuplot: wrong_pct, log, floored at 1e-3, against
 ms_per_frame, log; one series per technique family; Pareto front drawn),
-DIR/summary.md (tables, auto's position against the Pareto front, goals,
-the noise floor).
+DIR/summary.md (tables, auto's position against the Pareto front, issue
+14's goals with verdicts from bench_goals.py, the noise floor). Every row
+also carries the scene's light and receiver counts (scene_lights,
+scene_receivers): the planar goal holds on scenes with one of each.
 With --peers PREFIXES, scenes whose key starts with one of them also get
 Blender EEVEE rows (technique eevee, settings default / best) from
 vtkshadow-compare --renderers povray,eevee,eevee-best, scored against the
