@@ -2,7 +2,7 @@
 # wrap it with VTK's own Python wrapping (as VTK's Examples/Modules/Wrapping).
 set(VTKSHADOW_VTK_COMPONENTS
   CommonCore CommonDataModel CommonMath CommonSystem CommonTransforms
-  FiltersCore IOGeometry IOImage IOPLY IOXML
+  FiltersCore IOGeometry IOImage IOPLY IOXML ParallelCore
   RenderingCore RenderingOpenGL2 RenderingUI
   InteractionStyle RenderingFreeType)
 find_package(VTK 9.1 REQUIRED COMPONENTS ${VTKSHADOW_VTK_COMPONENTS} WrappingPythonCore Python)
@@ -41,7 +41,10 @@ vtk_module_wrap_python(
 set(VTKSHADOW_PYTHON_PACKAGE_DIR "${CMAKE_BINARY_DIR}/${VTKSHADOW_PYTHON_DESTINATION}/vtkshadow")
 configure_file("${PROJECT_SOURCE_DIR}/vtkshadow/python/__init__.py.in"
   "${VTKSHADOW_PYTHON_PACKAGE_DIR}/__init__.py" @ONLY)
+configure_file("${PROJECT_SOURCE_DIR}/vtkshadow/python/enable.py"
+  "${VTKSHADOW_PYTHON_PACKAGE_DIR}/enable.py" COPYONLY)
 install(FILES "${VTKSHADOW_PYTHON_PACKAGE_DIR}/__init__.py"
+  "${VTKSHADOW_PYTHON_PACKAGE_DIR}/enable.py"
   DESTINATION "${VTKSHADOW_PYTHON_DESTINATION}/vtkshadow")
 
 # build/bin/vtkshadow-python: Debian's /usr/bin/python3 with the build tree on

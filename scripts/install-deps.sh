@@ -5,13 +5,18 @@ set -eu
 packages="cmake make gcc g++ pkg-config libvtk9-dev python3-vtk9 python3-numpy
   libcjson-dev libpng-dev xvfb xauth povray blender gnuplot-nox
   universal-ctags clang-format
-  libx11-dev"
+  libx11-dev libembree-dev
+  openmpi-bin"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
 done
+# ParaView 5.11 for the plugin: apt without recommends plus a private
+# prefix (python3-paraview conflicts with python3-vtk9; see the script).
+here="$(dirname "$0")"
 if [ -z "$missing" ]; then
   echo "install-deps: all packages present"
+  sh "$here/install-paraview.sh"
   exit 0
 fi
 sudo=""
@@ -21,3 +26,4 @@ export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -q
 # shellcheck disable=SC2086
 $sudo apt-get install -y -q --no-install-recommends $missing
+sh "$here/install-paraview.sh"

@@ -24,6 +24,14 @@ add_test(NAME python.api
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_python_api.py
           ${PROJECT_SOURCE_DIR})
 
+# enable_shadows on a typical VTK pipeline (wavelet contour, glyphs, unlit
+# outline, cube axes, scalar bar, text, volume, composite data, floor), with
+# every registered technique (tests/python/test_enable_shadows.py).
+add_test(NAME python.enable_shadows
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_shadows.py
+          ${PROJECT_SOURCE_DIR})
+set_tests_properties(python.enable_shadows PROPERTIES LABELS "render" TIMEOUT 900)
+
 # C API from a .c file.
 add_executable(test_capi capi/test_capi.c)
 target_link_libraries(test_capi PRIVATE vtkshadow::vtkshadow)
@@ -89,9 +97,11 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/robust_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_extra_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/render/raytrace_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/harness/harness_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/depth_range_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/display_soak_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/paraview/paraview_tests.cmake)
 
 # Planar mirrors (vtkPlanarReflectionPass): mirrored silhouettes against ray
 # casting in the test, and colour against POV-Ray per light type

@@ -20,12 +20,16 @@
 # seconds of bpy.ops.render.render, i.e. one frame without Blender start-up).
 #
 # DATAFILE layout (little-endian):
-#   8 bytes   magic b"VSHCYC01"
-#   int32 x6  width, height, samples (Cycles only), threads(unused), light_count, object_count
+#   8 bytes   magic b"VSHCYC02"
+#   int32 x7  width, height, samples (Cycles only), seed (Cycles only),
+#             pixel_centre (1: BOX filter 0.01, every sample at the pixel centre;
+#             0: BOX filter 1.0 over the pixel), light_count, object_count
 #   float64 x10 camera: eye[3], focal[3], up[3], vertical view angle (deg)
 #   float64 x2  clip_start, clip_end
-#   per light:  float64 x8  type (0 dir, 1 point, 2 spot), position[3],
-#               axis[3] (unit; where the light travels / cone axis), cone half-angle (deg)
+#   per light:  float64 x9  type (0 dir, 1 point, 2 spot), position[3],
+#               axis[3] (unit; where the light travels / cone axis), cone half-angle (deg),
+#               size (point, spot: disk radius, Blender's shadow_soft_size;
+#               directional: angular diameter in degrees, Blender's sun angle; 0 hard)
 #   per object: int32 x3  point_count, triangle_count, casts
 #               float64 x 3*point_count  points
 #               float64 x 3*point_count  normals
@@ -72,12 +76,15 @@ def read_data(path):
         pos += size
         return a
 
-    if take("<8s")[0] != b"VSHCYC01":
-        fail("%s: not a vtkshadow Cycles data file" % path)
-    width, height, samples, _threads, nlights, nobjects = take("<6i")
+    if take("<8s")[0] != b"VSHCYC02":
+        fail("%s: not a vtkshadow Cycles data file (version 02)" % path)
+    width, height, samples, seed, centre, nlights, nobjects = take("<7i")
     camera = take("<10d")
     clip = take("<2d")
-    lights = [take("<8d") for _ in range(nlights)]
+    lights = [take("<9d") for _ in range(nlights)]
+    for light in lights:
+        if not (math.isfinite(light[8]) and light[8] >= 0.0 and (light[0] != 0 or light[8] < 180.0)):
+            fail("%s: bad light size %r" % (path, light[8]))
     objects = []
     for _ in range(nobjects):
         npts, ntri, casts = take("<3i")
@@ -87,7 +94,7 @@ def read_data(path):
         objects.append((npts, ntri, casts, pts, nrm, tri))
     if pos != len(data):
         fail("%s: trailing bytes" % path)
-    return width, height, samples, camera, clip, lights, objects
+    return width, height, (samples, seed, centre), camera, clip, lights, objects
 
 
 def frame_from_axis(z_axis):
@@ -126,7 +133,8 @@ EEVEE_BEST_CASCADE_EXPONENT = 0.5
 PRESETS = ("cycles", "eevee", "eevee-best")
 
 
-def setup_cycles(scene, samples):
+def setup_cycles(scene, sampling):
+    samples, seed, centre = sampling
     scene.render.engine = "CYCLES"
     cyc = scene.cycles
     cyc.device = "CPU"
@@ -142,9 +150,12 @@ def setup_cycles(scene, samples):
     cyc.caustics_reflective = False
     cyc.caustics_refractive = False
     cyc.light_sampling_threshold = 0.0
-    cyc.seed = 0
+    # One seed for the shadows-on and shadows-off renders: the same light
+    # samples, so their ratio is the unoccluded fraction of the same points.
+    cyc.seed = seed
+    cyc.use_animated_seed = False
     cyc.pixel_filter_type = "BOX"
-    cyc.filter_width = 0.01 if samples == 1 else 1.0
+    cyc.filter_width = 0.01 if centre else 1.0
 
 
 def setup_eevee(scene, best):
@@ -204,7 +215,7 @@ def make_material(name, preset, casts):
     return mat
 
 
-def make_light(ltype, cone, preset, position, objects, depth):
+def make_light(ltype, cone, size, preset, position, objects, depth):
     kind = ("SUN", "POINT", "SPOT")[ltype]
     ldata = bpy.data.lights.new("light", kind)
     if ltype == 2:
@@ -214,12 +225,19 @@ def make_light(ltype, cone, preset, position, objects, depth):
     ldata.energy = 1.0
     ldata.color = (1.0, 1.0, 1.0)
     if preset == "cycles":
+        # The scene's size: Cycles 3.4 samples a point or spot light as a disk
+        # of radius shadow_soft_size facing the shaded point, a sun within
+        # `angle` (angular diameter); 0 is a hard light.
         if ltype == 0:
-            ldata.angle = 0.0
+            ldata.angle = math.radians(size)
         else:
-            ldata.shadow_soft_size = 0.0
+            ldata.shadow_soft_size = size
         ldata.cycles.max_bounces = 0
         return ldata
+    if size > 0.0:
+        # A light with a size is the scene's light: EEVEE gets it too, with
+        # its soft shadows on (both presets).
+        bpy.context.scene.eevee.use_soft_shadows = True
     if ltype != 0:
         # The light reaches the whole scene (EEVEE otherwise cuts it off where
         # energy/distance^2 < light_threshold); also the far plane of its
@@ -229,12 +247,17 @@ def make_light(ltype, cone, preset, position, objects, depth):
     if preset == "eevee-best":
         ldata.shadow_buffer_bias = EEVEE_BEST_BIAS
         if ltype == 0:
-            ldata.angle = 0.0
+            ldata.angle = math.radians(size)
             ldata.shadow_cascade_count = 4
             ldata.shadow_cascade_max_distance = 1.01 * depth[1]
             ldata.shadow_cascade_exponent = EEVEE_BEST_CASCADE_EXPONENT
         else:
-            ldata.shadow_soft_size = 0.0
+            ldata.shadow_soft_size = size
+    elif size > 0.0:
+        if ltype == 0:
+            ldata.angle = math.radians(size)
+        else:
+            ldata.shadow_soft_size = size
     return ldata
 
 
@@ -339,9 +362,9 @@ def main():
 
     exr = os.path.join(outdir, "render.exr")
     frame_log = []
-    for k, (ltype, px, py, pz, ax, ay, az, cone) in enumerate(lights):
+    for k, (ltype, px, py, pz, ax, ay, az, cone, size) in enumerate(lights):
         ltype = int(ltype)
-        ldata = make_light(ltype, cone, preset, (px, py, pz), objects, depth)
+        ldata = make_light(ltype, cone, size, preset, (px, py, pz), objects, depth)
         lobj = bpy.data.objects.new("light", ldata)
         rot = frame_from_axis((ax, ay, az)).to_4x4()
         rot.translation = Vector((px, py, pz))

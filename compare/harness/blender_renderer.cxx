@@ -23,7 +23,7 @@ void BlenderRenderer::Prepare()
 
 std::string BlenderRenderer::ExportBytes(const ExportScene& ex) const
 {
-  return CyclesData(ex, this->Opt.cycles_samples);
+  return CyclesData(ex, this->Opt.cycles_samples, this->Opt.soft_samples, this->Opt.seed);
 }
 
 std::string BlenderRenderer::KeySettings(const ExportScene&) const

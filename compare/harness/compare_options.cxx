@@ -63,6 +63,10 @@ const char* Usage()
          "  --cache DIR           reference cache (default OUT/cache)\n"
          "  --no-cache            always render POV-Ray, Cycles and EEVEE fresh (no cache read)\n"
          "  --cycles-samples N    Cycles samples per pixel (default 1, pixel centre)\n"
+         "  --soft-samples N      Cycles samples per pixel centre for scenes with a light\n"
+         "                        with a size (default 256)\n"
+         "  --povray-grid N       POV-Ray area-light grid N x N, N = 2^k+1 in 3..129 (default 17)\n"
+         "  --seed N              seed of the soft-light samples, 0..2147483647 (default 0)\n"
          "  --povray-binary P     (default povray)\n"
          "  --blender-binary P    (default blender)\n"
          "  --render-binary P     vtkshadow-render (default: next to this program)\n"
@@ -103,6 +107,42 @@ bool SetFlag(Options& opt, const std::string& a)
   return true;
 }
 
+// The soft-light options; false when `a` is not one of them. A bad value
+// sets `error`.
+bool SetSoftValue(Options& opt, const std::string& a, const std::string& v, std::string& error)
+{
+  char* end = nullptr;
+  const long n = strtol(v.c_str(), &end, 10);
+  const bool whole = !v.empty() && !*end;
+  if (a == "--soft-samples")
+  {
+    if (!whole || n < 1 || n > 65536)
+      error = a + ": expected a whole number in 1..65536 (got '" + v + "')";
+    else
+      opt.soft_samples = int(n);
+  }
+  else if (a == "--povray-grid")
+  {
+    // 2^k + 1: the grid's edge rows then get half weight and the light's
+    // width is the axis length (docs/harness.md).
+    const bool pow2plus1 = whole && n >= 3 && n <= 129 && ((n - 1) & (n - 2)) == 0;
+    if (!pow2plus1)
+      error = a + ": expected 2^k+1 in 3..129 (3, 5, 9, 17, 33, 65, 129) (got '" + v + "')";
+    else
+      opt.povray_grid = int(n);
+  }
+  else if (a == "--seed")
+  {
+    if (!whole || n < 0 || n > 2147483647L)
+      error = a + ": expected a whole number in 0..2147483647 (got '" + v + "')";
+    else
+      opt.seed = int(n);
+  }
+  else
+    return false;
+  return true;
+}
+
 // An option with a value `v`; false with `error` set when it is bad or unknown.
 bool SetValue(Options& opt, const std::string& a, const std::string& v, std::string& error)
 {
@@ -138,7 +178,7 @@ bool SetValue(Options& opt, const std::string& a, const std::string& v, std::str
     else
       (a == "--jobs" ? opt.jobs : a == "--threads" ? opt.threads : opt.cycles_samples) = int(n);
   }
-  else
+  else if (!SetSoftValue(opt, a, v, error))
     error = "unknown option " + a;
   return error.empty();
 }

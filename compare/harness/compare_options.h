@@ -24,6 +24,13 @@ struct Options
   std::string cache;
   bool no_cache = false;
   int cycles_samples = 1;
+  // Lights with a size (docs/harness.md, "Lights with a size"): Cycles
+  // samples per pixel centre for scenes that have one, POV-Ray's area-light
+  // grid (n x n, n = 2^k + 1), and the seed of both (Cycles' seed; POV-Ray's
+  // grid is turned by an angle made from it, its jitter being fixed).
+  int soft_samples = 256;
+  int povray_grid = 17;
+  int seed = 0;
   std::string povray = "povray";
   std::string blender = "blender";
   std::string render_bin;

@@ -42,7 +42,68 @@ void Put(std::string& o, T v)
 }
 }
 
-std::string PovScene(const ExportScene& s)
+bool HasSoftLight(const ExportScene& s)
+{
+  for (const ExportLight& L : s.lights)
+    if (L.size > 0)
+      return true;
+  return false;
+}
+
+namespace
+{
+// Two unit vectors perpendicular to `axis` and to each other, turned about
+// it by `turn` radians.
+void Perpendiculars(const double axis[3], double turn, double a[3], double b[3])
+{
+  const double h[3] = { std::fabs(axis[0]) < 0.9 ? 1.0 : 0.0, std::fabs(axis[0]) < 0.9 ? 0.0 : 1.0,
+    0.0 };
+  double u[3] = { h[1] * axis[2] - h[2] * axis[1], h[2] * axis[0] - h[0] * axis[2],
+    h[0] * axis[1] - h[1] * axis[0] };
+  const double n = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  for (double& x : u)
+    x /= n;
+  const double v[3] = { axis[1] * u[2] - axis[2] * u[1], axis[2] * u[0] - axis[0] * u[2],
+    axis[0] * u[1] - axis[1] * u[0] };
+  for (int i = 0; i < 3; ++i)
+  {
+    a[i] = std::cos(turn) * u[i] + std::sin(turn) * v[i];
+    b[i] = -std::sin(turn) * u[i] + std::cos(turn) * v[i];
+  }
+}
+
+// POV-Ray's area light for a light with a size (docs/harness.md, "Lights
+// with a size"). Point and spot: a disk of diameter 2r, `orient` turns it to
+// face each shaded point (Cycles' disk). Directional: the light sits 1 unit
+// before its point_at target, so a disk of diameter 2 tan(angle/2) spans the
+// angle seen from the target; its axes are set perpendicular to the
+// direction (no orient: every shaded point sees the same parallel disk).
+// n = 2^k + 1 gives the edge rows half weight, so the width is the axis
+// length; no `adaptive` (it skips small occluders with few samples).
+void PovAreaLight(std::string& o, const ExportLight& L, int grid, int seed)
+{
+  const double d = L.type == 0 ? 2.0 * std::tan(L.size * M_PI / 360.0) : 2.0 * L.size;
+  double a[3], b[3];
+  // The golden angle per seed: seeds give well-spread turns of the grid.
+  Perpendiculars(L.axis, seed * 2.399963229728653, a, b);
+  for (int i = 0; i < 3; ++i)
+  {
+    a[i] *= d;
+    b[i] *= d;
+  }
+  o += " area_light ";
+  Vec(o, a);
+  o += ", ";
+  Vec(o, b);
+  // No area_illumination: tried, it moved POV-Ray further from Cycles on a
+  // curved caster's terminator (docs/harness.md, "Lights with a size").
+  o += ", " + std::to_string(grid) + ", " + std::to_string(grid) + " circular jitter";
+  if (L.type != 0)
+    o += " orient";
+}
+}
+
+std::string PovScene(const ExportScene& s, int grid, int seed)
 {
   std::string o;
   o.reserve(1 << 20);
@@ -72,6 +133,8 @@ std::string PovScene(const ExportScene& s)
     o += "#if (VSH_LIGHT = " + std::to_string(k) + ")\n  light_source { ";
     Vec(o, L.position);
     o += " color rgb 1";
+    if (L.size > 0)
+      PovAreaLight(o, L, grid, seed);
     double target[3];
     for (int i = 0; i < 3; ++i)
       target[i] = L.position[i] + L.axis[i];
@@ -126,14 +189,20 @@ std::string PovScene(const ExportScene& s)
   return o;
 }
 
-std::string CyclesData(const ExportScene& s, int samples)
+std::string CyclesData(const ExportScene& s, int samples, int soft_samples, int seed)
 {
   std::string o;
-  o.append("VSHCYC01", 8);
+  // Pixel centre (BOX filter 0.01) unless more samples were asked for over
+  // the pixel area; soft lights then get their own sample count there.
+  const int centre = samples == 1 ? 1 : 0;
+  if (centre && HasSoftLight(s))
+    samples = soft_samples;
+  o.append("VSHCYC02", 8);
   Put<int32_t>(o, s.width);
   Put<int32_t>(o, s.height);
   Put<int32_t>(o, samples);
-  Put<int32_t>(o, 0);
+  Put<int32_t>(o, seed);
+  Put<int32_t>(o, centre);
   Put<int32_t>(o, static_cast<int32_t>(s.lights.size()));
   Put<int32_t>(o, static_cast<int32_t>(s.objects.size()));
   for (int i = 0; i < 3; ++i)
@@ -161,6 +230,7 @@ std::string CyclesData(const ExportScene& s, int samples)
     for (int i = 0; i < 3; ++i)
       Put<double>(o, L.axis[i]);
     Put<double>(o, L.cone);
+    Put<double>(o, L.size);
   }
   for (const ExportObject& ob : s.objects)
   {

@@ -29,6 +29,10 @@ struct ExportLight
   double position[3]; // normalized frame (point, spot; directional: far away)
   double axis[3];     // unit: direction of travel (directional), cone axis (spot)
   double cone = 0;    // half-angle, degrees
+  // The light's size: point and spot, the disk radius in the normalized
+  // frame (scene radius * scale); directional, the angular diameter in
+  // degrees (not scaled). 0: a hard light.
+  double size = 0;
 };
 
 // The scene in the renderers' frame: x' = (x - anchor) * scale, with anchor
@@ -52,10 +56,18 @@ struct ExportScene
 
 // POV-Ray 3.7 scene. Light K and shadows on/off are chosen on the command
 // line: Declare=VSH_LIGHT=K Declare=VSH_SHADOWS=0|1.
-std::string PovScene(const ExportScene& s);
+// Lights with a size become area lights of grid x grid samples (2^k + 1,
+// circular, jittered; docs/harness.md), turned about their axis by an angle
+// made from `seed` (POV-Ray's jitter cannot be seeded).
+std::string PovScene(const ExportScene& s, int grid = 17, int seed = 0);
 
-// Binary data file for render_cycles.py (layout documented there).
-std::string CyclesData(const ExportScene& s, int samples);
+// True when some light has a size (the scene has soft shadows).
+bool HasSoftLight(const ExportScene& s);
+
+// Binary data file for render_cycles.py (layout documented there). Scenes
+// with a soft light get `soft_samples` samples at the pixel centre when
+// `samples` is 1 (the pixel-centre reference), else `samples` over the pixel.
+std::string CyclesData(const ExportScene& s, int samples, int soft_samples = 1, int seed = 0);
 
 } // namespace vsh_harness
 

@@ -6,6 +6,7 @@
 #include "scene_list.h"
 
 #include "vsh_metrics.h"
+#include "vsh_penumbra.h"
 
 #include <map>
 #include <string>
@@ -19,6 +20,10 @@ struct Row
   std::string scene, test, reference = "povray", light_type, status, error, heatmap;
   int light = 0, width = 0, height = 0;
   vsh_metrics m{};
+  // Penumbra metrics (docs/metrics.md): computed for every row; they read
+  // "no penumbra" (pen.penumbra_pixels 0) on scenes with hard lights only.
+  vsh_penumbra pen{};
+  std::string pen_heatmap;
   // Set by --check: "" (not checked), "ok", "FAILED: why", "known failure: reason".
   std::string check;
 };

@@ -27,7 +27,10 @@ public:
         " --version' failed (is povray installed? apt-get install povray)";
   }
 
-  std::string ExportBytes(const ExportScene& ex) const override { return PovScene(ex); }
+  std::string ExportBytes(const ExportScene& ex) const override
+  {
+    return PovScene(ex, this->Opt.povray_grid, this->Opt.seed);
+  }
 
   std::string KeySettings(const ExportScene& ex) const override
   {

@@ -24,15 +24,32 @@ double WrongOfShadow(const vsh_metrics& m)
   return known ? v : std::nan("");
 }
 
+// The penumbra columns (docs/metrics.md, "Penumbra metrics"), after status
+// so readers by position keep working.
+std::string PenumbraFields(const vsh_penumbra& p, const char* sep, bool json)
+{
+  const char* names[] = { "pen_pixels", "pen_mae", "pen_bias", "pen_leak_pct",
+    "pen_false_shadow_pct", "pen_width_ratio", "pen_contour_01_px", "pen_contour_05_px",
+    "pen_contour_09_px" };
+  const double values[] = { static_cast<double>(p.penumbra_pixels), p.pen_mae, p.pen_bias,
+    p.leak_pct, p.false_shadow_pct, p.width_ratio, p.contour_px[0], p.contour_px[1],
+    p.contour_px[2] };
+  std::string o;
+  for (int i = 0; i < 9; ++i)
+    o += std::string(sep) + (json ? std::string("\"") + names[i] + "\": " : std::string()) +
+      Fmt(values[i], "%.9g");
+  return o;
+}
+
 std::string CsvRow(const Row& r)
 {
   char buf[2048];
-  snprintf(buf, sizeof buf, "%s,%d,%s,%s,%s,%d,%d,%ld,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%s\n",
+  snprintf(buf, sizeof buf, "%s,%d,%s,%s,%s,%d,%d,%ld,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%s",
     r.scene.c_str(), r.light, r.light_type.c_str(), r.test.c_str(), r.reference.c_str(), r.width,
     r.height, r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
     r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), false).c_str(),
     r.status.c_str());
-  return buf;
+  return buf + PenumbraFields(r.pen, ",", false) + "\n";
 }
 
 std::string JsonRow(const Row& r)
@@ -43,12 +60,13 @@ std::string JsonRow(const Row& r)
     "\"reference\": \"%s\", \"valid_pixels\": %ld, \"compared_pixels\": %ld, "
     "\"vis_mae\": %.9g, \"wrong_pct\": %.9g, \"edge_px\": %.9g, "
     "\"false_shadow_pct\": %.9g, \"false_light_pct\": %.9g, \"wrong_of_shadow_pct\": %s, "
-    "\"status\": \"%s\", \"check\": \"%s\", \"heatmap\": \"%s\"}",
+    "\"status\": \"%s\", \"check\": \"%s\", \"heatmap\": \"%s\"",
     r.light, r.light_type.c_str(), JsonEscape(r.test).c_str(), r.reference.c_str(),
     r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
     r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), true).c_str(),
     r.status.c_str(), JsonEscape(r.check).c_str(), JsonEscape(r.heatmap).c_str());
-  return buf;
+  return buf + PenumbraFields(r.pen, ", ", true) + ", \"pen_heatmap\": \"" +
+    JsonEscape(r.pen_heatmap) + "\"}";
 }
 
 template <typename Map>
@@ -88,7 +106,9 @@ bool WriteResults(const Options& opt, const std::vector<SceneResult>& all)
 {
   std::string csv = "scene,light,light_type,test,reference,width,height,valid_pixels,"
                     "compared_pixels,vis_mae,wrong_pct,edge_px,false_shadow_pct,false_light_pct,"
-                    "wrong_of_shadow_pct,status\n";
+                    "wrong_of_shadow_pct,status,pen_pixels,pen_mae,pen_bias,pen_leak_pct,"
+                    "pen_false_shadow_pct,pen_width_ratio,pen_contour_01_px,pen_contour_05_px,"
+                    "pen_contour_09_px\n";
   std::string json = "{\n  \"scenes\": [\n";
   for (size_t si = 0; si < all.size(); ++si)
   {

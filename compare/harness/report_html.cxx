@@ -135,6 +135,37 @@ std::string RowTable(const SceneResult& sr, int k)
   return h + "</table>\n";
 }
 
+// The penumbra table and heat maps of light k, when the reference has a
+// penumbra there (a light with a size).
+std::string PenumbraSection(const SceneResult& sr, int k)
+{
+  std::string maps, rows;
+  for (const Row& r : sr.rows)
+  {
+    if (r.light != k || r.pen.penumbra_pixels == 0)
+      continue;
+    if (!r.pen_heatmap.empty())
+      maps += "<figure><img src=\"" + HtmlEscape(r.pen_heatmap) + "\"><figcaption>" +
+        HtmlEscape(r.test) + " penumbra</figcaption></figure>";
+    char buf[512];
+    snprintf(buf, sizeof buf,
+      "<td>%ld</td><td>%.4f</td><td>%+.4f</td><td>%.3g</td><td>%.3g</td><td>%.3g</td>"
+      "<td>%.3g</td><td>%.3g</td><td>%.3g</td>",
+      r.pen.penumbra_pixels, r.pen.pen_mae, r.pen.pen_bias, r.pen.leak_pct, r.pen.false_shadow_pct,
+      r.pen.width_ratio, r.pen.contour_px[0], r.pen.contour_px[1], r.pen.contour_px[2]);
+    rows += "<tr><td>" + HtmlEscape(r.test) + "</td>" + buf + "</tr>";
+  }
+  if (rows.empty())
+    return "";
+  return "<p>Penumbra (0.02 &lt; v_ref &lt; 0.98, dilated 1 px; heat map: blue too dark, red "
+         "too bright, saturated at 0.25, the rest the reference in grey)</p><div>" +
+    maps +
+    "</div><table><tr><th>test</th><th>penumbra px</th><th>pen_mae</th><th>pen_bias</th>"
+    "<th>leak %</th><th>false shadow %</th><th>width ratio</th><th>contour 0.1</th>"
+    "<th>contour 0.5</th><th>contour 0.9</th></tr>" +
+    rows + "</table>\n";
+}
+
 std::string LightSection(const Options& opt, const SceneResult& sr, int k)
 {
   std::string h =
@@ -157,7 +188,7 @@ std::string LightSection(const Options& opt, const SceneResult& sr, int k)
     if (r.light == k && !r.heatmap.empty())
       h += "<figure><img src=\"" + HtmlEscape(r.heatmap) + "\"><figcaption>" + HtmlEscape(r.test) +
         " &minus; povray</figcaption></figure>";
-  return h + "</div>\n" + RowTable(sr, k);
+  return h + "</div>\n" + RowTable(sr, k) + PenumbraSection(sr, k);
 }
 
 } // namespace

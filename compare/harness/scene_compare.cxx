@@ -4,6 +4,7 @@
 #include "harness_util.h"
 
 #include "vsh_metrics.h"
+#include "vsh_penumbra.h"
 #include "vsh_png.h"
 
 #include <algorithm>
@@ -63,6 +64,27 @@ double RowMetric(const vsh_metrics& m, const std::string& name, bool& known)
   return 0;
 }
 
+namespace
+{
+// The penumbra figures and, where the reference has a penumbra, its heat map
+// (DIR/<scene>/heatmap/<test>-light<K>-penumbra.png).
+void ComparePenumbra(const Options& opt, const std::string& dir_id, const std::string& stem,
+  const std::vector<float>& tv, const std::vector<float>& ref,
+  const std::vector<unsigned char>& valid, int w, int h, Row& row)
+{
+  if (vsh_penumbra_compute(tv.data(), ref.data(), valid.data(), nullptr, w, h, &row.pen) < 0 ||
+    row.pen.penumbra_pixels == 0)
+    return;
+  std::vector<unsigned char> rgb(3 * static_cast<size_t>(w) * h);
+  char e2[1024] = "";
+  row.pen_heatmap = dir_id + "/heatmap/" + stem + "-penumbra.png";
+  if (vsh_penumbra_heatmap_rgb(tv.data(), ref.data(), valid.data(), w, h, rgb.data()) != 0 ||
+    vsh_png_write_rgb8(
+      (opt.out + "/" + row.pen_heatmap).c_str(), rgb.data(), w, h, e2, sizeof e2) != 0)
+    row.pen_heatmap.clear();
+}
+} // namespace
+
 Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const std::string& test,
   const std::string& testdir, const std::string& light_type)
 {
@@ -110,7 +132,9 @@ Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const s
     // The metrics stand; the report shows no picture rather than a broken one.
     row.error = "heat map not written: " + (why.empty() ? std::string(e2) : why);
     row.heatmap.clear();
+    return row;
   }
+  ComparePenumbra(opt, e.dir_id, tname + lk.substr(1), tv, ref, valid, w, h, row);
   return row;
 }
 

@@ -110,6 +110,8 @@ ExportLight ExportOneLight(const vsh_light& L, const ExportScene& ex)
   ExportLight el;
   el.type = L.type == VSH_LIGHT_DIRECTIONAL ? 0 : L.type == VSH_LIGHT_POINT ? 1 : 2;
   el.cone = L.cone_angle;
+  // Directions do not scale; lengths do (a similarity transform).
+  el.size = el.type == 0 ? L.angle : L.radius * ex.scale;
   if (el.type == 0)
   {
     double n = std::sqrt(L.direction[0] * L.direction[0] + L.direction[1] * L.direction[1] +

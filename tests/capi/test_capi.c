@@ -64,6 +64,18 @@ int main(int argc, char **argv)
   CHECK(vtkshadow_technique_set_map_resolution(vtk, 8) != 0);
   CHECK(vtkshadow_technique_set_map_resolution(vtk, 1024) == 0);
   CHECK(vtkshadow_technique_install(vtk, NULL, error, sizeof error) != 0);
+  /* enable_shadows: no renderer or an unknown name is an error with a
+   * message (the success path: tests/python/test_enable_shadows.py). */
+  error[0] = '\0';
+  CHECK(vtkshadow_enable_shadows(NULL, "auto", -1.0, error, sizeof error) == NULL);
+  CHECK(strstr(error, "vtkOpenGLRenderer") != NULL);
+  CHECK(vtkshadow_enable_shadows(NULL, "bogus", -1.0, error, sizeof error) == NULL);
+  CHECK(strstr(error, "bogus") != NULL);
+  CHECK(vtkshadow_technique_enable(vtk, NULL, error, sizeof error) != 0);
+  CHECK(vtkshadow_technique_set_key_light(NULL, 1) != 0);
+  CHECK(vtkshadow_technique_set_key_light(vtk, 0) == 0);
+  CHECK(strcmp(vtkshadow_technique_light_message(vtk), "") == 0);
+  CHECK(vtkshadow_technique_detected_receiver_count(vtk) == 0);
 
   snprintf(path, sizeof path, "%s/capi.png", argv[2]);
   remove(path);

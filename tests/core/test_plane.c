@@ -8,6 +8,7 @@
 #include "vsh_mat4.h"
 #include "vsh_vec3.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -72,6 +73,52 @@ static void test_fit_degenerate(void) {
   CHECK(vsh_plane_fit_points(bad, 3, 1e-6, plane) == VSH_PLANE_INVALID);
   CHECK(vsh_plane_fit_points(lead, 5, -1.0, plane) == VSH_PLANE_INVALID);
   CHECK(vsh_plane_fit_points(NULL, 5, 1e-6, plane) == VSH_PLANE_INVALID);
+}
+
+/* Receiver detection's flatness test (vsh_plane_fit_stored_points): points
+ * that went through float storage, far from the origin and tiny. */
+static void test_fit_stored(void) {
+  double plane[4] = {9, 9, 9, 9};
+  const double one[3] = {1e6, 2, 3};
+  CHECK(vsh_plane_fit_stored_points(one, 1, 1e-6, FLT_EPSILON, plane) == VSH_PLANE_NO_AREA);
+  CHECK(plane[0] == 0 && plane[1] == 0 && plane[2] == 0 && plane[3] == 0);
+  const double same[9] = {1, 1, 1, 1, 1, 1, 1, 1, 1};
+  CHECK(vsh_plane_fit_stored_points(same, 3, 1e-6, FLT_EPSILON, plane) == VSH_PLANE_NO_AREA);
+  const double line[12] = {1e6, 0, 0, 1e6 + 1, 1, 1, 1e6 + 2, 2, 2, 1e6 - 3, -3, -3};
+  CHECK(vsh_plane_fit_stored_points(line, 4, 1e-6, FLT_EPSILON, plane) == VSH_PLANE_NO_AREA);
+  CHECK(vsh_plane_fit_stored_points(line, 4, 1e-6, -1.0, plane) == VSH_PLANE_INVALID);
+  CHECK(vsh_plane_fit_stored_points(line, 4, 1e-6, NAN, plane) == VSH_PLANE_INVALID);
+  CHECK(vsh_plane_fit_stored_points(line, 4, INFINITY, 0.0, plane) == VSH_PLANE_INVALID);
+  /* A tilted 10-unit floor 1e6 from the origin, its points rounded to float
+   * as a VTK float array stores them: flat once the rounding is allowed
+   * for, not flat at 1e-6 of its size without; a 1-unit bump is not flat
+   * either way. */
+  static double p[3 * 100];
+  vsh_test_seed(77);
+  double n[3];
+  const double far[3] = {1e6, -1e6, 5e5};
+  random_flat_points(p, 100, far, 10.0, n);
+  for (int i = 0; i < 300; ++i) p[i] = (double)(float)p[i];
+  CHECK(vsh_plane_fit_stored_points(p, 100, 1e-6, FLT_EPSILON, plane) == VSH_PLANE_OK);
+  CHECK_NEAR(fabs(vsh_vec3_dot(plane, n)), 1.0, 1e-2);
+  CHECK(vsh_plane_fit_stored_points(p, 100, 1e-6, 0.0, plane) == VSH_PLANE_NOT_FLAT);
+  for (int k = 0; k < 3; ++k) p[3 * 50 + k] += 1.0 * n[k];
+  CHECK(vsh_plane_fit_stored_points(p, 100, 1e-6, FLT_EPSILON, plane) == VSH_PLANE_NOT_FLAT);
+  /* A 1e-6 slice at the origin: flat at any storage, and its 1e-9 bump
+   * (1e-3 of its size) is seen because the tolerance scales with it. */
+  const double origin[3] = {0, 0, 0};
+  random_flat_points(p, 40, origin, 1e-6, n);
+  CHECK(vsh_plane_fit_stored_points(p, 40, 1e-6, 0.0, plane) == VSH_PLANE_OK);
+  for (int i = 0; i < 120; ++i) p[i] = (double)(float)p[i];
+  CHECK(vsh_plane_fit_stored_points(p, 40, 1e-6, FLT_EPSILON, plane) == VSH_PLANE_OK);
+  for (int k = 0; k < 3; ++k) p[3 * 20 + k] += 1e-9 * n[k];
+  CHECK(vsh_plane_fit_stored_points(p, 40, 1e-6, FLT_EPSILON, plane) == VSH_PLANE_NOT_FLAT);
+  /* The same call as vsh_plane_fit_points when nothing was rounded. */
+  const double lead[15] = {0, 0, 5, 1, 0, 5, 2, 0, 5, 3, 0, 5, 3, 2, 5};
+  double a[4], b[4];
+  CHECK(vsh_plane_fit_stored_points(lead, 5, 1e-6, 0.0, a) == VSH_PLANE_OK);
+  CHECK(vsh_plane_fit_points(lead, 5, 1e-6, b) == VSH_PLANE_OK);
+  CHECK(memcmp(a, b, sizeof(a)) == 0);
 }
 
 static void test_contains_box(void) {
@@ -153,6 +200,7 @@ static void test_keep_box(void) {
 int main(void) {
   test_fit_random();
   test_fit_degenerate();
+  test_fit_stored();
   test_contains_box();
   test_face_light();
   test_times_matrix();

@@ -48,3 +48,16 @@ add_test(NAME harness.check
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_harness.py check --bin ${VTKSHADOW_BIN}
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/check)
 set_tests_properties(harness.check PROPERTIES TIMEOUT 600 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# Soft shadows (issue 15): the exact penumbra of a sphere over a plane under
+# a disk light and a sun with an angle, integrated per pixel
+# (exact_penumbra.c), against POV-Ray and Cycles with the sizes, within
+# their measured noise; radius 0 gives the hard shadow (test_soft.py).
+add_executable(exact_penumbra ${_harness_src}/exact_penumbra.c)
+target_link_libraries(exact_penumbra PRIVATE vtkshadow_scene vtkshadow_core vtkshadow_metrics)
+set_target_properties(exact_penumbra PROPERTIES C_STANDARD 11 C_EXTENSIONS OFF
+  RUNTIME_OUTPUT_DIRECTORY ${VTKSHADOW_BIN})
+add_test(NAME harness.soft
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft.py --bin ${VTKSHADOW_BIN}
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/soft)
+set_tests_properties(harness.soft PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)

@@ -98,7 +98,7 @@ from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource  # noqa
 from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper  # noqa: E402
 
 
-def auto_choice(mark_floor):
+def auto_choice(mark_floor, detect=True):
     win = vtkRenderWindow()
     win.SetOffScreenRendering(1)
     win.SetSize(96, 72)
@@ -114,10 +114,10 @@ def auto_choice(mark_floor):
         actors.append(actor)
     actors[0].SetPosition(0, 0, 1.2)
     actors[1].SetScale(10, 10, 1)
-    if mark_floor:
+    if mark_floor is not None:  # 1: marked, 0: opted out, None: unmarked
         from vtkmodules.vtkCommonCore import vtkInformation
         keys = vtkInformation()
-        keys.Set(vtkshadow.vtkPlanarShadowPass.RECEIVER(), 1)
+        keys.Set(vtkshadow.vtkPlanarShadowPass.RECEIVER(), mark_floor)
         actors[1].SetPropertyKeys(keys)
     sun = vtkLight()
     sun.SetPositional(0)
@@ -129,16 +129,26 @@ def auto_choice(mark_floor):
     ren.ResetCameraClippingRange()
     automatic = vtkshadow.vtkAutoShadowPass()
     automatic.SetMaxError(0.25)
+    automatic.GetPlanarPass().SetDetectReceivers(detect)
     ren.SetPass(automatic)
     win.Render()
     lights = [automatic.GetLightChoice(i) for i in range(automatic.GetNumberOfLightChoices())]
-    return automatic.GetChoice(), lights, automatic.GetReason()
+    detected = [automatic.GetDetectedReceiver(i) is actors[1]
+                for i in range(automatic.GetNumberOfDetectedReceivers())]
+    return automatic.GetChoice(), lights, automatic.GetReason() + f" detected {detected}"
 
 
-choice, lights, reason = auto_choice(True)
-check(choice == "planar" and lights == ["planar"], f"auto with a receiver: {choice} {lights} ({reason})")
-choice, lights, reason = auto_choice(False)
-check(choice == "csm" and lights == ["csm"], f"auto without a receiver: {choice} {lights} ({reason})")
+choice, lights, reason = auto_choice(1)
+check(choice == "planar" and lights == ["planar"] and reason.endswith("detected []"),
+      f"auto with a receiver: {choice} {lights} ({reason})")
+# Unmarked, the flat floor is found as the receiver (detect_receivers, default on).
+choice, lights, reason = auto_choice(None)
+check(choice == "planar" and lights == ["planar"] and reason.endswith("detected [True]"),
+      f"auto with the floor detected: {choice} {lights} ({reason})")
+for mark, detect, label in ((0, True, "opted out"), (None, False, "detection off")):
+    choice, lights, reason = auto_choice(mark, detect)
+    check(choice == "csm" and lights == ["csm"] and reason.endswith("detected []"),
+          f"auto without a receiver ({label}): {choice} {lights} ({reason})")
 print(str(technique)[:40].replace("\n", " "), "...")
 print("python.api:", "FAILED" if failures else "ok", f"({len(failures)} failures)")
 sys.exit(1 if failures else 0)

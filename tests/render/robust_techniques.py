@@ -110,6 +110,11 @@ def auto_stats(p):
     return out
 
 
+def raytrace_stats(p):
+    return {"builds": p.GetNumberOfMeshBuilds(), "commits": p.GetNumberOfTopLevelCommits(),
+            "rays": p.GetNumberOfRaysTraced(), "triangles": p.GetNumberOfCasterTriangles()}
+
+
 # ---------------------------------------------------------------------------
 # csm's own settings and what each must show (from the former
 # test_csm_robust.py: filters, splits, stable, cascade-count, max-texel,
@@ -220,11 +225,6 @@ PROFILES = {
                 "the 'vtk' pipeline (VTK's TestShadowMapPass assembly) draws opaque "
                 "geometry only: translucent actors are not drawn",
             ("translucent", "translucent receiver renders"): "as above: not drawn",
-            ("lighting-off", "the unlit cube renders"):
-                "VTK 9.1's vtkShadowMapPass with a LightingOff actor: GL_INVALID_OPERATION "
-                "and VTK errors, the actor partly drawn",
-            ("lighting-off", "no VTK error messages"): "as above",
-            ("lighting-off", "no GL errors"): "as above",
             ("resize", "resized 640x480 -> 800x450 vs a fresh 800x450 render: visibility agrees"):
                 "VTK 9.1's shadow map after a window resize differs from a fresh window's "
                 "(92.5 % agreement)",
@@ -258,6 +258,19 @@ PROFILES = {
         caching={"first": "some", "still": 0, "data": "some"},
         settings=[("max_error 0.2", {"max_error": 0.2}, None),
                   ("max_texel_px 1.5", {"max_texel_px": 1.5}, None)]),
+    # Exact shadows of every caster on every surface, by Embree rays. work =
+    # meshes (re)built: moving a caster, the light or the camera rebuilds
+    # none (the top level is re-committed), changing 2 casters' data rebuilds
+    # exactly their 2 meshes.
+    "raytrace": Profile(
+        exact_bound=(0.0, 0.05), stats=raytrace_stats,
+        same_stats={"composite": ("triangles",), "composite hidden": ("triangles",),
+                    "glyph": ("triangles",)},
+        work=lambda p: p.GetNumberOfMeshBuilds(),
+        caching={"first": "some", "still": 0, "moved": 0, "data": 2, "light": 0, "orbit": 0},
+        headlight_on=lambda p: p.SetCastHeadlightShadows(True),
+        settings=[("samples 4 with a point-sized light (hard)", {"samples": 4}, None),
+                  ("threads 1", {"threads": 1}, None)]),
 }
 DEFAULT = Profile()
 

@@ -128,6 +128,14 @@ static void check_scene(const vsh_scene *s, const char *path, long iteration) {
                       s->lights[i].direction[1] * s->lights[i].direction[1] +
                       s->lights[i].direction[2] * s->lights[i].direction[2]),
                  1, 1e-12);
+  /* Light sizes that passed validation are usable: finite, a radius >= 0,
+   * an angle with a finite tangent, and only on the kind that has one. */
+  for (i = 0; i < s->light_count; ++i) {
+    const vsh_light *l = &s->lights[i];
+    CHECK(isfinite(l->radius) && l->radius >= 0.0);
+    CHECK(l->angle >= 0.0 && l->angle < 180.0 && isfinite(tan(l->angle * 0.008726646259971648)));
+    CHECK(l->type == VSH_LIGHT_DIRECTIONAL ? l->radius == 0.0 : l->angle == 0.0);
+  }
   for (i = 0; i < s->object_count; ++i) {
     const vsh_object *o = &s->objects[i];
     vsh_mesh m;

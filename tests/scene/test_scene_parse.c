@@ -107,6 +107,34 @@ static void test_defaults(void) {
   vsh_scene_free(s);
 }
 
+/* Light sizes: given values kept exactly, 0 when absent (hard lights). */
+static void test_light_sizes(void) {
+  char err[VSH_SCENE_ERROR_MAX];
+  vsh_scene *s = NULL;
+  size_t i;
+  int rc = vsh_scene_load(data("good/soft.json"), &s, err, sizeof err);
+  CHECK(rc == 0);
+  if (rc) {
+    fprintf(stderr, "unexpected error: %s\n", err);
+    return;
+  }
+  CHECK(s->light_count == 5);
+  if (s->light_count == 5) {
+    CHECK(s->lights[0].angle == 11.4 && s->lights[0].radius == 0.0);
+    CHECK(s->lights[1].radius == 0.5 && s->lights[1].angle == 0.0);
+    CHECK(s->lights[2].radius == 0.25 && s->lights[2].angle == 0.0);
+    CHECK(s->lights[3].radius == 0.0);
+    CHECK(s->lights[4].angle == 179.5);
+  }
+  vsh_scene_free(s);
+  s = NULL;
+  rc = vsh_scene_load(data("good/full.json"), &s, err, sizeof err);
+  CHECK(rc == 0);
+  for (i = 0; rc == 0 && i < s->light_count; ++i)
+    CHECK(s->lights[i].radius == 0.0 && s->lights[i].angle == 0.0);
+  vsh_scene_free(s);
+}
+
 static void test_meshes(void) {
   char err[VSH_SCENE_ERROR_MAX];
   vsh_scene *s = NULL;
@@ -194,6 +222,13 @@ static const bad_case bad_cases[] = {
      NULL},
     {"light_intensity_negative", ": lights[0].intensity: must be >= 0 (got -1)", NULL},
     {"light_color_negative", ": lights[0].color[1]: must be >= 0 (got -0.5)", NULL},
+    {"light_radius_negative", ": lights[0].radius: must be >= 0", "(got -0.25)"},
+    {"light_radius_string", ": lights[0].radius: expected a number (got \"0.5\")", NULL},
+    {"light_angle_range", ": lights[0].angle: must be in [0, 180) degrees", "(got 180)"},
+    {"light_angle_negative", ": lights[0].angle: must be in [0, 180) degrees", "(got -1)"},
+    {"light_radius_on_directional",
+     ": lights[0]: unknown field \"radius\" for a directional light", NULL},
+    {"light_angle_on_point", ": lights[0]: unknown field \"angle\" for a point light", NULL},
     {"lights_empty", ": lights: needs at least one entry (got [])", NULL},
     {"lights_not_array", ": lights: expected an array (got {\"type\": \"point\"})", NULL},
     {"objects_empty", ": objects: needs at least one entry (got [])", NULL},
@@ -384,6 +419,7 @@ int main(int argc, char **argv) {
   test_meshes();
   test_mirror();
   test_bad_files();
+  test_light_sizes();
   test_load_errors();
   test_memory();
   test_names();

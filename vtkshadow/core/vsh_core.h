@@ -16,5 +16,6 @@
 #include "vsh_plane.h"
 #include "vsh_frustum.h"
 #include "vsh_reflect.h"
+#include "vsh_soft.h"
 
 #endif

@@ -25,8 +25,16 @@ static double largest_fan_normal(const double *p, size_t count, double out[3]) {
 
 vsh_plane_status vsh_plane_fit_points(const double *points, size_t count, double rel_tolerance,
                                       double out_plane[4]) {
+  return vsh_plane_fit_stored_points(points, count, rel_tolerance, 0.0, out_plane);
+}
+
+vsh_plane_status vsh_plane_fit_stored_points(const double *points, size_t count,
+                                             double rel_tolerance, double stored_eps,
+                                             double out_plane[4]) {
   if (out_plane) memset(out_plane, 0, 4 * sizeof(double));
-  if (!points || !out_plane || !(rel_tolerance >= 0.0)) return VSH_PLANE_INVALID;
+  if (!points || !out_plane || !(rel_tolerance >= 0.0) || !(stored_eps >= 0.0) ||
+      !isfinite(rel_tolerance) || !isfinite(stored_eps))
+    return VSH_PLANE_INVALID;
   for (size_t i = 0; i < 3 * count; ++i)
     if (!isfinite(points[i])) return VSH_PLANE_INVALID;
   if (count < 3) return VSH_PLANE_NO_AREA;
@@ -34,16 +42,21 @@ vsh_plane_status vsh_plane_fit_points(const double *points, size_t count, double
   const double length = largest_fan_normal(points, count, n);
   if (!(length > 0.0) || !isfinite(length)) return VSH_PLANE_NO_AREA;
   const double *o = points;
-  double size = 0.0;
+  double size = 0.0, magnitude = 0.0;
   for (size_t i = 0; i < count; ++i)
-    for (int a = 0; a < 3; ++a) size = fmax(size, fabs(points[3 * i + a] - o[a]));
+    for (int a = 0; a < 3; ++a) {
+      size = fmax(size, fabs(points[3 * i + a] - o[a]));
+      magnitude = fmax(magnitude, fabs(points[3 * i + a]));
+    }
+  /* Relative to the points' size, plus what storing them rounded away. */
+  const double tolerance = rel_tolerance * size + 4.0 * stored_eps * magnitude;
   for (int a = 0; a < 3; ++a) out_plane[a] = n[a] / length;
   out_plane[3] = -(out_plane[0] * o[0] + out_plane[1] * o[1] + out_plane[2] * o[2]);
   for (size_t i = 0; i < count; ++i) {
     const double *p = points + 3 * i;
     const double d = out_plane[0] * (p[0] - o[0]) + out_plane[1] * (p[1] - o[1]) +
                      out_plane[2] * (p[2] - o[2]);
-    if (fabs(d) > rel_tolerance * size) return VSH_PLANE_NOT_FLAT;
+    if (fabs(d) > tolerance) return VSH_PLANE_NOT_FLAT;
   }
   return VSH_PLANE_OK;
 }

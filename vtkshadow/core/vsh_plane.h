@@ -36,6 +36,18 @@ typedef enum vsh_plane_status {
 vsh_plane_status vsh_plane_fit_points(const double *points, size_t count, double rel_tolerance,
                                       double out_plane[4]);
 
+/* vsh_plane_fit_points for coordinates that were stored with a relative
+ * rounding of stored_eps before they reached double (FLT_EPSILON for a VTK
+ * float point array, 0 for exact data): each point may also lie off the
+ * plane by 4 * stored_eps * (the largest absolute coordinate of the points),
+ * the rounding a float mesh far from the origin cannot avoid, so a tilted
+ * floor 1e6 away still counts as flat. This is the flatness test of
+ * receiver detection (an actor whose every point lies on one plane is a
+ * floor, a cut plane or a slice). stored_eps < 0 or not finite is invalid. */
+vsh_plane_status vsh_plane_fit_stored_points(const double *points, size_t count,
+                                             double rel_tolerance, double stored_eps,
+                                             double out_plane[4]);
+
 /* 1 when every corner of `box` lies within rel_tolerance * size of the
  * plane (|N.X + d| with N as given, normally unit), size = the box's
  * largest extent (at least 1e-300 so a point box is tested against 0+).

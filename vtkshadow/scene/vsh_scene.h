@@ -33,6 +33,14 @@ typedef struct vsh_light {
   double cone_angle;     /* spot: VTK's half-angle in degrees, (0, 90] */
   double color[3];       /* linear RGB, default 1 1 1 */
   double intensity;      /* default 1 */
+  /* The light's size; 0 (the default) is today's hard point / parallel light.
+   * point, spot: radius of a disk centred on `position` and facing the shaded
+   * point (Cycles 3.4's point and spot lights), >= 0, world units.
+   * directional: angular diameter in degrees, [0, 180): shadow rays leave in
+   * directions normalize(-direction + tan(angle/2) * d), d on the unit disk
+   * perpendicular to `direction` (Cycles 3.4's sun). */
+  double radius; /* point, spot */
+  double angle;  /* directional */
 } vsh_light;
 
 typedef enum vsh_object_kind {

@@ -20,10 +20,11 @@ static const char *const top_keys[] = {"description", "size",   "camera", "backg
                                        "lights",      "objects", NULL};
 static const char *const camera_keys[] = {"position", "focal_point", "view_up", "view_angle",
                                           NULL};
-static const char *const directional_keys[] = {"type", "direction", "color", "intensity", NULL};
-static const char *const point_keys[] = {"type", "position", "color", "intensity", NULL};
-static const char *const spot_keys[] = {"type",       "position", "focal_point",
-                                        "cone_angle", "color",    "intensity", NULL};
+static const char *const directional_keys[] = {"type",      "direction", "color",
+                                               "intensity", "angle",     NULL};
+static const char *const point_keys[] = {"type", "position", "color", "intensity", "radius", NULL};
+static const char *const spot_keys[] = {"type",  "position",  "focal_point", "cone_angle",
+                                        "color", "intensity", "radius",      NULL};
 
 /* Required member: missing -> "missing required field". */
 static const cJSON *need(const vsh_ctx *ctx, const cJSON *obj, const char *parent,
@@ -92,6 +93,36 @@ static int parse_camera(const vsh_ctx *ctx, const cJSON *obj, vsh_camera *cam) {
   if (!(cam->view_angle > 0.0 && cam->view_angle < 180.0)) {
     vsh__fmt_number(cam->view_angle, got, sizeof got);
     return vsh__fail(ctx, field, got, "must be in (0, 180) degrees");
+  }
+  return 0;
+}
+
+/* The light's size (optional, default 0 = hard): "radius" of a point or spot
+ * light's disk, "angle" (angular diameter, degrees) of a directional light.
+ * The key for the other kind was already refused by the key check. An angle
+ * of 180 degrees or more has no finite tangent (a light filling the sky). */
+static int parse_light_size(const vsh_ctx *ctx, const cJSON *obj, const char *parent,
+                            vsh_light *light) {
+  char field[VSH_FIELD_MAX], got[VSH_GOT_MAX];
+  const cJSON *item;
+  light->radius = 0.0;
+  light->angle = 0.0;
+  if ((item = cJSON_GetObjectItemCaseSensitive(obj, "radius"))) {
+    vsh__field(field, parent, "radius");
+    if (vsh__number(ctx, item, field, &light->radius)) return -1;
+    if (!(light->radius >= 0.0)) {
+      vsh__fmt_number(light->radius, got, sizeof got);
+      return vsh__fail(ctx, field, got, "must be >= 0 (0 is a hard point light)");
+    }
+  }
+  if ((item = cJSON_GetObjectItemCaseSensitive(obj, "angle"))) {
+    vsh__field(field, parent, "angle");
+    if (vsh__number(ctx, item, field, &light->angle)) return -1;
+    if (!(light->angle >= 0.0 && light->angle < 180.0)) {
+      vsh__fmt_number(light->angle, got, sizeof got);
+      return vsh__fail(ctx, field, got,
+                       "must be in [0, 180) degrees (angular diameter; 0 is a hard sun)");
+    }
   }
   return 0;
 }
@@ -180,7 +211,7 @@ static int parse_light(const vsh_ctx *ctx, const cJSON *obj, const char *parent,
       return vsh__fail(ctx, field, got, "must be >= 0");
     }
   }
-  return 0;
+  return parse_light_size(ctx, obj, parent, light);
 }
 
 /* A non-empty JSON array, returned with its length. */

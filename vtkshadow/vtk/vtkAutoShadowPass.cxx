@@ -23,6 +23,7 @@
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkShadowTechniqueSet.h"
+#include "vtkWeakPointer.h"
 
 #include "vsh_auto.h"
 
@@ -49,6 +50,7 @@ struct vtkAutoShadowPass::Internals
   // The frame's objects: plain data for the core's decision, and their actors.
   std::vector<vsh_auto_object> Objects;
   std::vector<vtkActor*> Actors;
+  std::vector<vtkWeakPointer<vtkActor>> Detected; // receivers found, not marked
 
   // What was chosen: for the frame and per switched-on light.
   vtkshadow::TechniqueSet Choice = vtkshadow::TechniqueSet::None;
@@ -152,12 +154,22 @@ void vtkAutoShadowPass::GatherObjects(const vtkRenderState* s)
   Internals& impl = *this->Impl;
   impl.Objects.clear();
   impl.Actors.clear();
-  for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(s))
+  const std::vector<vtkshadow::ShadowActor> shadowActors = vtkshadow::ShadowActors(s);
+  for (const vtkshadow::ShadowActor& shadowActor : shadowActors)
+  {
+    impl.Actors.push_back(shadowActor.Actor);
+  }
+  // The receivers the planar pass will use: marked, or else detected.
+  const vtkshadow::ReceiverChoice receivers = this->PlanarPass->ChooseReceivers(impl.Actors);
+  impl.Detected.assign(receivers.Detected ? receivers.Receivers.begin() : receivers.Receivers.end(),
+    receivers.Receivers.end());
+  for (const vtkshadow::ShadowActor& shadowActor : shadowActors)
   {
     vtkActor* actor = shadowActor.Actor;
+    const bool receiver = std::find(receivers.Receivers.begin(), receivers.Receivers.end(),
+                            actor) != receivers.Receivers.end();
     vsh_auto_object object;
-    vsh_auto_object_init(&object, shadowActor.Bounds,
-      vtkshadow::HasFlag(actor, vtkShadowPassBase::RECEIVER()) ? 1 : 0,
+    vsh_auto_object_init(&object, shadowActor.Bounds, receiver ? 1 : 0,
       vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()) ? 0 : 1, frustum);
     if (object.receiver)
     {
@@ -166,7 +178,6 @@ void vtkAutoShadowPass::GatherObjects(const vtkRenderState* s)
       std::copy_n(plane.Plane, 4, object.plane);
     }
     impl.Objects.push_back(object);
-    impl.Actors.push_back(actor);
   }
 }
 
@@ -386,6 +397,28 @@ const char* vtkAutoShadowPass::GetLightReason(int light) const
 }
 
 //------------------------------------------------------------------------------
+void vtkAutoShadowPass::SetResidualLight(double residual)
+{
+  this->Superclass::SetResidualLight(residual);
+  this->PlanarPass->SetResidualLight(this->ResidualLight);
+  this->CascadedPass->SetResidualLight(this->ResidualLight);
+}
+
+//------------------------------------------------------------------------------
+int vtkAutoShadowPass::GetNumberOfDetectedReceivers() const
+{
+  return static_cast<int>(this->Impl->Detected.size());
+}
+
+//------------------------------------------------------------------------------
+vtkActor* vtkAutoShadowPass::GetDetectedReceiver(int index) const
+{
+  const auto& detected = this->Impl->Detected;
+  return index >= 0 && index < static_cast<int>(detected.size()) ? detected[index].GetPointer()
+                                                                 : nullptr;
+}
+
+//------------------------------------------------------------------------------
 long long vtkAutoShadowPass::GetMemoryBytes() const
 {
   long long bytes = 0;
@@ -443,6 +476,10 @@ bool vtkAutoShadowPass::SetOption(const char* key, double value)
   {
     return false;
   }
+  if (k == "residual_light")
+  {
+    return this->Superclass::SetOption(key, value); // SetResidualLight: all passes
+  }
   return this->CascadedPass->SetOption(key, value) || this->PlanarPass->SetOption(key, value);
 }
 
@@ -471,6 +508,11 @@ std::string vtkAutoShadowPass::GetStatsJSON(vtkRenderer* renderer) const
     ? static_cast<vtkShadowPassBase*>(this->CascadedPass)
     : this->Impl->Choice == TechniqueSet::Planar ? static_cast<vtkShadowPassBase*>(this->PlanarPass)
                                                  : nullptr;
+  if (details != this->PlanarPass)
+  {
+    // (the planar pass's own details say it otherwise)
+    out << ", \"detected_receivers\": " << this->DetectedReceiversJSON(renderer);
+  }
   if (details)
   {
     out << ", " << details->GetStatsJSON(renderer);

@@ -96,20 +96,33 @@ public:
   vtkGetMacro(UsedEdgeLength, double);
 
   /**
+   * The plane receivers detected in the last frame (its planar pass's
+   * detection: flat surface actors when none is marked).
+   */
+  int GetNumberOfDetectedReceivers() const override;
+  vtkActor* GetDetectedReceiver(int index) const override;
+
+  /**
+   * Also given to both passes it chooses between.
+   */
+  void SetResidualLight(double residual) override;
+
+  /**
    * GL memory of the passes in use, as of the last frame.
    */
   long long GetMemoryBytes() const override;
 
   /**
-   * max_error, max_texel_px; any other key goes to the cascaded pass (its
-   * settings, e.g. filter, cascades, map_resolution) or else the planar
-   * pass (plane_tolerance).
+   * max_error, max_texel_px, residual_light (all passes); any other key goes
+   * to the cascaded pass (its settings, e.g. filter, cascades,
+   * map_resolution) or else the planar pass (plane_tolerance,
+   * detect_receivers).
    */
   bool SetOption(const char* key, double value) override;
 
   /**
    * choice, reason, texel_target_px, texel_stretch, edge_length_px and
-   * light_choices, then the details of the cascaded pass when it is used,
+   * light_choices, detected_receivers, then the details of the cascaded pass when it is used,
    * else of the planar pass.
    */
   std::string GetStatsJSON(vtkRenderer* renderer) const override;

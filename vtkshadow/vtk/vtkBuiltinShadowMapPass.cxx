@@ -1,25 +1,122 @@
 #include "vtkBuiltinShadowMapPass.h"
 
+#include "vtkActor.h"
 #include "vtkCameraPass.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOverlayPass.h"
+#include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSequencePass.h"
 #include "vtkShadowMapBakerPass.h"
 #include "vtkShadowMapPass.h"
+#include "vtkVolumetricPass.h"
 
 #include <cmath>
 #include <cstring>
 
 vtkStandardNewMacro(vtkBuiltinShadowMapPass);
 
+namespace
+{
+/**
+ * VTK's vtkShadowMapPass with two changes made from outside its code:
+ *
+ * - No shader without vertexVC gets its shadow code. VTK's pass puts
+ *   `calcShadow(vertexVC, ...)` into every shader it is registered with,
+ *   but a polydata mapper declares vertexVC only when its light complexity
+ *   is not 0: an actor with lighting off (an outline, say), or lit lines
+ *   and points without normals (the cube axes' lines). Such a shader fails
+ *   to compile and VTK 9.1 crashes drawing with the missing program.
+ *   Actors with lighting off and other mappers (volumes) keep their own
+ *   shaders; a lit actor whose primitive is drawn unlit gets a dummy
+ *   vertexVC (its factors then go into no light term).
+ * - The residual light: VTK's own per-light vtkLight::ShadowAttenuation a
+ *   gives the factor 1 - a + a * visibility; scaling a by (1 - residual)
+ *   leaves `residual` of the light in full shadow, as in every vtkshadow
+ *   technique.
+ */
+class vtkShadowMapPassGuarded : public vtkShadowMapPass
+{
+public:
+  static vtkShadowMapPassGuarded* New();
+  vtkTypeMacro(vtkShadowMapPassGuarded, vtkShadowMapPass);
+
+  double Residual = 0.0;
+
+  static bool Shadowable(vtkAbstractMapper* mapper, vtkProp* prop)
+  {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    return actor && actor->GetProperty() && actor->GetProperty()->GetLighting() &&
+      vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+  }
+
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override
+  {
+    return !Shadowable(mapper, prop) ||
+      this->Superclass::PreReplaceShaderValues(
+        vertexShader, geometryShader, fragmentShader, mapper, prop);
+  }
+
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override
+  {
+    if (!Shadowable(mapper, prop))
+    {
+      return true;
+    }
+    const std::string call = "calcShadow(vertexVC";
+    const size_t first = fragmentShader.find(call);
+    if (first != std::string::npos && fragmentShader.find("vec4 vertexVC =") == std::string::npos)
+    {
+      const size_t line = fragmentShader.rfind('\n', first);
+      const size_t at = fragmentShader.rfind("vec2 factor", first);
+      const size_t where = at != std::string::npos && (line == std::string::npos || at > line)
+        ? at
+        : (line == std::string::npos ? 0 : line + 1);
+      fragmentShader.insert(where, "vec4 vertexVC = vec4(0.0, 0.0, 0.0, 1.0); // unlit: unused\n");
+    }
+    return this->Superclass::PostReplaceShaderValues(
+      vertexShader, geometryShader, fragmentShader, mapper, prop);
+  }
+
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* vao) override
+  {
+    if (!Shadowable(mapper, prop))
+    {
+      return true;
+    }
+    const std::vector<float> attenuation = this->ShadowAttenuation;
+    for (float& a : this->ShadowAttenuation)
+    {
+      a = static_cast<float>(a * (1.0 - this->Residual));
+    }
+    const bool ok = this->Superclass::SetShaderParameters(program, mapper, prop, vao);
+    this->ShadowAttenuation = attenuation;
+    return ok;
+  }
+
+protected:
+  vtkShadowMapPassGuarded() = default;
+  ~vtkShadowMapPassGuarded() override = default;
+
+private:
+  vtkShadowMapPassGuarded(const vtkShadowMapPassGuarded&) = delete;
+  void operator=(const vtkShadowMapPassGuarded&) = delete;
+};
+vtkStandardNewMacro(vtkShadowMapPassGuarded);
+}
+
 //------------------------------------------------------------------------------
 vtkBuiltinShadowMapPass::vtkBuiltinShadowMapPass()
-  : Shadows(vtkShadowMapPass::New())
+  : Shadows(vtkShadowMapPassGuarded::New())
   , MapResolution(2048)
   , ShadowingLights(0)
 {
@@ -27,6 +124,14 @@ vtkBuiltinShadowMapPass::vtkBuiltinShadowMapPass()
   vtkNew<vtkRenderPassCollection> passes;
   passes->AddItem(this->Shadows->GetShadowMapBakerPass());
   passes->AddItem(this->Shadows);
+  // VTK's assembly (TestShadowMapPass) draws opaque geometry only; volumes
+  // and 2D overlays (scalar bars, text) follow as in vtkRenderStepsPass, so
+  // the baseline runs ordinary scenes without losing them. (Volumes cast no
+  // shadow here either.)
+  vtkNew<vtkVolumetricPass> volumes;
+  vtkNew<vtkOverlayPass> overlays;
+  passes->AddItem(volumes);
+  passes->AddItem(overlays);
   vtkNew<vtkSequencePass> sequence;
   sequence->SetPasses(passes);
   vtkNew<vtkCameraPass> camera;
@@ -67,6 +172,8 @@ bool vtkBuiltinShadowMapPass::SetOption(const char* key, double value)
 void vtkBuiltinShadowMapPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
+  // The attenuation is a uniform in VTK's code: no shader rebuild needed.
+  static_cast<vtkShadowMapPassGuarded*>(this->Shadows)->Residual = this->ResidualLight;
   // The lights VTK's baker gives a map: switched on, not the headlight, and
   // directional or a spot (VTK's pass skips point lights).
   this->ShadowingLights = 0;

@@ -4,7 +4,12 @@
  *
  * VTK's vtkShadowMapBakerPass + vtkShadowMapPass under a vtkCameraPass,
  * assembled as VTK's TestShadowMapPass does, at MapResolution texels
- * (default 2048, option map_resolution). Every vtkshadow technique is
+ * (default 2048, option map_resolution), followed by VTK's volumetric and
+ * overlay passes (volumes and 2D actors are drawn, unshadowed; translucent
+ * actors are not drawn). Shaders without a view-space vertex (actors with
+ * lighting off, unlit lines) keep VTK's shaders: VTK 9.1's pass alone
+ * breaks their compilation and crashes. residual_light scales VTK's own
+ * vtkLight::ShadowAttenuation. Every vtkshadow technique is
  * measured against it. Its pipeline is its delegate and renders the scene
  * itself, so SetDelegatePass is not used.
  */

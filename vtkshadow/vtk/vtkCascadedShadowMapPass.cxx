@@ -9,6 +9,7 @@
 #include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -21,6 +22,8 @@
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowLightingHook.h"
+#include "vtkShadowRankReduction.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -93,6 +96,8 @@ struct vtkCascadedShadowMapPass::Internals
   float FadeStart = 0.0f;
   float MaxDistance = 0.0f;
   std::string ShaderSignature; // kinds, filter: what the generated code depends on
+  vtkSmartPointer<vtkMultiProcessController> Controller; // ranks sharing the image
+  std::vector<float> ReduceScratch;
 };
 
 //------------------------------------------------------------------------------
@@ -161,6 +166,23 @@ void vtkCascadedShadowMapPass::CopySettings(vtkCascadedShadowMapPass* o)
   this->CastHeadlightShadows = o->CastHeadlightShadows;
   this->SkippedLights = o->SkippedLights;
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::SetController(vtkMultiProcessController* controller)
+{
+  if (this->Impl->Controller != controller)
+  {
+    this->Impl->Controller = controller;
+    this->Impl->Rendered.clear(); // maps of one rank are not the reduced ones
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMultiProcessController* vtkCascadedShadowMapPass::GetController() const
+{
+  return this->Impl->Controller;
 }
 
 //------------------------------------------------------------------------------
@@ -279,6 +301,15 @@ void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame
   }
   frame.CasterTime += frame.Casters.size(); // a caster leaving the scene changes it too
   scene.caster_count = static_cast<int>(frame.Casters.size());
+  // Across ranks: every rank plans from everyone's casters and receivers, so
+  // the light matrices, the tiles and the reuse decisions agree.
+  vtkMultiProcessController* controller = this->Impl->Controller;
+  vtkshadow::AllReduceBounds(controller, &scene.casters);
+  vtkshadow::AllReduceBounds(controller, &scene.receivers);
+  vtkshadow::AllReduceSum(controller, &scene.caster_count);
+  unsigned long long casterTime = frame.CasterTime;
+  vtkshadow::AllReduceMax(controller, &casterTime);
+  frame.CasterTime = static_cast<vtkMTimeType>(casterTime);
 
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->GetPosition(scene.camera.position);
@@ -544,6 +575,9 @@ void vtkCascadedShadowMapPass::BakeMaps(
       state->vtkglClear(GL_DEPTH_BUFFER_BIT);
       ++this->NumberOfMapsRendered;
       this->DrawCasters(program, frame, impl.Plan.tiles.tiles[t]);
+      // Each rank drew its own casters: the nearest depth of all is the map.
+      vtkshadow::AllReduceDepthRegion(
+        impl.Controller, impl.Atlas, x, y, resolution, resolution, impl.ReduceScratch);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
@@ -652,7 +686,7 @@ bool vtkCascadedShadowMapPass::PostReplaceShaderValues(
   {
     return true;
   }
-  if (vtkshadow::InjectLightFactors(fragmentShader, "vshShadowFactor[%d]",
+  if (this->InjectLightFactors(fragmentShader, "vshShadowFactor[%d]",
         "vshShadowPrepare(vertexVC.xyz, normalize(normalVCVSOutput));", MaxLights))
   {
     // The debug view tints the final colour by cascade.

@@ -39,6 +39,7 @@
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
+class vtkMultiProcessController;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 struct vsh_csm_settings;
@@ -151,6 +152,19 @@ public:
   vtkSetMacro(DebugCascades, bool);
   vtkGetMacro(DebugCascades, bool);
   vtkBooleanMacro(DebugCascades, bool);
+
+  /**
+   * Ranks that draw one image together (ParaView's pvbatch or pvserver
+   * under MPI, sort-last compositing): with a controller of more than one
+   * process every rank plans its maps from the bounds of all ranks' casters
+   * and receivers and the real camera, draws its own casters, and the maps
+   * it bakes are min-reduced over the ranks, so a caster on one rank
+   * shadows a receiver on another. Maps are reduced only in frames that
+   * bake them (the same frames on every rank: the plan's inputs are
+   * reduced). Every rank must render every frame. Default none: one process.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkMultiProcessController* GetController() const;
 
   /**
    * Copy every setting (not the delegate, not the GL state) from `other`.

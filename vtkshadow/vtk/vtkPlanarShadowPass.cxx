@@ -136,16 +136,20 @@ struct vtkPlanarShadowPass::Internals
   float PlaneTolerance[MaxExplicitPlanes] = {};
   std::vector<vtkProp*> Receiving; // sorted (from the map)
   bool EveryoneReceives = false;
+  std::vector<vtkWeakPointer<vtkActor>> Detected; // in the last frame
 
-  // Marked with RECEIVER() or added with AddReceiverActor().
-  bool IsReceiverActor(vtkActor* actor) const
+  // The actors added with AddReceiverActor() that still exist.
+  std::vector<vtkActor*> AddedActors() const
   {
-    bool receiver = vtkshadow::HasFlag(actor, RECEIVER());
+    std::vector<vtkActor*> added;
     for (const auto& r : this->ReceiverActors)
     {
-      receiver = receiver || r == actor;
+      if (r)
+      {
+        added.push_back(r);
+      }
     }
-    return receiver;
+    return added;
   }
 
   bool CanReceive(vtkProp* prop) const
@@ -158,6 +162,7 @@ struct vtkPlanarShadowPass::Internals
 //------------------------------------------------------------------------------
 vtkPlanarShadowPass::vtkPlanarShadowPass()
   : PlaneTolerance(1e-5)
+  , DetectReceivers(true)
   , NumberOfShadowPairs(0)
   , NumberOfMaskTriangles(0)
   , NumberOfGeometryBuilds(0)
@@ -241,6 +246,14 @@ long long vtkPlanarShadowPass::GetMemoryBytes() const
 vtkshadow::ReceiverPlaneCache& vtkPlanarShadowPass::GetReceiverPlaneCache()
 {
   return this->Impl->ReceiverPlanes;
+}
+
+//------------------------------------------------------------------------------
+vtkshadow::ReceiverChoice vtkPlanarShadowPass::ChooseReceivers(const std::vector<vtkActor*>& actors)
+{
+  // Explicit planes (AddReceiverPlane) are marks too: no detection then.
+  return vtkshadow::ChooseReceivers(actors, this->Impl->AddedActors(), RECEIVER(),
+    this->DetectReceivers && this->Impl->Planes.empty(), this->Impl->ReceiverPlanes);
 }
 
 //------------------------------------------------------------------------------
@@ -332,12 +345,12 @@ void vtkPlanarShadowPass::GatherReceivers(const std::vector<vtkActor*>& actors, 
 {
   Internals& impl = *this->Impl;
   impl.ReceiverIndex.clear();
-  for (vtkActor* actor : actors)
+  // Marked actors, or else the flat ones (detection).
+  const vtkshadow::ReceiverChoice choice = this->ChooseReceivers(actors);
+  impl.Detected.assign(
+    choice.Detected ? choice.Receivers.begin() : choice.Receivers.end(), choice.Receivers.end());
+  for (vtkActor* actor : choice.Receivers)
   {
-    if (!impl.IsReceiverActor(actor))
-    {
-      continue;
-    }
     vtkshadow::ReceiverPlaneCache::Entry& plane = impl.ReceiverPlanes.Get(actor);
     if (!plane.Flat)
     {
@@ -796,8 +809,7 @@ bool vtkPlanarShadowPass::PostReplaceShaderValues(
   }
   // Each light's diffuse and specular terms times its mask bit; the mask is
   // read once per fragment.
-  vtkshadow::InjectLightFactors(
-    fragmentShader, "vshPlanarLit(%d)", "vshPlanarPrepare(vertexVC.xyz);");
+  this->InjectLightFactors(fragmentShader, "vshPlanarLit(%d)", "vshPlanarPrepare(vertexVC.xyz);");
   return true;
 }
 
@@ -868,6 +880,8 @@ void vtkPlanarShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReceiverActors: " << this->Impl->ReceiverActors.size() << "\n";
   os << indent << "ReceiverPlanes: " << this->Impl->Planes.size() << "\n";
   os << indent << "PlaneTolerance: " << this->PlaneTolerance << "\n";
+  os << indent << "DetectReceivers: " << this->DetectReceivers << "\n";
+  os << indent << "DetectedReceivers: " << this->Impl->Detected.size() << "\n";
   os << indent << "NumberOfShadowPairs: " << this->NumberOfShadowPairs << "\n";
   os << indent << "NumberOfMaskTriangles: " << this->NumberOfMaskTriangles << "\n";
   os << indent << "NumberOfGeometryBuilds: " << this->NumberOfGeometryBuilds << "\n";
@@ -876,6 +890,15 @@ void vtkPlanarShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 bool vtkPlanarShadowPass::SetOption(const char* key, double value)
 {
+  if (key && std::string(key) == "detect_receivers")
+  {
+    if (value != 0.0 && value != 1.0)
+    {
+      return false;
+    }
+    this->SetDetectReceivers(value != 0.0);
+    return true;
+  }
   if (key && std::string(key) == "plane_tolerance")
   {
     if (!(value >= 0.0 && value <= 1.0))
@@ -889,9 +912,24 @@ bool vtkPlanarShadowPass::SetOption(const char* key, double value)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkPlanarShadowPass::GetStatsJSON(vtkRenderer*) const
+std::string vtkPlanarShadowPass::GetStatsJSON(vtkRenderer* renderer) const
 {
   return "\"shadow_pairs\": " + std::to_string(this->NumberOfShadowPairs) +
     ", \"mask_triangles\": " + std::to_string(this->NumberOfMaskTriangles) +
-    ", \"geometry_builds\": " + std::to_string(this->NumberOfGeometryBuilds);
+    ", \"geometry_builds\": " + std::to_string(this->NumberOfGeometryBuilds) +
+    ", \"detected_receivers\": " + this->DetectedReceiversJSON(renderer);
+}
+
+//------------------------------------------------------------------------------
+int vtkPlanarShadowPass::GetNumberOfDetectedReceivers() const
+{
+  return static_cast<int>(this->Impl->Detected.size());
+}
+
+//------------------------------------------------------------------------------
+vtkActor* vtkPlanarShadowPass::GetDetectedReceiver(int index) const
+{
+  const auto& detected = this->Impl->Detected;
+  return index >= 0 && index < static_cast<int>(detected.size()) ? detected[index].GetPointer()
+                                                                 : nullptr;
 }

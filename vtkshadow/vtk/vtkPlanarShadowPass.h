@@ -16,6 +16,11 @@
  * Receivers: actors marked with RECEIVER() or added with AddReceiverActor()
  * (their flat geometry defines the plane and the area), or explicit planes
  * (AddReceiverPlane()), which receive on every opaque fragment lying on them.
+ * When no actor is marked or added and no plane is given, every flat surface
+ * actor (all its points on one plane: a floor, a cut plane, a slice) is
+ * detected as a receiver,
+ * unless it carries RECEIVER() = 0 or detection is off (DetectReceivers,
+ * option detect_receivers); GetDetectedReceiver() lists them.
  * Casters: every visible opaque actor except receivers onto themselves and
  * actors marked with NO_CAST(). Lights: every switched-on scene light
  * (directional, point, spot); the headlight only with CastHeadlightShadowsOn().
@@ -51,6 +56,7 @@ struct vsh_planar_rect;
 namespace vtkshadow
 {
 class ReceiverPlaneCache;
+struct ReceiverChoice;
 }
 #endif
 
@@ -79,6 +85,20 @@ public:
   vtkGetMacro(PlaneTolerance, double);
 
   /**
+   * Whether flat surface actors receive when no actor is marked (default on).
+   */
+  vtkSetMacro(DetectReceivers, bool);
+  vtkGetMacro(DetectReceivers, bool);
+  vtkBooleanMacro(DetectReceivers, bool);
+
+  /**
+   * The receivers detected in the last frame (none when some actor was
+   * marked or detection is off), in the order of the render state's props.
+   */
+  int GetNumberOfDetectedReceivers() const override;
+  vtkActor* GetDetectedReceiver(int index) const override;
+
+  /**
    * Number of (receiver, light) pairs that cast in the last frame, and the
    * number of caster triangles drawn into the mask in it.
    */
@@ -97,12 +117,13 @@ public:
   long long GetMemoryBytes() const override;
 
   /**
-   * plane_tolerance (0..1), and the base's cast_headlight.
+   * plane_tolerance (0..1), detect_receivers (0/1), and the base's options.
    */
   bool SetOption(const char* key, double value) override;
 
   /**
-   * shadow_pairs, mask_triangles and geometry_builds of the last frame.
+   * shadow_pairs, mask_triangles, geometry_builds and detected_receivers
+   * (indices in the renderer's actor list) of the last frame.
    */
   std::string GetStatsJSON(vtkRenderer* renderer) const override;
 
@@ -115,6 +136,13 @@ public:
    * vtkAutoShadowPass reads the cache of its planar pass.
    */
   vtkshadow::ReceiverPlaneCache& GetReceiverPlaneCache();
+
+  /**
+   * The receivers among a frame's opaque actors under this pass's marks,
+   * added actors and detection setting (vtkshadow::ChooseReceivers):
+   * vtkAutoShadowPass decides with the receivers this pass will use.
+   */
+  vtkshadow::ReceiverChoice ChooseReceivers(const std::vector<vtkActor*>& actors);
 #endif
 
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -129,6 +157,7 @@ protected:
   ~vtkPlanarShadowPass() override;
 
   double PlaneTolerance;
+  bool DetectReceivers;
   int NumberOfShadowPairs;
   vtkIdType NumberOfMaskTriangles;
   int NumberOfGeometryBuilds;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 
 namespace vtkshadow
 {
@@ -48,9 +49,27 @@ void LightHomogeneous(vtkLight* light, double out[4])
   out[3] = positional ? 1.0 : 0.0;
 }
 
-bool InjectLightFactors(
-  std::string& fs, const std::string& factor, const std::string& prepare, int maxLights)
+std::string ResidualFactor(const std::string& factor, double residual)
 {
+  if (!(residual > 0.0))
+  {
+    return factor;
+  }
+  // Nine digits: the float the shader reads is the one asked for.
+  char value[32];
+  std::snprintf(value, sizeof value, "%.9g", std::min(residual, 1.0));
+  std::string literal = value;
+  if (literal.find_first_of(".e") == std::string::npos)
+  {
+    literal += ".0"; // GLSL: "1" is an int, mix() wants floats
+  }
+  return "mix(" + literal + ", 1.0, float(" + factor + "))";
+}
+
+bool InjectLightFactors(std::string& fs, const std::string& factorExpression,
+  const std::string& prepare, int maxLights, double residual)
+{
+  const std::string factor = ResidualFactor(factorExpression, residual);
   // Each term is found by its head ("diffuse += (df * lightColor3") followed
   // by anything but a digit, and the factor goes right after the head: so a
   // second pass (cascaded maps around planar, say) multiplies its own factor

@@ -41,10 +41,19 @@ void LightHomogeneous(vtkLight* light, double out[4]);
  * so per-fragment work (texture lookups) happens once, not per term.
  * Returns false (shader unchanged) when the shader has no light terms, e.g.
  * for actors with lighting off.
+ *
+ * `residual` (0..1) is how much of a light remains in its shadow: with
+ * residual > 0 the factor goes in as mix(residual, 1.0, factor), a
+ * constant in the code (0: the factor as given, the hard shadow).
  */
-
 bool InjectLightFactors(std::string& fragmentShader, const std::string& factor,
-  const std::string& prepare, int maxLights = 16);
+  const std::string& prepare, int maxLights = 16, double residual = 0.0);
+
+/**
+ * The GLSL of `factor` with `residual` of the light left in shadow:
+ * "mix(<residual>, 1.0, <factor>)", or `factor` itself for residual <= 0.
+ */
+std::string ResidualFactor(const std::string& factor, double residual);
 }
 
 #endif

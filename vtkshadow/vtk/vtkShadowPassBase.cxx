@@ -1,22 +1,74 @@
 #include "vtkShadowPassBase.h"
 
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkLight.h"
+#include "vtkNew.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
+#include "vtkShadowLightingHook.h"
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 vtkInformationKeyMacro(vtkShadowPassBase, RECEIVER, Integer);
 vtkInformationKeyMacro(vtkShadowPassBase, NO_CAST, Integer);
+vtkInformationKeyMacro(vtkShadowPassBase, LIGHT_RADIUS, Double);
+vtkInformationKeyMacro(vtkShadowPassBase, LIGHT_ANGLE, Double);
+
+namespace
+{
+// A size key's value, or 0 when the light has none or an unusable one (a
+// light made by hand could carry anything; a pass must never see NaN).
+double LightSizeValue(vtkLight* light, vtkInformationDoubleKey* key, double limit)
+{
+  vtkInformation* info = light ? light->GetInformation() : nullptr;
+  if (!info || !info->Has(key))
+  {
+    return 0.0;
+  }
+  const double v = info->Get(key);
+  return (v >= 0.0 && v < limit) ? v : 0.0;
+}
+}
+
+double vtkShadowPassBase::GetLightRadius(vtkLight* light)
+{
+  return LightSizeValue(light, LIGHT_RADIUS(), std::numeric_limits<double>::infinity());
+}
+
+double vtkShadowPassBase::GetLightAngle(vtkLight* light)
+{
+  return LightSizeValue(light, LIGHT_ANGLE(), 180.0);
+}
+
+void vtkShadowPassBase::SetLightSize(vtkLight* light, double radius, double angleDegrees)
+{
+  if (!light)
+  {
+    return;
+  }
+  if (!light->GetInformation())
+  {
+    vtkNew<vtkInformation> info;
+    light->SetInformation(info);
+  }
+  light->GetInformation()->Set(LIGHT_RADIUS(), radius);
+  light->GetInformation()->Set(LIGHT_ANGLE(), angleDegrees);
+  light->Modified();
+}
 vtkCxxSetObjectMacro(vtkShadowPassBase, DelegatePass, vtkRenderPass);
 
 //------------------------------------------------------------------------------
 vtkShadowPassBase::vtkShadowPassBase()
   : DelegatePass(nullptr)
   , CastHeadlightShadows(false)
+  , ResidualLight(0.0)
   , SkippedLights(0)
   , ShaderTime(0)
 {
@@ -50,7 +102,46 @@ bool vtkShadowPassBase::SetOption(const char* key, double value)
     this->SetCastHeadlightShadows(value != 0.0);
     return true;
   }
+  if (key && std::strcmp(key, "residual_light") == 0 && value >= 0.0 && value <= 1.0)
+  {
+    this->SetResidualLight(value);
+    return true;
+  }
   return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::SetResidualLight(double residual)
+{
+  // NaN fails both tests: kept out like any value out of range.
+  const double clamped = residual >= 0.0 ? (residual <= 1.0 ? residual : 1.0) : 0.0;
+  if (clamped != this->ResidualLight)
+  {
+    this->ResidualLight = clamped;
+    this->BumpShaderTime(); // the value is a constant in the shaders
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowPassBase::InjectLightFactors(std::string& fragmentShader, const std::string& factor,
+  const std::string& prepare, int maxLights) const
+{
+  return vtkshadow::InjectLightFactors(
+    fragmentShader, factor, prepare, maxLights, this->ResidualLight);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowPassBase::DetectedReceiversJSON(vtkRenderer* renderer) const
+{
+  std::string out = "[";
+  vtkActorCollection* actors = renderer ? renderer->GetActors() : nullptr;
+  for (int i = 0; i < this->GetNumberOfDetectedReceivers(); ++i)
+  {
+    const int index = actors ? actors->IsItemPresent(this->GetDetectedReceiver(i)) - 1 : -1;
+    out += (i ? ", " : "") + std::to_string(index);
+  }
+  return out + "]";
 }
 
 //------------------------------------------------------------------------------
@@ -124,6 +215,7 @@ void vtkShadowPassBase::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
   os << indent << "SkippedLights: " << this->SkippedLights << "\n";
+  os << indent << "ResidualLight: " << this->ResidualLight << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)
   {

@@ -16,7 +16,12 @@
  *   BumpShaderTime() so VTK's mappers rebuild their shaders;
  * - virtuals for the GPU memory it holds, the last frame's details as JSON,
  *   and named options (SetOption), so the CLI, the C API, Python, the
- *   harness and the bench treat every technique alike.
+ *   harness and the bench treat every technique alike;
+ * - the residual light (option residual_light): how much of a light remains
+ *   in its shadow, applied where every pass's factor enters the lighting
+ *   (InjectLightFactors);
+ * - the receivers a pass detected (GetDetectedReceiver), for passes with
+ *   plane receivers.
  */
 #ifndef vtkShadowPassBase_h
 #define vtkShadowPassBase_h
@@ -26,6 +31,8 @@
 
 #include <string> // for std::string
 
+class vtkActor;
+class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
 class vtkLight;
 class vtkRenderer;
@@ -46,6 +53,27 @@ public:
    * Property key: an actor with NO_CAST() = 1 casts no shadow.
    */
   static vtkInformationIntegerKey* NO_CAST();
+
+  ///@{
+  /**
+   * A light's size, kept in the vtkLight's information
+   * (vtkLight::GetInformation): LIGHT_RADIUS() is the radius of a point or
+   * spot light's disk (world units; the disk is centred on the light's
+   * position and faces the shaded point, as Cycles 3.4 samples it),
+   * LIGHT_ANGLE() the angular diameter of a directional light in degrees
+   * (shadow rays leave within a cone of half-angle ANGLE/2 around the
+   * direction to the light). Absent or 0: a hard light. vtkShadowScene sets
+   * them from the scene's "radius" and "angle". Passes read them with
+   * GetLightRadius / GetLightAngle, which return 0 for a light without the
+   * key (any vtkLight made elsewhere) or with a value that is not finite and
+   * >= 0 (and, for the angle, < 180).
+   */
+  static vtkInformationDoubleKey* LIGHT_RADIUS();
+  static vtkInformationDoubleKey* LIGHT_ANGLE();
+  static double GetLightRadius(vtkLight* light);
+  static double GetLightAngle(vtkLight* light);
+  static void SetLightSize(vtkLight* light, double radius, double angleDegrees);
+  ///@}
 
   /**
    * The pass that renders the scene (default: a vtkRenderStepsPass, made on
@@ -78,6 +106,24 @@ public:
   bool LightCasts(vtkLight* light, int index) const;
 
   /**
+   * How much of a light remains where it is shadowed: 0 (default) is the
+   * physical hard shadow (the light's diffuse and specular terms removed),
+   * 0.3 keeps 30% of them, 1 shows no shadow. Each light's shadow factor f
+   * becomes mix(ResidualLight, 1, f). Option residual_light (0..1).
+   * Changing it rebuilds the mappers' shaders (the value is a constant in
+   * them).
+   */
+  virtual void SetResidualLight(double residual);
+  vtkGetMacro(ResidualLight, double);
+
+  /**
+   * Actors the pass detected as plane receivers in its last frame (because
+   * none was marked with RECEIVER()); none for passes without receivers.
+   */
+  virtual int GetNumberOfDetectedReceivers() const { return 0; }
+  virtual vtkActor* GetDetectedReceiver(int) const { return nullptr; }
+
+  /**
    * Bytes of GPU memory the pass holds for shadows, as of its last frame.
    */
   virtual long long GetMemoryBytes() const { return 0; }
@@ -91,7 +137,8 @@ public:
   /**
    * Set a setting by name (command lines, the C API, vtkShadowTechnique).
    * Returns false for a key this pass does not have or a value out of its
-   * range; nothing changes then. The base knows cast_headlight (0 or 1).
+   * range; nothing changes then. The base knows cast_headlight (0 or 1)
+   * and residual_light (0..1).
    */
   virtual bool SetOption(const char* key, double value);
 
@@ -126,8 +173,24 @@ protected:
    */
   void BumpShaderTime();
 
+#ifndef __VTK_WRAP__
+  /**
+   * vtkshadow::InjectLightFactors with this pass's ResidualLight: every
+   * pass puts its factors into the lighting through this.
+   */
+  bool InjectLightFactors(std::string& fragmentShader, const std::string& factor,
+    const std::string& prepare, int maxLights = 16) const;
+#endif
+
+  /**
+   * The detected receivers as a JSON array of their indices in the
+   * renderer's actor list, "[]" for none.
+   */
+  std::string DetectedReceiversJSON(vtkRenderer* renderer) const;
+
   vtkRenderPass* DelegatePass;
   bool CastHeadlightShadows;
+  double ResidualLight;
   unsigned int SkippedLights;
   vtkMTimeType ShaderTime;
 

@@ -1,40 +1,99 @@
 #include "vtkShadowReceiverPlane.h"
 
 #include "vtkActor.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkShadowActorFlags.h"
+#include "vtkSmartPointer.h"
 
 #include "vsh_mat4.h"
 #include "vsh_plane.h"
 
+#include <algorithm>
+#include <cfloat>
 #include <vector>
 
 namespace vtkshadow
 {
+namespace
+{
+// The poly data a polydata mapper draws as itself: its input, or, as
+// ParaView's representations give it, the poly data leaves of a composite
+// data set. Glyph mappers take points too, but draw shapes at them, which
+// are not the points' plane, so they give nothing.
+std::vector<vtkPolyData*> DrawnPolyData(vtkMapper* mapper)
+{
+  std::vector<vtkPolyData*> leaves;
+  if (!mapper || !mapper->IsA("vtkPolyDataMapper"))
+  {
+    return leaves;
+  }
+  vtkDataObject* data = mapper->GetInputDataObject(0, 0);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (auto* poly = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        leaves.push_back(poly);
+      }
+    }
+  }
+  else if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    leaves.push_back(poly);
+  }
+  return leaves;
+}
+}
+
 // The plane of a receiver actor's flat geometry in world coordinates, or
 // false when the geometry is not flat (within 1e-6 of its size) or empty.
-bool ReceiverPlane(vtkActor* actor, double plane[4])
+bool ReceiverPlane(vtkActor* actor, double plane[4], bool* surface)
 {
-  vtkMapper* mapper = actor->GetMapper();
-  auto* poly = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
-  if (!poly || !poly->GetPoints() || poly->GetNumberOfPoints() < 3)
+  const std::vector<vtkPolyData*> leaves = DrawnPolyData(actor->GetMapper());
+  double m[16];
+  vtkMatrix4x4::DeepCopy(m, actor->GetMatrix());
+  std::vector<double> world;
+  bool hasSurface = false;
+  bool floatStorage = false;
+  for (vtkPolyData* poly : leaves)
+  {
+    hasSurface = hasSurface || poly->GetNumberOfPolys() > 0 || poly->GetNumberOfStrips() > 0;
+    if (!poly->GetPoints())
+    {
+      continue;
+    }
+    floatStorage = floatStorage || poly->GetPoints()->GetDataType() == VTK_FLOAT;
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+    {
+      double p[3], w[3];
+      poly->GetPoint(i, p);
+      vsh_mat4_transform_point(m, p, w);
+      world.insert(world.end(), w, w + 3);
+    }
+  }
+  if (surface)
+  {
+    *surface = hasSurface;
+  }
+  if (world.size() < 9)
   {
     return false;
   }
-  double m[16];
-  vtkMatrix4x4::DeepCopy(m, actor->GetMatrix());
-  std::vector<double> world(3 * poly->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    poly->GetPoint(i, p);
-    vsh_mat4_transform_point(m, p, &world[3 * i]);
-  }
-  // Largest fan triangle's normal, flat within 1e-6 of the points' size.
-  return vsh_plane_fit_points(world.data(), world.size() / 3, 1e-6, plane) == VSH_PLANE_OK;
+  // Largest fan triangle's normal, flat within 1e-6 of the points' size
+  // and the rounding of float storage (a float floor far from the origin).
+  const double stored = floatStorage ? FLT_EPSILON : 0.0;
+  return vsh_plane_fit_stored_points(world.data(), world.size() / 3, 1e-6, stored, plane) ==
+    VSH_PLANE_OK;
 }
 
 //------------------------------------------------------------------------------
@@ -45,9 +104,43 @@ ReceiverPlaneCache::Entry& ReceiverPlaneCache::Get(vtkActor* actor)
   if (t > entry.Time || entry.Time == 0)
   {
     entry.Time = t;
-    entry.Flat = ReceiverPlane(actor, entry.Plane);
+    entry.Flat = ReceiverPlane(actor, entry.Plane, &entry.Surface);
     entry.Reported = false;
   }
   return entry;
+}
+
+//------------------------------------------------------------------------------
+ReceiverChoice ChooseReceivers(const std::vector<vtkActor*>& actors,
+  const std::vector<vtkActor*>& added, vtkInformationIntegerKey* receiverKey, bool detect,
+  ReceiverPlaneCache& cache)
+{
+  ReceiverChoice choice;
+  for (vtkActor* actor : actors)
+  {
+    if (HasFlag(actor, receiverKey) || std::find(added.begin(), added.end(), actor) != added.end())
+    {
+      choice.Receivers.push_back(actor);
+    }
+  }
+  if (!choice.Receivers.empty() || !detect)
+  {
+    return choice;
+  }
+  for (vtkActor* actor : actors)
+  {
+    vtkInformation* keys = actor->GetPropertyKeys();
+    if (keys && keys->Has(receiverKey))
+    {
+      continue; // RECEIVER() = 0: opted out
+    }
+    const ReceiverPlaneCache::Entry& entry = cache.Get(actor);
+    if (entry.Flat && entry.Surface)
+    {
+      choice.Receivers.push_back(actor);
+    }
+  }
+  choice.Detected = !choice.Receivers.empty();
+  return choice;
 }
 }

@@ -7,17 +7,23 @@
 
 #include <cstddef> // for size_t
 #include <map>     // for std::map
+#include <vector>  // for std::vector
 
 class vtkActor;
+class vtkInformationIntegerKey;
 
 namespace vtkshadow
 {
 /**
  * The plane (N, d with N . x + d = 0, N unit) of an actor's polydata in world
  * coordinates (actor matrix applied), or false when the geometry is empty or
- * not flat within 1e-6 of its size.
+ * not flat within 1e-6 of its size (plus the rounding of float points far
+ * from the origin: vsh_plane_fit_stored_points). `surface` (may be null) is
+ * set to whether the polydata has polygons or strips: only surfaces are
+ * detected as receivers (a flat set of lines or points receives nothing
+ * visible).
  */
-bool ReceiverPlane(vtkActor* actor, double plane[4]);
+bool ReceiverPlane(vtkActor* actor, double plane[4], bool* surface = nullptr);
 
 /**
  * Receiver planes by actor, recomputed only when the actor's placement (its
@@ -35,6 +41,7 @@ public:
     bool Flat = false;                // the geometry is a plane ...
     double Plane[4] = { 0, 0, 0, 0 }; // ... this one
     bool Reported = false;            // a "not flat" warning was given for this computation
+    bool Surface = false;             // it has polygons or strips (detection needs them)
   };
 
   /**
@@ -52,6 +59,27 @@ public:
 private:
   std::map<vtkActor*, Entry> Entries;
 };
+
+/**
+ * The frame's plane receivers among `actors` (visible opaque ones), and
+ * whether they were detected rather than marked.
+ *
+ * Marked: actors with RECEIVER() = 1 (key `receiverKey`) or in `added`
+ * (vtkPlanarShadowPass::AddReceiverActor). When any actor is marked, only
+ * marked actors receive: explicit marks override detection. When none is
+ * and `detect` is on, every flat surface actor (ReceiverPlane, through the
+ * cache) is a receiver: floors, cut planes, slices drawn as polydata, unless
+ * it opts out with RECEIVER() = 0 (so scene files, which mark every object,
+ * are never second-guessed).
+ */
+struct ReceiverChoice
+{
+  std::vector<vtkActor*> Receivers;
+  bool Detected = false;
+};
+ReceiverChoice ChooseReceivers(const std::vector<vtkActor*>& actors,
+  const std::vector<vtkActor*>& added, vtkInformationIntegerKey* receiverKey, bool detect,
+  ReceiverPlaneCache& cache);
 }
 
 #endif

@@ -29,6 +29,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSTLReader.h"
+#include "vtkShadowPassBase.h"
 #include "vtkSmartPointer.h"
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
@@ -483,6 +484,24 @@ const char* vtkShadowScene::GetLightTypeName(int light) const
 }
 
 //------------------------------------------------------------------------------
+double vtkShadowScene::GetLightRadius(int light) const
+{
+  if (light < 0 || light >= this->GetNumberOfLights())
+  {
+    return 0.0;
+  }
+  return this->Impl->Scene->lights[light].radius;
+}
+
+double vtkShadowScene::GetLightAngle(int light) const
+{
+  if (light < 0 || light >= this->GetNumberOfLights())
+  {
+    return 0.0;
+  }
+  return this->Impl->Scene->lights[light].angle;
+}
+
 vtkLight* vtkShadowScene::NewLight(int index) const
 {
   if (index < 0 || index >= this->GetNumberOfLights())
@@ -525,6 +544,9 @@ vtkLight* vtkShadowScene::NewLight(int index) const
       light->SetExponent(0.0);
       break;
   }
+  // Hard lights carry the keys too (0), so a pass can tell "this scene says
+  // hard" from "a light made elsewhere" if it ever needs to.
+  vtkShadowPassBase::SetLightSize(light, l.radius, l.angle);
   return light;
 }
 

@@ -67,11 +67,24 @@ public:
    */
   const char* GetLightTypeName(int light) const;
 
+  ///@{
+  /**
+   * The size of scene light `light`: the disk radius of a point or spot
+   * light (world units) and the angular diameter of a directional light
+   * (degrees); 0 for a hard light, the other kind's field, or an index out
+   * of range. NewLight() stores them on the vtkLight too
+   * (vtkShadowPassBase::LIGHT_RADIUS / LIGHT_ANGLE), where passes read them.
+   */
+  double GetLightRadius(int light) const;
+  double GetLightAngle(int light) const;
+  ///@}
+
   /**
    * A new vtkLight configured as scene light `light` (caller owns it).
    * Directional lights are non-positional scene lights; point lights are
    * positional with a 180 degree cone; spot lights have a uniform (exponent 0)
-   * cone of the scene's half-angle. No distance attenuation.
+   * cone of the scene's half-angle. No distance attenuation. The light's
+   * size goes into its information (vtkShadowPassBase::SetLightSize).
    */
   vtkLight* NewLight(int light) const;
 

@@ -405,14 +405,14 @@ bool vtkShadowScreenMask::PreReplaceShaderValues(std::string& fragmentShader, vt
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowScreenMask::PostReplaceShaderValues(std::string& fragmentShader)
+bool vtkShadowScreenMask::PostReplaceShaderValues(std::string& fragmentShader, double residual)
 {
   if (fragmentShader.find("vshScreenPrepare") == std::string::npos)
   {
     return true;
   }
   if (vtkshadow::InjectLightFactors(
-        fragmentShader, "vshScreenLit(%d)", "vshScreenPrepare();", MaxLights))
+        fragmentShader, "vshScreenLit(%d)", "vshScreenPrepare();", MaxLights, residual))
   {
     ++this->HookedShaders;
   }

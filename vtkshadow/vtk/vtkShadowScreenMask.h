@@ -107,9 +107,11 @@ public:
    */
   vtkTextureObject* GetDepthTexture() const;
 
-  // Shader hooks, forwarded from the owning pass.
+  // Shader hooks, forwarded from the owning pass. Pass the owner's
+  // GetResidualLight() as `residual` (the light left in shadow,
+  // vtkShadowPassBase::SetResidualLight).
   bool PreReplaceShaderValues(std::string& fragmentShader, vtkProp* prop);
-  bool PostReplaceShaderValues(std::string& fragmentShader);
+  bool PostReplaceShaderValues(std::string& fragmentShader, double residual = 0.0);
   void SetShaderParameters(vtkShaderProgram* program);
 
   /**

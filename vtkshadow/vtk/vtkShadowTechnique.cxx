@@ -1,8 +1,10 @@
 #include "vtkShadowTechnique.h"
 
+#include "vtkLight.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkRenderWindow.h"
+#include "vtkShadowDefaultLights.h"
 #include "vtkShadowPassBase.h"
 #include "vtkShadowTechniqueRegistry.h"
 #include "vtkSmartPointer.h"
@@ -16,6 +18,7 @@ vtkStandardNewMacro(vtkShadowTechnique);
 vtkShadowTechnique::vtkShadowTechnique()
   : Name(nullptr)
   , MapResolution(2048)
+  , AutoKeyLight(true)
 {
   this->SetName("none");
 }
@@ -84,6 +87,15 @@ bool vtkShadowTechnique::Install(vtkRenderer* renderer)
   {
     return false;
   }
+  this->SetPass(gl, pass);
+  pass->Delete();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowTechnique::SetPass(vtkRenderer* renderer, vtkRenderPass* pass)
+{
+  auto* gl = static_cast<vtkOpenGLRenderer*>(renderer);
   // Free the GL objects of the pass we replace while its context exists;
   // VTK's passes complain (and leak) when they are deleted with them.
   if (gl->GetPass() && gl->GetRenderWindow())
@@ -91,8 +103,73 @@ bool vtkShadowTechnique::Install(vtkRenderer* renderer)
     gl->GetPass()->ReleaseGraphicsResources(gl->GetRenderWindow());
   }
   gl->SetPass(pass);
-  pass->Delete();
+  this->Renderer = renderer;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowTechnique::Enable(vtkRenderer* renderer)
+{
+  if (!vtkOpenGLRenderer::SafeDownCast(renderer))
+  {
+    vtkErrorMacro("Enable: a vtkOpenGLRenderer is required");
+    return false;
+  }
+  // The pass first: a bad name or setting leaves the renderer as it was.
+  vtkSmartPointer<vtkRenderPass> pass;
+  pass.TakeReference(this->CreatePass());
+  if (!pass)
+  {
+    return false;
+  }
+  this->AddedKeyLight = nullptr;
+  this->LightMessage.clear();
+  if (this->AutoKeyLight)
+  {
+    this->AddedKeyLight = vtkshadow::AddKeyLight(renderer, this->LightMessage);
+    if (!this->LightMessage.empty())
+    {
+      vtkWarningMacro(<< "enable shadows: " << this->LightMessage);
+    }
+  }
+  this->SetPass(renderer, pass);
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkShadowTechnique> vtkShadowTechnique::EnableShadows(
+  vtkRenderer* renderer, const char* technique)
+{
+  auto made = vtkSmartPointer<vtkShadowTechnique>::New();
+  made->SetName(technique ? technique : "auto");
+  return made->Enable(renderer) ? made : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkLight* vtkShadowTechnique::GetAddedKeyLight() const
+{
+  return this->AddedKeyLight;
+}
+
+//------------------------------------------------------------------------------
+vtkRenderer* vtkShadowTechnique::GetRenderer() const
+{
+  return this->Renderer;
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowTechnique::GetNumberOfDetectedReceivers() const
+{
+  auto* gl = vtkOpenGLRenderer::SafeDownCast(this->Renderer);
+  auto* pass = gl ? vtkShadowPassBase::SafeDownCast(gl->GetPass()) : nullptr;
+  return pass ? pass->GetNumberOfDetectedReceivers() : 0;
+}
+
+//------------------------------------------------------------------------------
+vtkActor* vtkShadowTechnique::GetDetectedReceiver(int index) const
+{
+  auto* gl = vtkOpenGLRenderer::SafeDownCast(this->Renderer);
+  auto* pass = gl ? vtkShadowPassBase::SafeDownCast(gl->GetPass()) : nullptr;
+  return pass ? pass->GetDetectedReceiver(index) : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -157,6 +234,8 @@ void vtkShadowTechnique::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Name: " << (this->Name ? this->Name : "(null)") << "\n";
   os << indent << "MapResolution: " << this->MapResolution << "\n";
+  os << indent << "AutoKeyLight: " << this->AutoKeyLight << "\n";
+  os << indent << "LightMessage: " << this->LightMessage << "\n";
   for (const auto& option : this->Options)
   {
     os << indent << "Option " << option.first << ": " << option.second << "\n";

@@ -9,6 +9,13 @@
  * vtk, planar, csm, auto, ...); settings are passed by name with SetOption
  * and checked by the technique's own pass (vtkShadowPassBase::SetOption).
  *
+ * Enable() (and the one-call EnableShadows(), vtkshadow.enable_shadows in
+ * Python, vtkshadow_enable_shadows in C) also makes the shadows visible on
+ * an ordinary VTK scene: when the renderer has no light of its own it adds
+ * vtkLightKit's key light (AutoKeyLight; GetAddedKeyLight,
+ * GetLightMessage), and the planar receivers are found by the passes
+ * (GetDetectedReceiver).
+ *
  * @code{.py}
  * technique = vtkshadow.vtkShadowTechnique()
  * technique.SetName("vtk")
@@ -20,14 +27,17 @@
 
 #include "vtkObject.h"
 #include "vtkShadowPassBase.h" // for CreatePass()
+#include "vtkSmartPointer.h"   // for EnableShadows()
+#include "vtkWeakPointer.h"    // for the renderer
 #include "vtkshadowModule.h"   // for export macro
 
 #include <string>  // for std::string
 #include <utility> // for std::pair
 #include <vector>  // for std::vector
 
+class vtkActor;
+class vtkLight;
 class vtkRenderPass;
-
 class vtkRenderer;
 
 class VTKSHADOW_EXPORT vtkShadowTechnique : public vtkObject
@@ -98,6 +108,56 @@ public:
    */
   long long GetShadowMapMemory(vtkRenderer* renderer) const;
 
+  /**
+   * Shadows on an ordinary VTK scene: Install(), and first, when AutoKeyLight
+   * is on and the renderer has only VTK's automatic headlight (or no light),
+   * add vtkLightKit's key light (vtkShadowDefaultLights.h) and say so once
+   * (a warning, and GetLightMessage()). Scenes with their own lights are
+   * left alone. Returns false, changing nothing, for an unknown technique, a
+   * setting it does not take, or a renderer that is not a vtkOpenGLRenderer.
+   */
+  bool Enable(vtkRenderer* renderer);
+
+#ifndef __VTK_WRAP__
+  /**
+   * The one C++ call: a technique by name (default "auto") enabled on the
+   * renderer (Enable), or nullptr with an error.
+   */
+  static vtkSmartPointer<vtkShadowTechnique> EnableShadows(
+    vtkRenderer* renderer, const char* technique = "auto");
+#endif
+
+  /**
+   * Whether Enable() adds a key light to a renderer without lights of its
+   * own (default on).
+   */
+  vtkSetMacro(AutoKeyLight, bool);
+  vtkGetMacro(AutoKeyLight, bool);
+  vtkBooleanMacro(AutoKeyLight, bool);
+
+  /**
+   * The key light Enable() added (owned by the renderer), nullptr when none
+   * was, and what was done ("" when nothing).
+   */
+  vtkLight* GetAddedKeyLight() const;
+  const char* GetLightMessage() const
+  {
+    return this->LightMessage.c_str();
+  }
+
+  /**
+   * The actors the installed pass detected as plane receivers in its last
+   * frame on the renderer it was installed on (because none was marked with
+   * vtkShadowPassBase::RECEIVER()).
+   */
+  int GetNumberOfDetectedReceivers() const;
+  vtkActor* GetDetectedReceiver(int index) const;
+
+  /**
+   * The renderer Install() or Enable() last set the technique on.
+   */
+  vtkRenderer* GetRenderer() const;
+
 protected:
   vtkShadowTechnique();
   ~vtkShadowTechnique() override;
@@ -105,6 +165,13 @@ protected:
   char* Name;
   int MapResolution;
   std::vector<std::pair<std::string, double>> Options; // in the order set
+  bool AutoKeyLight;
+  vtkWeakPointer<vtkLight> AddedKeyLight;
+  std::string LightMessage;
+  vtkWeakPointer<vtkRenderer> Renderer;
+
+  // Set `pass` on the OpenGL renderer, freeing the one it replaces.
+  void SetPass(vtkRenderer* renderer, vtkRenderPass* pass);
 
 private:
   vtkShadowTechnique(const vtkShadowTechnique&) = delete;

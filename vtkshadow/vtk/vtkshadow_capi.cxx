@@ -185,6 +185,64 @@ extern "C"
     return 0;
   }
 
+  int vtkshadow_technique_enable(
+    vtkshadow_technique* technique, void* vtk_renderer, char* error, size_t error_size)
+  {
+    auto* object = static_cast<vtkObjectBase*>(vtk_renderer);
+    if (!technique || !object || !object->IsA("vtkOpenGLRenderer"))
+    {
+      SetError(error, error_size, "vtkshadow_technique_enable: need a vtkOpenGLRenderer*");
+      return 1;
+    }
+    if (!technique->Technique->Enable(static_cast<vtkRenderer*>(object)))
+    {
+      SetError(error, error_size,
+        std::string("vtkshadow_technique_enable: cannot make technique \"") +
+          technique->Technique->GetName() + "\" with its settings");
+      return 1;
+    }
+    return 0;
+  }
+
+  vtkshadow_technique* vtkshadow_enable_shadows(
+    void* vtk_renderer, const char* name, double max_error, char* error, size_t error_size)
+  {
+    vtkshadow_technique* technique =
+      vtkshadow_technique_new(name ? name : "auto", error, error_size);
+    if (!technique)
+    {
+      return nullptr;
+    }
+    if ((max_error >= 0.0 &&
+          vtkshadow_technique_set_option(technique, "max_error", max_error, error, error_size)) ||
+      vtkshadow_technique_enable(technique, vtk_renderer, error, error_size))
+    {
+      vtkshadow_technique_free(technique);
+      return nullptr;
+    }
+    return technique;
+  }
+
+  int vtkshadow_technique_set_key_light(vtkshadow_technique* technique, int on)
+  {
+    if (!technique)
+    {
+      return 1;
+    }
+    technique->Technique->SetAutoKeyLight(on != 0);
+    return 0;
+  }
+
+  const char* vtkshadow_technique_light_message(const vtkshadow_technique* technique)
+  {
+    return technique ? technique->Technique->GetLightMessage() : "";
+  }
+
+  int vtkshadow_technique_detected_receiver_count(const vtkshadow_technique* technique)
+  {
+    return technique ? technique->Technique->GetNumberOfDetectedReceivers() : 0;
+  }
+
   int vtkshadow_actor_set_receiver(void* vtk_actor, int receiver)
   {
     vtkActor* actor = AsActor(vtk_actor);

@@ -1,0 +1,55 @@
+/* vsh_rt_cost.c - the cost of a frame of ray-traced shadows, from rays per
+ * second measured on the machine (vsh_raytrace.h). */
+#include "vsh_raytrace.h"
+
+#include <math.h>
+
+void vsh_rt_cost_model_default(vsh_rt_cost_model *model)
+{
+  /* Measured by bench/bench_raytrace.py on a loaded 2-core VM (Embree 3.13,
+   * a few hundred thousand triangles): a lower bound for an idle core. */
+  model->rays_per_second_per_thread = 2.0e6;
+  model->pixel_ns = 60.0;
+  model->frame_ms = 1.0;
+}
+
+void vsh_rt_cost_model_observe(vsh_rt_cost_model *model, double rays, double seconds,
+                               int threads)
+{
+  if (!(rays > 0.0) || !(seconds > 0.0) || threads < 1 || !isfinite(rays) ||
+      !isfinite(seconds)) {
+    return;
+  }
+  const double rate = rays / seconds / threads;
+  model->rays_per_second_per_thread = 0.75 * model->rays_per_second_per_thread + 0.25 * rate;
+}
+
+static double clamp01(double v)
+{
+  return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
+}
+
+double vsh_rt_cost_rays(const vsh_rt_cost_input *input)
+{
+  const double pixels = input->pixels > 0.0 ? input->pixels : 0.0;
+  const double lights = input->lights > 0 ? input->lights : 0;
+  const double samples = input->samples > 0 ? input->samples : 0;
+  if (lights == 0.0) {
+    return 0.0;
+  }
+  return clamp01(input->coverage) * pixels * (1.0 + lights * samples);
+}
+
+double vsh_rt_cost_ms(const vsh_rt_cost_model *model, const vsh_rt_cost_input *input)
+{
+  const double rays = vsh_rt_cost_rays(input);
+  if (rays == 0.0) {
+    return 0.0;
+  }
+  const int threads = input->threads > 1 ? input->threads : 1;
+  const double rate = model->rays_per_second_per_thread > 0.0
+                          ? model->rays_per_second_per_thread * threads
+                          : 1.0;
+  const double pixels = input->pixels > 0.0 ? input->pixels : 0.0;
+  return model->frame_ms + 1e-6 * model->pixel_ns * pixels + 1e3 * rays / rate;
+}

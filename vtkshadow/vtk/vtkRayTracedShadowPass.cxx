@@ -1,0 +1,396 @@
+#include "vtkRayTracedShadowPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShadowActorFlags.h"
+#include "vtkShadowCasterTriangles.h"
+#include "vtkShadowEmbreeScene.h"
+#include "vtkShadowLightingHook.h"
+#include "vtkShadowRayTracer.h"
+#include "vtkShadowScreenMask.h"
+
+#include "vsh_raytrace.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <thread>
+
+vtkStandardNewMacro(vtkRayTracedShadowPass);
+
+struct vtkRayTracedShadowPass::Internals
+{
+  vtkShadowScreenMask Mask;
+  vtkShadowEmbreeScene Scene;
+  vsh_rt_cost_model Cost;
+  std::vector<float> Depth;
+  std::vector<std::vector<float>> Visibility;
+  // What the last traced frame depended on: an equal key means a still frame.
+  std::vector<double> LastKey;
+  bool HaveMask = false;
+  bool Still = false;
+  vtkShadowRayTracer::Counters Counters;
+  int LightsTraced = 0;
+  double FrameSeconds = 0;
+
+  Internals() { vsh_rt_cost_model_default(&this->Cost); }
+};
+
+// The frame in plain data: what GatherFrame collects and the stages read.
+struct vtkRayTracedShadowPass::FrameState
+{
+  int Size[2] = { 0, 0 };
+  int LightCount = 0;               // switched-on lights (mapper numbering), <= MaxLights
+  std::vector<vsh_rt_light> Lights; // the lights that cast, camera-relative
+  std::vector<int> Channels;        // their mask channels
+  std::vector<vtkShadowEmbreeScene::Actor> Actors;
+  double Eye[3] = { 0, 0, 0 };
+  double View[16];
+  double Projection[16];
+  std::vector<double> Key;
+};
+
+//------------------------------------------------------------------------------
+vtkRayTracedShadowPass::vtkRayTracedShadowPass()
+  : Samples(1)
+  , LightRadius(0.0)
+  , LightAngle(0.0)
+  , NumberOfThreads(0)
+  , NumberOfRaysTraced(0)
+  , NumberOfTracedFrames(0)
+  , Impl(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkRayTracedShadowPass::~vtkRayTracedShadowPass() = default;
+
+//------------------------------------------------------------------------------
+void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* renderer = s->GetRenderer();
+  if (!vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()))
+  {
+    vtkErrorMacro("vtkRayTracedShadowPass needs an OpenGL render window");
+    return;
+  }
+  Internals& impl = *this->Impl;
+  const auto start = std::chrono::steady_clock::now();
+  FrameState frame;
+  this->GatherFrame(s, frame);
+  impl.Still = impl.HaveMask && frame.Key == impl.LastKey;
+  this->NumberOfRaysTraced = 0;
+  if (impl.Still)
+  {
+    // Nothing traced: the mask keeps the last traced frame's visibility.
+    const long long pixels = static_cast<long long>(frame.Size[0]) * frame.Size[1];
+    impl.Counters = vtkShadowRayTracer::Counters();
+    impl.Counters.Pixels = pixels;
+    impl.LightsTraced = 0;
+  }
+  else
+  {
+    impl.HaveMask = this->Trace(s, frame);
+    impl.LastKey = impl.HaveMask ? frame.Key : std::vector<double>();
+    if (impl.HaveMask)
+    {
+      this->Upload(frame);
+      ++this->NumberOfTracedFrames;
+    }
+  }
+  impl.FrameSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!impl.HaveMask)
+  {
+    this->RenderDelegate(s); // no shadows rather than garbage
+    return;
+  }
+  impl.Mask.Activate();
+  this->RenderDelegateWithShaderHooks(s);
+  impl.Mask.Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& frame)
+{
+  vtkRenderer* renderer = s->GetRenderer();
+  int origin[2];
+  GetViewport(s, frame.Size, origin);
+  frame.Size[0] = std::max(frame.Size[0], 1);
+  frame.Size[1] = std::max(frame.Size[1], 1);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->GetPosition(frame.Eye);
+  vtkMatrix4x4::DeepCopy(frame.View, camera->GetViewTransformMatrix());
+  vtkMatrix4x4::DeepCopy(frame.Projection,
+    camera->GetProjectionTransformMatrix(
+      static_cast<double>(frame.Size[0]) / frame.Size[1], -1, 1));
+  std::vector<double>& key = frame.Key;
+  key = { double(frame.Size[0]), double(frame.Size[1]), double(origin[0]), double(origin[1]),
+    double(this->Samples), this->LightRadius, this->LightAngle };
+  key.insert(key.end(), frame.Eye, frame.Eye + 3);
+  key.insert(key.end(), frame.View, frame.View + 16);
+  key.insert(key.end(), frame.Projection, frame.Projection + 16);
+
+  // Lights that follow the camera must be current before the rays.
+  vtkshadow::UpdateLights(renderer);
+  const std::vector<vtkLight*> lights = vtkshadow::SwitchedOnLights(renderer);
+  frame.LightCount = std::min(static_cast<int>(lights.size()), vtkShadowScreenMask::MaxLights);
+  const double toRadians = std::acos(-1.0) / 180.0;
+  for (int i = 0; i < frame.LightCount; ++i)
+  {
+    vtkLight* light = lights[i];
+    double h[4], focal[3];
+    vtkshadow::LightHomogeneous(light, h);
+    light->GetTransformedFocalPoint(focal);
+    for (int k = 0; k < 3; ++k)
+    {
+      h[k] -= h[3] * frame.Eye[k]; // camera-relative
+      focal[k] -= frame.Eye[k];
+    }
+    const bool casts = this->LightCasts(light, i);
+    key.insert(key.end(),
+      { h[0], h[1], h[2], h[3], focal[0], focal[1], focal[2], light->GetConeAngle(),
+        casts ? 1.0 : 0.0 });
+    if (!casts)
+    {
+      continue;
+    }
+    vsh_rt_light rt;
+    vsh_rt_light_init(
+      h, focal, light->GetConeAngle(), this->LightRadius, this->LightAngle * toRadians, &rt);
+    frame.Lights.push_back(rt);
+    frame.Channels.push_back(i);
+  }
+  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(s))
+  {
+    const bool casts = !vtkshadow::HasFlag(a.Actor, NO_CAST());
+    frame.Actors.push_back({ a.Actor, casts });
+    const double* m = &a.Actor->GetMatrix()->Element[0][0];
+    key.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(a.Actor)));
+    key.push_back(static_cast<double>(vtkshadow::CasterDataTime(a.Actor)));
+    key.push_back(casts ? 1.0 : 0.0);
+    key.insert(key.end(), m, m + 16);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
+{
+  Internals& impl = *this->Impl;
+  impl.Counters = vtkShadowRayTracer::Counters();
+  impl.LightsTraced = 0;
+  if (!impl.Mask.RenderDepth(s, frame.LightCount))
+  {
+    vtkErrorMacro("ray-traced shadows: " << impl.Mask.GetError());
+    return false;
+  }
+  if (!impl.Scene.Update(frame.Actors))
+  {
+    vtkErrorMacro("ray-traced shadows: " << impl.Scene.GetError());
+    return false;
+  }
+  if (frame.Lights.empty())
+  {
+    return true; // every channel reads lit
+  }
+  impl.Mask.ReadDepth(impl.Depth);
+  vtkShadowRayTracer::Frame rays;
+  rays.Depth = impl.Depth.data();
+  const int* size = impl.Mask.GetSize();
+  if (vsh_rt_view_init(frame.Projection, frame.View, size[0], size[1], &rays.View) != VSH_RT_OK)
+  {
+    return true; // a degenerate camera shows nothing to shadow
+  }
+  std::copy_n(frame.Eye, 3, rays.Eye);
+  rays.Lights = frame.Lights;
+  rays.Samples = this->Samples;
+  int threads = this->NumberOfThreads;
+  if (threads <= 0)
+  {
+    threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  }
+  vtkShadowRayTracer::Trace(impl.Scene, rays, threads, impl.Visibility, impl.Counters);
+  impl.LightsTraced = static_cast<int>(frame.Lights.size());
+  const double traced = double(impl.Counters.PrimaryRays + impl.Counters.ShadowRays);
+  this->NumberOfRaysTraced = static_cast<vtkIdType>(traced);
+  vsh_rt_cost_model_observe(&impl.Cost, traced, impl.Counters.Seconds, impl.Counters.Threads);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRayTracedShadowPass::Upload(const FrameState& frame)
+{
+  Internals& impl = *this->Impl;
+  for (int l = 0; l < impl.LightsTraced; ++l)
+  {
+    impl.Mask.UploadLight(frame.Channels[l], impl.Visibility[l].data());
+  }
+  impl.Mask.FinishUploads();
+}
+
+//------------------------------------------------------------------------------
+int vtkRayTracedShadowPass::GetNumberOfMeshBuilds() const
+{
+  return this->Impl->Scene.GetMeshBuilds();
+}
+
+//------------------------------------------------------------------------------
+int vtkRayTracedShadowPass::GetNumberOfTopLevelCommits() const
+{
+  return this->Impl->Scene.GetTopLevelCommits();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkRayTracedShadowPass::GetNumberOfCasterTriangles() const
+{
+  return static_cast<vtkIdType>(this->Impl->Scene.GetNumberOfTriangles());
+}
+
+//------------------------------------------------------------------------------
+double vtkRayTracedShadowPass::EstimateFrameMilliseconds(
+  double pixels, double coverage, int lights) const
+{
+  vsh_rt_cost_input input;
+  input.pixels = pixels;
+  input.coverage = coverage;
+  input.lights = lights;
+  input.samples = this->Samples;
+  input.threads = this->NumberOfThreads > 0
+    ? this->NumberOfThreads
+    : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return vsh_rt_cost_ms(&this->Impl->Cost, &input);
+}
+
+//------------------------------------------------------------------------------
+long long vtkRayTracedShadowPass::GetMemoryBytes() const
+{
+  return this->Impl->Mask.GetMemoryBytes();
+}
+
+//------------------------------------------------------------------------------
+bool vtkRayTracedShadowPass::SetOption(const char* key, double value)
+{
+  const std::string k = key ? key : "";
+  const bool integer = std::isfinite(value) && value == std::floor(value);
+  if (k == "samples")
+  {
+    if (!integer || value < 1 || value > 1024)
+    {
+      return false;
+    }
+    this->SetSamples(static_cast<int>(value));
+    return true;
+  }
+  if (k == "threads")
+  {
+    if (!integer || value < 0 || value > 256)
+    {
+      return false;
+    }
+    this->SetNumberOfThreads(static_cast<int>(value));
+    return true;
+  }
+  if (k == "light_radius")
+  {
+    if (!(value >= 0.0) || !std::isfinite(value))
+    {
+      return false;
+    }
+    this->SetLightRadius(value);
+    return true;
+  }
+  if (k == "light_angle")
+  {
+    if (!(value >= 0.0 && value <= 90.0))
+    {
+      return false;
+    }
+    this->SetLightAngle(value);
+    return true;
+  }
+  return this->Superclass::SetOption(key, value);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
+{
+  const Internals& impl = *this->Impl;
+  const vtkShadowRayTracer::Counters& c = impl.Counters;
+  const double rays = double(c.PrimaryRays + c.ShadowRays);
+  std::ostringstream out;
+  out << "\"still_frame\": " << (impl.Still ? "true" : "false")
+      << ", \"traced\": " << (impl.Still || !impl.HaveMask ? "false" : "true")
+      << ", \"rays_traced\": " << static_cast<long long>(rays)
+      << ", \"primary_rays\": " << c.PrimaryRays << ", \"shadow_rays\": " << c.ShadowRays
+      << ", \"lights_traced\": " << impl.LightsTraced << ", \"samples\": " << this->Samples
+      << ", \"pixels\": " << c.Pixels
+      << ", \"skipped_still_frame_px\": " << (impl.Still ? c.Pixels : 0)
+      << ", \"skipped_background_px\": " << c.Background
+      << ", \"skipped_facing_away\": " << c.FacingAway
+      << ", \"skipped_outside_cone\": " << c.OutsideCone
+      << ", \"refine_misses_px\": " << c.RefineMisses << ", \"trace_ms\": " << 1e3 * c.Seconds
+      << ", \"rays_per_second\": " << (c.Seconds > 0 ? rays / c.Seconds : 0.0)
+      << ", \"rays_per_second_per_thread_model\": " << impl.Cost.rays_per_second_per_thread
+      << ", \"threads\": " << c.Threads << ", \"shadow_stage_ms\": " << 1e3 * impl.FrameSeconds
+      << ", \"traced_frames\": " << this->NumberOfTracedFrames
+      << ", \"meshes\": " << impl.Scene.GetNumberOfMeshes()
+      << ", \"triangles\": " << impl.Scene.GetNumberOfTriangles()
+      << ", \"mesh_builds\": " << impl.Scene.GetMeshBuilds()
+      << ", \"mesh_build_ms\": " << 1e3 * impl.Scene.GetMeshBuildSeconds()
+      << ", \"top_level_commits\": " << impl.Scene.GetTopLevelCommits()
+      << ", \"top_level_ms\": " << 1e3 * impl.Scene.GetTopLevelSeconds();
+  return out.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkRayTracedShadowPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Impl->Mask.ReleaseGraphicsResources(w);
+  // The mask's textures are gone: the next frame traces again.
+  this->Impl->HaveMask = false;
+  this->Impl->LastKey.clear();
+  this->Superclass::ReleaseGraphicsResources(w);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRayTracedShadowPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
+{
+  return this->Impl->Mask.PreReplaceShaderValues(fragmentShader, prop);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRayTracedShadowPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
+}
+
+//------------------------------------------------------------------------------
+bool vtkRayTracedShadowPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  this->Impl->Mask.SetShaderParameters(program);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRayTracedShadowPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Samples: " << this->Samples << "\n";
+  os << indent << "LightRadius: " << this->LightRadius << "\n";
+  os << indent << "LightAngle: " << this->LightAngle << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "NumberOfRaysTraced: " << this->NumberOfRaysTraced << "\n";
+  os << indent << "NumberOfTracedFrames: " << this->NumberOfTracedFrames << "\n";
+}

@@ -1,0 +1,123 @@
+/**
+ * @class   vtkRayTracedShadowPass
+ * @brief   Exact hard (or sampled soft) shadows of any geometry: one Embree
+ *          occlusion ray per visible pixel and light.
+ *
+ * Each frame: the opaque scene's depth goes into a screen-space mask
+ * (vtkShadowScreenMask) at the viewport's size; the CPU reads it back and,
+ * for every pixel showing a surface, lands a short primary ray exactly on the
+ * rasterized triangle and traces occlusion rays towards each light the
+ * surface faces (inside spot cones), with Embree 3 over all cores
+ * (vtkShadowRayTracer); each light's visibility goes into its channel of the
+ * mask, and the scene is rendered with the mappers' lighting multiplying
+ * light I by channel I, in the same frame.
+ *
+ * The casters are Embree scenes (vtkShadowEmbreeScene): one per actor mesh,
+ * rebuilt only when its mesh data changes, instanced by the actors' matrices,
+ * so moving an actor re-commits the top level only. A still camera over a
+ * still scene traces nothing (the mask keeps the last frame's result).
+ *
+ * Settings (SetOption): samples (rays per pixel and light, 1 = hard),
+ * light_radius (world radius of point and spot lights when samples > 1),
+ * light_angle (angular diameter in degrees of directional lights when
+ * samples > 1), threads (0 = every core), and the base's cast_headlight.
+ * Up to vtkShadowScreenMask::MaxLights (8) lights cast.
+ *
+ * @code{.py}
+ * rt = vtkshadow.vtkRayTracedShadowPass()
+ * renderer.SetPass(rt)      # delegate defaults to vtkRenderStepsPass
+ * @endcode
+ */
+#ifndef vtkRayTracedShadowPass_h
+#define vtkRayTracedShadowPass_h
+
+#include "vtkShadowPassBase.h"
+#include "vtkshadowModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class VTKSHADOW_EXPORT vtkRayTracedShadowPass : public vtkShadowPassBase
+{
+public:
+  static vtkRayTracedShadowPass* New();
+  vtkTypeMacro(vtkRayTracedShadowPass, vtkShadowPassBase);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Rays per pixel and light (1..1024, default 1: hard shadows).
+   */
+  vtkSetClampMacro(Samples, int, 1, 1024);
+  vtkGetMacro(Samples, int);
+
+  /**
+   * The light's size for samples > 1: radius (world units) of point and spot
+   * lights, angular diameter (degrees) of directional lights. Default 0.
+   */
+  vtkSetClampMacro(LightRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(LightRadius, double);
+  vtkSetClampMacro(LightAngle, double, 0.0, 90.0);
+  vtkGetMacro(LightAngle, double);
+
+  /**
+   * Worker threads for the rays (0, the default: one per core).
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 256);
+  vtkGetMacro(NumberOfThreads, int);
+
+  /**
+   * Counters: meshes (re)built and top-level commits since creation; rays
+   * traced in the last frame (0 for a still frame) and frames that traced.
+   */
+  int GetNumberOfMeshBuilds() const;
+  int GetNumberOfTopLevelCommits() const;
+  vtkGetMacro(NumberOfRaysTraced, vtkIdType);
+  vtkIdType GetNumberOfCasterTriangles() const;
+  vtkGetMacro(NumberOfTracedFrames, int);
+
+  /**
+   * The estimated milliseconds of shadow work for a moving frame of
+   * `pixels` viewport pixels, `coverage` of them (0..1) showing lit
+   * surfaces, `lights` lights at the current Samples and threads, from the
+   * rays per second this pass measured so far (vsh_rt_cost_ms).
+   */
+  double EstimateFrameMilliseconds(double pixels, double coverage, int lights) const;
+
+  long long GetMemoryBytes() const override;
+  bool SetOption(const char* key, double value) override;
+  std::string GetStatsJSON(vtkRenderer* renderer) const override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+
+protected:
+  vtkRayTracedShadowPass();
+  ~vtkRayTracedShadowPass() override;
+
+  int Samples;
+  double LightRadius;
+  double LightAngle;
+  int NumberOfThreads;
+  vtkIdType NumberOfRaysTraced;
+  int NumberOfTracedFrames;
+
+private:
+  vtkRayTracedShadowPass(const vtkRayTracedShadowPass&) = delete;
+  void operator=(const vtkRayTracedShadowPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+  struct FrameState;
+  // The stages of Render(), in order.
+  void GatherFrame(const vtkRenderState* s, FrameState& frame);
+  bool Trace(const vtkRenderState* s, FrameState& frame);
+  void Upload(const FrameState& frame);
+};
+
+#endif

@@ -1,0 +1,309 @@
+#include "vtkShadowEmbreeScene.h"
+
+#include "vtkActor.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkShadowCasterTriangles.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+namespace
+{
+double SecondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void OnEmbreeError(void* user, RTCError code, const char* message)
+{
+  auto* error = static_cast<std::string*>(user);
+  *error = "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
+    (message ? message : "(no message)");
+}
+
+// The cofactor matrix of the actor's 3x3: proportional to its inverse
+// transpose, so it maps object normals to world normals (up to length and,
+// for mirroring matrices, sign; the tracer normalizes and orients them).
+void Cofactors(const double m[16], double out[9])
+{
+  auto a = [&](int r, int c) { return m[4 * r + c]; };
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      out[3 * r + c] = a(r1, c1) * a(r2, c2) - a(r1, c2) * a(r2, c1);
+    }
+  }
+}
+}
+
+struct vtkShadowEmbreeScene::Mesh
+{
+  RTCScene Scene = nullptr;
+  vtkMTimeType DataTime = 0;
+  double Shift[3] = { 0, 0, 0 };
+  double Radius = 0; // in data units, about Shift
+  long long Triangles = 0;
+  int Version = 0;
+  bool Seen = false;
+
+  ~Mesh()
+  {
+    if (this->Scene)
+    {
+      rtcReleaseScene(this->Scene);
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkShadowEmbreeScene::vtkShadowEmbreeScene() = default;
+
+//------------------------------------------------------------------------------
+vtkShadowEmbreeScene::~vtkShadowEmbreeScene()
+{
+  this->Meshes.clear();
+  if (this->Visible)
+  {
+    rtcReleaseScene(this->Visible);
+  }
+  if (this->Casters)
+  {
+    rtcReleaseScene(this->Casters);
+  }
+  if (this->Device)
+  {
+    rtcReleaseDevice(this->Device);
+  }
+}
+
+//------------------------------------------------------------------------------
+long long vtkShadowEmbreeScene::GetNumberOfTriangles() const
+{
+  long long n = 0;
+  for (const auto& entry : this->Meshes)
+  {
+    n += entry.second->Triangles;
+  }
+  return n;
+}
+
+//------------------------------------------------------------------------------
+vtkShadowEmbreeScene::Mesh* vtkShadowEmbreeScene::UpdateMesh(vtkActor* actor)
+{
+  std::unique_ptr<Mesh>& slot = this->Meshes[actor];
+  if (!slot)
+  {
+    slot.reset(new Mesh);
+  }
+  Mesh& mesh = *slot;
+  mesh.Seen = true;
+  const vtkMTimeType dataTime = vtkshadow::CasterDataTime(actor);
+  if (mesh.Scene && dataTime == mesh.DataTime)
+  {
+    return mesh.Triangles > 0 ? &mesh : nullptr;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  mesh.DataTime = dataTime;
+  if (mesh.Scene)
+  {
+    rtcReleaseScene(mesh.Scene);
+    mesh.Scene = nullptr;
+  }
+  mesh.Triangles = 0;
+  vtkshadow::CasterTriangles triangles;
+  vtkshadow::ExtractCasterTriangles(actor, triangles);
+  const size_t vertexCount = triangles.Vertices.size() / 3;
+  const size_t triangleCount = triangles.Indices.size() / 3;
+  mesh.Scene = rtcNewScene(this->Device);
+  // Robust: watertight edges, so no shadow ray slips between two triangles.
+  rtcSetSceneFlags(mesh.Scene, RTC_SCENE_FLAG_ROBUST);
+  if (triangleCount > 0)
+  {
+    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertexCount));
+    auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
+      RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), triangleCount));
+    if (vertices && indices)
+    {
+      std::memcpy(vertices, triangles.Vertices.data(), triangles.Vertices.size() * sizeof(float));
+      std::memcpy(indices, triangles.Indices.data(), triangles.Indices.size() * sizeof(unsigned));
+    }
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(mesh.Scene, geometry);
+    rtcReleaseGeometry(geometry);
+    mesh.Triangles = static_cast<long long>(triangleCount);
+  }
+  rtcCommitScene(mesh.Scene);
+  std::copy_n(triangles.Shift, 3, mesh.Shift);
+  double r2 = 0;
+  for (size_t i = 0; i < vertexCount; ++i)
+  {
+    const float* v = &triangles.Vertices[3 * i];
+    r2 = std::max(r2, double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
+  }
+  mesh.Radius = std::sqrt(r2);
+  ++mesh.Version;
+  ++this->MeshBuilds;
+  this->MeshBuildSeconds += SecondsSince(start);
+  return mesh.Triangles > 0 ? &mesh : nullptr;
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkShadowEmbreeScene::PlacementKey(const std::vector<Actor>& actors) const
+{
+  // What the top levels depend on: which meshes (and their versions), where,
+  // and who casts.
+  std::vector<double> key;
+  for (const Actor& a : actors)
+  {
+    auto it = this->Meshes.find(a.Prop);
+    if (it == this->Meshes.end() || it->second->Triangles == 0)
+    {
+      continue;
+    }
+    key.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(a.Prop)));
+    key.push_back(it->second->Version);
+    key.push_back(a.Casts ? 1 : 0);
+    const double* m = &a.Prop->GetMatrix()->Element[0][0];
+    key.insert(key.end(), m, m + 16);
+  }
+  return key;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors)
+{
+  const auto start = std::chrono::steady_clock::now();
+  // The top levels' origin: the centre of the actors' world bounds.
+  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+  bool any = false;
+  for (const Actor& a : actors)
+  {
+    double b[6];
+    a.Prop->GetBounds(b);
+    if (!vtkMath::AreBoundsInitialized(b))
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = any ? std::min(lo[k], b[2 * k]) : b[2 * k];
+      hi[k] = any ? std::max(hi[k], b[2 * k + 1]) : b[2 * k + 1];
+    }
+    any = true;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Centre[k] = 0.5 * (lo[k] + hi[k]);
+  }
+  for (RTCScene* top : { &this->Visible, &this->Casters })
+  {
+    if (*top)
+    {
+      rtcReleaseScene(*top);
+    }
+    *top = rtcNewScene(this->Device);
+  }
+  this->Instances.clear();
+  for (const Actor& a : actors)
+  {
+    auto it = this->Meshes.find(a.Prop);
+    if (it == this->Meshes.end() || it->second->Triangles == 0)
+    {
+      continue;
+    }
+    const Mesh& mesh = *it->second;
+    // Stored positions (data - Shift) -> world -> relative to the centre,
+    // composed in double and rounded to float once.
+    double m[16];
+    vtkMatrix4x4::DeepCopy(m, a.Prop->GetMatrix());
+    float xfm[12];
+    for (int r = 0; r < 3; ++r)
+    {
+      double t = m[4 * r + 3] - this->Centre[r];
+      for (int c = 0; c < 3; ++c)
+      {
+        t += m[4 * r + c] * mesh.Shift[c];
+        xfm[4 * r + c] = static_cast<float>(m[4 * r + c]);
+      }
+      xfm[4 * r + 3] = static_cast<float>(t);
+    }
+    Instance instance;
+    Cofactors(m, instance.Normal);
+    double scale = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      scale = std::max(scale, std::hypot(m[c], m[4 + c], m[8 + c]));
+    }
+    instance.Radius = mesh.Radius * scale;
+    for (RTCScene top : { this->Visible, this->Casters })
+    {
+      if (top == this->Casters && !a.Casts)
+      {
+        continue;
+      }
+      RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_INSTANCE);
+      rtcSetGeometryInstancedScene(geometry, mesh.Scene);
+      rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, xfm);
+      rtcCommitGeometry(geometry);
+      if (top == this->Visible)
+      {
+        rtcAttachGeometryByID(top, geometry, static_cast<unsigned int>(this->Instances.size()));
+      }
+      else
+      {
+        rtcAttachGeometry(top, geometry);
+      }
+      rtcReleaseGeometry(geometry);
+    }
+    this->Instances.push_back(instance);
+  }
+  rtcCommitScene(this->Visible);
+  rtcCommitScene(this->Casters);
+  ++this->TopCommits;
+  this->TopSeconds += SecondsSince(start);
+  return this->Error.empty();
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowEmbreeScene::Update(const std::vector<Actor>& actors)
+{
+  this->Error.clear();
+  if (!this->Device)
+  {
+    this->Device = rtcNewDevice(nullptr);
+    if (!this->Device)
+    {
+      this->Error = "Embree: rtcNewDevice failed (error " +
+        std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")";
+      return false;
+    }
+    rtcSetDeviceErrorFunction(this->Device, &OnEmbreeError, &this->Error);
+  }
+  for (auto& entry : this->Meshes)
+  {
+    entry.second->Seen = false;
+  }
+  for (const Actor& a : actors)
+  {
+    this->UpdateMesh(a.Prop);
+  }
+  // Actors gone from the frame: their meshes go too.
+  for (auto it = this->Meshes.begin(); it != this->Meshes.end();)
+  {
+    it = it->second->Seen ? std::next(it) : this->Meshes.erase(it);
+  }
+  std::vector<double> placement = this->PlacementKey(actors);
+  if (!this->Visible || placement != this->Placement)
+  {
+    this->Placement.swap(placement);
+    this->BuildTopLevel(actors);
+  }
+  return this->Error.empty();
+}

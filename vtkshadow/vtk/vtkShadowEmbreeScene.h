@@ -1,0 +1,94 @@
+// vtkShadowEmbreeScene.h - the casters of a frame as Embree 3 scenes, for
+// ray-traced shadows (vtkRayTracedShadowPass).
+//
+// One Embree geometry (in its own scene, so it can be instanced) per actor
+// mesh, built from the triangles the mapper draws (vtkShadowCasterTriangles),
+// with positions relative to the mesh's own centre in float; each actor is an
+// instance of its mesh, placed by the actor's matrix, in top-level scenes
+// whose origin is the centre of the frame's actors, so a scene 1e6 units
+// from the origin keeps float precision. A mesh is rebuilt only when its
+// mesh data changed (vtkshadow::CasterDataTime, not the actor's time); moving
+// an actor re-commits only the top level.
+//
+// Two top levels share the instances' meshes: "visible" (every opaque actor:
+// the primary rays that land on the rasterized surface) and "casters"
+// (actors that cast: the shadow rays).
+#ifndef vtkShadowEmbreeScene_h
+#define vtkShadowEmbreeScene_h
+
+#include "vtkType.h"
+
+#include <embree3/rtcore.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkActor;
+
+class vtkShadowEmbreeScene
+{
+public:
+  struct Actor
+  {
+    vtkActor* Prop;
+    bool Casts;
+  };
+
+  // Per instance of the "visible" top level (its instance id).
+  struct Instance
+  {
+    double Normal[9]; // inverse transpose of the instance's 3x3: object -> world normals
+    double Radius;    // the mesh's radius in world units (for the offset rule)
+  };
+
+  vtkShadowEmbreeScene();
+  ~vtkShadowEmbreeScene();
+  vtkShadowEmbreeScene(const vtkShadowEmbreeScene&) = delete;
+  void operator=(const vtkShadowEmbreeScene&) = delete;
+
+  /**
+   * Bring the scenes up to date with the frame's opaque actors. False (with
+   * GetError()) when Embree fails; actors without triangles are left out.
+   */
+  bool Update(const std::vector<Actor>& actors);
+
+  RTCScene GetVisible() const { return this->Visible; }
+  RTCScene GetCasters() const { return this->Casters; }
+  // World coordinates of the top levels' origin.
+  const double* GetCentre() const { return this->Centre; }
+  const Instance& GetInstance(unsigned int id) const { return this->Instances[id]; }
+  bool IsEmpty() const { return this->Instances.empty(); }
+
+  // Counters since creation.
+  int GetMeshBuilds() const { return this->MeshBuilds; }
+  double GetMeshBuildSeconds() const { return this->MeshBuildSeconds; }
+  int GetTopLevelCommits() const { return this->TopCommits; }
+  double GetTopLevelSeconds() const { return this->TopSeconds; }
+  // The current scene.
+  int GetNumberOfMeshes() const { return static_cast<int>(this->Meshes.size()); }
+  long long GetNumberOfTriangles() const;
+  const std::string& GetError() const { return this->Error; }
+
+private:
+  struct Mesh;
+  Mesh* UpdateMesh(vtkActor* actor);
+  bool BuildTopLevel(const std::vector<Actor>& actors);
+  std::vector<double> PlacementKey(const std::vector<Actor>& actors) const;
+
+  RTCDevice Device = nullptr;
+  RTCScene Visible = nullptr;
+  RTCScene Casters = nullptr;
+  std::map<vtkActor*, std::unique_ptr<Mesh>> Meshes;
+  std::vector<Instance> Instances;
+  std::vector<double> Placement;
+  double Centre[3] = { 0, 0, 0 };
+  int MeshBuilds = 0;
+  double MeshBuildSeconds = 0;
+  int TopCommits = 0;
+  double TopSeconds = 0;
+  std::string Error;
+};
+
+#endif

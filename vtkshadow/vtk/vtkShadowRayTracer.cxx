@@ -1,0 +1,330 @@
+#include "vtkShadowRayTracer.h"
+
+#include "vtkShadowEmbreeScene.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+namespace
+{
+constexpr int TileSize = 64;
+
+// A pixel's surface point in the top levels' frame (relative to the centre).
+struct Surface
+{
+  int Pixel = -1;
+  double Point[3];
+  double Normal[3]; // unit, facing the camera
+  double Offset;    // how far the shadow rays start off the surface
+  bool HasNormal;   // false: the refinement missed, no facing test
+};
+
+// Everything one thread needs, reused from tile to tile.
+struct Worker
+{
+  const vtkShadowEmbreeScene* Scene;
+  const vtkShadowRayTracer::Frame* Frame;
+  std::vector<std::vector<float>>* Out;
+  double EyeToCentre[3]; // eye - centre: camera-relative -> the top levels' frame
+  std::vector<RTCRayHit> Hits;
+  std::vector<vsh_rt_pixel_ray> Pixels;
+  std::vector<Surface> Surfaces;
+  std::vector<RTCRay> Rays;
+  std::vector<int> RaySurface, RayLight;
+  vtkShadowRayTracer::Counters Count;
+
+  void Tile(int begin, int end);
+  double Tolerance(int x, int y) const;
+  void Refine(int begin, int end);
+  void Land(int k);
+  void Queue(const Surface& s, int surface);
+  void Occlude();
+};
+
+double Worker::Tolerance(int x, int y) const
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  const int w = f.View.width, h = f.View.height;
+  const float d = f.Depth[y * w + x];
+  double slope = 0;
+  const int nx[4] = { x - 1, x + 1, x, x }, ny[4] = { y, y, y - 1, y + 1 };
+  for (int k = 0; k < 4; ++k)
+  {
+    if (nx[k] >= 0 && nx[k] < w && ny[k] >= 0 && ny[k] < h)
+    {
+      const float n = f.Depth[ny[k] * w + nx[k]];
+      if (n < 1.0f)
+      {
+        slope = std::max(slope, std::fabs(double(n) - double(d)));
+      }
+    }
+  }
+  return f.DepthTolerance + f.SlopeTolerance * slope;
+}
+
+void Worker::Refine(int begin, int end)
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  this->Hits.clear();
+  this->Pixels.clear();
+  this->Surfaces.clear();
+  const int width = f.View.width;
+  for (int p = begin; p < end; ++p)
+  {
+    vsh_rt_pixel_ray ray;
+    const int x = p % width, y = p / width;
+    if (vsh_rt_pixel_ray_init(&f.View, x, y, f.Depth[p], this->Tolerance(x, y), &ray) != VSH_RT_OK)
+    {
+      ++this->Count.Background;
+      continue;
+    }
+    // Start at the near end of the interval: float keeps the precision of
+    // the surface's position, not of the far-away camera's.
+    RTCRayHit rh;
+    const double start = ray.lo;
+    rh.ray.org_x = static_cast<float>(ray.origin[0] + start * ray.direction[0] + EyeToCentre[0]);
+    rh.ray.org_y = static_cast<float>(ray.origin[1] + start * ray.direction[1] + EyeToCentre[1]);
+    rh.ray.org_z = static_cast<float>(ray.origin[2] + start * ray.direction[2] + EyeToCentre[2]);
+    rh.ray.dir_x = static_cast<float>(ray.direction[0]);
+    rh.ray.dir_y = static_cast<float>(ray.direction[1]);
+    rh.ray.dir_z = static_cast<float>(ray.direction[2]);
+    rh.ray.tnear = 0.0f;
+    // The interval, widened by float rounding of the origin.
+    rh.ray.tfar = static_cast<float>((ray.hi - ray.lo) + 1e-5 * (ray.hi - ray.lo) +
+      4 * VSH_RT_OFFSET_RELATIVE * std::fabs(ray.distance));
+    rh.ray.mask = 0xffffffffu;
+    rh.ray.time = 0.0f;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    this->Hits.push_back(rh);
+    this->Pixels.push_back(ray);
+    Surface s;
+    s.Pixel = p;
+    this->Surfaces.push_back(s);
+  }
+  if (!this->Hits.empty())
+  {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect1M(this->Scene->GetVisible(), &context, this->Hits.data(),
+      static_cast<unsigned int>(this->Hits.size()), sizeof(RTCRayHit));
+    this->Count.PrimaryRays += static_cast<long long>(this->Hits.size());
+  }
+}
+
+// The surface point of refinement ray k: on the triangle it hit, or the
+// depth point pulled towards the camera by the depth error.
+void Worker::Land(int k)
+{
+  const RTCRayHit& rh = this->Hits[k];
+  const vsh_rt_pixel_ray& ray = this->Pixels[k];
+  Surface& s = this->Surfaces[k];
+  const double dir[3] = { rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z };
+  if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID && rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID)
+  {
+    const double org[3] = { rh.ray.org_x, rh.ray.org_y, rh.ray.org_z };
+    const double t = rh.ray.tfar;
+    const vtkShadowEmbreeScene::Instance& inst = this->Scene->GetInstance(rh.hit.instID[0]);
+    const double ng[3] = { rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z };
+    double n[3], len2 = 0, side = 0;
+    for (int r = 0; r < 3; ++r)
+    {
+      s.Point[r] = org[r] + t * dir[r];
+      n[r] = inst.Normal[3 * r] * ng[0] + inst.Normal[3 * r + 1] * ng[1] +
+        inst.Normal[3 * r + 2] * ng[2];
+      len2 += n[r] * n[r];
+      side += n[r] * dir[r];
+    }
+    const double scale = len2 > 0 ? (side > 0 ? -1.0 : 1.0) / std::sqrt(len2) : 0.0;
+    for (int r = 0; r < 3; ++r)
+    {
+      s.Normal[r] = n[r] * scale;
+    }
+    s.HasNormal = len2 > 0;
+    const double magnitude =
+      std::sqrt(s.Point[0] * s.Point[0] + s.Point[1] * s.Point[1] + s.Point[2] * s.Point[2]) +
+      inst.Radius;
+    s.Offset = vsh_rt_offset_distance(magnitude);
+    return;
+  }
+  ++this->Count.RefineMisses;
+  const double back = ray.distance - ray.lo;
+  for (int r = 0; r < 3; ++r)
+  {
+    s.Point[r] = ray.point[r] + EyeToCentre[r];
+    s.Normal[r] = -dir[r];
+  }
+  s.HasNormal = false;
+  s.Offset = back +
+    vsh_rt_offset_distance(
+      std::sqrt(s.Point[0] * s.Point[0] + s.Point[1] * s.Point[1] + s.Point[2] * s.Point[2]));
+}
+
+// The shadow rays of one surface point towards every light it can see.
+void Worker::Queue(const Surface& s, int surface)
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  double p[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    p[r] = s.Point[r] - EyeToCentre[r]; // camera-relative, for the lights
+  }
+  const double rotation = f.Samples > 1
+    ? vsh_rt_pixel_rotation(static_cast<unsigned>(s.Pixel % f.View.width),
+        static_cast<unsigned>(s.Pixel / f.View.width))
+    : 0.0;
+  for (size_t l = 0; l < f.Lights.size(); ++l)
+  {
+    const vsh_rt_light& light = f.Lights[l];
+    double toLight[3], distance;
+    if (vsh_rt_light_direction(&light, p, toLight, &distance) != VSH_RT_OK)
+    {
+      continue;
+    }
+    if (s.HasNormal &&
+      s.Normal[0] * toLight[0] + s.Normal[1] * toLight[1] + s.Normal[2] * toLight[2] <= 0)
+    {
+      ++this->Count.FacingAway; // no light reaches it: the lighting is 0 there anyway
+      continue;
+    }
+    if (!vsh_rt_light_in_cone(&light, toLight))
+    {
+      ++this->Count.OutsideCone;
+      continue;
+    }
+    for (int k = 0; k < f.Samples; ++k)
+    {
+      double dir[3];
+      if (vsh_rt_light_sample(&light, p, k, f.Samples, rotation, dir, &distance) != VSH_RT_OK)
+      {
+        continue;
+      }
+      RTCRay ray;
+      ray.org_x = static_cast<float>(s.Point[0] + s.Offset * s.Normal[0]);
+      ray.org_y = static_cast<float>(s.Point[1] + s.Offset * s.Normal[1]);
+      ray.org_z = static_cast<float>(s.Point[2] + s.Offset * s.Normal[2]);
+      ray.dir_x = static_cast<float>(dir[0]);
+      ray.dir_y = static_cast<float>(dir[1]);
+      ray.dir_z = static_cast<float>(dir[2]);
+      ray.tnear = 0.0f;
+      ray.tfar = std::isfinite(distance) ? static_cast<float>(distance)
+                                         : std::numeric_limits<float>::infinity();
+      ray.mask = 0xffffffffu;
+      ray.time = 0.0f;
+      ray.id = 0;
+      ray.flags = 0;
+      this->Rays.push_back(ray);
+      this->RaySurface.push_back(surface);
+      this->RayLight.push_back(static_cast<int>(l));
+    }
+  }
+}
+
+void Worker::Occlude()
+{
+  if (this->Rays.empty())
+  {
+    return;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcOccluded1M(this->Scene->GetCasters(), &context, this->Rays.data(),
+    static_cast<unsigned int>(this->Rays.size()), sizeof(RTCRay));
+  this->Count.ShadowRays += static_cast<long long>(this->Rays.size());
+  const float weight = 1.0f / static_cast<float>(this->Frame->Samples);
+  for (size_t r = 0; r < this->Rays.size(); ++r)
+  {
+    // rtcOccluded sets tfar to -inf for a ray that hit something.
+    if (this->Rays[r].tfar < 0.0f)
+    {
+      const int pixel = this->Surfaces[this->RaySurface[r]].Pixel;
+      float& v = (*this->Out)[this->RayLight[r]][pixel];
+      v = std::max(0.0f, v - weight);
+    }
+  }
+}
+
+void Worker::Tile(int begin, int end)
+{
+  this->Refine(begin, end);
+  this->Rays.clear();
+  this->RaySurface.clear();
+  this->RayLight.clear();
+  for (size_t k = 0; k < this->Surfaces.size(); ++k)
+  {
+    this->Land(static_cast<int>(k));
+    this->Queue(this->Surfaces[k], static_cast<int>(k));
+  }
+  this->Occlude();
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& frame, int threads,
+  std::vector<std::vector<float>>& out, Counters& counters)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const int pixels = frame.View.width * frame.View.height;
+  out.resize(frame.Lights.size());
+  for (auto& light : out)
+  {
+    light.assign(static_cast<size_t>(pixels), 1.0f);
+  }
+  counters = Counters();
+  counters.Pixels = pixels;
+  const int tiles = (pixels + TileSize - 1) / TileSize;
+  threads = std::max(1, std::min(threads, tiles));
+  counters.Threads = threads;
+  if (scene.IsEmpty() || frame.Lights.empty() || !frame.Depth)
+  {
+    return;
+  }
+  std::vector<Worker> workers(static_cast<size_t>(threads));
+  std::atomic<int> next(0);
+  auto run = [&](Worker* w)
+  {
+    for (int t = next++; t < tiles; t = next++)
+    {
+      w->Tile(t * TileSize, std::min(pixels, (t + 1) * TileSize));
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 0; k < threads; ++k)
+  {
+    Worker& w = workers[static_cast<size_t>(k)];
+    w.Scene = &scene;
+    w.Frame = &frame;
+    w.Out = &out;
+    for (int r = 0; r < 3; ++r)
+    {
+      w.EyeToCentre[r] = frame.Eye[r] - scene.GetCentre()[r];
+    }
+    if (k > 0)
+    {
+      pool.emplace_back(run, &w);
+    }
+  }
+  run(&workers[0]);
+  for (std::thread& t : pool)
+  {
+    t.join();
+  }
+  for (const Worker& w : workers)
+  {
+    counters.Background += w.Count.Background;
+    counters.PrimaryRays += w.Count.PrimaryRays;
+    counters.RefineMisses += w.Count.RefineMisses;
+    counters.FacingAway += w.Count.FacingAway;
+    counters.OutsideCone += w.Count.OutsideCone;
+    counters.ShadowRays += w.Count.ShadowRays;
+  }
+  counters.Seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}

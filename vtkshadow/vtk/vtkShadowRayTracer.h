@@ -1,0 +1,62 @@
+// vtkShadowRayTracer.h - per-pixel shadow rays from a depth buffer, traced
+// with Embree over all cores (vtkRayTracedShadowPass's CPU stage).
+//
+// For every pixel of the depth buffer that shows a surface: a short primary
+// ray through the pixel centre, limited to the distances the depth buffer's
+// error allows (vsh_rt_pixel_ray_init), lands exactly on the rasterized
+// triangle and gives its geometric normal (the depth point itself when it
+// misses, e.g. at a silhouette); then, for each light the surface faces and
+// whose cone holds it, `samples` occlusion rays from the point, offset along
+// the normal by vsh_rt_offset_distance, towards points on the light. The
+// pixels go in tiles of 64 to worker threads; each tile's rays go to Embree
+// as streams (rtcIntersect1M, rtcOccluded1M).
+#ifndef vtkShadowRayTracer_h
+#define vtkShadowRayTracer_h
+
+#include "vsh_raytrace.h"
+
+#include <vector>
+
+class vtkShadowEmbreeScene;
+
+class vtkShadowRayTracer
+{
+public:
+  struct Frame
+  {
+    const float* Depth = nullptr; // window depth, row 0 at the bottom
+    vsh_rt_view View;             // the depth buffer's camera (camera-relative)
+    double Eye[3] = { 0, 0, 0 };  // world position of the camera-relative origin
+    std::vector<vsh_rt_light> Lights;
+    int Samples = 1;
+    // The depth buffer's error around a pixel's depth: DepthTolerance plus
+    // SlopeTolerance times the largest depth step to a drawn neighbour
+    // (llvmpipe interpolates depth in float across whole triangles: on large,
+    // steep triangles its error reaches hundreds of 24-bit steps, in
+    // proportion to the depth gradient).
+    double DepthTolerance = 64 * VSH_RT_DEPTH_QUANTUM;
+    double SlopeTolerance = 1.0;
+  };
+
+  struct Counters
+  {
+    long long Pixels = 0;       // in the viewport
+    long long Background = 0;   // nothing drawn
+    long long PrimaryRays = 0;  // refinement rays
+    long long RefineMisses = 0; // refinement found no triangle: the depth point is used
+    long long FacingAway = 0;   // (pixel, light) pairs: the surface faces away from the light
+    long long OutsideCone = 0;  // (pixel, light) pairs outside a spot cone
+    long long ShadowRays = 0;
+    double Seconds = 0;
+    int Threads = 0;
+  };
+
+  /**
+   * Visibility in [0, 1] of every light at every pixel: `out[l]` gets
+   * width * height values (1 where nothing was traced).
+   */
+  static void Trace(const vtkShadowEmbreeScene& scene, const Frame& frame, int threads,
+    std::vector<std::vector<float>>& out, Counters& counters);
+};
+
+#endif
