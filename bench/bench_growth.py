@@ -2,11 +2,14 @@
 
   tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py --out DIR
                   [--frames 15] [--rounds 4] [--warmup 5] [--noise-tolerance 0.03]
+                  [--triangles 10000,100000,1000000] [--sizes 320x240,640x480,1280x960]
+                  [--base-size 640x480] [--base-triangles 100000]
 
 Scenes (written to DIR, in the vtkshadow scene format): a sphere over a floor
 lit by one directional light, the sphere tessellated to about 10k, 100k and
-1M triangles, at 640x480; and the 100k scene at 320x240, 640x480 and
-1280x960. Each scene is rendered with every technique of the registry
+1M triangles (--triangles), at 640x480 (--base-size); and the 100k scene
+(--base-triangles) at 320x240, 640x480 and 1280x960 (--sizes). The ctest
+cli.bench_growth runs it on a tiny configuration and checks what it writes. Each scene is rendered with every technique of the registry
 (vtkShadowTechnique.GetKnownTechniques(): none, vtk (map 2048), planar, csm,
 auto, ...) in one vtkshadow-render --stats process per scene: every
 technique in the same window, interleaved in blocks (--warmup frames each,
@@ -23,7 +26,7 @@ lines go to stderr.
 import argparse
 import json
 import os
-import statistics
+import shlex
 import sys
 
 import vtkshadow
@@ -34,8 +37,8 @@ from vtkshadow_bench import log, run_timing  # noqa: E402
 # Every registered technique, in registry order ("none" first: the ratios
 # are against it).
 TECHNIQUES = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()
-TRIANGLES = [10_000, 100_000, 1_000_000]
-SIZES = [(320, 240), (640, 480), (1280, 960)]
+TRIANGLES = "10000,100000,1000000"
+SIZES = "320x240,640x480,1280x960"
 
 
 def scene(resolution, size):
@@ -64,19 +67,19 @@ def write_scene(out, name, resolution, size):
     return path
 
 
-def resolution_for(out, target):
-    """The sphere resolution whose triangle count is nearest `target`."""
-    lo, hi = 3, 4096
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if triangles(write_scene(out, "probe", mid, SIZES[1])) < target:
-            lo = mid
-        else:
-            hi = mid
-    counts = {r: triangles(write_scene(out, "probe", r, SIZES[1])) for r in (lo, hi)}
+def sphere_triangles(resolution):
+    """Triangles of a scene sphere (docs/scene-format.md, Tessellation):
+    2 R (L - 1) with L = max(2, R / 2)."""
+    return 2 * resolution * (max(2, resolution // 2) - 1)
+
+
+def resolution_for(out, target, size):
+    """The sphere resolution whose triangle count is nearest `target`, and
+    the scene's triangle count as the loader makes it (sphere and floor)."""
+    best = min(range(3, 4097), key=lambda r: (abs(sphere_triangles(r) - target), r))
+    count = triangles(write_scene(out, "probe", best, size))
     os.remove(os.path.join(out, "probe.json"))
-    best = min(counts, key=lambda r: abs(counts[r] - target))
-    return best, counts[best]
+    return best, count
 
 
 def measure(cases, a):
@@ -112,13 +115,45 @@ def table(title, results, labels):
     return lines
 
 
-def main():
+def parse_list(ap, name, text, parse):
+    """A comma-separated option, each item through parse (ValueError: the
+    option, the item and what is expected, exit status 2)."""
+    out = []
+    for item in text.split(","):
+        try:
+            out.append(parse(item.strip()))
+        except ValueError as e:
+            ap.error(f"{name}: {e} (got {item.strip()!r} in {text!r})")
+    if not out:
+        ap.error(f"{name}: empty list (got {text!r})")
+    return out
+
+
+def size_of(text):
+    w, sep, h = text.partition("x")
+    if not sep or not w.isdigit() or not h.isdigit() or not (1 <= int(w) <= 16384
+                                                             and 1 <= int(h) <= 16384):
+        raise ValueError("expected WxH, whole numbers in 1..16384")
+    return int(w), int(h)
+
+
+def triangle_count(text):
+    if not text.isdigit() or not 12 <= int(text) <= 20_000_000:
+        raise ValueError("expected a whole number of triangles in 12..20000000")
+    return int(text)
+
+
+def options():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--out", required=True)
     ap.add_argument("--frames", type=int, default=15, help="timed frames per block")
     ap.add_argument("--rounds", type=int, default=4)
     ap.add_argument("--warmup", type=int, default=5, help="untimed frames per technique first")
     ap.add_argument("--noise-tolerance", type=float, default=0.03)
+    ap.add_argument("--triangles", default=TRIANGLES, help="triangle counts of the first table")
+    ap.add_argument("--sizes", default=SIZES, help="window sizes of the second table")
+    ap.add_argument("--base-size", default="640x480", help="window of the first table")
+    ap.add_argument("--base-triangles", default="100000", help="triangles of the second table")
     a = ap.parse_args()
     for name, value, ok, want in (
             ("--frames", a.frames, 1 <= a.frames <= 100000, "an integer in [1, 100000]"),
@@ -128,25 +163,33 @@ def main():
              "a number in (0, 1)")):
         if not ok:
             ap.error(f"{name}: expected {want} (got {value!r})")
+    a.triangles = parse_list(ap, "--triangles", a.triangles, triangle_count)
+    a.sizes = parse_list(ap, "--sizes", a.sizes, size_of)
+    a.base_size = parse_list(ap, "--base-size", a.base_size, size_of)[0]
+    a.base_triangles = parse_list(ap, "--base-triangles", a.base_triangles, triangle_count)[0]
+    return a
+
+
+def main():
+    a = options()
     os.makedirs(a.out, exist_ok=True)
     tri_cases, size_cases = [], []
-    res_100k = None
-    for target in TRIANGLES:
-        res, count = resolution_for(a.out, target)
+    bw, bh = a.base_size
+    for target in a.triangles:
+        res, count = resolution_for(a.out, target, a.base_size)
         label = f"{count:,} triangles"
-        tri_cases.append((label, write_scene(a.out, f"tri-{target}", res, SIZES[1]), SIZES[1]))
-        if target == 100_000:
-            res_100k = (res, count)
+        tri_cases.append((label, write_scene(a.out, f"tri-{target}", res, a.base_size),
+                          a.base_size))
         log(f"growth: {target:,} triangles -> sphere resolution {res} ({count:,} triangles)")
-    for w, h in SIZES:
+    res, base_count = resolution_for(a.out, a.base_triangles, a.base_size)
+    for w, h in a.sizes:
         label = f"{w}x{h} ({w * h:,} px)"
-        size_cases.append((label, write_scene(a.out, f"px-{w}x{h}", res_100k[0], (w, h)), (w, h)))
+        size_cases.append((label, write_scene(a.out, f"px-{w}x{h}", res, (w, h)), (w, h)))
     results = measure(tri_cases + size_cases, a)
     with open(os.path.join(a.out, "growth.json"), "w") as f:
         json.dump(results, f, indent=1)
-    cmd = (f"tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py --out {a.out} "
-           f"--frames {a.frames} --rounds {a.rounds} --warmup {a.warmup} "
-           f"--noise-tolerance {a.noise_tolerance}")
+    cmd = " ".join(shlex.quote(x) for x in ["tests/gl-run.sh", "build/bin/vtkshadow-python",
+                                            "bench/bench_growth.py"] + sys.argv[1:])
     noisy = sum(1 for r in results.values() if r["too_noisy"])
     lines = ["## How cost grows with triangles and pixels", "",
              f"Produced by `{cmd}` (also run by `sh scripts/results.sh`). A sphere over a floor, "
@@ -157,9 +200,9 @@ def main():
              "of the block medians in ms, and in brackets the median over rounds of (technique / "
              "none of the same round). The last column is none timed again against none: the "
              f"row's noise floor, TOO NOISY outside 1.00 +- {a.noise_tolerance:.2f}"
-             f" ({noisy} of {len(results)} rows)." , ""]
-    lines += table("triangles, 640x480", results, [c[0] for c in tri_cases]) + [""]
-    lines += table(f"pixels, {res_100k[1]:,} triangles", results, [c[0] for c in size_cases])
+             f" ({noisy} of {len(results)} rows).", ""]
+    lines += table(f"triangles, {bw}x{bh}", results, [c[0] for c in tri_cases]) + [""]
+    lines += table(f"pixels, {base_count:,} triangles", results, [c[0] for c in size_cases])
     lines.append("")
     with open(os.path.join(a.out, "growth.md"), "w") as f:
         f.write("\n".join(lines) + "\n")

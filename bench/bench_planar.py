@@ -7,55 +7,60 @@ Run it with vtkshadow's Python under an X display, from the repository root:
 
     tests/gl-run.sh build/bin/vtkshadow-python bench/bench_planar.py
 
-Scenes are built here with VTK (no files): a 1,000,000-triangle sphere over a
-floor (1 and 3 lights), 10,000 arrow glyphs (vtkGlyph3DMapper) over a floor,
-and scenes/basic/sphere-plane.json for reference. For each scene the
-techniques are interleaved in rounds (the order rotates every round), each
-round renders WARMUP untimed frames after the switch and then FRAMES timed
-frames on a small camera orbit (+-5 deg azimuth, +-2 deg elevation, as
-vtkshadow-render's --stats); a frame is window.Render() +
-window.WaitForCompletion(). The table reports the median over every timed
-frame of a technique. Progress goes to stderr, one line per round.
+Scenes are written as vtkshadow scene files into --out (default: a
+temporary folder): a 1,000,000-triangle sphere over a floor (1 and 3
+lights, and 1 light at 1280x720), 10,000 arrow glyphs over a floor (one
+.vtp mesh of the glyphed arrows), and scenes/basic/sphere-plane.json for
+reference. Timing is the project's one method (docs/performance.md, "How
+frames are timed"): per scene one vtkshadow-render --stats process times
+planar, vtk (--time-also), none and none#2 interleaved in one window
+(bench/vtkshadow_bench.py run_timing), --warmup frames each, then --rounds
+rounds of one block of --frames frames per technique on vtkshadow-render's
+camera orbit, the order changed every round. Reported per scene: the
+median over rounds of the block medians (ms) with their spread, the ratio
+to none of the same round, and none#2 / none, the noise floor (TOO NOISY
+outside 1 +- --noise-tolerance). The goal of issue 14 (planar at most 1.15x
+none on scenes with one receiver and one light) gets a verdict per
+one-light scene (bench/bench_goals.py: met, missed by how much, or too
+noisy).
 
 The result is written to the section "## Planar shadows: overhead against
-none" of docs/performance.md (other sections are kept). --investigate adds
-diagnostic variants of the 1M-triangle scene (receiver off, small caster,
-fewer triangles, shadow off the receiver, 3 lights, no-op clip planes on the
-main pass) to explain where the planar time goes.
+none" of docs/performance.md (other sections and the hand-written
+interpretation inside it are kept). --investigate adds diagnostic variants
+of the 1M-triangle scene, each timed against its own none (receiver off,
+small caster, fewer triangles). To profile, write the scenes with
+--scenes-only and run vtkshadow-render on one under perf, e.g.
+    perf record -g build/bin/vtkshadow-render OUT/sphere1m.json \\
+        --technique planar --image /tmp/p.png --stats /tmp/p.json --rounds 8
+(its none blocks are in the profile too; compare with --technique none).
 """
 
 import argparse
 import datetime
+import json
 import math
 import os
 import platform
 import re
 import shlex
-import statistics
-import subprocess
 import sys
-import time
+import tempfile
 
 import vtkshadow
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL factories)
-import vtkmodules.vtkInteractionStyle  # noqa: F401
-from vtkmodules.vtkCommonCore import vtkFloatArray, vtkInformation, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPlane, vtkPolyData
-from vtkmodules.vtkFiltersCore import vtkTriangleFilter
-from vtkmodules.vtkFiltersSources import vtkArrowSource, vtkPlaneSource, vtkSphereSource
-from vtkmodules.vtkRenderingCore import (
-    vtkActor,
-    vtkGlyph3DMapper,
-    vtkLight,
-    vtkPolyDataMapper,
-    vtkRenderer,
-    vtkRenderWindow,
-)
+from vtkmodules.vtkCommonCore import vtkFloatArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkGlyph3D, vtkTriangleFilter
+from vtkmodules.vtkFiltersSources import vtkArrowSource
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_goals import verdict  # noqa: E402
+from vtkshadow_bench import run_timing  # noqa: E402
 
 SECTION = "## Planar shadows: overhead against none"
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-RECEIVER = vtkshadow.vtkPlanarShadowPass.RECEIVER()
-NO_CAST = vtkshadow.vtkPlanarShadowPass.NO_CAST()
+VTK = "vtk:map_resolution=2048"
+GOAL = 1.15  # issue 14: planar / none on scenes with one receiver and one light
 
 
 def log(msg):
@@ -63,165 +68,35 @@ def log(msg):
 
 
 # ----------------------------------------------------------------------------- scenes
-def set_keys(actor, receiver=False, no_cast=False):
-    keys = vtkInformation()
-    keys.Set(RECEIVER, 1 if receiver else 0)
-    keys.Set(NO_CAST, 1 if no_cast else 0)
-    actor.SetPropertyKeys(keys)
+CAMERA = {"position": [0, -8, 5], "focal_point": [0, 0, 0.5], "view_up": [0, 0, 1],
+          "view_angle": 30}
+# The lights of scenes/basic/sphere-plane.json: sun, point, spot.
+LIGHTS = [{"type": "directional", "direction": [-3, -2, -6]},
+          {"type": "point", "position": [3, 2, 6]},
+          {"type": "spot", "position": [3, 2, 6], "focal_point": [0, 0, 0], "cone_angle": 30}]
 
 
-def phong(actor, color):
-    p = actor.GetProperty()
-    p.SetInterpolationToPhong()
-    p.SetColor(*color)
-    p.SetAmbient(0.05)
-    p.SetDiffuse(0.9)
-    p.SetSpecular(0.1)
-    p.SetSpecularPower(30.0)
+def floor(receiver=True):
+    return {"plane": {"origin": [-5, -5, 0], "point1": [5, -5, 0], "point2": [-5, 5, 0]},
+            "receiver": receiver, "color": [0.9, 0.9, 0.9]}
 
 
-def floor_actor(x0=-5.0, x1=5.0, y0=-5.0, y1=5.0):
-    src = vtkPlaneSource()
-    src.SetOrigin(x0, y0, 0)
-    src.SetPoint1(x1, y0, 0)
-    src.SetPoint2(x0, y1, 0)
-    src.Update()
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputData(src.GetOutput())
-    mapper.ScalarVisibilityOff()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    phong(actor, (0.9, 0.9, 0.9))
-    set_keys(actor, receiver=True)
-    return actor, 2
+def scene_doc(objects, lights, size=(800, 600)):
+    return {"description": "bench_planar", "size": list(size), "camera": CAMERA,
+            "background": [0.1, 0.1, 0.12], "lights": LIGHTS[:lights], "objects": objects}
 
 
-def scene_lights(count, center=(0.0, 0.0, 0.5), direction=(-3.0, -2.0, -6.0)):
-    """The lights of scenes/basic/sphere-plane.json: sun, point, spot."""
-    lights = []
-    sun = vtkLight()
-    sun.SetLightTypeToSceneLight()
-    sun.SetPositional(False)
-    sun.SetFocalPoint(*center)
-    sun.SetPosition(*(c - d for c, d in zip(center, direction)))
-    sun.SetAttenuationValues(1, 0, 0)
-    lights.append(sun)
-    if count >= 3:
-        point = vtkLight()
-        point.SetLightTypeToSceneLight()
-        point.SetPositional(True)
-        point.SetPosition(3, 2, 6)
-        point.SetFocalPoint(3, 2, 5)
-        point.SetConeAngle(180.0)
-        point.SetAttenuationValues(1, 0, 0)
-        spot = vtkLight()
-        spot.SetLightTypeToSceneLight()
-        spot.SetPositional(True)
-        spot.SetPosition(3, 2, 6)
-        spot.SetFocalPoint(0, 0, 0)
-        spot.SetConeAngle(30.0)
-        spot.SetExponent(0.0)
-        spot.SetAttenuationValues(1, 0, 0)
-        lights += [point, spot]
-    return lights
+def sphere(radius=1.0, resolution=1000):
+    """resolution 1000: 2 * 1000 * 499 = 998,000 triangles (the UV sphere of
+    docs/scene-format.md), the old bench's 1M-triangle sphere."""
+    return {"sphere": {"center": [0, 0, 1.2], "radius": radius, "resolution": resolution},
+            "color": [0.9, 0.3, 0.2]}
 
 
-CAMERA = dict(position=(0, -8, 5), focal_point=(0, 0, 0.5), view_up=(0, 0, 1), view_angle=30)
-
-
-def build_sphere(renderer, args, lights=1, radius=1.0, theta=1000, phi=502,
-                 floor=(-5, 5, -5, 5), direction=(-3, -2, -6), clip_planes=False):
-    src = vtkSphereSource()
-    src.SetCenter(0, 0, 1.2)
-    src.SetRadius(radius)
-    src.SetThetaResolution(theta)
-    src.SetPhiResolution(phi)
-    src.Update()
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputData(src.GetOutput())
-    mapper.ScalarVisibilityOff()
-    if clip_planes:
-        # Two clipping planes that keep everything: the cost of gl_ClipDistance
-        # in llvmpipe's vertex pipeline, measured on the main pass.
-        for normal, origin in (((0, 0, 1), (0, 0, -100)), ((1, 0, 0), (-100, 0, 0))):
-            plane = vtkPlane()
-            plane.SetNormal(*normal)
-            plane.SetOrigin(*origin)
-            mapper.AddClippingPlane(plane)
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    phong(actor, (0.9, 0.3, 0.2))
-    set_keys(actor)
-    renderer.AddActor(actor)
-    fl, ftri = floor_actor(*floor)
-    renderer.AddActor(fl)
-    for light in scene_lights(lights, direction=direction):
-        renderer.AddLight(light)
-    return dict(triangles=src.GetOutput().GetNumberOfPolys() + ftri,
-                caster_triangles=src.GetOutput().GetNumberOfPolys(), camera=CAMERA, floor=fl)
-
-
-def build_investigation(renderer, args):
-    """The 1M-triangle scene plus two alternative casters at the same place
-    (1M triangles at radius 0.1, 250k triangles at radius 1), switched by
-    visibility, and switchable no-op clipping planes and receiver key, so every
-    variant is timed interleaved in one window."""
-    info = build_sphere(renderer, args, lights=1)
-    big = renderer.GetActors().GetLastActor()  # floor is last; find the sphere
-    actors = [renderer.GetActors().GetItemAsObject(i)
-              for i in range(renderer.GetActors().GetNumberOfItems())]
-    big = [a for a in actors if a is not info["floor"]][0]
-    extra = {}
-    for key, radius, theta, phi in (("small", 0.1, 1000, 502), ("250k", 1.0, 500, 252)):
-        src = vtkSphereSource()
-        src.SetCenter(0, 0, 1.2)
-        src.SetRadius(radius)
-        src.SetThetaResolution(theta)
-        src.SetPhiResolution(phi)
-        src.Update()
-        mapper = vtkPolyDataMapper()
-        mapper.SetInputData(src.GetOutput())
-        mapper.ScalarVisibilityOff()
-        actor = vtkActor()
-        actor.SetMapper(mapper)
-        phong(actor, (0.9, 0.3, 0.2))
-        set_keys(actor)
-        actor.VisibilityOff()
-        renderer.AddActor(actor)
-        extra[key] = actor
-    state = {}
-
-    def visible(key):
-        def fn(on):
-            state[key] = on
-            extra[key].SetVisibility(on)
-            big.SetVisibility(not any(state.values()))
-        return fn
-
-    planes = []
-    for normal, origin in (((0, 0, 1), (0, 0, -100)), ((1, 0, 0), (-100, 0, 0))):
-        plane = vtkPlane()
-        plane.SetNormal(*normal)
-        plane.SetOrigin(*origin)
-        planes.append(plane)
-
-    def clip(on):
-        m = big.GetMapper()
-        if on and m.GetNumberOfClippingPlanes() == 0:
-            for plane in planes:
-                m.AddClippingPlane(plane)
-        elif not on and m.GetNumberOfClippingPlanes() > 0:
-            m.RemoveAllClippingPlanes()
-
-    def norecv(on):
-        set_keys(info["floor"], receiver=not on)
-
-    info["toggles"] = {"small": visible("small"), "250k": visible("250k"), "clip": clip,
-                       "norecv": norecv}
-    return info
-
-
-def build_glyphs(renderer, args, lights=1, n=100):
+def glyph_mesh(path, n=100):
+    """10,000 arrows (n x n) on a wavy sheet, glyphed into one triangle mesh
+    (the old bench drew them with vtkGlyph3DMapper; a scene file holds
+    meshes, so the glyphs are baked: same triangles, one mapper)."""
     points = vtkPoints()
     scale = vtkFloatArray()
     scale.SetName("scale")
@@ -240,180 +115,197 @@ def build_glyphs(renderer, args, lights=1, n=100):
     poly.SetPoints(points)
     poly.GetPointData().AddArray(scale)
     poly.GetPointData().AddArray(orient)
-    arrow = vtkArrowSource()
-    tri = vtkTriangleFilter()
-    tri.SetInputConnection(arrow.GetOutputPort())
-    tri.Update()
-    mapper = vtkGlyph3DMapper()
-    mapper.SetInputData(poly)
-    mapper.SetSourceData(tri.GetOutput())
-    mapper.SetScaleArray("scale")
-    mapper.SetScaleModeToScaleByMagnitude()
-    mapper.SetScaleFactor(0.12)
-    mapper.SetOrientationArray("orient")
-    mapper.SetOrientationModeToDirection()
-    mapper.ScalarVisibilityOff()
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    phong(actor, (0.3, 0.5, 0.9))
-    set_keys(actor)
-    renderer.AddActor(actor)
-    fl, ftri = floor_actor()
-    renderer.AddActor(fl)
-    for light in scene_lights(lights):
-        renderer.AddLight(light)
-    per = tri.GetOutput().GetNumberOfPolys()
-    return dict(triangles=n * n * per + ftri, caster_triangles=n * n * per, camera=CAMERA,
-                floor=fl, note="%d arrows x %d triangles" % (n * n, per))
+    source = vtkArrowSource()  # kept referenced: the pipeline does not own it
+    arrow = vtkTriangleFilter()
+    arrow.SetInputConnection(source.GetOutputPort())
+    glyph = vtkGlyph3D()
+    glyph.SetInputData(poly)
+    glyph.SetSourceConnection(arrow.GetOutputPort())
+    glyph.SetInputArrayToProcess(0, 0, 0, 0, "scale")
+    glyph.SetInputArrayToProcess(1, 0, 0, 0, "orient")
+    glyph.SetScaleModeToScaleByScalar()
+    glyph.SetVectorModeToUseVector()
+    glyph.SetScaleFactor(0.12)
+    glyph.Update()
+    # Geometry only: a scalar array left on the mesh would colour it.
+    mesh = vtkPolyData()
+    mesh.SetPoints(glyph.GetOutput().GetPoints())
+    mesh.SetPolys(glyph.GetOutput().GetPolys())
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(mesh)
+    if not writer.Write():
+        sys.exit(f"bench_planar: cannot write {path}")
+    return {"mesh": os.path.basename(path), "color": [0.3, 0.5, 0.9]}
 
 
-def build_json(renderer, args, path="scenes/basic/sphere-plane.json"):
-    scene = vtkshadow.vtkShadowScene()
-    if not scene.Load(os.path.join(REPO, path)):
-        raise SystemExit(scene.GetErrorMessage())
-    scene.Populate(renderer)
-    tris = 0
-    floor = None
-    for i in range(scene.GetNumberOfObjects()):
-        tf = vtkTriangleFilter()
-        tf.SetInputData(scene.GetObjectPolyData(i))
-        tf.Update()
-        tris += tf.GetOutput().GetNumberOfPolys()
-    cam = renderer.GetActiveCamera()
-    camera = dict(position=cam.GetPosition(), focal_point=cam.GetFocalPoint(),
-                  view_up=cam.GetViewUp(), view_angle=cam.GetViewAngle())
-    return dict(triangles=tris, camera=camera, floor=floor, scene=scene)
+def write(out, name, doc):
+    path = os.path.join(out, name + ".json")
+    with open(path, "w") as f:
+        json.dump(doc, f, indent=1)
+    return path
+
+
+def configs(out, investigate):
+    """[(key, label, scene path, window size, --time-also list, goal applies)]."""
+    s1 = write(out, "sphere1m", scene_doc([sphere(), floor()], 1))
+    rows = [
+        ("sphere1m", "1M-triangle sphere, 1 light", s1, (800, 600), ["planar", VTK], True),
+        ("sphere1m-3l", "1M-triangle sphere, 3 lights",
+         write(out, "sphere1m-3l", scene_doc([sphere(), floor()], 3)), (800, 600),
+         ["planar", VTK], False),
+        ("glyphs", "10,000 arrow glyphs, 1 light",
+         write(out, "glyphs", scene_doc([glyph_mesh(os.path.join(out, "glyphs.vtp")), floor()],
+                                        1)), (800, 600), ["planar", VTK], True),
+        ("json", "sphere-plane.json (3 lights)",
+         os.path.join(REPO, "scenes", "basic", "sphere-plane.json"), (800, 600),
+         ["planar", VTK], False),
+        ("sphere1m-720", "1M-triangle sphere, 1 light, 1280x720", s1, (1280, 720),
+         ["planar", VTK], True),
+    ]
+    if investigate:
+        rows += [
+            ("inv-norecv", "floor not a receiver: 0 pairs, mask cleared only",
+             write(out, "inv-norecv", scene_doc([sphere(), floor(receiver=False)], 1)),
+             (800, 600), ["planar"], False),
+            ("inv-small", "1M triangles, radius 0.1 (~1% of the pixels)",
+             write(out, "inv-small", scene_doc([sphere(radius=0.1), floor()], 1)), (800, 600),
+             ["planar"], False),
+            ("inv-250k", "249,000 triangles, radius 1",
+             write(out, "inv-250k", scene_doc([sphere(resolution=500), floor()], 1)),
+             (800, 600), ["planar"], False),
+        ]
+    return rows
+
+
+def triangles(path):
+    s = vtkshadow.vtkShadowScene()
+    if not s.Load(path):
+        sys.exit(f"bench_planar: {path}: {s.GetErrorMessage()}")
+    return sum(s.GetObjectPolyData(i).GetNumberOfPolys() for i in range(s.GetNumberOfObjects()))
 
 
 # ----------------------------------------------------------------------------- timing
-def place_camera(renderer, camera, i, frames):
-    cam = renderer.GetActiveCamera()
-    cam.SetPosition(*camera["position"])
-    cam.SetFocalPoint(*camera["focal_point"])
-    cam.SetViewUp(*camera["view_up"])
-    cam.SetViewAngle(camera["view_angle"])
-    phase = 2.0 * math.pi * i / max(frames, 2)
-    cam.Azimuth(5.0 * math.sin(phase))
-    cam.Elevation(2.0 * math.cos(phase) - 2.0)
-    cam.OrthogonalizeViewUp()
-    renderer.ResetCameraClippingRange()
-
-
-def make_pass(name):
-    t = vtkshadow.vtkShadowTechnique()
-    t.SetName(name)
-    if name == "vtk":
-        t.SetMapResolution(2048)
-    p = t.CreatePass()  # what Install() sets; kept so switching does not rebuild
-    return t, p
-
-
-def run_config(cfg, args):
-    """Time cfg's techniques interleaved; returns {technique: stats}."""
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
-    renderer = vtkRenderer()
-    renderer.AutomaticLightCreationOff()
-    window.AddRenderer(renderer)
-    window.SetSize(*cfg["size"])
-    info = cfg["build"](renderer, args)
-    renderer.SetBackground(0.1, 0.1, 0.12)
-    camera = info["camera"]
-    techniques = cfg.get("techniques", ["none", "planar", "vtk"])
-    # This bench measures planar against none (vtk for reference): its lists
-    # are its question, not the set of techniques; they must name registered
-    # ones (vtkShadowTechnique.GetKnownTechniques()).
-    known = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()
-    unknown = sorted({n.split(":")[0] for n in techniques} - set(known))
-    if unknown:
-        sys.exit("bench_planar: technique(s) %s not in the registry (%s)" % (
-            ", ".join(unknown), " ".join(known)))
-    passes = {}
-    toggles = info.get("toggles", {})
-
-    def apply_variant(name):
-        flags = name.split(":")[1:]
-        for flag, fn in toggles.items():
-            fn(flag in flags)
-
-    for name in techniques:
-        base = name.split(":")[0]
-        passes[name] = make_pass(base)
-    # A first frame with each technique (shader compilation, geometry builds).
-    place_camera(renderer, camera, 0, args.frames)
-    for name in techniques:
-        apply_variant(name)
-        renderer.SetPass(passes[name][1])
-        window.Render()
-        window.WaitForCompletion()
-    times = {name: [] for name in techniques}
-    cpu = {name: [] for name in techniques}
-    rounds = {name: [] for name in techniques}
-    counters = {}
-    builds_seen = set()
-    for rnd in range(args.rounds):
-        order = techniques[rnd % len(techniques):] + techniques[:rnd % len(techniques)]
-        line = []
-        for name in order:
-            tech, pss = passes[name]
-            apply_variant(name)
-            renderer.SetPass(pss)
-            for i in range(args.warmup):
-                place_camera(renderer, camera, i, args.frames)
-                window.Render()
-                window.WaitForCompletion()
-            planar = pss if isinstance(pss, vtkshadow.vtkPlanarShadowPass) else None
-            if planar:
-                b0 = planar.GetNumberOfGeometryBuilds()
-            ms = []
-            for i in range(args.frames):
-                place_camera(renderer, camera, i, args.frames)
-                c0 = time.process_time()
-                t0 = time.perf_counter()
-                window.Render()
-                window.WaitForCompletion()
-                ms.append(1000.0 * (time.perf_counter() - t0))
-                cpu[name].append(1000.0 * (time.process_time() - c0))
-                if planar:
-                    c = counters.setdefault(name, dict(mask=set(), pairs=set()))
-                    c["mask"].add(planar.GetNumberOfMaskTriangles())
-                    c["pairs"].add(planar.GetNumberOfShadowPairs())
-            if planar:
-                b1 = planar.GetNumberOfGeometryBuilds()
-                c = counters[name]
-                c["builds_during_motion"] = c.get("builds_during_motion", 0) + (b1 - b0)
-                c["builds"] = b1
-                c["memory"] = planar.GetMemoryBytes()
-            if tech.GetName() == "vtk":
-                counters[name] = dict(memory=tech.GetShadowMapMemory(renderer))
-            times[name] += ms
-            rounds[name].append(statistics.median(ms))
-            line.append("%s %.1f" % (name, statistics.median(ms)))
-        log("  [%s] round %d/%d: %s (median ms/frame)" % (cfg["label"], rnd + 1, args.rounds,
-                                                       ", ".join(line)))
-    result = {}
-    for name in techniques:
-        result[name] = dict(median=statistics.median(times[name]), min=min(times[name]),
-                            max=max(times[name]), n=len(times[name]),
-                            cpu=statistics.median(cpu[name]), rounds=rounds[name])
-    for name, c in counters.items():
-        result[name].update(c)
-    # Release GL resources of every pass while the context lives.
-    for name in techniques:
-        passes[name][1].ReleaseGraphicsResources(window)
-    renderer.SetPass(None)
-    window.Finalize()
-    return info, result
+def measure(cfg, args, out):
+    """One vtkshadow-render --stats process for a configuration: its
+    entries by label, the noise floor, and the scene's triangle count."""
+    key, label, path, size, also = cfg[:5]
+    log("%s, %dx%d: %d rounds x %d frames (+%d warm-up) per technique, interleaved" % (
+        label, size[0], size[1], args.rounds, args.frames, args.warmup))
+    st = run_timing(path, also, size, os.path.join(out, "runs", key),
+                    (args.frames, args.rounds, args.warmup, args.noise_tolerance))
+    if st is None:
+        sys.exit(f"bench_planar: {label}: vtkshadow-render failed (see {out}/runs/{key})")
+    entries = {e["label"]: e for e in st["timing"]["entries"]}
+    return dict(entries=entries, noise=st["noise_floor"], triangles=triangles(path))
 
 
 # ----------------------------------------------------------------------------- report
-def fmt_ms(v):
-    return "%.1f" % v
+def ms(e):
+    m = e["ms"]
+    return "%.1f [%.1f-%.1f]" % (m["median"], m["min"], m["max"])
 
 
-def paired(res, a, b):
-    return statistics.median(x / y for x, y in zip(res[a]["rounds"], res[b]["rounds"]))
+def ratio(e):
+    r = e["ratio_to_none"]
+    return "%.2f [%.2f-%.2f]" % (r["median"], r["min"], r["max"])
+
+
+def floor_text(noise):
+    return "%.3f%s" % (noise["ratio"], " TOO NOISY" if noise["too_noisy"] else "")
+
+
+def goal_text(res):
+    p = res["entries"]["planar"]["ratio_to_none"]["median"]
+    return verdict(p, GOAL, res["noise"]["ratio"], res["noise"]["too_noisy"])
+
+
+def main_table(rows):
+    out = ["| scene | window | triangles | none ms [rounds] | planar ms [rounds] | overhead ms "
+           "| planar / none [rounds] | vtk / none [rounds] | noise floor none#2 / none "
+           "| goal planar <= %.2fx none |" % GOAL,
+           "|---|---|---:|---:|---:|---:|---:|---:|---:|---|"]
+    for cfg, res in rows:
+        e = res["entries"]
+        size = cfg[3]
+        out.append("| %s | %dx%d | %s | %s | %s | %.1f | %s | %s | %s | %s |" % (
+            cfg[1], size[0], size[1], "{:,}".format(res["triangles"]), ms(e["none"]),
+            ms(e["planar"]), e["planar"]["ms"]["median"] - e["none"]["ms"]["median"],
+            ratio(e["planar"]), ratio(e[VTK]) if VTK in e else "-", floor_text(res["noise"]),
+            goal_text(res)[1] if cfg[5] else "n/a (not one light)"))
+    return out
+
+
+def counter_table(rows):
+    out = ["| scene | shadow pairs | mask triangles/frame | geometry builds (whole run) "
+           "| planar memory | vtk shadow-map memory | planar pixels changed after timing |",
+           "|---|---:|---:|---:|---:|---:|---:|"]
+    for cfg, res in rows:
+        e = res["entries"]
+        ts = e["planar"].get("technique_stats") or {}
+        vm = e[VTK]["shadow_map_bytes"] if VTK in e else None
+        out.append("| %s | %s | %s | %s | %.1f MiB | %s | %s |" % (
+            cfg[1], ts.get("shadow_pairs", "-"), "{:,}".format(ts["mask_triangles"])
+            if "mask_triangles" in ts else "-", ts.get("geometry_builds", "-"),
+            e["planar"]["shadow_map_bytes"] / 2**20, "%.0f MiB" % (vm / 2**20) if vm else "-",
+            e["planar"]["pixels_changed_after_timing"]))
+    return out
+
+
+def report(rows, args, started):
+    cmd = " ".join(shlex.quote(a) for a in
+                   ["tests/gl-run.sh", "build/bin/vtkshadow-python", "bench/bench_planar.py"]
+                   + sys.argv[1:])
+    try:
+        cpu = [l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo")
+               if l.startswith("model name")][0]
+    except (OSError, IndexError):
+        cpu = platform.processor() or "?"
+    main = [r for r in rows if not r[0][0].startswith("inv")]
+    inv = [r for r in rows if r[0][0].startswith("inv")]
+    noisy = sum(1 for _, res in rows if res["noise"]["too_noisy"])
+    out = [SECTION, "", "Produced by (from the repository root):", "", "    " + cmd, "",
+           "Run %s. Machine: %d cores (%s), no GPU: Mesa llvmpipe under Xvfb, offscreen window; "
+           "the machine is shared with other builds and tests. Timing as everywhere in this "
+           "project ([How frames are timed](#how-frames-are-timed)): per scene one "
+           "vtkshadow-render --stats process times planar, vtk (map 2048), none and none#2 "
+           "interleaved in one window, %d warm-up frames each, then %d rounds of one %d-frame "
+           "block per technique on the camera orbit, the order changed every round. ms = median "
+           "over rounds of the block medians [their min-max]; x none = median over rounds of "
+           "(technique / none of the same round) [min-max]; overhead = planar ms - none ms. "
+           "The noise floor is none#2 / none, TOO NOISY outside 1.00 +- %.2f (%d of %d runs). "
+           "The glyph scene is one baked mesh of the glyphed arrows (before this method it was "
+           "drawn by vtkGlyph3DMapper, so its row is not comparable with older runs)." % (
+               started.strftime("%Y-%m-%d %H:%M"), os.cpu_count(), cpu, args.warmup,
+               args.rounds, args.frames, args.noise_tolerance, noisy, len(rows)), ""]
+    out += main_table(main) + [""]
+    out += ["Planar pass counters (vtkPlanarShadowPass stats after the run; the geometry is "
+            "built once per light and caster placement, so builds stay at their first-frame "
+            "count through the camera orbit; pixels changed: the scene-camera image after the "
+            "rounds against the one before, 0 when no state leaked between passes):", ""]
+    out += counter_table(main) + [""]
+    goal = [(cfg, res) for cfg, res in main if cfg[5]]
+    if goal:
+        out.append("**Goal (issue 14: planar at most %.2fx none on scenes with one receiver and "
+                   "one light, 800x600):** %s." % (GOAL, "; ".join(
+                       "%s: %s" % (cfg[1], goal_text(res)[1]) for cfg, res in goal)))
+        out.append("")
+    if inv:
+        out += ["Diagnostic variants of the 1M-triangle scene (800x600, 1 light), each its own "
+                "process with its own none; no-op clipping planes are no longer a variant (a "
+                "scene file has no clipping planes):", "",
+                "| variant | none ms | planar ms | overhead ms | planar / none [rounds] "
+                "| noise floor | mask triangles/frame |", "|---|---:|---:|---:|---:|---:|---:|"]
+        for cfg, res in inv:
+            e = res["entries"]
+            ts = e["planar"].get("technique_stats") or {}
+            out.append("| %s | %s | %s | %.1f | %s | %s | %s |" % (
+                cfg[1], ms(e["none"]), ms(e["planar"]),
+                e["planar"]["ms"]["median"] - e["none"]["ms"]["median"], ratio(e["planar"]),
+                floor_text(res["noise"]), "{:,}".format(ts.get("mask_triangles", 0))))
+        out.append("")
+    out.append("<!-- interpretation -->")
+    return "\n".join(out) + "\n"
 
 
 def write_section(path, text):
@@ -434,225 +326,6 @@ def write_section(path, text):
         f.write(doc.rstrip("\n") + "\n")
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--rounds", type=int, default=5)
-    ap.add_argument("--frames", type=int, default=30)
-    ap.add_argument("--warmup", type=int, default=3)
-    ap.add_argument("--no-720p", action="store_true", help="skip the 1280x720 run of the 1M scene")
-    ap.add_argument("--investigate", action="store_true",
-                    help="add diagnostic variants of the 1M-triangle scene")
-    ap.add_argument("--only", default="", help="comma-separated config keys to run (debugging)")
-    ap.add_argument("--output", default=os.path.join(REPO, "docs", "performance.md"))
-    ap.add_argument("--no-write", action="store_true")
-    ap.add_argument("--profile", metavar="TECHNIQUE",
-                    help="render only the 1M-triangle scene with TECHNIQUE for --frames frames "
-                         "and exit (run under perf record)")
-    args = ap.parse_args()
-    if args.profile:
-        return profile(args)
-
-    S = (800, 600)
-    configs = [
-        dict(key="sphere1m", label="1M-triangle sphere, 1 light", size=S,
-             build=lambda r, a: build_sphere(r, a, lights=1)),
-        dict(key="sphere1m-3l", label="1M-triangle sphere, 3 lights", size=S,
-             build=lambda r, a: build_sphere(r, a, lights=3)),
-        dict(key="glyphs", label="10,000 arrow glyphs, 1 light", size=S,
-             build=lambda r, a: build_glyphs(r, a, lights=1)),
-        dict(key="json", label="sphere-plane.json (3 lights)", size=S,
-             build=lambda r, a: build_json(r, a)),
-    ]
-    if not args.no_720p:
-        configs.append(dict(key="sphere1m-720", label="1M-triangle sphere, 1 light, 1280x720",
-                            size=(1280, 720), build=lambda r, a: build_sphere(r, a, lights=1)))
-    investigations = []
-    if args.investigate:
-        def no_receiver(r, a):
-            info = build_sphere(r, a, lights=1)
-            set_keys(info["floor"], receiver=False)
-            return info
-        investigations = [
-            dict(key="inv", label="1M-triangle sphere, 1 light: diagnostic variants", size=S,
-                 build=build_investigation,
-                 techniques=["none", "planar", "planar:norecv", "none:clip", "planar:clip",
-                             "none:small", "planar:small", "none:250k", "planar:250k"]),
-        ]
-        old_investigations = [
-            dict(key="inv-norecv", label="1M sphere, floor NOT a receiver (0 pairs)", size=S,
-                 build=no_receiver, techniques=["none", "planar"]),
-            dict(key="inv-small", label="1M sphere, radius 0.1 (same triangles, ~1% pixels)",
-                 size=S, build=lambda r, a: build_sphere(r, a, radius=0.1),
-                 techniques=["none", "planar"]),
-            dict(key="inv-250k", label="250k-triangle sphere, radius 1", size=S,
-                 build=lambda r, a: build_sphere(r, a, theta=500, phi=252),
-                 techniques=["none", "planar"]),
-            dict(key="inv-offrecv", label="1M sphere, shadow falls beside a small floor patch",
-                 size=S, build=lambda r, a: build_sphere(r, a, floor=(-5, -2.5, -5, 5),
-                                                         direction=(-1, 0, -1)),
-                 techniques=["none", "planar"]),
-            dict(key="inv-clip", label="1M sphere, 2 no-op clipping planes on its mapper", size=S,
-                 build=lambda r, a: build_sphere(r, a, clip_planes=True),
-                 techniques=["none", "planar"]),
-        ]
-    allc = configs + investigations
-    if args.only:
-        keep = set(args.only.split(","))
-        allc = [c for c in allc if c["key"] in keep]
-
-    started = datetime.datetime.now()
-    rows = []
-    for cfg in allc:
-        log("%s, %dx%d: %d rounds x %d frames (+%d warm-up) per technique" % (
-            cfg["label"], cfg["size"][0], cfg["size"][1], args.rounds, args.frames, args.warmup))
-        info, res = run_config(cfg, args)
-        rows.append((cfg, info, res))
-        n = res["none"]["median"]
-        p = res["planar"]["median"]
-        log("  => per-round medians: %s" % "; ".join(
-            "%s %s" % (k, " ".join("%.0f" % x for x in v["rounds"])) for k, v in res.items()))
-        log("  => none %.1f, planar %.1f ms (+%.1f%%)%s" % (
-            n, p, 100 * (p - n) / n,
-            ", vtk %.1f ms" % res["vtk"]["median"] if "vtk" in res else ""))
-
-    cmd = " ".join(shlex.quote(a) for a in
-                   ["tests/gl-run.sh", "build/bin/vtkshadow-python", "bench/bench_planar.py"]
-                   + sys.argv[1:])
-    out = []
-    out.append(SECTION)
-    out.append("")
-    out.append("Produced by (from the repository root):")
-    out.append("")
-    out.append("    " + cmd)
-    out.append("")
-    try:
-        cpu = [l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")][0]
-    except Exception:
-        cpu = platform.processor()
-    out.append("Run %s. Machine: %d cores (%s), no GPU: Mesa llvmpipe under Xvfb, offscreen "
-               "window; the machine is shared with other builds and tests, so absolute times "
-               "are noisy. Techniques are interleaved in %d rounds (order rotated each round), "
-               "%d warm-up + %d timed frames per round on the vtkshadow-render camera orbit "
-               "(+-5 deg azimuth, +-2 deg elevation); a frame is Render() + WaitForCompletion(); "
-               "medians over all %d timed frames per technique. Overhead = planar - none."
-               % (started.strftime("%Y-%m-%d %H:%M"), os.cpu_count(), cpu, args.rounds,
-                  args.warmup, args.frames, args.rounds * args.frames))
-    out.append("")
-    out.append("Columns: wall-clock medians; *paired* = median over the rounds of "
-               "(planar round median / none round median), the figure least disturbed by the "
-               "load of other jobs, which drifts between rounds; *CPU* = median process CPU "
-               "time per frame (all llvmpipe threads) planar / none.")
-    out.append("")
-    out.append("| scene | window | triangles | none ms | planar ms | overhead ms | overhead % "
-               "| planar/none paired | planar/none CPU | vtk ms | vtk overhead % (paired) |")
-    out.append("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
-    target = None
-    for cfg, info, res in rows:
-        if cfg["key"].startswith("inv"):
-            continue
-        n, p = res["none"]["median"], res["planar"]["median"]
-        v = res.get("vtk", {}).get("median")
-        label = cfg["label"] + (" (%s)" % info["note"] if info.get("note") else "")
-        pr = paired(res, "planar", "none")
-        out.append("| %s | %dx%d | %s | %s | %s | %s | %.0f%% | %.2f | %.2f | %s | %s |" % (
-            label, cfg["size"][0], cfg["size"][1], "{:,}".format(info["triangles"]),
-            fmt_ms(n), fmt_ms(p), fmt_ms(p - n), 100 * (p - n) / n, pr,
-            res["planar"]["cpu"] / res["none"]["cpu"],
-            fmt_ms(v) if v else "-",
-            ("%.0f%% (%.0f%%)" % (100 * (v - n) / n, 100 * (paired(res, "vtk", "none") - 1)))
-            if v else "-"))
-        if cfg["key"] == "sphere1m":
-            target = (100 * (p - n) / n, 100 * (pr - 1),
-                      100 * (res["planar"]["cpu"] / res["none"]["cpu"] - 1))
-    out.append("")
-    out.append("Planar pass counters (per frame, constant over the camera orbit; builds = "
-               "vtkPlanarShadowPass::GetNumberOfGeometryBuilds after the run, \"during motion\" "
-               "= builds while the camera moved, must be 0):")
-    out.append("")
-    out.append("| scene | window | shadow pairs | mask triangles/frame | geometry builds "
-               "| builds during motion | planar memory | vtk shadow-map memory |")
-    out.append("|---|---|---:|---:|---:|---:|---:|---:|")
-    for cfg, info, res in rows:
-        c = res["planar"]
-        vm = res.get("vtk", {}).get("memory")
-        out.append("| %s | %dx%d | %s | %s | %d | %d | %.1f MiB | %s |" % (
-            cfg["label"], cfg["size"][0], cfg["size"][1],
-            "/".join(str(x) for x in sorted(c["pairs"])),
-            "/".join("{:,}".format(x) for x in sorted(c["mask"])), c["builds"],
-            c["builds_during_motion"], c["memory"] / 2**20,
-            ("%.0f MiB" % (vm / 2**20)) if vm else "-"))
-    out.append("")
-    if target is not None:
-        worst = min(target)
-        verdict = "met" if max(target) <= 15.0 else ("missed" if worst > 15.0 else "unclear")
-        out.append("**Target (planar overhead <= 15%% of the unshadowed frame on the "
-                   "1M-triangle scene, 800x600, 1 light): %s** - overhead %.0f%% (pooled "
-                   "medians), %.0f%% (paired rounds), %.0f%% (CPU time)%s." % (
-                       verdict, target[0], target[1], target[2],
-                       "; even the smallest of the three is %.1fx the target" % (worst / 15.0)
-                       if verdict == "missed" else ""))
-        out.append("")
-    for cfg, info, res in rows:
-        if not cfg["key"].startswith("inv"):
-            continue
-        out.append("Diagnostic variants of the 1M-triangle scene (800x600, 1 light, all in one "
-                   "window, interleaved like the techniques; overhead against the `none` of the "
-                   "same caster, paired by round):")
-        out.append("")
-        out.append("| variant | none ms | planar ms | overhead ms | overhead % paired "
-                   "| CPU ms none / planar | mask triangles/frame |")
-        out.append("|---|---:|---:|---:|---:|---:|---:|")
-        desc = {"": "1M triangles, radius 1 (the benchmark scene)",
-                "norecv": "floor not a receiver: 0 pairs, mask cleared only",
-                "clip": "2 no-op clipping planes on the sphere's mapper",
-                "small": "1M triangles, radius 0.1 (~1% of the pixels)",
-                "250k": "250,000 triangles, radius 1"}
-        for flag in ("", "norecv", "clip", "small", "250k"):
-            pn = "planar" + (":" + flag if flag else "")
-            nn = "none" + (":" + flag if flag and flag != "norecv" else "")
-            if pn not in res:
-                continue
-            n, p = res[nn]["median"], res[pn]["median"]
-            out.append("| %s | %s | %s | %s | %.0f%% | %.1f / %.1f | %s |" % (
-                desc[flag], fmt_ms(n), fmt_ms(p), fmt_ms(p - n),
-                100 * (paired(res, pn, nn) - 1), res[nn]["cpu"], res[pn]["cpu"],
-                "/".join("{:,}".format(x) for x in sorted(res[pn]["mask"]))))
-        out.append("")
-    out.append("<!-- interpretation -->")
-    text = "\n".join(out) + "\n"
-    print(text)
-    if not args.no_write:
-        interp = interpretation_from(args.output)
-        write_section(args.output, text.replace("<!-- interpretation -->", interp))
-        log("wrote %s" % args.output)
-
-
-def profile(args):
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)  # as in run_config
-    renderer = vtkRenderer()
-    renderer.AutomaticLightCreationOff()
-    window.AddRenderer(renderer)
-    window.SetSize(800, 600)
-    info = build_sphere(renderer, args)
-    tech, pss = make_pass(args.profile)
-    renderer.SetPass(pss)
-    for i in range(args.warmup):
-        place_camera(renderer, info["camera"], i, args.frames)
-        window.Render()
-        window.WaitForCompletion()
-    log("profile: start")  # perf can be told to skip the set-up with --delay
-    t0 = time.perf_counter()
-    for i in range(args.frames):
-        place_camera(renderer, info["camera"], i, args.frames)
-        window.Render()
-        window.WaitForCompletion()
-    log("profile: %s %.1f ms/frame (mean)" % (args.profile,
-                                             1000 * (time.perf_counter() - t0) / args.frames))
-    pss.ReleaseGraphicsResources(window)
-
-
 def interpretation_from(path):
     """The hand-written analysis kept from the previous run of this section
     (between the interpretation markers), so re-running refreshes the numbers
@@ -662,6 +335,74 @@ def interpretation_from(path):
     doc = open(path).read()
     m = re.search(r"<!-- interpretation -->.*?<!-- /interpretation -->", doc, re.S)
     return m.group(0) if m else "<!-- interpretation -->"
+
+
+def options():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--rounds", type=int, default=4)
+    ap.add_argument("--frames", type=int, default=15, help="timed frames per block")
+    ap.add_argument("--warmup", type=int, default=5, help="untimed frames per technique first")
+    ap.add_argument("--noise-tolerance", type=float, default=0.03)
+    ap.add_argument("--no-720p", action="store_true", help="skip the 1280x720 run of the 1M scene")
+    ap.add_argument("--investigate", action="store_true",
+                    help="add diagnostic variants of the 1M-triangle scene")
+    ap.add_argument("--only", default="", help="comma-separated config keys to run (debugging)")
+    ap.add_argument("--out", default=None,
+                    help="folder for the scene files and the runs (default: a temporary one)")
+    ap.add_argument("--scenes-only", action="store_true",
+                    help="write the scene files into --out and exit (for profiling)")
+    ap.add_argument("--output", default=os.path.join(REPO, "docs", "performance.md"))
+    ap.add_argument("--no-write", action="store_true")
+    a = ap.parse_args()
+    for name, value, ok, want in (
+            ("--frames", a.frames, 1 <= a.frames <= 100000, "an integer in [1, 100000]"),
+            ("--rounds", a.rounds, 1 <= a.rounds <= 1000, "an integer in [1, 1000]"),
+            ("--warmup", a.warmup, 0 <= a.warmup <= 10000, "an integer in [0, 10000]"),
+            ("--noise-tolerance", a.noise_tolerance, 0 < a.noise_tolerance < 1,
+             "a number in (0, 1)")):
+        if not ok:
+            ap.error(f"{name}: expected {want} (got {value!r})")
+    if a.scenes_only and not a.out:
+        ap.error("--scenes-only: needs --out DIR")
+    known = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()
+    missing = [t for t in ("none", "planar", "vtk") if t not in known]
+    if missing:
+        ap.error("technique(s) %s not in the registry (%s)" % (", ".join(missing),
+                                                               " ".join(known)))
+    return a
+
+
+def main():
+    args = options()
+    tmp = None if args.out else tempfile.TemporaryDirectory(prefix="bench_planar.")
+    out = args.out or tmp.name
+    os.makedirs(out, exist_ok=True)
+    cfgs = configs(out, args.investigate)
+    if args.scenes_only:
+        print("\n".join(sorted({c[2] for c in cfgs})))
+        return
+    if args.no_720p:
+        cfgs = [c for c in cfgs if c[0] != "sphere1m-720"]
+    if args.only:
+        keep = set(args.only.split(","))
+        cfgs = [c for c in cfgs if c[0] in keep]
+    started = datetime.datetime.now()
+    rows = []
+    for cfg in cfgs:
+        res = measure(cfg, args, out)
+        e = res["entries"]
+        log("  => %s: none %.1f ms, planar %.1f ms, planar / none %.3f, noise floor %s" % (
+            cfg[0], e["none"]["ms"]["median"], e["planar"]["ms"]["median"],
+            e["planar"]["ratio_to_none"]["median"], floor_text(res["noise"])))
+        rows.append((cfg, res))
+    text = report(rows, args, started)
+    print(text)
+    if not args.no_write:
+        write_section(args.output, text.replace("<!-- interpretation -->",
+                                                interpretation_from(args.output)))
+        log("wrote %s" % args.output)
+    if tmp:
+        tmp.cleanup()
 
 
 if __name__ == "__main__":

@@ -52,8 +52,10 @@ DIR/<scene>/<config>/ (visibility, mask, metrics of each configuration),
 DIR/<scene>/timing.json (the vtkshadow-render stats of the timing run),
 DIR/<scene>.png (gnuplot: wrong_pct, log, floored at 1e-3, against
 ms_per_frame, log; one series per technique family; Pareto front drawn),
-DIR/summary.md (tables, auto's position against the Pareto front, goals,
-the noise floor).
+DIR/summary.md (tables, auto's position against the Pareto front, issue
+14's goals with verdicts from bench_goals.py, the noise floor). Every row
+also carries the scene's light and receiver counts (scene_lights,
+scene_receivers): the planar goal holds on scenes with one of each.
 With --peers PREFIXES, scenes whose key starts with one of them also get
 Blender EEVEE rows (technique eevee, settings default / best) from
 vtkshadow-compare --renderers povray,eevee,eevee-best, scored against the
@@ -74,13 +76,17 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_goals import scene_counts, scene_goals  # noqa: E402
+
 BIN = os.path.join(ROOT, "build", "bin")
 WRONG_FLOOR = 1e-3
 
 COLUMNS = ["scene", "technique", "settings", "ms_per_frame", "ms_min", "ms_max", "overhead_ms",
            "unshadowed_ms", "ratio", "ratio_min", "ratio_max", "noise_floor", "too_noisy",
            "memory_bytes", "wrong_pct", "vis_mae", "edge_px", "false_shadow_pct",
-           "false_light_pct", "auto_choice", "texel_px", "auto_reason"]
+           "false_light_pct", "auto_choice", "texel_px", "auto_reason", "scene_lights",
+           "scene_receivers"]
 NOISE_LABEL = "none#2"
 
 
@@ -383,6 +389,10 @@ def bench_scene(scene, a, refs):
     # The noise floor: none timed a second time, like every configuration.
     rows.append(timing_row(key, NOISE_LABEL, "noise floor", entries.get(NOISE_LABEL) if none
                            else None, none, noise))
+    # What issue 14's planar goal needs to know (one receiver, one light).
+    lights, nrecv = scene_counts(scene)
+    for r in rows:
+        r.update(scene_lights=lights, scene_receivers=nrecv)
     return key, size, tsize, rows
 
 
@@ -498,43 +508,16 @@ def auto_check(rows):
                 best["settings"], fmt(best["wrong_pct"], 3), best["ms_per_frame"], rel, verdict))
 
 
-def goal_figures(rows):
-    """Issue #6's goals for one scene: the csm default and vtk (2048) rows,
-    vtk's wrong_pct over csm's (csm floored at WRONG_FLOOR), csm's frame-time
-    ratio over vtk's, and planar's overhead as a fraction of the unshadowed
-    frame (None where a row is missing)."""
-    get = lambda t, s: next((r for r in rows if r["technique"] == t and r["settings"] == s
-                             and r.get("ratio") is not None), None)
-    csm, vtk, planar = get("csm", "default"), get("vtk", "map=2048"), get("planar", "-")
-    none = get("none", "-")
-    err = time_ratio = None
-    if csm and vtk and csm["wrong_pct"] is not None and vtk["wrong_pct"] is not None:
-        err = vtk["wrong_pct"] / max(csm["wrong_pct"], WRONG_FLOOR)
-        time_ratio = csm["ratio"] / vtk["ratio"]
-    overhead = planar["ratio"] - 1.0 if planar and none else None
-    return {"csm": csm, "vtk": vtk, "planar": planar, "error_ratio": err,
-            "time_ratio": time_ratio, "planar_overhead": overhead}
-
-
 def goals(key, rows):
+    """Issue 14's goals on one scene, one line each (bench_goals.py)."""
+    lights, receivers = (rows[0].get("scene_lights"), rows[0].get("scene_receivers")) if rows \
+        else (None, None)
     out = []
-    g = goal_figures(rows)
-    floor = next((r for r in rows if r["technique"] == NOISE_LABEL and r.get("too_noisy")), None)
-    noisy = (" (timing too noisy: noise floor %.3f)" % floor["ratio"]) if floor else ""
-    csm, vtk, planar = g["csm"], g["vtk"], g["planar"]
-    hard = key.startswith("hard-")
-    if g["error_ratio"] is not None:
-        f_err, f_time = g["error_ratio"], g["time_ratio"]
-        ok = f_err >= 10 and f_time <= 1.2
-        out.append("csm default vs vtk (2048): wrong_pct %s vs %s (%.1fx lower%s), frame time %.2fx "
-                   "of vtk's -> %s%s" % (
-                       fmt(csm["wrong_pct"], 3), fmt(vtk["wrong_pct"], 3), f_err,
-                       ", csm floored at %g" % WRONG_FLOOR if csm["wrong_pct"] < WRONG_FLOOR else "",
-                       f_time, "met" if ok else "MISSED", " (hard scene: not part of the goal)" if hard else "") + noisy)
-    if g["planar_overhead"] is not None:
-        ov = g["planar_overhead"]
-        out.append("planar overhead %.1f ms = %.0f%% of the unshadowed frame (goal <= 15%%) -> %s" % (
-            planar["overhead_ms"], 100 * ov, "met" if ov <= 0.15 else "MISSED by %.0f points" % (100 * ov - 15)) + noisy)
+    for g in scene_goals(key, rows, lights, receivers):
+        if g["applies"]:
+            out.append("goal %s <= %.2fx: %s%s" % (g["what"], g["limit"], g["text"],
+                                                   "" if g["counted"] else
+                                                   " (hard scene: not part of the goal)"))
     return out
 
 

@@ -64,6 +64,12 @@ add_test(NAME cli.timing
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_timing.py
           --bin ${VTKSHADOW_BIN} --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/timing)
 set_tests_properties(cli.timing PROPERTIES LABELS "render" TIMEOUT 1800)
+# bench/bench_growth.py on a tiny configuration: rows, the noise-floor
+# column, finite numbers, bad options (never a speed).
+add_test(NAME cli.bench_growth
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_bench_growth.py
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/bench_growth)
+set_tests_properties(cli.bench_growth PROPERTIES LABELS "render" TIMEOUT 1800)
 
 # Visibility against the exact answer by ray casting (tests/render/).
 function(vtkshadow_visibility_test name)

@@ -161,6 +161,14 @@ if p.returncode == 0:
     with open(os.path.join(bench_out, "summary.md")) as f:
         text = f.read()
     check("noise floor none#2 / none = " in text, "bench: the noise floor in summary.md")
+    # Issue 14's three goals apply to sphere-directional (one light, one
+    # receiver), each with a verdict (bench/bench_goals.py).
+    check(all(r.get("scene_lights") == 1 and r.get("scene_receivers") == 1 for r in rows),
+          "bench: scene_lights / scene_receivers 1 and 1 in every row")
+    goal_lines = [l for l in text.splitlines() if l.startswith("- goal ")]
+    check(len(goal_lines) == 3 and all(any(v in l for v in (": met (", ": missed by ",
+                                                            ": too noisy ("))
+                                       for l in goal_lines), f"bench: goal lines {goal_lines}")
     check(("WARNING: timing too noisy" in p.stdout) == bool(floor["too_noisy"]),
           "bench: the warning when too noisy")
 p = subprocess.run([sys.executable, os.path.join(args.source, "bench/vtkshadow_bench.py"),
