@@ -126,8 +126,35 @@ static void test_thinnest(void)
   CHECK(isinf(vsh_mesh_thinnest_width(line, 3, c3, 0)));
 }
 
+static void test_masks_and_thin_error(void)
+{
+  const int t[5] = {8, 2, 8, 0, 4};
+  CHECK(vsh_auto_light_mask(t, 5, 8) == 0x5u);
+  CHECK(vsh_auto_light_mask(t, 5, 2) == 0x2u);
+  CHECK(vsh_auto_light_mask(t, 5, 4) == 0x10u);
+  CHECK(vsh_auto_light_mask(t, 5, 1) == 0u);
+  CHECK(vsh_auto_light_mask(NULL, 5, 8) == 0u);
+  int many[40];
+  for (int i = 0; i < 40; ++i)
+    many[i] = 8;
+  CHECK(vsh_auto_light_mask(many, 40, 8) == 0xffffffffu);
+  /* Resolved parts add nothing. */
+  CHECK(vsh_auto_thin_caster_error(10.0, 2.0, 500.0, 1e5) == 0.0);
+  /* A 1 px needle under 2 px texels, 400 px of outline: 200 px lost. */
+  CHECK_NEAR(vsh_auto_thin_caster_error(1.0, 2.0, 400.0, 1e5), 0.2, 1e-12);
+  /* Sub-pixel parts count a pixel wide. */
+  CHECK_NEAR(vsh_auto_thin_caster_error(0.1, 2.0, 400.0, 1e5), 0.2, 1e-12);
+  /* A wider part that is still unresolved loses more. */
+  CHECK_NEAR(vsh_auto_thin_caster_error(3.0, 2.0, 400.0, 1e5), 0.6, 1e-12);
+  CHECK(isinf(vsh_auto_thin_caster_error(1.0, 2.0, 400.0, 0.0)));
+  CHECK(isinf(vsh_auto_thin_caster_error(1.0, 2.0, NAN, 1e5)));
+  /* Maps not trusted (no texel size): the whole outline counts. */
+  CHECK(vsh_auto_thin_caster_error(5.0, NAN, 100.0, 1e4) > 0.0);
+}
+
 int main(void)
 {
+  test_masks_and_thin_error();
   test_pick();
   test_map_resolves();
   test_thinnest();

@@ -5,6 +5,7 @@
 #include "vtkShadowTechniqueSet.h"
 
 #include <cstring>
+#include <string>
 
 using vtkshadow::TechniqueSet;
 
@@ -36,5 +37,28 @@ int main()
   CHECK(std::strcmp(vtkshadow::TechniqueSetName(TechniqueSet::Planar), "planar") == 0);
   CHECK(std::strcmp(vtkshadow::TechniqueSetName(TechniqueSet::Cascaded), "csm") == 0);
   CHECK(std::strcmp(vtkshadow::TechniqueSetName(both), "planar+csm") == 0);
+  // The exact techniques and every combination's name, built independently.
+  CHECK(static_cast<TechniqueSet>(VSH_AUTO_VOLUME) == TechniqueSet::Volume);
+  CHECK(static_cast<TechniqueSet>(VSH_AUTO_RAYTRACE) == TechniqueSet::RayTraced);
+  CHECK(vtkshadow::FromLightMasks(0, 0, 0, 4) == TechniqueSet::RayTraced);
+  CHECK(vtkshadow::FromLightMasks(1, 0, 2, 4) ==
+    (TechniqueSet::Planar | TechniqueSet::Volume | TechniqueSet::RayTraced));
+  const char* const members[4] = { "planar", "csm", "volume", "raytrace" };
+  for (unsigned bits = 0; bits < 16; ++bits)
+  {
+    std::string expected;
+    for (int m = 0; m < 4; ++m)
+    {
+      if (bits & (1u << m))
+      {
+        expected += (expected.empty() ? "" : "+") + std::string(members[m]);
+      }
+    }
+    if (expected.empty())
+    {
+      expected = "none";
+    }
+    CHECK(expected == vtkshadow::TechniqueSetName(static_cast<TechniqueSet>(bits)));
+  }
   return vsh_check_report("core.technique_set");
 }

@@ -52,7 +52,13 @@ double vsh_auto_texel_target(double max_wrong_pct, double pixels, double edge_le
 /* ---- the per-light decision (plain data, no VTK) ------------------------ */
 
 /* Techniques, as bits of a set (vtkshadow::TechniqueSet has the same values). */
-enum { VSH_AUTO_NONE = 0, VSH_AUTO_PLANAR = 1, VSH_AUTO_CSM = 2 };
+enum {
+  VSH_AUTO_NONE = 0,
+  VSH_AUTO_PLANAR = 1,
+  VSH_AUTO_CSM = 2,
+  VSH_AUTO_VOLUME = 4,  /* exact: stencil shadow volumes */
+  VSH_AUTO_RAYTRACE = 8 /* exact: ray-traced shadows */
+};
 
 /* Why a light got its technique. */
 typedef enum vsh_auto_reason {

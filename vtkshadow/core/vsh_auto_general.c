@@ -42,6 +42,25 @@ int vsh_auto_map_resolves(double thickness_px, double texel_px, double min_texel
   return thickness_px >= min_texels * texel_px;
 }
 
+unsigned int vsh_auto_light_mask(const int *techniques, int count, int technique)
+{
+  unsigned int mask = 0u;
+  for (int l = 0; techniques && l < count && l < 32; ++l)
+    mask |= (techniques[l] == technique ? 1u : 0u) << l;
+  return mask;
+}
+
+double vsh_auto_thin_caster_error(double thickness_px, double texel_px, double edge_length_px,
+                                  double pixels)
+{
+  if (!(pixels > 0.0) || isnan(edge_length_px))
+    return INFINITY;
+  if (vsh_auto_map_resolves(thickness_px, texel_px, 2.0))
+    return 0.0;
+  const double width = isfinite(thickness_px) ? fmax(thickness_px, 1.0) : 1.0;
+  return 100.0 * 0.5 * fmax(edge_length_px, 0.0) * width / pixels;
+}
+
 /* ---- principal extents per component ------------------------------------ */
 
 typedef struct component_sums {

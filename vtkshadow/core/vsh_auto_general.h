@@ -42,6 +42,20 @@ typedef struct vsh_auto_candidate {
 int vsh_auto_pick_cheapest(const vsh_auto_candidate *candidates, int count,
                            double max_error_pct, int *met);
 
+/* Bit l for each of the first 32 lights whose technique (VSH_AUTO_* value)
+ * is `technique`: the lights a pass draws (it skips the others). 0 for bad
+ * input. */
+unsigned int vsh_auto_light_mask(const int *techniques, int count, int technique);
+
+/* The wrong_pct a map predicts when a caster part `thickness_px` pixels wide
+ * is narrower than it resolves (vsh_auto_map_resolves false): the part's
+ * whole shadow, up to half the outline `edge_length_px` long and as wide as
+ * the part (at least a pixel), counted wrong, over `pixels`. When the map
+ * resolves the part this term is 0 (the texel model covers the edges). NaN
+ * or non-positive pixels give +inf (not trusted). */
+double vsh_auto_thin_caster_error(double thickness_px, double texel_px, double edge_length_px,
+                                  double pixels);
+
 /* Whether a caster part `thickness_px` pixels wide on screen keeps its
  * shadow in a map whose texels are `texel_px` pixels on screen: it must be
  * at least `min_texels` texels wide (2: a part narrower than two texels can

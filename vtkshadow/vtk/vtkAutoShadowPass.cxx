@@ -14,6 +14,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlanarShadowPass.h"
+#include "vtkRayTracedShadowPass.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
@@ -26,9 +27,11 @@
 #include "vtkWeakPointer.h"
 
 #include "vsh_auto.h"
+#include "vsh_auto_general.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -51,6 +54,7 @@ struct vtkAutoShadowPass::Internals
   std::vector<vsh_auto_object> Objects;
   std::vector<vtkActor*> Actors;
   std::vector<vtkWeakPointer<vtkActor>> Detected; // receivers found, not marked
+  std::string GeneralJSON;                        // per map light: the candidates auto weighed
 
   // What was chosen: for the frame and per switched-on light.
   vtkshadow::TechniqueSet Choice = vtkshadow::TechniqueSet::None;
@@ -79,6 +83,25 @@ struct vtkAutoShadowPass::Internals
 
 namespace
 {
+// JSON has no infinity: "null" stands for "no caster part".
+std::string JSONNumber(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "null";
+  }
+  std::ostringstream out;
+  out.precision(6);
+  out << value;
+  return out.str();
+}
+
+// What a cascaded map's fragment lookup costs per pixel and light on this
+// project's machines (llvmpipe: +11.5 ms for one light at 800x600 over an
+// unshadowed frame of 8.1 ms, performance-probe.md), in milliseconds. Maps
+// baked once with a still camera cost nothing more per frame.
+constexpr double MapLookupMsPerPixel = 11.5 / (800.0 * 600.0);
+
 std::string Centre(const char* what, const vsh_auto_object& o)
 {
   std::ostringstream out;
@@ -92,6 +115,7 @@ std::string Centre(const char* what, const vsh_auto_object& o)
 vtkAutoShadowPass::vtkAutoShadowPass()
   : PlanarPass(vtkPlanarShadowPass::New())
   , CascadedPass(vtkCascadedShadowMapPass::New())
+  , RayTracedPass(vtkRayTracedShadowPass::New())
   , Reason("not rendered yet")
   , MaxError(0.5)
   , MaxTexelPixels(0.0)
@@ -107,6 +131,7 @@ vtkAutoShadowPass::~vtkAutoShadowPass()
 {
   this->PlanarPass->Delete();
   this->CascadedPass->Delete();
+  this->RayTracedPass->Delete();
 }
 
 //------------------------------------------------------------------------------
@@ -119,6 +144,7 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   impl.LightChoices.clear();
   this->LightReasons.clear();
   double stretch = 1.0, edgeLength = 0.0;
+  std::vector<double> edgeLengths; // per light: its casters' outline (map lights)
   for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
   {
     double homogeneous[4];
@@ -131,7 +157,9 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
       // What the map's texels must resolve: the casters' outlines, and how
       // far grazing light stretches them on plane receivers.
       const int index = static_cast<int>(impl.LightChoices.size());
-      edgeLength = std::max(edgeLength, this->MapOutlinePixels(homogeneous, index, renderer));
+      edgeLengths.resize(index + 1, 0.0);
+      edgeLengths[index] = this->MapOutlinePixels(homogeneous, index, renderer);
+      edgeLength = std::max(edgeLength, edgeLengths[index]);
       stretch = std::max(stretch,
         vsh_auto_plane_stretch(
           impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous));
@@ -139,8 +167,10 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     impl.LightChoices.push_back(static_cast<vtkshadow::TechniqueSet>(c.technique));
     this->LightReasons.push_back(this->LightReasonText(c.reason, c.a, c.b));
   }
-  this->ApplyLightMasks();
   this->ChooseTexelTarget(renderer, edgeLength, stretch);
+  edgeLengths.resize(impl.LightChoices.size(), 0.0);
+  this->ChooseGeneral(renderer, edgeLengths);
+  this->ApplyLightMasks();
   this->DescribeChoice();
 }
 
@@ -231,12 +261,14 @@ void vtkAutoShadowPass::ApplyLightMasks()
   {
     techniques.push_back(static_cast<int>(choice));
   }
-  unsigned int planarLights = 0, csmLights = 0;
-  vsh_auto_light_masks(
-    techniques.data(), static_cast<int>(techniques.size()), &planarLights, &csmLights);
+  const int count = static_cast<int>(techniques.size());
+  const unsigned int planarLights = vsh_auto_light_mask(techniques.data(), count, VSH_AUTO_PLANAR);
+  const unsigned int csmLights = vsh_auto_light_mask(techniques.data(), count, VSH_AUTO_CSM);
+  const unsigned int rayLights = vsh_auto_light_mask(techniques.data(), count, VSH_AUTO_RAYTRACE);
   this->PlanarPass->SetSkippedLights(~planarLights);
   this->CascadedPass->SetSkippedLights(~csmLights);
-  impl.Choice = vtkshadow::FromLightMasks(planarLights, csmLights);
+  this->RayTracedPass->SetSkippedLights(~rayLights);
+  impl.Choice = vtkshadow::FromLightMasks(planarLights, csmLights, 0u, rayLights);
 }
 
 //------------------------------------------------------------------------------
@@ -276,6 +308,7 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   this->Decide(s);
   const bool planar = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Planar);
   const bool csm = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Cascaded);
+  const bool rays = vtkshadow::Has(this->Impl->Choice, TechniqueSet::RayTraced);
   // A pass no longer used keeps no GL memory.
   vtkWindow* window = s->GetRenderer()->GetRenderWindow();
   if (!planar && vtkshadow::Has(previous, TechniqueSet::Planar))
@@ -286,13 +319,18 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   {
     this->CascadedPass->ReleaseGraphicsResources(window);
   }
+  if (!rays && vtkshadow::Has(previous, TechniqueSet::RayTraced))
+  {
+    this->RayTracedPass->ReleaseGraphicsResources(window);
+  }
   // The chosen passes in a chain in front of the one scene pipeline (this
   // pass's delegate), so switching keeps VTK's passes: each does its shadow
   // work for its lights, then renders through the next.
   vtkRenderPass* next = this->EnsureDelegatePass();
-  vtkShadowPassBase* const candidates[] = { this->PlanarPass, this->CascadedPass };
-  const bool used[] = { planar, csm };
-  for (int i = 0; i < 2; ++i)
+  vtkShadowPassBase* const candidates[] = { this->PlanarPass, this->CascadedPass,
+    this->RayTracedPass };
+  const bool used[] = { planar, csm, rays };
+  for (int i = 0; i < 3; ++i)
   {
     if (used[i])
     {
@@ -326,19 +364,7 @@ double vtkAutoShadowPass::MapOutlinePixels(const double light[4], int index, vtk
 double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, const double light[4], int index,
   const double center[3], double radius, vtkRenderer* renderer)
 {
-  // One pixel's world size at the caster's distance from the camera.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  double eye[3], focal[3], clip[2];
-  camera->GetPosition(eye);
-  camera->GetFocalPoint(focal);
-  camera->GetClippingRange(clip);
-  double forward[3] = { focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2] };
-  vtkMath::Normalize(forward);
-  const double toCenter[3] = { center[0] - eye[0], center[1] - eye[1], center[2] - eye[2] };
-  const double depth = std::max(vtkMath::Dot(toCenter, forward), clip[0]);
-  const int height = std::max(renderer->GetSize()[1], 1);
-  const double pixel =
-    2.0 * depth * std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0) / height;
+  const double pixel = this->PixelWorldSize(renderer, center);
   if (!(pixel > 0.0))
   {
     return 0.0;
@@ -376,6 +402,118 @@ double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, const double light[4], 
 }
 
 //------------------------------------------------------------------------------
+double vtkAutoShadowPass::PixelWorldSize(vtkRenderer* renderer, const double center[3]) const
+{
+  // One pixel's world size at the point's distance from the camera.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double eye[3], focal[3], clip[2];
+  camera->GetPosition(eye);
+  camera->GetFocalPoint(focal);
+  camera->GetClippingRange(clip);
+  double forward[3] = { focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2] };
+  vtkMath::Normalize(forward);
+  const double toCenter[3] = { center[0] - eye[0], center[1] - eye[1], center[2] - eye[2] };
+  const double depth = std::max(vtkMath::Dot(toCenter, forward), clip[0]);
+  const int height = std::max(renderer->GetSize()[1], 1);
+  if (camera->GetParallelProjection())
+  {
+    return 2.0 * camera->GetParallelScale() / height;
+  }
+  return 2.0 * depth * std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0) / height;
+}
+
+//------------------------------------------------------------------------------
+double vtkAutoShadowPass::ThinnestCasterPixels(vtkRenderer* renderer)
+{
+  // The narrowest caster part in view, on screen: its width (data units,
+  // from the mesh, once per mesh) times the actor's scale, over one pixel's
+  // size at the caster's distance (its bounds centre: parts nearer the far
+  // end are thinner still, which the near-end texel target also ignores).
+  Internals& impl = *this->Impl;
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < impl.Objects.size(); ++i)
+  {
+    const vsh_auto_object& o = impl.Objects[i];
+    if (!o.casts || o.receiver || !o.in_view)
+    {
+      continue;
+    }
+    vtkActor* actor = impl.Actors[i];
+    const double width = impl.For(actor).Geometry.GetThinnestWidth();
+    const double pixel = this->PixelWorldSize(renderer, o.center);
+    if (!std::isfinite(width) || !(pixel > 0.0))
+    {
+      continue;
+    }
+    double linear[3][3];
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        linear[r][c] = actor->GetMatrix()->GetElement(r, c);
+      }
+    }
+    const double scale = std::cbrt(std::abs(vtkMath::Determinant3x3(linear)));
+    thinnest = std::min(thinnest, width * scale / pixel);
+  }
+  return thinnest;
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths)
+{
+  // Each map light: csm predicts the target met by its texel model unless a
+  // caster part is too thin for the texels (then the part's lost shadow);
+  // raytrace is exact. Costs in milliseconds per frame from each model.
+  Internals& impl = *this->Impl;
+  impl.GeneralJSON.clear();
+  const int* size = renderer->GetSize();
+  const double pixels = std::max(1.0, static_cast<double>(size[0]) * size[1]);
+  this->UsedThinnestPixels = std::numeric_limits<double>::infinity();
+  bool measured = false;
+  for (size_t l = 0; l < impl.LightChoices.size(); ++l)
+  {
+    if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
+    {
+      continue;
+    }
+    if (!measured)
+    {
+      this->UsedThinnestPixels = this->ThinnestCasterPixels(renderer);
+      measured = true;
+    }
+    const double thin = vsh_auto_thin_caster_error(
+      this->UsedThinnestPixels, this->UsedTexelTarget, edgeLengths[l], pixels);
+    vsh_auto_candidate candidates[VSH_AUTO_GENERAL_COUNT] = {};
+    candidates[VSH_AUTO_GENERAL_CSM] = { 1, thin > 0.0 ? thin : 0.0, MapLookupMsPerPixel * pixels };
+    candidates[VSH_AUTO_GENERAL_VOLUME] = { 0, 0.0, 0.0 };
+    candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, 0.0,
+      this->RayTracedPass->EstimateFrameMilliseconds(pixels, 1.0, 1) };
+    int met = 0;
+    const int pick =
+      vsh_auto_pick_cheapest(candidates, VSH_AUTO_GENERAL_COUNT, this->MaxError, &met);
+    std::ostringstream json;
+    json.precision(4);
+    json << (impl.GeneralJSON.empty() ? "" : ", ") << "{\"light\": " << l
+         << ", \"csm_error_pct\": " << JSONNumber(candidates[0].predicted_error_pct)
+         << ", \"csm_ms\": " << candidates[0].cost
+         << ", \"raytrace_ms\": " << JSONNumber(candidates[2].cost) << "}";
+    impl.GeneralJSON += json.str();
+    if (pick == VSH_AUTO_GENERAL_RAYTRACE)
+    {
+      impl.LightChoices[l] = vtkshadow::TechniqueSet::RayTraced;
+      std::ostringstream why;
+      why.precision(3);
+      why << "a caster part " << this->UsedThinnestPixels
+          << " px wide is narrower than two map texels of " << this->UsedTexelTarget
+          << " px: maps may lose its shadow (predicted " << candidates[0].predicted_error_pct
+          << "% wrong), ray tracing is exact";
+      this->LightReasons[l] += "; " + why.str();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 const char* vtkAutoShadowPass::GetChoice() const
 {
   return vtkshadow::TechniqueSetName(this->Impl->Choice);
@@ -402,6 +540,7 @@ void vtkAutoShadowPass::SetResidualLight(double residual)
   this->Superclass::SetResidualLight(residual);
   this->PlanarPass->SetResidualLight(this->ResidualLight);
   this->CascadedPass->SetResidualLight(this->ResidualLight);
+  this->RayTracedPass->SetResidualLight(this->ResidualLight);
 }
 
 //------------------------------------------------------------------------------
@@ -430,6 +569,10 @@ long long vtkAutoShadowPass::GetMemoryBytes() const
   {
     bytes += this->CascadedPass->GetMemoryBytes();
   }
+  if (vtkshadow::Has(this->Impl->Choice, vtkshadow::TechniqueSet::RayTraced))
+  {
+    bytes += this->RayTracedPass->GetMemoryBytes();
+  }
   return bytes;
 }
 
@@ -438,6 +581,7 @@ void vtkAutoShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->PlanarPass->ReleaseGraphicsResources(w);
   this->CascadedPass->ReleaseGraphicsResources(w);
+  this->RayTracedPass->ReleaseGraphicsResources(w);
   this->Superclass::ReleaseGraphicsResources(w);
 }
 
@@ -480,7 +624,8 @@ bool vtkAutoShadowPass::SetOption(const char* key, double value)
   {
     return this->Superclass::SetOption(key, value); // SetResidualLight: all passes
   }
-  return this->CascadedPass->SetOption(key, value) || this->PlanarPass->SetOption(key, value);
+  return this->CascadedPass->SetOption(key, value) || this->PlanarPass->SetOption(key, value) ||
+    this->RayTracedPass->SetOption(key, value);
 }
 
 //------------------------------------------------------------------------------
@@ -516,6 +661,12 @@ std::string vtkAutoShadowPass::GetStatsJSON(vtkRenderer* renderer) const
   if (details)
   {
     out << ", " << details->GetStatsJSON(renderer);
+  }
+  out << ", \"thinnest_caster_px\": " << JSONNumber(this->UsedThinnestPixels) << ", \"general\": ["
+      << this->Impl->GeneralJSON << "]";
+  if (vtkshadow::Has(this->Impl->Choice, TechniqueSet::RayTraced))
+  {
+    out << ", \"raytrace\": {" << this->RayTracedPass->GetStatsJSON(renderer) << "}";
   }
   return out.str();
 }

@@ -11,13 +11,17 @@
  *   shadows itself), or it is the headlight: no shadow work for it at all;
  * - "planar": every shadow it casts falls on plane receivers and every
  *   non-receiver caster is convex: vtkPlanarShadowPass, exact and cheapest;
- * - "csm": otherwise vtkCascadedShadowMapPass, which uses one fitted map
- *   when the visible depth ratio is small and more cascades when it is
- *   large, with the map resolution and count chosen by the core's error
- *   estimate so that the on-screen texel size meets the target.
- * Lights of both kinds in one scene are drawn in one frame: the cascaded
- * pass delegates to the planar pass, each skipping the other's lights
- * (SkippedLights), and both multiply their factor into the lighting.
+ * - otherwise the cheapest of the general candidates whose predicted error
+ *   meets the target (vsh_auto_general.h): "csm" (vtkCascadedShadowMapPass,
+ *   one fitted map when the visible depth ratio is small and more cascades
+ *   when it is large, with the map resolution and count chosen by the
+ *   core's error estimate so that the on-screen texel size meets the
+ *   target), predicted to meet it unless a caster part is narrower than two
+ *   texels (the thin-caster term), or "raytrace" (vtkRayTracedShadowPass,
+ *   exact), costed by its own model of measured rays per second.
+ * Lights of several kinds in one scene are drawn in one frame: the chosen
+ * passes delegate to each other, each skipping the others' lights
+ * (SkippedLights), and all multiply their factor into the lighting.
  *
  * The target is MaxError (wrong_pct, the percentage of pixels whose shadow
  * state is wrong outside a one-pixel band; default 0.5), turned into an
@@ -41,6 +45,7 @@ class vtkActor;
 class vtkCascadedShadowMapPass;
 class vtkRenderer;
 class vtkPlanarShadowPass;
+class vtkRayTracedShadowPass;
 class vtkProp;
 
 class VTKSHADOW_EXPORT vtkAutoShadowPass : public vtkShadowPassBase
@@ -59,6 +64,7 @@ public:
    */
   vtkGetObjectMacro(PlanarPass, vtkPlanarShadowPass);
   vtkGetObjectMacro(CascadedPass, vtkCascadedShadowMapPass);
+  vtkGetObjectMacro(RayTracedPass, vtkRayTracedShadowPass);
 
   /**
    * The error target: wrong_pct (percent of the frame's pixels; default
@@ -71,9 +77,10 @@ public:
   vtkGetMacro(MaxTexelPixels, double);
 
   /**
-   * "none", "planar", "csm" or "planar+csm" for the last frame, and why;
+   * "none", "planar", "csm", "raytrace" or a combination such as
+   * "planar+csm" for the last frame, and why;
    * per light (mapper numbering: switched-on lights in order) "none",
-   * "planar" or "csm" and why.
+   * "planar", "csm" or "raytrace" and why.
    */
   const char* GetChoice() const;
   const char* GetReason() const { return this->Reason.c_str(); }
@@ -94,6 +101,15 @@ public:
    * the camera (the longest over the map lights).
    */
   vtkGetMacro(UsedEdgeLength, double);
+
+  /**
+   * The narrowest caster part in view in the last frame, in pixels (+inf
+   * when there was none or no light needed a map): a map whose texels are
+   * wider than half of it may lose that part's shadow, so auto draws such
+   * lights exactly instead (raytrace) when that is the cheapest way to meet
+   * the target.
+   */
+  vtkGetMacro(UsedThinnestPixels, double);
 
   /**
    * The plane receivers detected in the last frame (its planar pass's
@@ -136,6 +152,7 @@ protected:
 
   vtkPlanarShadowPass* PlanarPass;
   vtkCascadedShadowMapPass* CascadedPass;
+  vtkRayTracedShadowPass* RayTracedPass;
   std::string Reason;
   std::vector<std::string> LightReasons;
   double MaxError;
@@ -143,6 +160,7 @@ protected:
   double UsedTexelTarget;
   double UsedStretch;
   double UsedEdgeLength;
+  double UsedThinnestPixels = 0.0;
   // The choices (typed: vtkShadowTechniqueSet.h), the frame's objects and
   // the casters' meshes (convexity, silhouettes), kept between frames.
   struct Internals;
@@ -162,6 +180,11 @@ private:
   std::string LightReasonText(int reason, int a, int b) const;
   void ApplyLightMasks();
   void ChooseTexelTarget(vtkRenderer* renderer, double edgeLength, double stretch);
+  // For the lights given maps: keep the map when its predicted error meets
+  // the target and it is the cheapest such candidate, else an exact one.
+  void ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths);
+  double ThinnestCasterPixels(vtkRenderer* renderer);
+  double PixelWorldSize(vtkRenderer* renderer, const double center[3]) const;
   void DescribeChoice();
   // Pixels of shadow outline the casters in view throw under light number
   // `index` (`light` homogeneous, world coordinates), and of one actor.

@@ -9,12 +9,14 @@
 #include "vtkTimeStamp.h"
 #include "vtk_glew.h"
 
+#include "vsh_auto_general.h"
 #include "vsh_mat4.h"
 #include "vsh_mesh_topology.h"
 #include "vsh_silhouette.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 //------------------------------------------------------------------------------
 vtkShadowCasterGeometry::vtkShadowCasterGeometry() = default;
@@ -51,6 +53,7 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
   this->Topology.reset();
   this->Closed = -1;
   this->Convex = -1;
+  this->Thinnest = -1.0;
   this->FanValid = false;
   this->PendingVertices.swap(vertices);
   this->PendingIndices.swap(indices);
@@ -138,6 +141,22 @@ bool vtkShadowCasterGeometry::IsClosed()
     this->Analyse();
   }
   return this->Closed == 1;
+}
+
+//------------------------------------------------------------------------------
+double vtkShadowCasterGeometry::GetThinnestWidth()
+{
+  if (this->Thinnest >= 0.0)
+  {
+    return this->Thinnest;
+  }
+  this->IsClosed(); // analyses the topology
+  const vsh_mesh_topology* topology = this->Topology.get();
+  this->Thinnest = topology && topology->positions && topology->component
+    ? vsh_mesh_thinnest_width(topology->positions, topology->vertex_count,
+        reinterpret_cast<const unsigned int*>(topology->component), topology->component_count)
+    : std::numeric_limits<double>::infinity();
+  return this->Thinnest;
 }
 
 //------------------------------------------------------------------------------

@@ -88,6 +88,14 @@ public:
   double GetSilhouetteLength(const double lightInData[4]);
   vtkIdType GetNumberOfSilhouetteTriangles() const { return this->FanTriangles; }
 
+  /**
+   * The narrowest shadow a part of the caster throws from a generic
+   * direction, in data units: over its connected components, the middle one
+   * of their principal extents (vsh_mesh_thinnest_width). +inf without
+   * triangles. Computed once per mesh.
+   */
+  double GetThinnestWidth();
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
@@ -122,6 +130,7 @@ private:
   std::unique_ptr<vsh_mesh_topology, TopologyDeleter> Topology;
   int Closed = -1;
   int Convex = -1;
+  double Thinnest = -1.0;
   double FanLight[4] = { 0, 0, 0, 0 };
   bool FanValid = false;
   vtkIdType FanTriangles = 0;

@@ -15,7 +15,9 @@ enum class TechniqueSet : unsigned
 {
   None = VSH_AUTO_NONE,
   Planar = VSH_AUTO_PLANAR,
-  Cascaded = VSH_AUTO_CSM
+  Cascaded = VSH_AUTO_CSM,
+  Volume = VSH_AUTO_VOLUME,
+  RayTraced = VSH_AUTO_RAYTRACE
 };
 
 constexpr TechniqueSet operator|(TechniqueSet a, TechniqueSet b)
@@ -44,21 +46,28 @@ constexpr bool Has(TechniqueSet set, TechniqueSet members)
 /**
  * The frame's set from the per-light masks of vsh_auto_light_masks.
  */
-constexpr TechniqueSet FromLightMasks(unsigned int planar, unsigned int cascaded)
+constexpr TechniqueSet FromLightMasks(
+  unsigned int planar, unsigned int cascaded, unsigned int volume = 0, unsigned int rayTraced = 0)
 {
   return (planar ? TechniqueSet::Planar : TechniqueSet::None) |
-    (cascaded ? TechniqueSet::Cascaded : TechniqueSet::None);
+    (cascaded ? TechniqueSet::Cascaded : TechniqueSet::None) |
+    (volume ? TechniqueSet::Volume : TechniqueSet::None) |
+    (rayTraced ? TechniqueSet::RayTraced : TechniqueSet::None);
 }
 
 /**
- * The display name: "none", "planar", "csm" or "planar+csm" (what
- * vtkAutoShadowPass::GetChoice and --stats print).
+ * The display name: the members' technique names joined by '+' in the
+ * order planar, csm, volume, raytrace ("none", "planar", "csm",
+ * "planar+csm", "raytrace", "csm+raytrace", ...): what
+ * vtkAutoShadowPass::GetChoice and --stats print.
  */
 inline const char* TechniqueSetName(TechniqueSet set)
 {
-  const bool planar = Has(set, TechniqueSet::Planar);
-  const bool cascaded = Has(set, TechniqueSet::Cascaded);
-  return planar && cascaded ? "planar+csm" : planar ? "planar" : cascaded ? "csm" : "none";
+  static const char* const names[16] = { "none", "planar", "csm", "planar+csm", "volume",
+    "planar+volume", "csm+volume", "planar+csm+volume", "raytrace", "planar+raytrace",
+    "csm+raytrace", "planar+csm+raytrace", "volume+raytrace", "planar+volume+raytrace",
+    "csm+volume+raytrace", "planar+csm+volume+raytrace" };
+  return names[static_cast<unsigned>(set) & 15u];
 }
 }
 
