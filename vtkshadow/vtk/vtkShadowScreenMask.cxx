@@ -188,6 +188,12 @@ bool vtkShadowScreenMask::RenderDepth(const vtkRenderState* s, int lightCount)
     state->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     state->vtkglEnable(GL_DEPTH_TEST);
+    // Depth only, no colour attachment: an owner whose shader hooks are
+    // registered during this pass (so the mappers build the same shaders as
+    // in the main pass and do not rebuild twice a frame) may then sample the
+    // visibility textures without a feedback loop.
+    impl.FBO->RemoveColorAttachment(0);
+    impl.FBO->DeactivateDrawBuffers();
     impl.DepthScene->Render(s);
   }
   // Every light lit until a technique says otherwise.
@@ -205,14 +211,14 @@ bool vtkShadowScreenMask::RenderDepth(const vtkRenderState* s, int lightCount)
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenMask::BeginDraw(int light)
+void vtkShadowScreenMask::BeginDraw(int light, bool depthAttached)
 {
   Internals& impl = *this->Impl;
   vtkOpenGLState* state = impl.Window->GetState();
   state->PushFramebufferBindings();
   impl.FBO->Bind();
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-    impl.DepthStencil->GetHandle(), 0);
+    depthAttached ? impl.DepthStencil->GetHandle() : 0, 0);
   const int layer = std::max(0, std::min(LayerOf(light), LayerCount - 1));
   impl.FBO->AddColorAttachment(0, impl.Layers[layer]);
   impl.FBO->ActivateDrawBuffers(1);
@@ -247,14 +253,11 @@ void vtkShadowScreenMask::EndDraw()
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenMask::DrawQuad(vtkOpenGLRenderWindow* window)
+void vtkShadowScreenMask::DrawFullScreen(vtkShaderProgram* program)
 {
   Internals& impl = *this->Impl;
-  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-    vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
   if (!program)
   {
-    this->Error = "the screen-space mask's quad shader did not compile";
     return;
   }
   if (!impl.Quad)
@@ -275,11 +278,15 @@ void vtkShadowScreenMask::DrawQuad(vtkOpenGLRenderWindow* window)
       program, impl.Quad, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
     impl.QuadProgram = program;
   }
-  const float blocked[4] = { 0, 0, 0, 0 };
-  program->SetUniform4f("value", blocked);
   impl.QuadVAO->Bind();
   glDrawArrays(GL_TRIANGLES, 0, 6);
   impl.QuadVAO->Release();
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkShadowScreenMask::GetDepthTexture() const
+{
+  return this->Impl->FBO ? this->Impl->DepthStencil.GetPointer() : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -306,7 +313,16 @@ void vtkShadowScreenMask::ResolveStencil(int light)
   state->vtkglEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_NOTEQUAL, 0, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  this->DrawQuad(impl.Window);
+  vtkShaderProgram* program = impl.Window->GetShaderCache()->ReadyShaderProgram(
+    vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
+  if (!program)
+  {
+    this->Error = "the screen-space mask's quad shader did not compile";
+    return;
+  }
+  const float blocked[4] = { 0, 0, 0, 0 };
+  program->SetUniform4f("value", blocked);
+  this->DrawFullScreen(program);
 }
 
 //------------------------------------------------------------------------------
@@ -361,8 +377,8 @@ void vtkShadowScreenMask::FinishUploads()
     }
     impl.Layers[layer]->Bind();
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, this->Size[0], this->Size[1], GL_RGBA,
-      GL_UNSIGNED_BYTE, impl.Staged[layer].data());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, this->Size[0], this->Size[1], GL_RGBA, GL_UNSIGNED_BYTE,
+      impl.Staged[layer].data());
     impl.Dirty[layer] = false;
   }
 }
@@ -408,8 +424,8 @@ void vtkShadowScreenMask::SetShaderParameters(vtkShaderProgram* program)
     return;
   }
   program->SetUniformi("vshScreenMask0", impl.Layers[0]->GetTextureUnit());
-  program->SetUniformi("vshScreenMask1",
-    impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
+  program->SetUniformi(
+    "vshScreenMask1", impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
   program->SetUniform2i("vshScreenMaskOrigin", this->Origin);
   program->SetUniformi("vshScreenMaskLights", this->LightCount);
 }

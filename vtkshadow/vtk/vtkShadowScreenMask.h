@@ -56,6 +56,10 @@ public:
    * depth into it (colour writes off). Every channel then reads 1 (lit) and
    * the stencil 0. Returns false (with a reason in GetError()) when the
    * window is not an OpenGL window or the framebuffer is incomplete.
+   * The depth is drawn with no colour attachment: an owner may register its
+   * shader hooks (and Activate()) around this call, so the mappers draw
+   * with the same shaders as in the main pass instead of rebuilding them
+   * twice a frame.
    */
   bool RenderDepth(const vtkRenderState* s, int lightCount);
 
@@ -64,8 +68,10 @@ public:
    * colour attachment 0) with the viewport set to the whole mask; EndDraw
    * restores the previous bindings. Between them a technique draws with
    * depth test on and depth writes off, for instance stencil volumes.
+   * With `depthAttached` false only the colour texture is attached, so a
+   * shader may sample GetDepthTexture() (a full-screen resolve).
    */
-  void BeginDraw(int light);
+  void BeginDraw(int light, bool depthAttached = true);
   void EndDraw();
 
   /**
@@ -87,6 +93,19 @@ public:
    */
   void UploadLight(int light, const float* visibility);
   void FinishUploads();
+
+  /**
+   * Inside BeginDraw: draw a quad over the whole mask with `program`, whose
+   * vertex shader takes the clip-space corner as `vec4 vertexMC` (e.g.
+   * vtkShadowScreenQuadVS). The caller sets the state and uniforms.
+   */
+  void DrawFullScreen(vtkShaderProgram* program);
+
+  /**
+   * The depth-stencil texture of the last RenderDepth() (window depth in
+   * [0,1] as the red channel of a sampler2D, nearest filtering), or null.
+   */
+  vtkTextureObject* GetDepthTexture() const;
 
   // Shader hooks, forwarded from the owning pass.
   bool PreReplaceShaderValues(std::string& fragmentShader, vtkProp* prop);
@@ -111,7 +130,6 @@ public:
 
 private:
   bool Allocate(vtkOpenGLRenderWindow* window);
-  void DrawQuad(vtkOpenGLRenderWindow* window);
 
   struct Internals;
   Internals* Impl;
