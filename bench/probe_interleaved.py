@@ -11,6 +11,8 @@ first variant is the reference: for each variant the script prints the
 median frame time over all timed frames, and the median and spread
 (min..max) over rounds of (variant round median / reference round median).
 List the reference twice (e.g. none=none none2=none) to see the noise floor.
+Besides wall-clock, it reports process CPU time per frame (every llvmpipe
+thread), which a machine loaded by other jobs disturbs less.
 """
 import argparse
 import json
@@ -74,6 +76,7 @@ def main():
         variants.append((label, t, t.CreatePass()))
     times = {label: [] for label, _, _ in variants}
     rounds = {label: [] for label, _, _ in variants}
+    cpu = {label: [] for label, _, _ in variants}
     stats = {}
     for r in range(a.rounds):
         order = variants[r % len(variants):] + variants[:r % len(variants)]
@@ -84,12 +87,14 @@ def main():
                 window.Render()
             window.WaitForCompletion()
             block = []
+            c0 = time.process_time()
             for i in range(a.frames):
                 place_camera(renderer, scene, i, a.frames)
                 t0 = time.perf_counter()
                 window.Render()
                 window.WaitForCompletion()
                 block.append(1e3 * (time.perf_counter() - t0))
+            cpu[label].append(1e3 * (time.process_time() - c0) / a.frames)
             times[label] += block
             rounds[label].append(statistics.median(block))
             stats[label] = p.GetStatsJSON(renderer)
@@ -98,10 +103,15 @@ def main():
     print(f"# {a.scene} {a.size} rounds={a.rounds} frames={a.frames}")
     for label, _, _ in variants:
         ratios = [x / y for x, y in zip(rounds[label], rounds[ref])]
+        cratios = [x / y for x, y in zip(cpu[label], cpu[ref])]
         out[label] = {"ms": statistics.median(times[label]), "ratio": statistics.median(ratios),
-                      "ratio_min": min(ratios), "ratio_max": max(ratios), "stats": stats[label]}
-        print(f"{label:>14} {out[label]['ms']:8.2f} ms  ratio {out[label]['ratio']:.3f} "
-              f"({min(ratios):.3f}..{max(ratios):.3f})  {stats[label][:120]}")
+                      "ratio_min": min(ratios), "ratio_max": max(ratios),
+                      "cpu_ms": statistics.median(cpu[label]),
+                      "cpu_ratio": statistics.median(cratios), "cpu_ratio_min": min(cratios),
+                      "cpu_ratio_max": max(cratios), "stats": stats[label]}
+        print(f"{label:>10} wall {out[label]['ms']:7.1f} ms ratio {out[label]['ratio']:.3f} "
+              f"({min(ratios):.2f}..{max(ratios):.2f})  cpu {out[label]['cpu_ms']:7.1f} ms "
+              f"ratio {out[label]['cpu_ratio']:.3f} ({min(cratios):.2f}..{max(cratios):.2f})")
     if a.json:
         with open(a.json, "w") as f:
             json.dump(out, f, indent=1)
