@@ -201,6 +201,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   this->GatherScene(s, frame);
   this->PlanMaps(frame);
   this->Impl->Screen = this->ChooseScreenResolve(frame);
+  ++this->Impl->FramesSinceMeasure;
   this->UsedScreenResolve = this->Impl->Screen;
   this->UpdateShaderState(frame);
   const int resolution = this->AllocateAtlas(window);
@@ -763,6 +764,12 @@ void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     impl.Mask->ReleaseGraphicsResources(w);
   }
+  if (impl.Queries[0])
+  {
+    glDeleteQueries(2, impl.Queries);
+    impl.Queries[0] = impl.Queries[1] = 0;
+  }
+  impl.Overdraw = -1.0;
   for (auto& entry : impl.Casters)
   {
     entry.second->ReleaseGraphicsResources(w);
@@ -903,7 +910,8 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
   out << "\"resolution\": " << this->UsedResolution
       << ", \"maps_rendered_total\": " << this->TotalMapsRendered
       << ", \"maps_reused_last_frame\": " << this->NumberOfMapsReused << ", \"resolve\": \""
-      << (this->UsedScreenResolve ? "screen" : "forward") << "\", \"lights\": [";
+      << (this->UsedScreenResolve ? "screen" : "forward")
+      << "\", \"overdraw\": " << this->Impl->Overdraw << ", \"lights\": [";
   const int lights = renderer ? renderer->GetLights()->GetNumberOfItems() : 0;
   for (int l = 0; l < lights; ++l)
   {

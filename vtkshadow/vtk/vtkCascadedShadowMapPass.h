@@ -160,8 +160,13 @@ public:
    * depth, looks up every light and writes its visibility to the mask; the
    * mappers read one texel per light. CHOOSE (default): SCREEN unless the
    * depth buffer is too coarse for the bias at the far end of the view,
-   * DebugCascades is on, or the measured rule in ChooseScreenResolve()
-   * says forward is cheaper.
+   * DebugCascades is on, or forward measures cheaper: now and then (every
+   * 64 frames) a screen frame counts, with occlusion queries, the
+   * fragments that pass the depth test (what forward lookups run for) per
+   * covered pixel (what the resolve runs for); the costs per lookup,
+   * reconstruction and pre-pass fragment measured on llvmpipe turn that
+   * overdraw and the number of casting lights into the choice
+   * (docs/cascaded-shadow-maps.md).
    */
   vtkSetClampMacro(Resolve, int, FORWARD, CHOOSE);
   vtkGetMacro(Resolve, int);
@@ -281,6 +286,7 @@ private:
   void ReleaseRemovedCasters(vtkOpenGLRenderWindow* window, const Frame& frame);
   // The screen-space resolve (vtkCascadedShadowMapResolve.cxx).
   bool ChooseScreenResolve(const Frame& frame) const;
+  bool DepthPreciseEnough(const Frame& frame) const;
   void UpdateResolveSources();
   void RenderScreenResolved(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   bool ResolveScreen(const vtkRenderState* s, vtkOpenGLRenderWindow* window);

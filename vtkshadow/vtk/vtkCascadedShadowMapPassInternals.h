@@ -91,6 +91,16 @@ struct vtkCascadedShadowMapPass::Internals
   bool PrePass = false;
   bool ScreenFailed = false;
   std::string ResolveSource[2];
+  // The CHOOSE rule's measurement: fragment-shader invocations of the
+  // pre-pass (what forward lookups would run for: the main pass rasterizes
+  // the same triangles) per covered pixel (what the resolve runs for), from
+  // queries on a screen frame; -1 before the first. Re-measured every 64
+  // frames.
+  unsigned int Queries[2] = { 0, 0 };
+  unsigned int FragmentQuery = 0; // the GL query target that counts fragments
+  double Overdraw = -1.0;
+  int FramesSinceMeasure = 0;
+  bool Measuring = false;
 };
 
 #endif

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace vtkshadow
 {
@@ -67,6 +68,34 @@ std::string CascadedLookupCode(const vsh_csm_tile_plan& plan, int first, int cou
 
 namespace
 {
+constexpr int MeasureEvery = 64;
+
+// Fragment-shader invocations (GL 4.6 / ARB_pipeline_statistics_query)
+// count what a forward lookup costs: a software rasterizer shades whole
+// blocks along triangle edges, so many small triangles cost far more than
+// their pixels. Without it, fragments passing the depth test.
+GLenum FragmentQueryTarget()
+{
+  constexpr GLenum invocations = 0x82F4; // GL_FRAGMENT_SHADER_INVOCATIONS
+  GLint major = 0, minor = 0, count = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (major > 4 || (major == 4 && minor >= 6))
+  {
+    return invocations;
+  }
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i)
+  {
+    const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+    if (name && std::string(name) == "GL_ARB_pipeline_statistics_query")
+    {
+      return invocations;
+    }
+  }
+  return GL_SAMPLES_PASSED;
+}
+
 // Window depth is 24-bit: one step of it at view depth z spans
 // eps (f - n) z^2 / (f n). The resolve needs that well under the shadow
 // texel there, or the reconstructed positions (and normals) are coarser
@@ -105,8 +134,30 @@ bool vtkCascadedShadowMapPass::ChooseScreenResolve(const Frame& frame) const
   {
     return false;
   }
+  if (!this->DepthPreciseEnough(frame))
+  {
+    return false;
+  }
+  // Measured on llvmpipe (docs/cascaded-shadow-maps.md): a lookup costs
+  // about c per fragment-shader invocation, the resolve's reconstruction
+  // about 0.45 c per covered pixel and the depth pre-pass about 0.2 c per
+  // invocation. With o invocations per covered pixel, forward pays L c o
+  // per pixel for L casting lights, the resolve (0.2 o + 0.45 + L) c.
+  // Unknown or stale overdraw: one screen frame measures it.
+  if (impl.Overdraw < 0.0 || impl.FramesSinceMeasure >= MeasureEvery)
+  {
+    return true;
+  }
+  const double o = impl.Overdraw;
+  return casting * o > 0.2 * o + 0.45 + casting;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCascadedShadowMapPass::DepthPreciseEnough(const Frame& frame) const
+{
+  const vsh_csm_tile_plan& tiles = this->Impl->Plan.tiles;
   // Depth precision at the far end of each map's reach against its texel.
-  const double farDepth = impl.Plan.depth.range[1];
+  const double farDepth = this->Impl->Plan.depth.range[1];
   for (int t = 0; t < std::min(tiles.tile_count, VSH_CSM_MAX_TILES); ++t)
   {
     const vsh_csm_tile& tile = tiles.tiles[t];
@@ -157,11 +208,36 @@ void vtkCascadedShadowMapPass::RenderScreenResolved(
     impl.Mask.reset(new vtkShadowScreenMask);
   }
   vtkShadowScreenMask& mask = *impl.Mask;
+  // Under CHOOSE, count the fragments of the pre-pass and the covered
+  // pixels of the resolve now and then.
+  impl.Measuring =
+    this->Resolve == CHOOSE && (impl.Overdraw < 0.0 || impl.FramesSinceMeasure >= MeasureEvery);
+  if (impl.Measuring && !impl.Queries[0])
+  {
+    glGenQueries(2, impl.Queries);
+    impl.FragmentQuery = FragmentQueryTarget();
+  }
   this->PreRender(s);
   impl.PrePass = true;
+  if (impl.Measuring)
+  {
+    glBeginQuery(impl.FragmentQuery, impl.Queries[0]);
+  }
   bool ok = mask.RenderDepth(s, std::min(impl.Plan.tiles.light_count, VSH_CSM_MAX_LIGHTS));
+  if (impl.Measuring)
+  {
+    glEndQuery(impl.FragmentQuery);
+  }
   impl.PrePass = false;
   ok = ok && this->ResolveScreen(s, window);
+  if (ok && impl.Measuring)
+  {
+    GLuint fragments = 0, pixels = 0;
+    glGetQueryObjectuiv(impl.Queries[0], GL_QUERY_RESULT, &fragments);
+    glGetQueryObjectuiv(impl.Queries[1], GL_QUERY_RESULT, &pixels);
+    impl.Overdraw = pixels > 0 ? static_cast<double>(fragments) / pixels : 1.0;
+    impl.FramesSinceMeasure = 0;
+  }
   if (!ok)
   {
     // Forward lookups from the next frame on; this one is unshadowed.
@@ -229,7 +305,15 @@ bool vtkCascadedShadowMapPass::ResolveScreen(const vtkRenderState* s, vtkOpenGLR
     program->SetUniformMatrix4x4("vshNDCToView", ndcToViewF);
     program->SetUniform2f("vshMaskSize", size);
     mask.BeginDraw(4 * layer, false);
+    if (impl.Measuring && layer == 0)
+    {
+      glBeginQuery(GL_SAMPLES_PASSED, impl.Queries[1]);
+    }
     mask.DrawFullScreen(program);
+    if (impl.Measuring && layer == 0)
+    {
+      glEndQuery(GL_SAMPLES_PASSED);
+    }
     mask.EndDraw();
     ok = mask.GetError().empty();
   }

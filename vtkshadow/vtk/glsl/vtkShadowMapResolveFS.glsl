@@ -45,8 +45,7 @@ void main()
   float d = texelFetch(vshDepth, p, 0).r;
   if (d >= 1.0)
   {
-    vshVisibility = vec4(1.0); // background: no mapper reads it
-    return;
+    discard; // background: no mapper reads it (and the pass counts the rest)
   }
   vec3 posVC = vshViewPosition(p, d);
   vec4 tx = vshTangent(p, ivec2(1, 0), posVC);
