@@ -158,14 +158,15 @@ public:
    * visible pixel after a depth pre-pass (vtkShadowScreenMask): one
    * full-screen draw reconstructs each pixel's position and normal from the
    * depth, looks up every light and writes its visibility to the mask; the
-   * mappers read one texel per light. CHOOSE (default): SCREEN unless the
-   * depth buffer is too coarse for the bias at the far end of the view,
+   * mappers read one texel per light. CHOOSE: SCREEN unless the depth
+   * buffer is too coarse for the bias at the far end of the view,
    * DebugCascades is on, or forward measures cheaper: now and then (every
-   * 64 frames) a screen frame counts, with occlusion queries, the
-   * fragments that pass the depth test (what forward lookups run for) per
-   * covered pixel (what the resolve runs for); the costs per lookup,
-   * reconstruction and pre-pass fragment measured on llvmpipe turn that
-   * overdraw and the number of casting lights into the choice
+   * 64 frames) a screen frame counts, with queries, the fragment-shader
+   * invocations (what forward lookups run for) per covered pixel (what the
+   * resolve runs for); the costs measured on llvmpipe turn that and the
+   * number of casting lights into the choice. Default FORWARD: the normals
+   * the resolve reconstructs from the depth are wrong on geometry a few
+   * pixels wide (glyphs, tubes), which costs wrong pixels there
    * (docs/cascaded-shadow-maps.md).
    */
   vtkSetClampMacro(Resolve, int, FORWARD, CHOOSE);

@@ -58,6 +58,11 @@ std::string CascadedLookupCode(const vsh_csm_tile_plan& plan, int first, int cou
       code += "  " + t + " = 1.0;\n";
       continue;
     }
+    if (margin < -1.0f)
+    {
+      code += "  " + t + " = mix(1.0, " + lookup + ", fade);\n"; // never skipped
+      continue;
+    }
     code += "  if (vshShadowFacing(" + n + ", posVC, normalVC, " + std::to_string(margin) +
       "))\n  {\n    " + t + " = mix(1.0, " + lookup + ", fade);\n  }\n  else\n  {\n    " + t +
       " = " + away + ";\n  }\n";
@@ -190,7 +195,7 @@ void vtkCascadedShadowMapPass::UpdateResolveSources()
     impl.ResolveSource[layer] = head +
       "vec4 vshResolveLights(vec3 posVC, vec3 normalVC, float depth)\n{\n"
       "  float fade = vshShadowFade(depth);\n  vec4 vis = vec4(1.0);\n" +
-      vtkshadow::CascadedLookupCode(impl.Plan.tiles, 4 * layer, 4, "vis[%d]", -0.05f, "0.0") +
+      vtkshadow::CascadedLookupCode(impl.Plan.tiles, 4 * layer, 4, "vis[%d]", -2.0f, "1.0") +
       "  return vis;\n}\n" + vtkShadowMapResolveFS;
   }
 }
