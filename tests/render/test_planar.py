@@ -374,7 +374,8 @@ def vtk_clipping_range(scene_path):
 
 
 def run_case(bin_dir, out, case, scene, light, technique, reference, max_wrong_pct,
-             min_agreement, shadow_fact, max_wrong_of_shadow_pct=None, known_failure=None):
+             min_agreement, shadow_fact, max_wrong_of_shadow_pct=None, known_failure=None,
+             settings=()):
     """Render, compare, print one line; returns (failed, trace, metrics)."""
     width, height = scene["size"]
     os.makedirs(out, exist_ok=True)
@@ -388,7 +389,8 @@ def run_case(bin_dir, out, case, scene, light, technique, reference, max_wrong_p
     run = subprocess.run(
         [os.path.join(bin_dir, "vtkshadow-render"), scene_path, "--technique", technique,
          "--image", os.path.join(out, name + "-image.png"), "--visibility", vis_path,
-         "--mask", mask_path, "--light", str(light), "--quiet"], capture_output=True, text=True)
+         "--mask", mask_path, "--light", str(light), "--quiet"]
+        + [a for kv in settings for a in ("--set", kv)], capture_output=True, text=True)
     if run.returncode != 0:
         print(run.stdout, run.stderr)
         sys.exit(f"{name}: vtkshadow-render failed with status {run.returncode}")
@@ -493,11 +495,13 @@ def main():
     ap.add_argument("--max-wrong-of-shadow-pct", type=float)
     ap.add_argument("--min-mask-agreement", type=float, default=99.9)
     ap.add_argument("--known-failure", metavar="REASON")
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="a technique setting passed to vtkshadow-render")
     args = ap.parse_args()
     builder, fact = CASES[args.case]
     failed, _, _ = run_case(args.bin, args.out, args.case, builder(), args.light, args.technique,
                             args.reference, args.max_wrong_pct, args.min_mask_agreement, fact,
-                            args.max_wrong_of_shadow_pct, args.known_failure)
+                            args.max_wrong_of_shadow_pct, args.known_failure, args.set)
     sys.exit(1 if failed else 0)
 
 

@@ -2,6 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCascadedShadowMapPassInternals.h"
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
@@ -24,6 +25,7 @@
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowRankReduction.h"
 #include "vtkSmartPointer.h"
+#include "vtkShadowScreenMask.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -47,58 +49,13 @@
 
 vtkStandardNewMacro(vtkCascadedShadowMapPass);
 
+using vtkshadow::ToFloatTransposed;
+
 namespace
 {
 constexpr int MaxLights = VSH_CSM_MAX_LIGHTS;
 constexpr int MaxTiles = VSH_CSM_MAX_TILES;
-
-void ToFloatTransposed(const double m[16], float out[16])
-{
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      out[c * 4 + r] = static_cast<float>(m[r * 4 + c]);
-    }
-  }
 }
-}
-
-// One frame's inputs, gathered from VTK: the plain scene the core plans
-// from, and what the bake needs (the caster actors).
-struct vtkCascadedShadowMapPass::Frame
-{
-  std::vector<vtkActor*> Casters;
-  vtkMTimeType CasterTime = 0;       // changes when a caster moves, changes or leaves
-  std::vector<vsh_csm_light> Lights; // switched on, in the mappers' numbering
-  vsh_csm_scene Scene{};             // its `lights` point into Lights
-  vsh_csm_settings Settings{};
-  double ViewRotation[16]; // world -> view, rotation only
-};
-
-struct vtkCascadedShadowMapPass::Internals
-{
-  double SplitFractions[VSH_CSM_MAX_CASCADES] = { 0 };
-  std::map<vtkActor*, std::unique_ptr<vtkShadowCasterGeometry>> Casters;
-  vtkTextureObject* Atlas = nullptr;
-  vtkOpenGLFramebufferObject* FBO = nullptr;
-  int AtlasSize[2] = { 0, 0 };
-  int TileGrid[2] = { 1, 1 };
-  int RenderedResolution = 0; // texels per tile edge of the held maps
-  // This frame's maps and, per light in the mappers' numbering, their kind
-  // and range of tiles (the shader's uniforms).
-  vsh_csm_plan Plan{};
-  // What each atlas tile holds: the view it was rendered with (relative to
-  // the camera position then), so a later frame can reuse it.
-  std::vector<vsh_csm_held_map> Rendered;
-  float LightVC[MaxLights][3] = { { 0 } };
-  float ViewToWorld[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  float FadeStart = 0.0f;
-  float MaxDistance = 0.0f;
-  std::string ShaderSignature; // kinds, filter: what the generated code depends on
-  vtkSmartPointer<vtkMultiProcessController> Controller; // ranks sharing the image
-  std::vector<float> ReduceScratch;
-};
 
 //------------------------------------------------------------------------------
 vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
@@ -118,6 +75,9 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
   , MaxShadowDistance(0.0)
   , FadeFraction(0.1)
   , DebugCascades(false)
+  , Resolve(FORWARD)
+  , TapTexelPixels(4.0)
+  , UsedScreenResolve(false)
   , UsedResolution(0)
   , NumberOfMapsRendered(0)
   , NumberOfMapsReused(0)
@@ -163,6 +123,8 @@ void vtkCascadedShadowMapPass::CopySettings(vtkCascadedShadowMapPass* o)
   this->MaxShadowDistance = o->MaxShadowDistance;
   this->FadeFraction = o->FadeFraction;
   this->DebugCascades = o->DebugCascades;
+  this->Resolve = o->Resolve;
+  this->TapTexelPixels = o->TapTexelPixels;
   this->CastHeadlightShadows = o->CastHeadlightShadows;
   this->SkippedLights = o->SkippedLights;
   this->Modified();
@@ -235,7 +197,9 @@ double vtkCascadedShadowMapPass::GetCascadeTexelPixels(int light, int cascade) c
 //------------------------------------------------------------------------------
 long long vtkCascadedShadowMapPass::GetMemoryBytes() const
 {
-  return static_cast<long long>(this->Impl->AtlasSize[0]) * this->Impl->AtlasSize[1] * 4;
+  const long long mask =
+    this->UsedScreenResolve && this->Impl->Mask ? this->Impl->Mask->GetMemoryBytes() : 0;
+  return static_cast<long long>(this->Impl->AtlasSize[0]) * this->Impl->AtlasSize[1] * 4 + mask;
 }
 
 //------------------------------------------------------------------------------
@@ -256,6 +220,9 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   Frame frame;
   this->GatherScene(s, frame);
   this->PlanMaps(frame);
+  this->Impl->Screen = this->ChooseScreenResolve(frame);
+  ++this->Impl->FramesSinceMeasure;
+  this->UsedScreenResolve = this->Impl->Screen;
   this->UpdateShaderState(frame);
   const int resolution = this->AllocateAtlas(window);
   std::vector<int> bake;
@@ -263,9 +230,17 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   this->BakeMaps(window, frame, bake, resolution);
   this->ReleaseRemovedCasters(window, frame);
 
-  // The scene, with every receiver's lighting reading the maps.
+  // The scene, with every receiver's lighting reading the maps (forward) or
+  // the mask the resolve wrote from them (screen).
   this->Impl->Atlas->Activate();
-  this->RenderDelegateWithShaderHooks(s);
+  if (this->Impl->Screen)
+  {
+    this->RenderScreenResolved(s, window);
+  }
+  else
+  {
+    this->RenderDelegateWithShaderHooks(s);
+  }
   this->Impl->Atlas->Deactivate();
 }
 
@@ -401,22 +376,32 @@ void vtkCascadedShadowMapPass::UpdateShaderState(const Frame& frame)
   impl.MaxDistance = static_cast<float>(plan.depth.max_distance);
   impl.FadeStart = static_cast<float>(plan.depth.fade_start);
   const double* eye = frame.Scene.camera.position;
-  for (int l = 0; l < plan.tiles.light_count; ++l)
+  for (int l = 0; l < std::min(plan.tiles.light_count, MaxLights); ++l)
   {
-    if (plan.tiles.kind[l] != VSH_CSM_POINT)
-    {
-      continue;
-    }
-    const double* p = frame.Lights[l].position;
+    // Camera-relative in double, then float: the light's position (or its
+    // direction) in view coordinates.
+    const vsh_csm_light& light = frame.Lights[l];
+    const double* p = light.position;
+    const double* f = light.focal_point;
     const double rel[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
+    const double dir[3] = { p[0] - f[0], p[1] - f[1], p[2] - f[2] };
     double vc[3];
-    vsh_mat4_transform_direction(frame.ViewRotation, rel, vc);
+    vsh_mat4_transform_direction(frame.ViewRotation, light.positional ? rel : dir, vc);
     for (int k = 0; k < 3; ++k)
     {
-      impl.LightVC[l][k] = static_cast<float>(vc[k]);
+      impl.ToLightVC[l][k] = static_cast<float>(vc[k]);
+      impl.LightVC[l][k] = light.positional ? static_cast<float>(vc[k]) : 0.0f;
     }
+    impl.ToLightVC[l][3] = light.positional ? 1.0f : 0.0f;
   }
-  std::string signature = std::to_string(this->Filter) + "/" + std::to_string(this->PCFSize) + ":";
+  // World size of a pixel at view depth z (the core's cameras are
+  // perspective, with a vertical view angle).
+  const double height = std::max(frame.Scene.viewport_height, 1);
+  impl.PixelSize[0] = 0.0f;
+  impl.PixelSize[1] = static_cast<float>(
+    2.0 * std::tan(vtkMath::RadiansFromDegrees(0.5 * frame.Scene.camera.view_angle)) / height);
+  std::string signature = std::to_string(this->Filter) + "/" + std::to_string(this->PCFSize) + "/" +
+    std::to_string(this->TapTexelPixels) + (impl.Screen ? "/screen:" : "/forward:");
   for (int l = 0; l < plan.tiles.light_count; ++l)
   {
     signature += std::to_string(plan.tiles.kind[l]);
@@ -425,6 +410,7 @@ void vtkCascadedShadowMapPass::UpdateShaderState(const Frame& frame)
   {
     impl.ShaderSignature = signature;
     this->BumpShaderTime();
+    this->UpdateResolveSources();
   }
 }
 
@@ -635,44 +621,31 @@ void vtkCascadedShadowMapPass::ReleaseRemovedCasters(
 
 //------------------------------------------------------------------------------
 bool vtkCascadedShadowMapPass::PreReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
   if (fragmentShader.find("//VTK::Light::Dec") == std::string::npos)
   {
     return true;
   }
-  const Internals& impl = *this->Impl;
+  Internals& impl = *this->Impl;
+  // Screen resolve: opaque surfaces read the mask. Translucent ones are not
+  // in the depth pre-pass and keep the forward lookups.
+  const bool translucent =
+    prop && prop->HasTranslucentPolygonalGeometry() && !prop->HasOpaqueGeometry();
+  if (impl.Screen && impl.Mask && !translucent)
+  {
+    return impl.Mask->PreReplaceShaderValues(fragmentShader, prop);
+  }
   // Compile-time filter, then the lookup functions, then one prologue that
   // calls the right lookup for each light that casts.
-  std::string code = "#define VSH_FILTER " + std::to_string(this->Filter) +
-    "\n#define VSH_PCF_HALF " + std::to_string(this->PCFSize / 2) + "\n" + vtkShadowMapLightFS +
+  const std::string code = "#define VSH_FILTER " + std::to_string(this->Filter) +
+    "\n#define VSH_PCF_HALF " + std::to_string(this->PCFSize / 2) + "\n#define VSH_TAP_TEXEL_PX " +
+    std::to_string(this->TapTexelPixels) + "\n" + vtkShadowMapLightFS +
     "void vshShadowPrepare(vec3 posVC, vec3 normalVC)\n{\n"
-    "  float depth = -posVC.z;\n  float fade = vshShadowFade(depth);\n";
-  for (int l = 0; l < MaxLights; ++l)
-  {
-    const std::string n = std::to_string(l);
-    const int kind = l < impl.Plan.tiles.light_count ? impl.Plan.tiles.kind[l] : VSH_CSM_NO_SHADOW;
-    if (kind == VSH_CSM_CASCADES)
-    {
-      code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowCascades(" + n +
-        ", depth, posVC, normalVC), fade);\n";
-    }
-    else if (kind == VSH_CSM_SPOT)
-    {
-      code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowSpot(" + n +
-        ", posVC, normalVC), fade);\n";
-    }
-    else if (kind == VSH_CSM_POINT)
-    {
-      code += "  vshShadowFactor[" + n + "] = mix(1.0, vshShadowPoint(" + n +
-        ", posVC, normalVC), fade);\n";
-    }
-    else
-    {
-      code += "  vshShadowFactor[" + n + "] = 1.0;\n";
-    }
-  }
-  code += "}\n";
+    "  float depth = -posVC.z;\n  float fade = vshShadowFade(depth);\n" +
+    vtkshadow::CascadedLookupCode(
+      impl.Plan.tiles, 0, MaxLights, "vshShadowFactor[%d]", 0.0f, "1.0") +
+    "}\n";
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::Light::Dec", std::string("//VTK::Light::Dec\n") + code, false);
   return true;
@@ -682,6 +655,10 @@ bool vtkCascadedShadowMapPass::PreReplaceShaderValues(
 bool vtkCascadedShadowMapPass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
+  if (this->Impl->Mask && fragmentShader.find("vshScreenPrepare") != std::string::npos)
+  {
+    return this->Impl->Mask->PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
+  }
   if (fragmentShader.find("vshShadowPrepare") == std::string::npos)
   {
     return true;
@@ -705,10 +682,29 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
   Internals& impl = *this->Impl;
-  if (!impl.Atlas || !program->IsUniformUsed("vshShadowAtlas"))
+  if (impl.Mask && program->IsUniformUsed("vshScreenMask0"))
   {
+    // During the depth pre-pass the mask's textures are not bound (and
+    // nothing the shader computes is written).
+    if (!impl.PrePass)
+    {
+      impl.Mask->SetShaderParameters(program);
+    }
     return true;
   }
+  if (impl.Atlas && program->IsUniformUsed("vshShadowAtlas"))
+  {
+    this->SetLookupUniforms(program);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The uniforms of vtkShadowMapLightFS, for the mappers' forward lookups and
+// for the resolve shader.
+void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
+{
+  Internals& impl = *this->Impl;
   vsh_csm_tile_plan& plan = impl.Plan.tiles;
   const int tiles = std::min<int>(plan.tile_count, MaxTiles);
   program->SetUniformi("vshShadowAtlas", impl.Atlas->GetTextureUnit());
@@ -720,6 +716,8 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
   program->SetUniform1iv("vshShadowFirst", MaxLights, plan.first);
   program->SetUniform1iv("vshShadowCount", MaxLights, plan.count);
   program->SetUniform3fv("vshShadowLightVC", MaxLights, impl.LightVC);
+  program->SetUniform4fv("vshShadowToLightVC", MaxLights, impl.ToLightVC);
+  program->SetUniform2f("vshPixelSize", impl.PixelSize);
   program->SetUniformMatrix3x3("vshViewToWorld", impl.ViewToWorld);
   program->SetUniformf("vshPoissonRadius", static_cast<float>(this->PoissonRadius));
   program->SetUniformf("vshBlendBand", static_cast<float>(this->BlendBand));
@@ -728,12 +726,12 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
   program->SetUniformi("vshDebugCascades", this->DebugCascades ? 1 : 0);
   if (tiles == 0)
   {
-    return true;
+    return;
   }
   // Per map: view coordinates -> map clip space (camera-relative, double),
-  // its atlas rectangle, bias and far depth.
+  // its atlas rectangle, bias, texel size and far depth.
   std::vector<float> matrices(16 * tiles), rects(4 * tiles), bias(2 * tiles), fars(tiles),
-    depth(2 * tiles, 0.0f);
+    texels(tiles), depth(2 * tiles, 0.0f);
   double viewToRelative[16];
   {
     // vshViewToWorld holds the transposed view rotation as floats; rebuild
@@ -763,6 +761,7 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
     bias[2 * t + 0] = static_cast<float>(tile.bias[0]);
     bias[2 * t + 1] = static_cast<float>(tile.bias[1]);
     fars[t] = static_cast<float>(tile.far_depth);
+    texels[t] = static_cast<float>(tile.view.texel_world);
     if (tile.view.perspective)
     {
       double terms[2];
@@ -775,8 +774,8 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
   program->SetUniform4fv("vshTileRect", tiles, rects.data());
   program->SetUniform2fv("vshTileBias", tiles, bias.data());
   program->SetUniform1fv("vshTileFar", tiles, fars.data());
+  program->SetUniform1fv("vshTileTexel", tiles, texels.data());
   program->SetUniform2fv("vshTileDepth", tiles, depth.data());
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -793,6 +792,16 @@ void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   impl.AtlasSize[0] = impl.AtlasSize[1] = 0;
   impl.Rendered.clear();
+  if (impl.Mask)
+  {
+    impl.Mask->ReleaseGraphicsResources(w);
+  }
+  if (impl.Queries[0])
+  {
+    glDeleteQueries(2, impl.Queries);
+    impl.Queries[0] = impl.Queries[1] = 0;
+  }
+  impl.Overdraw = -1.0;
   for (auto& entry : impl.Casters)
   {
     entry.second->ReleaseGraphicsResources(w);
@@ -821,6 +830,9 @@ void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxShadowDistance: " << this->MaxShadowDistance << "\n";
   os << indent << "FadeFraction: " << this->FadeFraction << "\n";
   os << indent << "DebugCascades: " << this->DebugCascades << "\n";
+  os << indent << "Resolve: " << this->Resolve << "\n";
+  os << indent << "TapTexelPixels: " << this->TapTexelPixels << "\n";
+  os << indent << "UsedScreenResolve: " << this->UsedScreenResolve << "\n";
   os << indent << "UsedResolution: " << this->UsedResolution << "\n";
   os << indent << "NumberOfMapsRendered: " << this->NumberOfMapsRendered << "\n";
   os << indent << "NumberOfMapsReused: " << this->NumberOfMapsReused << "\n";
@@ -907,6 +919,14 @@ bool vtkCascadedShadowMapPass::SetOption(const char* key, double v)
   {
     this->SetDebugCascades(v != 0);
   }
+  else if (k == "resolve" && integral(0, 2))
+  {
+    this->SetResolve(static_cast<int>(v));
+  }
+  else if (k == "tap_texel_px" && in(0, 1e6))
+  {
+    this->SetTapTexelPixels(v);
+  }
   else
   {
     return this->Superclass::SetOption(key, v);
@@ -921,7 +941,9 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
   out.precision(6);
   out << "\"resolution\": " << this->UsedResolution
       << ", \"maps_rendered_total\": " << this->TotalMapsRendered
-      << ", \"maps_reused_last_frame\": " << this->NumberOfMapsReused << ", \"lights\": [";
+      << ", \"maps_reused_last_frame\": " << this->NumberOfMapsReused << ", \"resolve\": \""
+      << (this->UsedScreenResolve ? "screen" : "forward")
+      << "\", \"overdraw\": " << this->Impl->Overdraw << ", \"lights\": [";
   const int lights = renderer ? renderer->GetLights()->GetNumberOfItems() : 0;
   for (int l = 0; l < lights; ++l)
   {

@@ -146,6 +146,43 @@ public:
   vtkSetClampMacro(FadeFraction, double, 0.0, 1.0);
   vtkGetMacro(FadeFraction, double);
 
+  enum Resolves
+  {
+    FORWARD = 0,
+    SCREEN = 1,
+    CHOOSE = 2
+  };
+
+  /**
+   * Where the lookups run. FORWARD: in every mapper's fragment shader, for
+   * every fragment rasterized (hidden ones included). SCREEN: once per
+   * visible pixel after a depth pre-pass (vtkShadowScreenMask): one
+   * full-screen draw reconstructs each pixel's position and normal from the
+   * depth, looks up every light and writes its visibility to the mask; the
+   * mappers read one texel per light. CHOOSE: SCREEN unless the depth
+   * buffer is too coarse for the bias at the far end of the view,
+   * DebugCascades is on, or forward measures cheaper: now and then (every
+   * 64 frames) a screen frame counts, with queries, the fragment-shader
+   * invocations (what forward lookups run for) per covered pixel (what the
+   * resolve runs for); the costs measured on llvmpipe turn that and the
+   * number of casting lights into the choice. Default FORWARD: the normals
+   * the resolve reconstructs from the depth are wrong on geometry a few
+   * pixels wide (glyphs, tubes), which costs wrong pixels there
+   * (docs/cascaded-shadow-maps.md).
+   */
+  vtkSetClampMacro(Resolve, int, FORWARD, CHOOSE);
+  vtkGetMacro(Resolve, int);
+  /** Whether the last frame used the screen-space resolve. */
+  vtkGetMacro(UsedScreenResolve, bool);
+
+  /**
+   * PCF and Poisson filters take their taps only where one shadow texel
+   * covers at most this many pixels (default 4); where texels are larger
+   * the hardware 2x2 comparison alone ramps across the edge.
+   */
+  vtkSetClampMacro(TapTexelPixels, double, 0.0, 1e6);
+  vtkGetMacro(TapTexelPixels, double);
+
   /**
    * Tint each cascade with its own colour (debug view).
    */
@@ -176,7 +213,8 @@ public:
    * (0 uniform, 1 log, 2 practical, 3 explicit), lambda, split_fraction_<i>,
    * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
    * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
-   * fade, debug_cascades, and the base's cast_headlight.
+   * fade, debug_cascades, resolve (0 forward, 1 screen, 2 choose),
+   * tap_texel_px, and the base's cast_headlight.
    */
   bool SetOption(const char* key, double value) override;
 
@@ -231,6 +269,9 @@ protected:
   double MaxShadowDistance;
   double FadeFraction;
   bool DebugCascades;
+  int Resolve;
+  double TapTexelPixels;
+  bool UsedScreenResolve;
   int UsedResolution;
   int NumberOfMapsRendered;
   int NumberOfMapsReused;
@@ -258,6 +299,13 @@ private:
     int resolution);
   void DrawCasters(vtkShaderProgram* program, const Frame& frame, const vsh_csm_tile& tile);
   void ReleaseRemovedCasters(vtkOpenGLRenderWindow* window, const Frame& frame);
+  // The screen-space resolve (vtkCascadedShadowMapResolve.cxx).
+  bool ChooseScreenResolve(const Frame& frame) const;
+  bool DepthPreciseEnough(const Frame& frame) const;
+  void UpdateResolveSources();
+  void RenderScreenResolved(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  bool ResolveScreen(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  void SetLookupUniforms(vtkShaderProgram* program);
 };
 
 #endif

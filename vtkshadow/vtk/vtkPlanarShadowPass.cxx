@@ -126,6 +126,13 @@ struct vtkPlanarShadowPass::Internals
   int MaskSize[2] = { 0, 0 };
   int MaskChannels = 4; // 32-bit channels: 1 up to 32 pairs, else 4
   int MaskOrigin[2] = { 0, 0 };
+  // Where the mask may hold bits: the pixel box written by the last frame
+  // (everything after an allocation, whose content is undefined). Only that
+  // box is cleared: on a software rasterizer a full-screen clear of the
+  // mask costs about as much as a shadow pair's fill.
+  int DirtyBox[4] = { 0, 0, 0, 0 };
+  bool DirtyAll = true;
+  vsh_planar_rect Written; // this frame's writes, in NDC
 
   // Per-frame values for SetShaderParameters.
   std::map<vtkProp*, int> ReceiverIndex;
@@ -479,6 +486,7 @@ void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const Fram
     impl.MaskSize[0] = size[0];
     impl.MaskSize[1] = size[1];
     impl.MaskChannels = maskChannels;
+    impl.DirtyAll = true;
   }
 }
 
@@ -529,10 +537,9 @@ void vtkPlanarShadowPass::DrawMask(
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDisable(GL_BLEND);
     state->vtkglDisable(GL_CULL_FACE);
-    state->vtkglDisable(GL_SCISSOR_TEST);
     state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    const GLuint zero[4] = { 0, 0, 0, 0 };
-    glClearBufferuiv(GL_COLOR, 0, zero);
+    this->ClearWritten(state);
+    vsh_planar_rect_init(&impl.Written);
 
     vtkShaderProgram* program = nullptr;
     if (!frame.Receivers.empty() && impl.LightCount > 0)
@@ -555,10 +562,37 @@ void vtkPlanarShadowPass::DrawMask(
       glDisable(GL_CLIP_DISTANCE1);
       glDisable(GL_COLOR_LOGIC_OP);
     }
+    impl.DirtyAll = false;
+    if (!vsh_planar_rect_pixels(&impl.Written, frame.Size, impl.DirtyBox))
+    {
+      std::fill_n(impl.DirtyBox, 4, 0);
+    }
   }
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);
   impl.FBO->RemoveColorAttachment(0);
   state->PopFramebufferBindings();
+}
+
+//------------------------------------------------------------------------------
+// Zero the mask where the last frame wrote bits (all of it after an
+// allocation); the rest is still zero.
+void vtkPlanarShadowPass::ClearWritten(vtkOpenGLState* state)
+{
+  Internals& impl = *this->Impl;
+  const GLuint zero[4] = { 0, 0, 0, 0 };
+  if (impl.DirtyAll)
+  {
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    glClearBufferuiv(GL_COLOR, 0, zero);
+  }
+  else if (impl.DirtyBox[2] > impl.DirtyBox[0] && impl.DirtyBox[3] > impl.DirtyBox[1])
+  {
+    const int* b = impl.DirtyBox;
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    state->vtkglScissor(b[0], b[1], b[2] - b[0], b[3] - b[1]);
+    glClearBufferuiv(GL_COLOR, 0, zero);
+  }
+  state->vtkglDisable(GL_SCISSOR_TEST);
 }
 
 //------------------------------------------------------------------------------
@@ -675,6 +709,7 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
   program->SetUniform4f("receiverSideMC", keep0F);
   program->SetUniform4f("belowLightMC", keep1F);
   geometry.Draw(program);
+  vsh_planar_rect_add_bounds(&this->Impl->Written, shadowDC, b, frame.Eye);
   this->NumberOfMaskTriangles += geometry.GetNumberOfTriangles();
 }
 
@@ -690,6 +725,13 @@ void vtkPlanarShadowPass::FillFans(vtkShaderProgram* program, vtkOpenGLState* st
   if (!vsh_planar_rect_pixels(&fanRect, frame.Size, box))
   {
     return;
+  }
+  vsh_planar_rect& written = this->Impl->Written;
+  written.full |= fanRect.full;
+  for (int k = 0; k < 2; ++k)
+  {
+    written.ndc[k] = std::min(written.ndc[k], fanRect.ndc[k]);
+    written.ndc[2 + k] = std::max(written.ndc[2 + k], fanRect.ndc[2 + k]);
   }
   // Through vtkOpenGLState: VTK caches this state, and a stale cache would
   // leave our scissor box on its own renders.

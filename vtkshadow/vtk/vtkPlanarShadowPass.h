@@ -193,6 +193,7 @@ private:
   void FillFans(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
     const std::vector<Fan>& fans, const vsh_planar_rect& fanRect, const unsigned int bits[4]);
   void DrawViewportQuad(vtkShaderProgram* program);
+  void ClearWritten(vtkOpenGLState* state);
 };
 
 #endif

@@ -18,6 +18,9 @@ uniform vec2 vshTileBias[24];        // depth bias, normal offset: 0..1 depth an
                                      // units (orthographic); per unit distance (perspective)
 uniform vec2 vshTileDepth[24];       // perspective: ndc z = -x + y / distance
 uniform float vshTileFar[24];        // far depth of each cascade (kind 1)
+uniform float vshTileTexel[24];      // world size of a texel (at distance 1: perspective)
+uniform vec4 vshShadowToLightVC[8];  // (direction to the light, 0) or (position VC, 1)
+uniform vec2 vshPixelSize;           // world size of a pixel: x + y * view depth
 uniform mat3 vshViewToWorld;         // view -> world rotation (cube face choice)
 uniform float vshPoissonRadius;
 uniform float vshBlendBand;
@@ -36,6 +39,16 @@ const vec2 vshPoissonDisc[16] = vec2[](
   vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
   vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590),
   vec2(0.19984126, 0.78641367), vec2(0.14383161, -0.14100790));
+
+// Whether the surface at posVC with normal normalVC faces light `l` by
+// more than `margin` (cosine). The mapper's diffuse and specular terms of a
+// light the surface faces away from are 0, so no lookup is needed there.
+bool vshShadowFacing(int l, vec3 posVC, vec3 normalVC, float margin)
+{
+  vec4 light = vshShadowToLightVC[l];
+  vec3 toLight = light.xyz - posVC * light.w;
+  return dot(normalVC, toLight) > margin * length(toLight);
+}
 
 // Fraction of the light reaching the fragment according to map `tile`
 // (perspective: a spot or point-light map, whose texels grow with distance).
@@ -76,7 +89,18 @@ float vshShadowSample(int tile, vec3 posVC, vec3 normalVC, bool perspective)
   }
 #if VSH_FILTER == 0
   return texture(vshShadowAtlas, vec3(clamp(uv, lo, hi), ref));
-#elif VSH_FILTER == 1
+#else
+  // Filter taps by the texel footprint: where one texel covers more than
+  // VSH_TAP_TEXEL_PX pixels the hardware 2x2 comparison already ramps
+  // smoothly across the edge, and taps only widen it.
+  float texelWorld = vshTileTexel[tile] * reach;
+  float pixelWorld = vshPixelSize.x + vshPixelSize.y * (-posVC.z);
+  if (texelWorld > VSH_TAP_TEXEL_PX * pixelWorld)
+  {
+    return texture(vshShadowAtlas, vec3(clamp(uv, lo, hi), ref));
+  }
+#endif
+#if VSH_FILTER == 1
   float sum = 0.0;
   for (int i = -VSH_PCF_HALF; i <= VSH_PCF_HALF; ++i)
   {
@@ -87,7 +111,7 @@ float vshShadowSample(int tile, vec3 posVC, vec3 normalVC, bool perspective)
     }
   }
   return sum / float((2 * VSH_PCF_HALF + 1) * (2 * VSH_PCF_HALF + 1));
-#else
+#elif VSH_FILTER == 2
   float sum = 0.0;
   for (int k = 0; k < 16; ++k)
   {

@@ -1,0 +1,112 @@
+// vtkCascadedShadowMapPassInternals.h - the state vtkCascadedShadowMapPass
+// shares between its two source files: the pass itself
+// (vtkCascadedShadowMapPass.cxx: plan, bake, forward lookups) and the
+// screen-space resolve (vtkCascadedShadowMapResolve.cxx).
+#ifndef vtkCascadedShadowMapPassInternals_h
+#define vtkCascadedShadowMapPassInternals_h
+
+#include "vtkCascadedShadowMapPass.h"
+#include "vtkShadowCasterGeometry.h"
+#include "vtkShadowScreenMask.h"
+#include "vtkSmartPointer.h"
+
+#include "vsh_csm.h"
+#include "vsh_csm_plan.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkActor;
+class vtkMultiProcessController;
+class vtkOpenGLFramebufferObject;
+class vtkTextureObject;
+
+namespace vtkshadow
+{
+// Row-major double -> column-major float (GL's order).
+inline void ToFloatTransposed(const double m[16], float out[16])
+{
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      out[c * 4 + r] = static_cast<float>(m[r * 4 + c]);
+    }
+  }
+}
+
+/**
+ * GLSL statements that set `target(I)` ("%d" stands for I) to the shadow
+ * factor of lights first..first+count-1 of `plan` (mapper numbering), from
+ * posVC, normalVC, depth and fade in scope. Lights the surface faces away
+ * from get `away` without a lookup: the forward path passes "1.0" (the
+ * mapper's terms are 0 there, so nothing changes), the screen resolve "0.0"
+ * (its normal comes from the depth, and a surface facing away from a light
+ * is not lit by it).
+ */
+std::string CascadedLookupCode(const vsh_csm_tile_plan& plan, int first, int count,
+  const std::string& target, float margin, const std::string& away);
+}
+
+// One frame's inputs, gathered from VTK: the plain scene the core plans
+// from, and what the bake needs (the caster actors).
+struct vtkCascadedShadowMapPass::Frame
+{
+  std::vector<vtkActor*> Casters;
+  vtkMTimeType CasterTime = 0;       // changes when a caster moves, changes or leaves
+  std::vector<vsh_csm_light> Lights; // switched on, in the mappers' numbering
+  vsh_csm_scene Scene{};             // its `lights` point into Lights
+  vsh_csm_settings Settings{};
+  double ViewRotation[16]; // world -> view, rotation only
+};
+
+struct vtkCascadedShadowMapPass::Internals
+{
+  double SplitFractions[VSH_CSM_MAX_CASCADES] = { 0 };
+  std::map<vtkActor*, std::unique_ptr<vtkShadowCasterGeometry>> Casters;
+  vtkTextureObject* Atlas = nullptr;
+  vtkOpenGLFramebufferObject* FBO = nullptr;
+  int AtlasSize[2] = { 0, 0 };
+  int TileGrid[2] = { 1, 1 };
+  int RenderedResolution = 0; // texels per tile edge of the held maps
+  // This frame's maps and, per light in the mappers' numbering, their kind
+  // and range of tiles (the shader's uniforms).
+  vsh_csm_plan Plan{};
+  // What each atlas tile holds: the view it was rendered with (relative to
+  // the camera position then), so a later frame can reuse it.
+  std::vector<vsh_csm_held_map> Rendered;
+  float LightVC[VSH_CSM_MAX_LIGHTS][3] = { { 0 } };
+  // Per light (direction to the light, 0) or (position, 1), view coordinates.
+  float ToLightVC[VSH_CSM_MAX_LIGHTS][4] = { { 0 } };
+  float ViewToWorld[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  float PixelSize[2] = { 0, 0 }; // world size of a pixel: [0] + [1] * view depth
+  float FadeStart = 0.0f;
+  float MaxDistance = 0.0f;
+  std::string ShaderSignature; // kinds, filter: what the generated code depends on
+  // The screen-space resolve: the mask, whether this frame uses it, the
+  // resolve shader per mask texture (lights 0-3, 4-7), and whether the
+  // depth pre-pass is running (the mask's textures are not bound then).
+  std::unique_ptr<vtkShadowScreenMask> Mask;
+  bool Screen = false;
+  bool PrePass = false;
+  bool ScreenFailed = false;
+  std::string ResolveSource[2];
+  // The CHOOSE rule's measurement: fragment-shader invocations of the
+  // pre-pass (what forward lookups would run for: the main pass rasterizes
+  // the same triangles) per covered pixel (what the resolve runs for), from
+  // queries on a screen frame; -1 before the first. Re-measured every 64
+  // frames.
+  unsigned int Queries[2] = { 0, 0 };
+  unsigned int FragmentQuery = 0; // the GL query target that counts fragments
+  double Overdraw = -1.0;
+  int FramesSinceMeasure = 0;
+  bool Measuring = false;
+  // Ranks sharing the image (vtkShadowRankReduction): bounds and maps
+  // reduced over them.
+  vtkSmartPointer<vtkMultiProcessController> Controller;
+  std::vector<float> ReduceScratch;
+};
+
+#endif
