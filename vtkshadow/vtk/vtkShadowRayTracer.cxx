@@ -41,6 +41,7 @@ struct Worker
   double Tolerance(int x, int y) const;
   void Refine(int begin, int end);
   void Land(int k);
+  void Exact(int k, double n[3], double& len2, double& side);
   void Queue(const Surface& s, int surface);
   void Occlude();
 };
@@ -142,6 +143,7 @@ void Worker::Land(int k)
       len2 += n[r] * n[r];
       side += n[r] * dir[r];
     }
+    this->Exact(k, n, len2, side);
     const double scale = len2 > 0 ? (side > 0 ? -1.0 : 1.0) / std::sqrt(len2) : 0.0;
     for (int r = 0; r < 3; ++r)
     {
@@ -167,6 +169,56 @@ void Worker::Land(int k)
       std::sqrt(s.Point[0] * s.Point[0] + s.Point[1] * s.Point[1] + s.Point[2] * s.Point[2]));
 }
 
+// Replaces surface k's point (Embree's float hit) by the pixel ray's
+// intersection with the hit triangle's plane, both in double, and n by that
+// plane's normal: at a grazing angle the float ray's rounding moves the hit
+// along the surface by the rounding over the angle's sine (thousands of
+// units on near-far-1e6's far floor).
+void Worker::Exact(int k, double n[3], double& len2, double& side)
+{
+  const RTCRayHit& rh = this->Hits[k];
+  const vsh_rt_pixel_ray& ray = this->Pixels[k];
+  double v[3][3];
+  if (!this->Scene->GetTriangle(rh.hit.instID[0], rh.hit.primID, v))
+  {
+    return;
+  }
+  double e1[3], e2[3], m[3], o[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    e1[r] = v[1][r] - v[0][r];
+    e2[r] = v[2][r] - v[0][r];
+    o[r] = ray.origin[r] + EyeToCentre[r];
+  }
+  m[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  m[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  m[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  double denom = 0, num = 0, m2 = 0;
+  for (int r = 0; r < 3; ++r)
+  {
+    denom += m[r] * ray.direction[r];
+    num += m[r] * (v[0][r] - o[r]);
+    m2 += m[r] * m[r];
+  }
+  if (!(m2 > 0) || denom == 0)
+  {
+    return;
+  }
+  const double t = num / denom;
+  const double slack = 0.5 * (ray.hi - ray.lo) + 1e-6 * std::fabs(ray.distance);
+  if (!std::isfinite(t) || t < ray.lo - slack || t > ray.hi + slack)
+  {
+    return; // keep Embree's hit
+  }
+  len2 = m2;
+  side = denom;
+  for (int r = 0; r < 3; ++r)
+  {
+    this->Surfaces[k].Point[r] = o[r] + t * ray.direction[r];
+    n[r] = m[r];
+  }
+}
+
 // The shadow rays of one surface point towards every light it can see.
 void Worker::Queue(const Surface& s, int surface)
 {
@@ -176,10 +228,10 @@ void Worker::Queue(const Surface& s, int surface)
   {
     p[r] = s.Point[r] - EyeToCentre[r]; // camera-relative, for the lights
   }
-  const double rotation = f.Samples > 1
-    ? vsh_rt_pixel_rotation(static_cast<unsigned>(s.Pixel % f.View.width),
-        static_cast<unsigned>(s.Pixel / f.View.width))
-    : 0.0;
+  // One turn of the sample spiral per pixel (the same for every light):
+  // neighbouring pixels see other points of the light, noise not bands.
+  const double rotation = vsh_rt_pixel_rotation(
+    static_cast<unsigned>(s.Pixel % f.View.width), static_cast<unsigned>(s.Pixel / f.View.width));
   for (size_t l = 0; l < f.Lights.size(); ++l)
   {
     const vsh_rt_light& light = f.Lights[l];
@@ -188,21 +240,30 @@ void Worker::Queue(const Surface& s, int surface)
     {
       continue;
     }
+    // A facet whose geometric normal faces away from the light is still
+    // traced: the mapper shades it with interpolated normals, which near a
+    // curved surface's terminator still face the light, so VTK lights it
+    // where a ray from the facet meets the mesh itself (as POV-Ray's does on
+    // the same mesh) or another caster (a floor between it and the light).
+    // The origin stays on the camera's side of the facet; the ray crosses
+    // the facet or the mesh behind it, so a surface that truly faces away
+    // gets 0 and its lighting is 0 anyway. Skipping is exact only where the
+    // mapper's lighting is zero: outside a spot cone (below).
     if (s.HasNormal &&
       s.Normal[0] * toLight[0] + s.Normal[1] * toLight[1] + s.Normal[2] * toLight[2] <= 0)
     {
-      ++this->Count.FacingAway; // no light reaches it: the lighting is 0 there anyway
-      continue;
+      ++this->Count.FacingAway;
     }
     if (!vsh_rt_light_in_cone(&light, toLight))
     {
       ++this->Count.OutsideCone;
       continue;
     }
-    for (int k = 0; k < f.Samples; ++k)
+    const int samples = f.Samples[l];
+    for (int k = 0; k < samples; ++k)
     {
       double dir[3];
-      if (vsh_rt_light_sample(&light, p, k, f.Samples, rotation, dir, &distance) != VSH_RT_OK)
+      if (vsh_rt_light_sample(&light, p, k, samples, rotation, dir, &distance) != VSH_RT_OK)
       {
         continue;
       }
@@ -238,14 +299,15 @@ void Worker::Occlude()
   rtcOccluded1M(this->Scene->GetCasters(), &context, this->Rays.data(),
     static_cast<unsigned int>(this->Rays.size()), sizeof(RTCRay));
   this->Count.ShadowRays += static_cast<long long>(this->Rays.size());
-  const float weight = 1.0f / static_cast<float>(this->Frame->Samples);
   for (size_t r = 0; r < this->Rays.size(); ++r)
   {
     // rtcOccluded sets tfar to -inf for a ray that hit something.
     if (this->Rays[r].tfar < 0.0f)
     {
+      const int light = this->RayLight[r];
+      const float weight = 1.0f / static_cast<float>(this->Frame->Samples[light]);
       const int pixel = this->Surfaces[this->RaySurface[r]].Pixel;
-      float& v = (*this->Out)[this->RayLight[r]][pixel];
+      float& v = (*this->Out)[light][pixel];
       v = std::max(0.0f, v - weight);
     }
   }
