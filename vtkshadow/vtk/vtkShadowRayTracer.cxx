@@ -31,6 +31,7 @@ struct Worker
   std::vector<std::vector<float>>* Out;
   double EyeToCentre[3]; // eye - centre: camera-relative -> the top levels' frame
   std::vector<RTCRayHit> Hits;
+  std::vector<float> Limits; // the refinement rays' intervals
   std::vector<vsh_rt_pixel_ray> Pixels;
   std::vector<Surface> Surfaces;
   std::vector<RTCRay> Rays;
@@ -41,7 +42,8 @@ struct Worker
   double Tolerance(int x, int y) const;
   void Refine(int begin, int end);
   void Land(int k);
-  void Exact(int k, double n[3], double& len2, double& side);
+  bool Exact(int k, double n[3], double& len2, double& side);
+  void Miss(int k);
   void Queue(const Surface& s, int surface);
   void Occlude();
 };
@@ -73,6 +75,7 @@ void Worker::Refine(int begin, int end)
   this->Hits.clear();
   this->Pixels.clear();
   this->Surfaces.clear();
+  this->Limits.clear();
   const int width = f.View.width;
   for (int p = begin; p < end; ++p)
   {
@@ -95,8 +98,13 @@ void Worker::Refine(int begin, int end)
     rh.ray.dir_z = static_cast<float>(ray.direction[2]);
     rh.ray.tnear = 0.0f;
     // The interval, widened by float rounding of the origin.
-    rh.ray.tfar = static_cast<float>((ray.hi - ray.lo) + 1e-5 * (ray.hi - ray.lo) +
-      4 * VSH_RT_OFFSET_RELATIVE * std::fabs(ray.distance));
+    // Unbounded: at a grazing angle far away the float ray can pass the
+    // interval and meet the right triangle further on; Land keeps a hit
+    // beyond the interval only where the double landing on its plane falls
+    // inside it.
+    this->Limits.push_back(static_cast<float>((ray.hi - ray.lo) + 1e-5 * (ray.hi - ray.lo) +
+      4 * VSH_RT_OFFSET_RELATIVE * std::fabs(ray.distance)));
+    rh.ray.tfar = std::numeric_limits<float>::infinity();
     rh.ray.mask = 0xffffffffu;
     rh.ray.time = 0.0f;
     rh.ray.id = 0;
@@ -130,6 +138,7 @@ void Worker::Land(int k)
   const double dir[3] = { rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z };
   if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID && rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID)
   {
+    const bool inside = rh.ray.tfar <= this->Limits[k];
     const double org[3] = { rh.ray.org_x, rh.ray.org_y, rh.ray.org_z };
     const double t = rh.ray.tfar;
     const vtkShadowEmbreeScene::Instance& inst = this->Scene->GetInstance(rh.hit.instID[0]);
@@ -143,7 +152,11 @@ void Worker::Land(int k)
       len2 += n[r] * n[r];
       side += n[r] * dir[r];
     }
-    this->Exact(k, n, len2, side);
+    if (!this->Exact(k, n, len2, side) && !inside)
+    {
+      this->Miss(k);
+      return;
+    }
     const double scale = len2 > 0 ? (side > 0 ? -1.0 : 1.0) / std::sqrt(len2) : 0.0;
     for (int r = 0; r < 3; ++r)
     {
@@ -156,6 +169,16 @@ void Worker::Land(int k)
     s.Offset = vsh_rt_offset_distance(magnitude);
     return;
   }
+  this->Miss(k);
+}
+
+// No triangle at the pixel: the depth point pulled towards the camera by
+// the depth error, no facing test.
+void Worker::Miss(int k)
+{
+  const vsh_rt_pixel_ray& ray = this->Pixels[k];
+  Surface& s = this->Surfaces[k];
+  const double dir[3] = { ray.direction[0], ray.direction[1], ray.direction[2] };
   ++this->Count.RefineMisses;
   const double back = ray.distance - ray.lo;
   for (int r = 0; r < 3; ++r)
@@ -174,14 +197,14 @@ void Worker::Land(int k)
 // plane's normal: at a grazing angle the float ray's rounding moves the hit
 // along the surface by the rounding over the angle's sine (thousands of
 // units on near-far-1e6's far floor).
-void Worker::Exact(int k, double n[3], double& len2, double& side)
+bool Worker::Exact(int k, double n[3], double& len2, double& side)
 {
   const RTCRayHit& rh = this->Hits[k];
   const vsh_rt_pixel_ray& ray = this->Pixels[k];
   double v[3][3];
   if (!this->Scene->GetTriangle(rh.hit.instID[0], rh.hit.primID, v))
   {
-    return;
+    return false;
   }
   double e1[3], e2[3], m[3], o[3];
   for (int r = 0; r < 3; ++r)
@@ -202,13 +225,13 @@ void Worker::Exact(int k, double n[3], double& len2, double& side)
   }
   if (!(m2 > 0) || denom == 0)
   {
-    return;
+    return false;
   }
   const double t = num / denom;
   const double slack = 0.5 * (ray.hi - ray.lo) + 1e-6 * std::fabs(ray.distance);
   if (!std::isfinite(t) || t < ray.lo - slack || t > ray.hi + slack)
   {
-    return; // keep Embree's hit
+    return false; // keep Embree's hit
   }
   len2 = m2;
   side = denom;
@@ -217,6 +240,7 @@ void Worker::Exact(int k, double n[3], double& len2, double& side)
     this->Surfaces[k].Point[r] = o[r] + t * ray.direction[r];
     n[r] = m[r];
   }
+  return true;
 }
 
 // The shadow rays of one surface point towards every light it can see.
