@@ -72,4 +72,4 @@ set_tests_properties(render.raytrace.caching PROPERTIES LABELS "render" TIMEOUT 
 add_test(NAME render.raytrace.soft
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_raytrace_soft.py
           --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/raytrace-soft)
-set_tests_properties(render.raytrace.soft PROPERTIES LABELS "render" TIMEOUT 600)
+set_tests_properties(render.raytrace.soft PROPERTIES LABELS "render" TIMEOUT 1200)

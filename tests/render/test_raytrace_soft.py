@@ -51,7 +51,7 @@ def measure(args, scene, name, check):
         json.dump(scene, f)
     out = os.path.join(args.out, name)
     run([os.path.join(args.bin, "vtkshadow-compare"), path, "--out", out, "--renderers", "vtk",
-         "--techniques", "raytrace", "--scale", "0.5", "--no-report"])
+         "--techniques", "raytrace", "--scale", "0.25", "--no-report"])
     stem = os.path.join(out, name, "vtk", "raytrace")
     for k in range(len(scene["lights"])):
         r = run([os.path.join(args.bin, "exact_penumbra"), path, str(k),
