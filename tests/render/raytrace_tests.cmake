@@ -65,3 +65,11 @@ add_test(NAME render.raytrace.caching
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_raytrace.py
           --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/raytrace --case caching)
 set_tests_properties(render.raytrace.caching PROPERTIES LABELS "render" TIMEOUT 120)
+
+# Lights with a size (issue 15): 16 rays per pixel towards the light's disk
+# (or the sun's cone) against the exact penumbra of a sphere over a plane
+# (exact_penumbra): pen_mae <= 0.02 per light; size 0 is the hard shadow.
+add_test(NAME render.raytrace.soft
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_raytrace_soft.py
+          --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/raytrace-soft)
+set_tests_properties(render.raytrace.soft PROPERTIES LABELS "render" TIMEOUT 1200)

@@ -51,6 +51,7 @@ struct vtkRayTracedShadowPass::FrameState
   int LightCount = 0;               // switched-on lights (mapper numbering), <= MaxLights
   std::vector<vsh_rt_light> Lights; // the lights that cast, camera-relative
   std::vector<int> Channels;        // their mask channels
+  std::vector<int> Samples;         // their rays per pixel (1 for a light without a size)
   std::vector<vtkShadowEmbreeScene::Actor> Actors;
   double Eye[3] = { 0, 0, 0 };
   double View[16];
@@ -60,7 +61,7 @@ struct vtkRayTracedShadowPass::FrameState
 
 //------------------------------------------------------------------------------
 vtkRayTracedShadowPass::vtkRayTracedShadowPass()
-  : Samples(1)
+  : Samples(16)
   , LightRadius(0.0)
   , LightAngle(0.0)
   , NumberOfThreads(0)
@@ -164,10 +165,19 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
     {
       continue;
     }
+    // The light's own size (the scene's radius / angle), else the pass's.
+    const double radius = vtkShadowPassBase::GetLightRadius(light) > 0
+      ? vtkShadowPassBase::GetLightRadius(light)
+      : this->LightRadius;
+    const double angle = vtkShadowPassBase::GetLightAngle(light) > 0
+      ? vtkShadowPassBase::GetLightAngle(light)
+      : this->LightAngle;
+    key.insert(key.end(), { radius, angle });
     vsh_rt_light rt;
-    vsh_rt_light_init(
-      h, focal, light->GetConeAngle(), this->LightRadius, this->LightAngle * toRadians, &rt);
+    vsh_rt_light_init(h, focal, light->GetConeAngle(), radius, angle * toRadians, &rt);
+    const bool sized = rt.kind == VSH_RT_DIRECTIONAL ? rt.angle > 0 : rt.radius > 0;
     frame.Lights.push_back(rt);
+    frame.Samples.push_back(sized ? this->Samples : 1);
     frame.Channels.push_back(i);
   }
   for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(s))
@@ -212,7 +222,7 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
   }
   std::copy_n(frame.Eye, 3, rays.Eye);
   rays.Lights = frame.Lights;
-  rays.Samples = this->Samples;
+  rays.Samples = frame.Samples;
   int threads = this->NumberOfThreads;
   if (threads <= 0)
   {
@@ -335,7 +345,7 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"pixels\": " << c.Pixels
       << ", \"skipped_still_frame_px\": " << (impl.Still ? c.Pixels : 0)
       << ", \"skipped_background_px\": " << c.Background
-      << ", \"skipped_facing_away\": " << c.FacingAway
+      << ", \"traced_facing_away\": " << c.FacingAway
       << ", \"skipped_outside_cone\": " << c.OutsideCone
       << ", \"refine_misses_px\": " << c.RefineMisses << ", \"trace_ms\": " << 1e3 * c.Seconds
       << ", \"rays_per_second\": " << (c.Seconds > 0 ? rays / c.Seconds : 0.0)

@@ -44,14 +44,18 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Rays per pixel and light (1..1024, default 1: hard shadows).
+   * Rays per pixel for a light with a size (1..1024, default 16): towards
+   * stratified points on the light, turned per pixel. A light without a size
+   * always gets one ray (hard shadows).
    */
   vtkSetClampMacro(Samples, int, 1, 1024);
   vtkGetMacro(Samples, int);
 
   /**
-   * The light's size for samples > 1: radius (world units) of point and spot
-   * lights, angular diameter (degrees) of directional lights. Default 0.
+   * A size for lights that have none of their own (a scene light's `radius`
+   * / `angle`, vtkShadowPassBase::GetLightRadius / GetLightAngle, wins):
+   * radius (world units) of point and spot lights, angular diameter
+   * (degrees) of directional lights. Default 0.
    */
   vtkSetClampMacro(LightRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(LightRadius, double);

@@ -48,6 +48,8 @@ struct vtkShadowEmbreeScene::Mesh
   double Shift[3] = { 0, 0, 0 };
   double Radius = 0; // in data units, about Shift
   long long Triangles = 0;
+  std::vector<float> Vertices; // kept for the tracer's double-precision landing
+  std::vector<unsigned int> Indices;
   int Version = 0;
   bool Seen = false;
 
@@ -141,6 +143,8 @@ vtkShadowEmbreeScene::Mesh* vtkShadowEmbreeScene::UpdateMesh(vtkActor* actor)
   }
   rtcCommitScene(mesh.Scene);
   std::copy_n(triangles.Shift, 3, mesh.Shift);
+  mesh.Vertices = triangles.Vertices;
+  mesh.Indices.assign(triangles.Indices.begin(), triangles.Indices.end());
   double r2 = 0;
   for (size_t i = 0; i < vertexCount; ++i)
   {
@@ -152,6 +156,31 @@ vtkShadowEmbreeScene::Mesh* vtkShadowEmbreeScene::UpdateMesh(vtkActor* actor)
   ++this->MeshBuilds;
   this->MeshBuildSeconds += SecondsSince(start);
   return mesh.Triangles > 0 ? &mesh : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowEmbreeScene::GetTriangle(
+  unsigned int id, unsigned int primitive, double v[3][3]) const
+{
+  if (id >= this->Instances.size())
+  {
+    return false;
+  }
+  const Instance& inst = this->Instances[id];
+  if (3 * size_t(primitive) + 2 >= inst.Indices->size())
+  {
+    return false;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    const float* p = &(*inst.Vertices)[3 * size_t((*inst.Indices)[3 * size_t(primitive) + k])];
+    for (int r = 0; r < 3; ++r)
+    {
+      const double* m = &inst.Transform[4 * r];
+      v[k][r] = m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + m[3];
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -235,6 +264,21 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors)
       xfm[4 * r + 3] = static_cast<float>(t);
     }
     Instance instance;
+    for (int r = 0; r < 3; ++r)
+    {
+      // The same placement in double, unrounded: the tracer computes the
+      // surface point on it (a far floor seen at a grazing angle moves by
+      // thousands of units for the float rounding of its translation).
+      double t = m[4 * r + 3] - this->Centre[r];
+      for (int c = 0; c < 3; ++c)
+      {
+        t += m[4 * r + c] * mesh.Shift[c];
+        instance.Transform[4 * r + c] = m[4 * r + c];
+      }
+      instance.Transform[4 * r + 3] = t;
+    }
+    instance.Vertices = &mesh.Vertices;
+    instance.Indices = &mesh.Indices;
     Cofactors(m, instance.Normal);
     double scale = 0;
     for (int c = 0; c < 3; ++c)

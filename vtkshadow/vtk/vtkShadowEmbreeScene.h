@@ -39,9 +39,20 @@ public:
   // Per instance of the "visible" top level (its instance id).
   struct Instance
   {
-    double Normal[9]; // inverse transpose of the instance's 3x3: object -> world normals
-    double Radius;    // the mesh's radius in world units (for the offset rule)
+    double Normal[9];     // inverse transpose of the instance's 3x3: object -> world normals
+    double Radius;        // the mesh's radius in world units (for the offset rule)
+    double Transform[12]; // stored positions -> relative to the centre, in double (row major 3x4)
+    const std::vector<float>* Vertices;       // the mesh's stored positions (x, y, z)
+    const std::vector<unsigned int>* Indices; // three per triangle (Embree's primID)
   };
+
+  /**
+   * Triangle `primitive` of instance `id` relative to the centre, in double
+   * (the float positions Embree holds, placed by the double matrix): what a
+   * pixel's surface point is computed on, so a grazing far surface keeps
+   * the precision the float ray would lose. False for a bad id.
+   */
+  bool GetTriangle(unsigned int id, unsigned int primitive, double v[3][3]) const;
 
   vtkShadowEmbreeScene();
   ~vtkShadowEmbreeScene();

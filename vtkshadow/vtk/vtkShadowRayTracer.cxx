@@ -31,6 +31,7 @@ struct Worker
   std::vector<std::vector<float>>* Out;
   double EyeToCentre[3]; // eye - centre: camera-relative -> the top levels' frame
   std::vector<RTCRayHit> Hits;
+  std::vector<float> Limits; // the refinement rays' intervals
   std::vector<vsh_rt_pixel_ray> Pixels;
   std::vector<Surface> Surfaces;
   std::vector<RTCRay> Rays;
@@ -41,6 +42,8 @@ struct Worker
   double Tolerance(int x, int y) const;
   void Refine(int begin, int end);
   void Land(int k);
+  bool Exact(int k, double n[3], double& len2, double& side);
+  void Miss(int k);
   void Queue(const Surface& s, int surface);
   void Occlude();
 };
@@ -72,6 +75,7 @@ void Worker::Refine(int begin, int end)
   this->Hits.clear();
   this->Pixels.clear();
   this->Surfaces.clear();
+  this->Limits.clear();
   const int width = f.View.width;
   for (int p = begin; p < end; ++p)
   {
@@ -94,8 +98,13 @@ void Worker::Refine(int begin, int end)
     rh.ray.dir_z = static_cast<float>(ray.direction[2]);
     rh.ray.tnear = 0.0f;
     // The interval, widened by float rounding of the origin.
-    rh.ray.tfar = static_cast<float>((ray.hi - ray.lo) + 1e-5 * (ray.hi - ray.lo) +
-      4 * VSH_RT_OFFSET_RELATIVE * std::fabs(ray.distance));
+    // Unbounded: at a grazing angle far away the float ray can pass the
+    // interval and meet the right triangle further on; Land keeps a hit
+    // beyond the interval only where the double landing on its plane falls
+    // inside it.
+    this->Limits.push_back(static_cast<float>((ray.hi - ray.lo) + 1e-5 * (ray.hi - ray.lo) +
+      4 * VSH_RT_OFFSET_RELATIVE * std::fabs(ray.distance)));
+    rh.ray.tfar = std::numeric_limits<float>::infinity();
     rh.ray.mask = 0xffffffffu;
     rh.ray.time = 0.0f;
     rh.ray.id = 0;
@@ -129,6 +138,7 @@ void Worker::Land(int k)
   const double dir[3] = { rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z };
   if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID && rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID)
   {
+    const bool inside = rh.ray.tfar <= this->Limits[k];
     const double org[3] = { rh.ray.org_x, rh.ray.org_y, rh.ray.org_z };
     const double t = rh.ray.tfar;
     const vtkShadowEmbreeScene::Instance& inst = this->Scene->GetInstance(rh.hit.instID[0]);
@@ -142,6 +152,11 @@ void Worker::Land(int k)
       len2 += n[r] * n[r];
       side += n[r] * dir[r];
     }
+    if (!this->Exact(k, n, len2, side) && !inside)
+    {
+      this->Miss(k);
+      return;
+    }
     const double scale = len2 > 0 ? (side > 0 ? -1.0 : 1.0) / std::sqrt(len2) : 0.0;
     for (int r = 0; r < 3; ++r)
     {
@@ -154,6 +169,16 @@ void Worker::Land(int k)
     s.Offset = vsh_rt_offset_distance(magnitude);
     return;
   }
+  this->Miss(k);
+}
+
+// No triangle at the pixel: the depth point pulled towards the camera by
+// the depth error, no facing test.
+void Worker::Miss(int k)
+{
+  const vsh_rt_pixel_ray& ray = this->Pixels[k];
+  Surface& s = this->Surfaces[k];
+  const double dir[3] = { ray.direction[0], ray.direction[1], ray.direction[2] };
   ++this->Count.RefineMisses;
   const double back = ray.distance - ray.lo;
   for (int r = 0; r < 3; ++r)
@@ -167,6 +192,57 @@ void Worker::Land(int k)
       std::sqrt(s.Point[0] * s.Point[0] + s.Point[1] * s.Point[1] + s.Point[2] * s.Point[2]));
 }
 
+// Replaces surface k's point (Embree's float hit) by the pixel ray's
+// intersection with the hit triangle's plane, both in double, and n by that
+// plane's normal: at a grazing angle the float ray's rounding moves the hit
+// along the surface by the rounding over the angle's sine (thousands of
+// units on near-far-1e6's far floor).
+bool Worker::Exact(int k, double n[3], double& len2, double& side)
+{
+  const RTCRayHit& rh = this->Hits[k];
+  const vsh_rt_pixel_ray& ray = this->Pixels[k];
+  double v[3][3];
+  if (!this->Scene->GetTriangle(rh.hit.instID[0], rh.hit.primID, v))
+  {
+    return false;
+  }
+  double e1[3], e2[3], m[3], o[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    e1[r] = v[1][r] - v[0][r];
+    e2[r] = v[2][r] - v[0][r];
+    o[r] = ray.origin[r] + EyeToCentre[r];
+  }
+  m[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  m[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  m[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  double denom = 0, num = 0, m2 = 0;
+  for (int r = 0; r < 3; ++r)
+  {
+    denom += m[r] * ray.direction[r];
+    num += m[r] * (v[0][r] - o[r]);
+    m2 += m[r] * m[r];
+  }
+  if (!(m2 > 0) || denom == 0)
+  {
+    return false;
+  }
+  const double t = num / denom;
+  const double slack = 0.5 * (ray.hi - ray.lo) + 1e-6 * std::fabs(ray.distance);
+  if (!std::isfinite(t) || t < ray.lo - slack || t > ray.hi + slack)
+  {
+    return false; // keep Embree's hit
+  }
+  len2 = m2;
+  side = denom;
+  for (int r = 0; r < 3; ++r)
+  {
+    this->Surfaces[k].Point[r] = o[r] + t * ray.direction[r];
+    n[r] = m[r];
+  }
+  return true;
+}
+
 // The shadow rays of one surface point towards every light it can see.
 void Worker::Queue(const Surface& s, int surface)
 {
@@ -176,10 +252,10 @@ void Worker::Queue(const Surface& s, int surface)
   {
     p[r] = s.Point[r] - EyeToCentre[r]; // camera-relative, for the lights
   }
-  const double rotation = f.Samples > 1
-    ? vsh_rt_pixel_rotation(static_cast<unsigned>(s.Pixel % f.View.width),
-        static_cast<unsigned>(s.Pixel / f.View.width))
-    : 0.0;
+  // One turn of the sample spiral per pixel (the same for every light):
+  // neighbouring pixels see other points of the light, noise not bands.
+  const double rotation = vsh_rt_pixel_rotation(
+    static_cast<unsigned>(s.Pixel % f.View.width), static_cast<unsigned>(s.Pixel / f.View.width));
   for (size_t l = 0; l < f.Lights.size(); ++l)
   {
     const vsh_rt_light& light = f.Lights[l];
@@ -188,21 +264,30 @@ void Worker::Queue(const Surface& s, int surface)
     {
       continue;
     }
+    // A facet whose geometric normal faces away from the light is still
+    // traced: the mapper shades it with interpolated normals, which near a
+    // curved surface's terminator still face the light, so VTK lights it
+    // where a ray from the facet meets the mesh itself (as POV-Ray's does on
+    // the same mesh) or another caster (a floor between it and the light).
+    // The origin stays on the camera's side of the facet; the ray crosses
+    // the facet or the mesh behind it, so a surface that truly faces away
+    // gets 0 and its lighting is 0 anyway. Skipping is exact only where the
+    // mapper's lighting is zero: outside a spot cone (below).
     if (s.HasNormal &&
       s.Normal[0] * toLight[0] + s.Normal[1] * toLight[1] + s.Normal[2] * toLight[2] <= 0)
     {
-      ++this->Count.FacingAway; // no light reaches it: the lighting is 0 there anyway
-      continue;
+      ++this->Count.FacingAway;
     }
     if (!vsh_rt_light_in_cone(&light, toLight))
     {
       ++this->Count.OutsideCone;
       continue;
     }
-    for (int k = 0; k < f.Samples; ++k)
+    const int samples = f.Samples[l];
+    for (int k = 0; k < samples; ++k)
     {
       double dir[3];
-      if (vsh_rt_light_sample(&light, p, k, f.Samples, rotation, dir, &distance) != VSH_RT_OK)
+      if (vsh_rt_light_sample(&light, p, k, samples, rotation, dir, &distance) != VSH_RT_OK)
       {
         continue;
       }
@@ -238,14 +323,15 @@ void Worker::Occlude()
   rtcOccluded1M(this->Scene->GetCasters(), &context, this->Rays.data(),
     static_cast<unsigned int>(this->Rays.size()), sizeof(RTCRay));
   this->Count.ShadowRays += static_cast<long long>(this->Rays.size());
-  const float weight = 1.0f / static_cast<float>(this->Frame->Samples);
   for (size_t r = 0; r < this->Rays.size(); ++r)
   {
     // rtcOccluded sets tfar to -inf for a ray that hit something.
     if (this->Rays[r].tfar < 0.0f)
     {
+      const int light = this->RayLight[r];
+      const float weight = 1.0f / static_cast<float>(this->Frame->Samples[light]);
       const int pixel = this->Surfaces[this->RaySurface[r]].Pixel;
-      float& v = (*this->Out)[this->RayLight[r]][pixel];
+      float& v = (*this->Out)[light][pixel];
       v = std::max(0.0f, v - weight);
     }
   }

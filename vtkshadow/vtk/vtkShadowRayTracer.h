@@ -28,7 +28,7 @@ public:
     vsh_rt_view View;             // the depth buffer's camera (camera-relative)
     double Eye[3] = { 0, 0, 0 };  // world position of the camera-relative origin
     std::vector<vsh_rt_light> Lights;
-    int Samples = 1;
+    std::vector<int> Samples; // rays per pixel for each of Lights (1 = hard)
     // The depth buffer's error around a pixel's depth: DepthTolerance plus
     // SlopeTolerance times the largest depth step to a drawn neighbour
     // (llvmpipe interpolates depth in float across whole triangles: on large,
@@ -44,7 +44,7 @@ public:
     long long Background = 0;   // nothing drawn
     long long PrimaryRays = 0;  // refinement rays
     long long RefineMisses = 0; // refinement found no triangle: the depth point is used
-    long long FacingAway = 0;   // (pixel, light) pairs: the surface faces away from the light
+    long long FacingAway = 0;   // (pixel, light) pairs traced whose facet faces away from the light
     long long OutsideCone = 0;  // (pixel, light) pairs outside a spot cone
     long long ShadowRays = 0;
     double Seconds = 0;
