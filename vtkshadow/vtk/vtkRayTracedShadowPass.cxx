@@ -61,7 +61,7 @@ struct vtkRayTracedShadowPass::FrameState
 
 //------------------------------------------------------------------------------
 vtkRayTracedShadowPass::vtkRayTracedShadowPass()
-  : Samples(16)
+  : Samples(64)
   , LightRadius(0.0)
   , LightAngle(0.0)
   , NumberOfThreads(0)
