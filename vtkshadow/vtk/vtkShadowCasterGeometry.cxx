@@ -225,6 +225,7 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
 
   std::vector<float> vertices;
   std::vector<unsigned int> indices;
+  this->Instances = 1;
   double bounds[6];
   mapper->GetBounds(bounds);
   if (!vtkMath::AreBoundsInitialized(bounds))
@@ -245,6 +246,7 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
     }
     vtkDataArray* scale = MapperArray(glyphs, vtkGlyph3DMapper::SCALE, input);
     vtkDataArray* orient = MapperArray(glyphs, vtkGlyph3DMapper::ORIENTATION, input);
+    this->Instances = input->GetNumberOfPoints();
     for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
     {
       double matrix[16];
@@ -381,6 +383,16 @@ void vtkShadowCasterGeometry::Analyse()
   // The topology holds what silhouettes need from here on.
   std::vector<float>().swap(this->Positions);
   std::vector<unsigned int>().swap(this->Triangles);
+}
+
+//------------------------------------------------------------------------------
+const vsh_mesh_topology* vtkShadowCasterGeometry::GetTopology()
+{
+  if (this->Closed < 0)
+  {
+    this->Analyse();
+  }
+  return this->Topology && this->Topology->triangles ? this->Topology.get() : nullptr;
 }
 
 //------------------------------------------------------------------------------

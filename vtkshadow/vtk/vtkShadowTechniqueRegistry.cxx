@@ -6,6 +6,7 @@
 #include "vtkNoShadowPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlanarShadowPass.h"
+#include "vtkShadowVolumePass.h"
 
 #include <cstring>
 #include <string>
@@ -39,6 +40,8 @@ const Technique Techniques[] = {
     &Make<vtkCascadedShadowMapPass> },
   { "auto", "per light the cheapest technique that meets an error target (max_error)",
     &Make<vtkAutoShadowPass> },
+  { "volume", "stencil shadow volumes: exact hard shadows on every surface, every light type",
+    &Make<vtkShadowVolumePass> },
 };
 constexpr int TechniqueCount = static_cast<int>(sizeof(Techniques) / sizeof(Techniques[0]));
 }
