@@ -39,8 +39,8 @@ public:
 
   /**
    * Depth bias of the volume faces in units of 2^-24 of the depth range
-   * (default 8), and the fraction of the depth's slope per pixel added to it
-   * (default 0.1); see glsl/vtkShadowVolumeFS.glsl.
+   * (default 2), and the fraction of the depth's slope per pixel added to it
+   * (default 0.001); see glsl/vtkShadowVolumeFS.glsl.
    */
   vtkSetMacro(DepthBias, double);
   vtkGetMacro(DepthBias, double);
@@ -82,8 +82,8 @@ protected:
   vtkShadowVolumePass();
   ~vtkShadowVolumePass() override;
 
-  double DepthBias = 8.0;
-  double SlopeBias = 0.1;
+  double DepthBias = 2.0;
+  double SlopeBias = 0.001;
   bool ForceZFail = false;
 
 private:
