@@ -304,8 +304,12 @@ void vtkShadowScreenMask::ResolveStencil(int light)
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_CULL_FACE);
   state->vtkglEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_NOTEQUAL, 0, 0xff);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  // Through vtkOpenGLState: VTK caches the stencil state, and a raw call
+  // here leaves the cache believing the counting pass's func and ops are
+  // still set, so the next frame's counting (set through the cache) would
+  // be skipped and count nothing.
+  state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
+  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   this->DrawQuad(impl.Window);
 }
 
