@@ -177,7 +177,17 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   {
     stats = LightStats();
   }
-  if (!window || !impl.Mask.RenderDepth(s, impl.LightCount))
+  // The depth pass draws with this pass's hooks registered too: a mapper
+  // that first compiled its shader there without them would otherwise see
+  // no newer shader stage in the main pass and keep the unhooked shader.
+  bool depthOk = false;
+  if (window)
+  {
+    this->PreRender(s);
+    depthOk = impl.Mask.RenderDepth(s, impl.LightCount);
+    this->PostRender(s);
+  }
+  if (!depthOk)
   {
     if (!impl.Reported)
     {
@@ -281,8 +291,8 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
   {
     geometry.Update(actor);
     caster->SeenFrame = impl.FrameNumber;
+    impl.Instances += geometry.GetNumberOfInstances();
   }
-  impl.Instances += geometry.GetNumberOfInstances();
   const vsh_mesh_topology* topology = geometry.GetTopology();
   double model[16], inverse[16], lightData[4], lightStored[4];
   vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
@@ -464,9 +474,7 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
   const Internals& impl = *this->Impl;
   std::ostringstream out;
   out << "\"volume_builds\": " << impl.VolumeBuilds << ", \"caster_instances\": " << impl.Instances
-      << ", \"instances\": \"glyph instances are baked into one mesh per actor; each is its own "
-         "component with its own silhouette and caps\""
-      << ", \"fill_estimate\": \"scissor rectangle area per volume\", \"lights\": [";
+      << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", \"lights\": [";
   for (int light = 0; light < impl.LightCount; ++light)
   {
     const LightStats& s = impl.Stats[light];
