@@ -211,8 +211,8 @@ void vtkShadowScreenMask::BeginDraw(int light)
   vtkOpenGLState* state = impl.Window->GetState();
   state->PushFramebufferBindings();
   impl.FBO->Bind();
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-    impl.DepthStencil->GetHandle(), 0);
+  glFramebufferTexture2D(
+    GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, impl.DepthStencil->GetHandle(), 0);
   const int layer = std::max(0, std::min(LayerOf(light), LayerCount - 1));
   impl.FBO->AddColorAttachment(0, impl.Layers[layer]);
   impl.FBO->ActivateDrawBuffers(1);
@@ -250,8 +250,8 @@ void vtkShadowScreenMask::EndDraw()
 void vtkShadowScreenMask::DrawQuad(vtkOpenGLRenderWindow* window)
 {
   Internals& impl = *this->Impl;
-  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-    vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
   if (!program)
   {
     this->Error = "the screen-space mask's quad shader did not compile";
@@ -365,8 +365,8 @@ void vtkShadowScreenMask::FinishUploads()
     }
     impl.Layers[layer]->Bind();
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, this->Size[0], this->Size[1], GL_RGBA,
-      GL_UNSIGNED_BYTE, impl.Staged[layer].data());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, this->Size[0], this->Size[1], GL_RGBA, GL_UNSIGNED_BYTE,
+      impl.Staged[layer].data());
     impl.Dirty[layer] = false;
   }
 }
@@ -407,13 +407,19 @@ bool vtkShadowScreenMask::PostReplaceShaderValues(std::string& fragmentShader)
 void vtkShadowScreenMask::SetShaderParameters(vtkShaderProgram* program)
 {
   Internals& impl = *this->Impl;
-  if (!program->IsUniformUsed("vshScreenMask0") || !impl.FBO)
+  // Outside Activate()/Deactivate() (e.g. the owning pass's hooks are
+  // registered during the depth pre-pass, so the mappers build the same
+  // shader there) the textures have no unit: glUniform1i(sampler, -1) is
+  // GL_INVALID_VALUE, and nothing samples the mask in that pass anyway.
+  if (!program->IsUniformUsed("vshScreenMask0") || !impl.FBO ||
+    impl.Layers[0]->GetTextureUnit() < 0 ||
+    impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit() < 0)
   {
     return;
   }
   program->SetUniformi("vshScreenMask0", impl.Layers[0]->GetTextureUnit());
-  program->SetUniformi("vshScreenMask1",
-    impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
+  program->SetUniformi(
+    "vshScreenMask1", impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
   program->SetUniform2i("vshScreenMaskOrigin", this->Origin);
   program->SetUniformi("vshScreenMaskLights", this->LightCount);
 }
