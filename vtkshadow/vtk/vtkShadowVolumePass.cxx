@@ -454,6 +454,12 @@ bool vtkShadowVolumePass::SetShaderParameters(
 }
 
 //------------------------------------------------------------------------------
+vtkIdType vtkShadowVolumePass::GetNumberOfVolumeBuilds() const
+{
+  return static_cast<vtkIdType>(this->Impl->VolumeBuilds);
+}
+
+//------------------------------------------------------------------------------
 long long vtkShadowVolumePass::GetMemoryBytes() const
 {
   long long bytes = this->Impl->Mask.GetMemoryBytes();

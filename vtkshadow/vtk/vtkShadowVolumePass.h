@@ -65,6 +65,13 @@ public:
    * and glyph instances.
    */
   std::string GetStatsJSON(vtkRenderer* renderer) const override;
+
+  /**
+   * How many (caster, light) volumes were built since creation: constant
+   * while neither casters nor lights move and no mesh changes (a camera
+   * orbit rebuilds nothing).
+   */
+  vtkIdType GetNumberOfVolumeBuilds() const;
   long long GetMemoryBytes() const override;
 
   void Render(const vtkRenderState* s) override;
