@@ -12,6 +12,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -41,14 +42,20 @@ namespace
 {
 constexpr int MaxLights = vtkShadowScreenMask::MaxLights;
 
-// The render state's actors that cast: visible, with a mapper, opaque
-// (translucent geometry neither blocks nor shows shadows), not NO_CAST.
-std::vector<vtkActor*> CastingActors(const vtkRenderState* s)
+// The renderer's actors that cast: visible, with a mapper, opaque
+// (translucent geometry neither blocks nor shows shadows), not NO_CAST. From
+// the renderer's props, not the render state's: VTK's frustum culler drops
+// the props outside the view from the latter, and a caster behind the
+// camera still throws its shadow into the view.
+std::vector<vtkActor*> CastingActors(vtkRenderer* renderer)
 {
   std::vector<vtkActor*> actors;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
   {
-    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    auto* actor = vtkActor::SafeDownCast(prop);
     if (actor && actor->GetVisibility() && actor->GetMapper() &&
       !actor->HasTranslucentPolygonalGeometry() &&
       !vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()))
@@ -160,7 +167,7 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
   }
   vtkshadow::UpdateLights(renderer);
   frame.Lights = vtkshadow::SwitchedOnLights(renderer);
-  frame.Casters = CastingActors(s);
+  frame.Casters = CastingActors(renderer);
 }
 
 //------------------------------------------------------------------------------
