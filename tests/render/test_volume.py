@@ -23,6 +23,9 @@ Cases (640x480 unless named):
   near-plane-cut      the eye just outside the slab's shadow with the near
                       plane reaching into it (checked here from the exact
                       geometry and VTK's clipping range): z-fail
+  caster-behind-camera
+                      a sphere behind the camera (culled from VTK's render
+                      state) shadows the floor in view
   offset-1e6, scale-1e-6
                       sphere-on-box-directional-4x3 moved by 1e6 / scaled by
                       1e-6 (camera and light too)
@@ -161,6 +164,19 @@ def near_plane_cut(size):
     return slab_scene(size, eye, focal)
 
 
+def caster_behind_camera(size):
+    """A sphere behind the camera (outside the view, so VTK's frustum culler
+    drops it from the render state) throws its shadow into the view."""
+    return {
+        "description": "volume test: a caster behind the camera shadowing the view",
+        "size": list(size),
+        "camera": {"position": [0, -4, 2], "focal_point": [0, 2, 0], "view_up": [0, 0, 1],
+                   "view_angle": 40},
+        "lights": [{"type": "directional", "direction": [0, 1, -0.8]}],
+        "objects": [sphere([0, -5, 2.5], 0.6), sphere([1.0, 1.0, 0.5], 0.5), floor(6)],
+    }
+
+
 def open_quad(size):
     return {
         "description": "volume test: a single tilted quad (open) over a floor and a sphere",
@@ -234,6 +250,7 @@ CASES = {
     "scale-1e-6": (lambda out: moved(sphere_on_box("directional", S43), scale=1e-6), 2000, [],
                    None),
     "open-quad": (lambda out: open_quad(S43), 1500, [], None),
+    "caster-behind-camera": (lambda out: caster_behind_camera(S43), 1500, [], None),
     "open-cylinder": (lambda out: open_cylinder(S43, out), 1500, [], None),
     "non-manifold": (lambda out: non_manifold(S43, out), 1500, [], None),
     "force-zfail": (lambda out: sphere_on_box("point", S43), 2000,

@@ -10,7 +10,7 @@ foreach(case
     sphere-on-box-directional-4x3 sphere-on-box-point-4x3 sphere-on-box-spot-4x3
     sphere-on-box-directional-16x9 sphere-on-box-point-16x9 sphere-on-box-spot-16x9
     box-on-sphere concave-u camera-in-shadow near-plane-cut offset-1e6 scale-1e-6
-    open-quad open-cylinder non-manifold force-zfail)
+    open-quad open-cylinder non-manifold force-zfail caster-behind-camera)
   add_test(NAME render.volume.${case}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_volume.py
             --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/volume --case ${case})
