@@ -94,6 +94,7 @@ add_test(NAME sanitize.product
           ${CMAKE_BINARY_DIR}/build-asan product)
 set_tests_properties(sanitize.product PROPERTIES TIMEOUT 3600 LABELS "sanitize")
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/planar_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/render/volume_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/robust_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/csm_extra_tests.cmake)

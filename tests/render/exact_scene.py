@@ -4,7 +4,10 @@ and Cycles (shared/notes/reference-renderers.md).
 
 Objects: sphere, plane (parallelogram) and box, each with the scene format's
 optional row-major affine "transform" (docs/scene-format.md; a transformed
-sphere is an ellipsoid). Cylinders and meshes are not supported (ValueError).
+sphere is an ellipsoid), and meshes given as OBJ files ("v" and triangle "f"
+lines; an absolute path) with flat faces: a mesh may shadow itself (it need
+not be convex), and its face index is its triangle's. Cylinders are not
+supported (ValueError).
 Any number of lights; render_exact() answers for one of them.
 
 Shadow models (render_exact(..., shadows=...)):
@@ -112,8 +115,54 @@ def _primitive(o, eye):
         hi = np.asarray(b["max"], np.float64)
         a = lin @ np.diag(hi - lo)
         return ("box", a, lin @ lo + shift, np.linalg.inv(a))
-    raise ValueError("exact_scene: only sphere, plane and box objects are supported "
+    if "mesh" in o:
+        v, f = read_obj(o["mesh"])
+        return ("mesh", (v @ lin.T + shift)[f])
+    raise ValueError("exact_scene: only sphere, plane, box and OBJ mesh objects are supported "
                      f"(got {sorted(k for k in o if k in ('cylinder', 'mesh'))})")
+
+
+def read_obj(path):
+    """Vertices (N, 3) and triangles (T, 3) of a small OBJ file (v and f
+    lines; f with 3 vertices, 1-based, optional /vt/vn parts)."""
+    verts, faces = [], []
+    with open(path) as fh:
+        for line in fh:
+            parts = line.split()
+            if not parts:
+                continue
+            if parts[0] == "v":
+                verts.append([float(x) for x in parts[1:4]])
+            elif parts[0] == "f":
+                idx = [int(x.split("/")[0]) - 1 for x in parts[1:]]
+                for k in range(1, len(idx) - 1):
+                    faces.append([idx[0], idx[k], idx[k + 1]])
+    return np.asarray(verts, np.float64), np.asarray(faces, int)
+
+
+def _intersect_mesh(tris, origin, dirs, shape):
+    """Nearest t > 0 over the triangles (Moller-Trumbore), the flat normal
+    and the triangle index."""
+    best = np.full(shape[:-1], np.inf)
+    normal = np.zeros(shape)
+    face = np.zeros(shape[:-1], int)
+    for k, (a, b, c) in enumerate(tris):
+        e1, e2 = b - a, c - a
+        h = np.cross(dirs, e2)
+        det = np.einsum("...k,k", h, e1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            inv = 1.0 / det
+            s = origin - a
+            u = np.einsum("...k,...k", s, h) * inv
+            q = np.cross(s, e1)
+            v = np.einsum("...k,...k", dirs, q) * inv
+            t = np.einsum("k,...k", e2, q) * inv
+        ok = (det != 0) & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 0) & (t < best)
+        best = np.where(ok, t, best)
+        n = normalize(np.cross(e1, e2))
+        normal = np.where(ok[..., None], n, normal)
+        face = np.where(ok, k, face)
+    return best, normal, face
 
 
 def _intersect(prim, origin, dirs):
@@ -124,6 +173,8 @@ def _intersect(prim, origin, dirs):
     dirs = np.broadcast_to(dirs, shape)
     kind = prim[0]
     face = np.zeros(shape[:-1], int)
+    if kind == "mesh":
+        return _intersect_mesh(prim[1], origin, dirs, shape)
     if kind == "plane":
         _, o, e1, e2 = prim
         n = np.cross(e1, e2)
@@ -243,7 +294,9 @@ def trace_scene(scene, light_index, width, height, shadows="all"):
                 continue
             t, _, _ = _intersect(prim, origin, to_light)
             # Every primitive is convex: it never shadows its own lit side.
-            blocked |= (t < light_dist) & (obj != k)
+            # A mesh may: the ray starts just off the surface towards the
+            # light, so the face it starts on is never hit.
+            blocked |= (t < light_dist) & ((obj != k) | (prim[0] == "mesh"))
         if shadows == "planar":
             blocked &= receiver
     visibility = np.where(valid & ~blocked, 1.0, 0.0)

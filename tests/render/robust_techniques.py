@@ -258,6 +258,21 @@ PROFILES = {
         caching={"first": "some", "still": 0, "data": "some"},
         settings=[("max_error 0.2", {"max_error": 0.2}, None),
                   ("max_texel_px 1.5", {"max_texel_px": 1.5}, None)]),
+    # Stencil shadow volumes: exact on every surface; a volume is rebuilt only
+    # when the light moves relative to its caster or the mesh changes, never
+    # for the camera. The caching case translates a caster under a
+    # directional light: the light in the caster's coordinates is unchanged,
+    # so its volume is kept ("moved": 0).
+    "volume": Profile(
+        exact_bound=(0.0, 0.05), agreement=99.95,
+        stats=lambda p: {"builds": p.GetNumberOfVolumeBuilds()},
+        work=lambda p: p.GetNumberOfVolumeBuilds(),
+        caching={"first": "some", "still": 0, "moved": 0, "data": "some",
+                 "light": "some", "orbit": 0},
+        headlight_on=lambda p: p.SetCastHeadlightShadows(True),
+        settings=[("force_zfail 1", {"force_zfail": 1}, None),
+                  ("depth_bias 16, slope_bias 0.01", {"depth_bias": 16, "slope_bias": 0.01},
+                   None)]),
     # Exact shadows of every caster on every surface, by Embree rays. work =
     # meshes (re)built: moving a caster, the light or the camera rebuilds
     # none (the top level is re-committed), changing 2 casters' data rebuilds

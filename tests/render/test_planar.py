@@ -352,7 +352,7 @@ CASES = {
 def exclude_band(trace):
     """One-pixel band along every object / box-face edge and every edge of the
     exact mask (the shadow boundary band is vtkshadow-metrics --band 1)."""
-    parts = trace["object"] * 8 + trace["face"]
+    parts = trace["object"] * 100000 + trace["face"]
     return edge_band(parts) | edge_band(trace["valid"].astype(int))
 
 
@@ -375,8 +375,10 @@ def vtk_clipping_range(scene_path):
 
 def run_case(bin_dir, out, case, scene, light, technique, reference, max_wrong_pct,
              min_agreement, shadow_fact, max_wrong_of_shadow_pct=None, known_failure=None,
-             settings=()):
-    """Render, compare, print one line; returns (failed, trace, metrics)."""
+             settings=(), render_args=()):
+    """Render, compare, print one line; returns (failed, trace, metrics).
+    settings: technique settings KEY=VALUE (--set); render_args: more
+    vtkshadow-render arguments (--stats)."""
     width, height = scene["size"]
     os.makedirs(out, exist_ok=True)
     name = f"{case}-light{light}-{technique}"
@@ -389,7 +391,7 @@ def run_case(bin_dir, out, case, scene, light, technique, reference, max_wrong_p
     run = subprocess.run(
         [os.path.join(bin_dir, "vtkshadow-render"), scene_path, "--technique", technique,
          "--image", os.path.join(out, name + "-image.png"), "--visibility", vis_path,
-         "--mask", mask_path, "--light", str(light), "--quiet"]
+         "--mask", mask_path, "--light", str(light), "--quiet", *render_args]
         + [a for kv in settings for a in ("--set", kv)], capture_output=True, text=True)
     if run.returncode != 0:
         print(run.stdout, run.stderr)

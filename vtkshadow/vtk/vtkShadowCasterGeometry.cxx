@@ -45,6 +45,7 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
   std::copy_n(triangles.Shift, 3, this->Shift);
   std::vector<float>& vertices = triangles.Vertices;
   std::vector<unsigned int>& indices = triangles.Indices;
+  this->Instances = triangles.Instances;
   this->TriangleCount = static_cast<vtkIdType>(indices.size() / 3);
   this->VertexCount = static_cast<vtkIdType>(vertices.size() / 3);
   // Kept for silhouettes (analysed lazily, only when a planar pass asks).
@@ -131,6 +132,16 @@ void vtkShadowCasterGeometry::Analyse()
   // The topology holds what silhouettes need from here on.
   std::vector<float>().swap(this->Positions);
   std::vector<unsigned int>().swap(this->Triangles);
+}
+
+//------------------------------------------------------------------------------
+const vsh_mesh_topology* vtkShadowCasterGeometry::GetTopology()
+{
+  if (this->Closed < 0)
+  {
+    this->Analyse();
+  }
+  return this->Topology && this->Topology->triangles ? this->Topology.get() : nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -96,6 +96,20 @@ public:
    */
   double GetThinnestWidth();
 
+  /**
+   * The mesh topology of the stored triangles (positions relative to
+   * GetShift(), vertices welded by exact position), analysed on first use;
+   * nullptr when the mesh cannot be analysed. Shadow volumes build their
+   * silhouettes and caps from it (vsh_volume.h).
+   */
+  const vsh_mesh_topology* GetTopology();
+  // The light relative to the stored positions (which are data - Shift):
+  // `lightInData` homogeneous in the data's own coordinates.
+  void ShiftLight(const double lightInData[4], double light[4]) const;
+  // Glyph instances baked into the copy (vtkGlyph3DMapper: one per input
+  // point, each its own connected component), 1 for other mappers.
+  vtkIdType GetNumberOfInstances() const { return this->Instances; }
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
@@ -140,8 +154,7 @@ private:
   bool FanNeedsUpload = false;
   std::vector<float> FanData;
   void Analyse();
-  // The light relative to the stored positions (which are data - Shift).
-  void ShiftLight(const double lightInData[4], double light[4]) const;
+  vtkIdType Instances = 1;
   // Rebuilds FanData (fan triangles, positions) for `light` (shifted).
   void BuildFans(const double light[4]);
 };

@@ -279,6 +279,7 @@ bool vtkshadow::ExtractCasterTriangles(vtkActor* actor, CasterTriangles& out)
     }
     vtkDataArray* scale = MapperArray(glyphs, vtkGlyph3DMapper::SCALE, input);
     vtkDataArray* orient = MapperArray(glyphs, vtkGlyph3DMapper::ORIENTATION, input);
+    out.Instances = input->GetNumberOfPoints();
     for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
     {
       double matrix[16];

@@ -25,6 +25,9 @@ struct CasterTriangles
   double Shift[3] = { 0, 0, 0 };
   std::vector<float> Vertices;
   std::vector<unsigned int> Indices;
+  // Glyph instances baked in (vtkGlyph3DMapper: one per input point, each
+  // its own connected component), 1 for other mappers.
+  vtkIdType Instances = 1;
 };
 
 // When the caster's triangles last changed: its mapper, the mapper's input

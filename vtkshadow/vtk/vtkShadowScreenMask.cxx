@@ -315,8 +315,12 @@ void vtkShadowScreenMask::ResolveStencil(int light)
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_CULL_FACE);
   state->vtkglEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_NOTEQUAL, 0, 0xff);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  // Through vtkOpenGLState: VTK caches the stencil state, and a raw call
+  // here leaves the cache believing the counting pass's func and ops are
+  // still set, so the next frame's counting (set through the cache) would
+  // be skipped and count nothing.
+  state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
+  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   vtkShaderProgram* program = impl.Window->GetShaderCache()->ReadyShaderProgram(
     vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
   if (!program)
@@ -423,7 +427,13 @@ bool vtkShadowScreenMask::PostReplaceShaderValues(std::string& fragmentShader, d
 void vtkShadowScreenMask::SetShaderParameters(vtkShaderProgram* program)
 {
   Internals& impl = *this->Impl;
-  if (!program->IsUniformUsed("vshScreenMask0") || !impl.FBO)
+  // Outside Activate()/Deactivate() (e.g. the owning pass's hooks are
+  // registered during the depth pre-pass, so the mappers build the same
+  // shader there) the textures have no unit: glUniform1i(sampler, -1) is
+  // GL_INVALID_VALUE, and nothing samples the mask in that pass anyway.
+  if (!program->IsUniformUsed("vshScreenMask0") || !impl.FBO ||
+    impl.Layers[0]->GetTextureUnit() < 0 ||
+    impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit() < 0)
   {
     return;
   }

@@ -6,6 +6,7 @@
 #include "vtkNoShadowPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlanarShadowPass.h"
+#include "vtkShadowVolumePass.h"
 #include "vtkRayTracedShadowPass.h"
 
 #include <cstring>
@@ -40,6 +41,8 @@ const Technique Techniques[] = {
     &Make<vtkCascadedShadowMapPass> },
   { "auto", "per light the cheapest technique that meets an error target (max_error)",
     &Make<vtkAutoShadowPass> },
+  { "volume", "stencil shadow volumes: exact hard shadows on every surface, every light type",
+    &Make<vtkShadowVolumePass> },
   { "raytrace", "exact shadows of any geometry: Embree rays per visible pixel and light (CPU)",
     &Make<vtkRayTracedShadowPass> },
 };

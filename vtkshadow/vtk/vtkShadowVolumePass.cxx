@@ -1,0 +1,556 @@
+#include "vtkShadowVolumePass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkMapper.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkShadowActorFlags.h"
+#include "vtkShadowCasterGeometry.h"
+#include "vtkShadowLightingHook.h"
+#include "vtkShadowScreenMask.h"
+#include "vtkSmartPointer.h"
+#include "vtk_glew.h"
+
+#include "vsh_mat4.h"
+#include "vsh_volume.h"
+
+#include "vtkShadowVolumeFS.h"
+#include "vtkShadowVolumeVS.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkShadowVolumePass);
+
+namespace
+{
+constexpr int MaxLights = vtkShadowScreenMask::MaxLights;
+
+// The renderer's actors that cast: visible, with a mapper, opaque
+// (translucent geometry neither blocks nor shows shadows), not NO_CAST. From
+// the renderer's props, not the render state's: VTK's frustum culler drops
+// the props outside the view from the latter, and a caster behind the
+// camera still throws its shadow into the view.
+std::vector<vtkActor*> CastingActors(vtkRenderer* renderer)
+{
+  std::vector<vtkActor*> actors;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    if (actor && actor->GetVisibility() && actor->GetMapper() &&
+      !actor->HasTranslucentPolygonalGeometry() &&
+      !vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()))
+    {
+      actors.push_back(actor);
+    }
+  }
+  return actors;
+}
+
+// Per-light counters of one frame, for --stats.
+struct LightStats
+{
+  bool Casts = false;
+  int ZPass = 0, ZFail = 0, Culled = 0;
+  long long SilhouetteEdges = 0, Quads = 0, CapTriangles = 0;
+  double FillPx = 0.0;
+  double Cost = 0.0;
+};
+}
+
+// One (caster, light) volume on the GPU, rebuilt only when the light moved
+// relative to the caster or the caster's mesh changed.
+struct vtkShadowVolumePass::Volume
+{
+  double Light[4] = { 0, 0, 0, 0 }; // relative to the stored positions
+  vtkMTimeType GeometryTime = 0;
+  bool Valid = false;
+  size_t SideTriangles = 0, CapTriangles = 0;
+  size_t SilhouetteEdges = 0, Quads = 0;
+  vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> VAO;
+  vtkShaderProgram* Program = nullptr;
+  size_t Bytes = 0;
+};
+
+struct vtkShadowVolumePass::Internals
+{
+  vtkShadowScreenMask Mask;
+  struct Caster
+  {
+    vtkShadowCasterGeometry Geometry;
+    Volume Volumes[MaxLights];
+    long long SeenFrame = -1;
+  };
+  std::map<vtkActor*, std::unique_ptr<Caster>> Casters;
+  long long FrameNumber = 0;
+  LightStats Stats[MaxLights];
+  int LightCount = 0;
+  long long VolumeBuilds = 0;
+  long long Instances = 0;
+  bool Reported = false;
+  vtkOpenGLState* State = nullptr; // while counting a light
+};
+
+// The frame in plain data: camera (relative to the eye, in double), lights
+// and casters.
+struct vtkShadowVolumePass::Frame
+{
+  int Size[2] = { 0, 0 };
+  double Eye[3] = { 0, 0, 0 };
+  double CameraRelative[16]; // projection x view rotation
+  double NearCorners[12];    // near-plane rectangle, relative to the eye
+  std::vector<vtkLight*> Lights;
+  std::vector<vtkActor*> Casters;
+};
+
+//------------------------------------------------------------------------------
+vtkShadowVolumePass::vtkShadowVolumePass()
+  : Impl(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkShadowVolumePass::~vtkShadowVolumePass() = default;
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
+{
+  vtkRenderer* renderer = s->GetRenderer();
+  int origin[2];
+  GetViewport(s, frame.Size, origin);
+  frame.Size[0] = std::max(frame.Size[0], 1);
+  frame.Size[1] = std::max(frame.Size[1], 1);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double aspect = static_cast<double>(frame.Size[0]) / frame.Size[1];
+  camera->GetPosition(frame.Eye);
+  double view[16], projection[16], inverse[16];
+  vtkMatrix4x4::DeepCopy(view, camera->GetViewTransformMatrix());
+  view[3] = view[7] = view[11] = 0.0; // inputs are relative to the eye
+  vtkMatrix4x4::DeepCopy(projection, camera->GetProjectionTransformMatrix(aspect, -1, 1));
+  vsh_mat4_multiply(projection, view, frame.CameraRelative);
+  // The near-plane rectangle: the clip-space corners (+-1, +-1, -1) back to
+  // eye-relative world coordinates.
+  std::fill(frame.NearCorners, frame.NearCorners + 12, 0.0);
+  if (vsh_mat4_inverse(frame.CameraRelative, inverse))
+  {
+    const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
+    for (int c = 0; c < 4; ++c)
+    {
+      const double ndc[4] = { corners[c][0], corners[c][1], -1.0, 1.0 };
+      double p[4];
+      vsh_mat4_transform_point4(inverse, ndc, p);
+      for (int k = 0; k < 3; ++k)
+      {
+        frame.NearCorners[3 * c + k] = p[3] != 0.0 ? p[k] / p[3] : 0.0;
+      }
+    }
+  }
+  vtkshadow::UpdateLights(renderer);
+  frame.Lights = vtkshadow::SwitchedOnLights(renderer);
+  frame.Casters = CastingActors(renderer);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  Internals& impl = *this->Impl;
+  ++impl.FrameNumber;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
+  Frame frame;
+  this->SetUpFrame(s, frame);
+  impl.LightCount = std::min(static_cast<int>(frame.Lights.size()), MaxLights);
+  for (auto& stats : impl.Stats)
+  {
+    stats = LightStats();
+  }
+  // The depth pass draws with this pass's hooks registered too: a mapper
+  // that first compiled its shader there without them would otherwise see
+  // no newer shader stage in the main pass and keep the unhooked shader.
+  bool depthOk = false;
+  if (window)
+  {
+    this->PreRender(s);
+    depthOk = impl.Mask.RenderDepth(s, impl.LightCount);
+    this->PostRender(s);
+  }
+  if (!depthOk)
+  {
+    if (!impl.Reported)
+    {
+      vtkErrorMacro("shadow volumes are off: "
+        << (window ? impl.Mask.GetError() : std::string("not an OpenGL render window")));
+      impl.Reported = true;
+    }
+    this->RenderDelegate(s);
+    return;
+  }
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vtkShadowVolumeVS, vtkShadowVolumeFS, "");
+  impl.Instances = 0;
+  for (int light = 0; light < impl.LightCount && program; ++light)
+  {
+    if (this->LightCasts(frame.Lights[light], light))
+    {
+      impl.Stats[light].Casts = true;
+      this->CountLight(window, program, frame, light);
+    }
+  }
+  // Forget casters that left the scene.
+  for (auto it = impl.Casters.begin(); it != impl.Casters.end();)
+  {
+    if (it->second->SeenFrame != impl.FrameNumber)
+    {
+      it->second->Geometry.ReleaseGraphicsResources(window);
+      it = impl.Casters.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+  impl.Mask.Activate();
+  this->RenderDelegateWithShaderHooks(s);
+  impl.Mask.Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::CountLight(
+  vtkOpenGLRenderWindow* window, vtkShaderProgram* program, const Frame& frame, int light)
+{
+  Internals& impl = *this->Impl;
+  vtkOpenGLState* state = window->GetState();
+  impl.State = state;
+  impl.Mask.BeginDraw(light);
+  {
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
+    vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+    vtkOpenGLState::ScopedglColorMask colorMask(state);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglStencilMask(0xff);
+    glClearStencil(0);
+    state->vtkglClear(GL_STENCIL_BUFFER_BIT);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_LESS);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglEnable(GL_STENCIL_TEST);
+    state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    // The far cap lies at infinity (w = 0): clamp its depth to the far
+    // plane instead of clipping it. Not in VTK's state cache: restored below.
+    glEnable(GL_DEPTH_CLAMP);
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    program->SetUniformf("depthBias", static_cast<float>(this->DepthBias * std::ldexp(1.0, -24)));
+    program->SetUniformf("slopeBias", static_cast<float>(this->SlopeBias));
+    program->SetUniformf("maxSlopeBias", static_cast<float>(std::ldexp(1.0, -12)));
+    for (vtkActor* actor : frame.Casters)
+    {
+      this->DrawCaster(program, frame, light, actor);
+    }
+    glDisable(GL_DEPTH_CLAMP);
+    glFrontFace(GL_CCW);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    impl.Mask.ResolveStencil(light);
+  }
+  impl.Mask.EndDraw();
+}
+
+//------------------------------------------------------------------------------
+vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
+  vtkActor* actor, int light, const double lightWorld[4])
+{
+  Internals& impl = *this->Impl;
+  auto& caster = impl.Casters[actor];
+  if (!caster)
+  {
+    caster.reset(new Internals::Caster);
+  }
+  vtkShadowCasterGeometry& geometry = caster->Geometry;
+  if (caster->SeenFrame != impl.FrameNumber)
+  {
+    geometry.Update(actor);
+    caster->SeenFrame = impl.FrameNumber;
+    impl.Instances += geometry.GetNumberOfInstances();
+  }
+  const vsh_mesh_topology* topology = geometry.GetTopology();
+  double model[16], inverse[16], lightData[4], lightStored[4];
+  vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
+  if (!topology || !vsh_mat4_inverse(model, inverse))
+  {
+    return nullptr;
+  }
+  vsh_mat4_transform_point4(inverse, lightWorld, lightData);
+  geometry.ShiftLight(lightData, lightStored);
+  Volume& volume = caster->Volumes[light];
+  if (volume.Valid && volume.GeometryTime == geometry.GetBuildTime() &&
+    std::equal(lightStored, lightStored + 4, volume.Light))
+  {
+    return &volume;
+  }
+  vsh_volume built;
+  if (vsh_volume_build(topology, lightStored, &built) != VSH_MESH_OK)
+  {
+    return nullptr;
+  }
+  ++impl.VolumeBuilds;
+  const size_t triangles = built.side_triangles + built.cap_triangles;
+  std::vector<float> data(12 * triangles);
+  for (size_t i = 0; i < data.size(); ++i)
+  {
+    data[i] = static_cast<float>(built.vertices[i]);
+  }
+  volume.SideTriangles = built.side_triangles;
+  volume.CapTriangles = built.cap_triangles;
+  volume.SilhouetteEdges = built.silhouette_edges;
+  volume.Quads = built.silhouette_quads;
+  vsh_volume_free(&built);
+  if (!volume.Buffer)
+  {
+    volume.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    volume.Buffer->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+    volume.VAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+  }
+  if (!data.empty())
+  {
+    volume.Buffer->Upload(data, vtkOpenGLBufferObject::ArrayBuffer);
+  }
+  volume.Bytes = data.size() * sizeof(float);
+  volume.Program = nullptr;
+  std::copy_n(lightStored, 4, volume.Light);
+  volume.GeometryTime = geometry.GetBuildTime();
+  volume.Valid = true;
+  return &volume;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::DrawCaster(
+  vtkShaderProgram* program, const Frame& frame, int light, vtkActor* actor)
+{
+  Internals& impl = *this->Impl;
+  LightStats& stats = impl.Stats[light];
+  double lightWorld[4];
+  vtkshadow::LightHomogeneous(frame.Lights[light], lightWorld);
+  Volume* volume = this->UpdateVolume(actor, light, lightWorld);
+  if (!volume || volume->SideTriangles + volume->CapTriangles == 0)
+  {
+    return;
+  }
+  // Camera-relative bounds and light for the planning tests.
+  double bounds[6],
+    lightRelative[4] = { lightWorld[0], lightWorld[1], lightWorld[2], lightWorld[3] };
+  actor->GetBounds(bounds);
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds[2 * k] -= frame.Eye[k];
+    bounds[2 * k + 1] -= frame.Eye[k];
+    lightRelative[k] -= lightWorld[3] * frame.Eye[k];
+  }
+  int rect[4];
+  if (!vsh_volume_screen_rect(
+        frame.CameraRelative, bounds, lightRelative, frame.Size[0], frame.Size[1], rect))
+  {
+    ++stats.Culled;
+    return;
+  }
+  double size = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    size = std::max(size, bounds[2 * k + 1] - bounds[2 * k]);
+  }
+  const double eye[3] = { 0, 0, 0 };
+  const bool zpass = !this->ForceZFail &&
+    vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
+  // Model (shifted) -> world -> relative to the eye -> clip, in double.
+  double modelRelative[16], mcdc[16], transposed[16];
+  impl.Casters[actor]->Geometry.GetModelRelativeMatrix(actor, frame.Eye, modelRelative);
+  vsh_mat4_multiply(frame.CameraRelative, modelRelative, mcdc);
+  vsh_mat4_transpose(mcdc, transposed);
+  float mcdcF[16];
+  for (int i = 0; i < 16; ++i)
+  {
+    mcdcF[i] = static_cast<float>(transposed[i]);
+  }
+  program->SetUniformMatrix4x4("volumeMCDC", mcdcF);
+  // A mirroring matrix turns every volume inside out: keep "front" meaning
+  // "entering" so its counts add to the other casters' instead of cancelling.
+  glFrontFace(vsh_mat4_determinant(modelRelative) < 0.0 ? GL_CW : GL_CCW);
+  vtkOpenGLState* state = impl.State;
+  state->vtkglScissor(rect[0], rect[1], rect[2], rect[3]);
+  if (zpass)
+  {
+    state->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+    state->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+  }
+  else
+  {
+    state->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    state->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+  }
+  if (volume->Program != program)
+  {
+    volume->VAO->ShaderProgramChanged();
+    volume->VAO->Bind();
+    volume->VAO->AddAttributeArray(
+      program, volume->Buffer, "vertexMC", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
+    volume->Program = program;
+  }
+  const size_t triangles = volume->SideTriangles + (zpass ? 0 : volume->CapTriangles);
+  volume->VAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangles));
+  volume->VAO->Release();
+
+  (zpass ? stats.ZPass : stats.ZFail) += 1;
+  stats.SilhouetteEdges += static_cast<long long>(volume->SilhouetteEdges);
+  stats.Quads += static_cast<long long>(volume->Quads);
+  stats.CapTriangles += zpass ? 0 : static_cast<long long>(volume->CapTriangles);
+  const double fill = static_cast<double>(rect[2]) * rect[3];
+  stats.FillPx += fill;
+  const vsh_volume_cost_input cost = { volume->Quads, volume->CapTriangles, zpass ? 0 : 1, fill,
+    2.0 };
+  stats.Cost += vsh_volume_cost(&cost);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowVolumePass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
+{
+  return this->Impl->Mask.PreReplaceShaderValues(fragmentShader, prop);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowVolumePass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowVolumePass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+{
+  this->Impl->Mask.SetShaderParameters(program);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkShadowVolumePass::GetNumberOfVolumeBuilds() const
+{
+  return static_cast<vtkIdType>(this->Impl->VolumeBuilds);
+}
+
+//------------------------------------------------------------------------------
+long long vtkShadowVolumePass::GetMemoryBytes() const
+{
+  long long bytes = this->Impl->Mask.GetMemoryBytes();
+  for (const auto& entry : this->Impl->Casters)
+  {
+    bytes += entry.second->Geometry.GetNumberOfBytes();
+    for (const Volume& volume : entry.second->Volumes)
+    {
+      bytes += static_cast<long long>(volume.Bytes);
+    }
+  }
+  return bytes;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
+{
+  const Internals& impl = *this->Impl;
+  std::ostringstream out;
+  out << "\"volume_builds\": " << impl.VolumeBuilds << ", \"caster_instances\": " << impl.Instances
+      << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", \"lights\": [";
+  for (int light = 0; light < impl.LightCount; ++light)
+  {
+    const LightStats& s = impl.Stats[light];
+    out << (light ? ", " : "") << "{\"casts\": " << (s.Casts ? "true" : "false")
+        << ", \"zpass\": " << s.ZPass << ", \"zfail\": " << s.ZFail << ", \"culled\": " << s.Culled
+        << ", \"silhouette_edges\": " << s.SilhouetteEdges << ", \"volume_quads\": " << s.Quads
+        << ", \"cap_triangles\": " << s.CapTriangles
+        << ", \"fill_px\": " << static_cast<long long>(s.FillPx)
+        << ", \"cost\": " << static_cast<long long>(s.Cost) << "}";
+  }
+  out << "]";
+  return out.str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowVolumePass::SetOption(const char* key, double value)
+{
+  const std::string k = key ? key : "";
+  if (k == "depth_bias" && value >= 0.0 && value <= 1e6)
+  {
+    this->SetDepthBias(value);
+    return true;
+  }
+  if (k == "slope_bias" && value >= 0.0 && value <= 16.0)
+  {
+    this->SetSlopeBias(value);
+    return true;
+  }
+  if (k == "force_zfail" && (value == 0.0 || value == 1.0))
+  {
+    this->SetForceZFail(value != 0.0);
+    return true;
+  }
+  return this->Superclass::SetOption(key, value);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  Internals& impl = *this->Impl;
+  impl.Mask.ReleaseGraphicsResources(w);
+  for (auto& entry : impl.Casters)
+  {
+    entry.second->Geometry.ReleaseGraphicsResources(w);
+    for (Volume& volume : entry.second->Volumes)
+    {
+      if (volume.Buffer)
+      {
+        volume.VAO->ReleaseGraphicsResources();
+        volume.Buffer->ReleaseGraphicsResources();
+      }
+    }
+  }
+  impl.Casters.clear();
+  this->Superclass::ReleaseGraphicsResources(w);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DepthBias: " << this->DepthBias << "\n";
+  os << indent << "SlopeBias: " << this->SlopeBias << "\n";
+  os << indent << "ForceZFail: " << this->ForceZFail << "\n";
+  os << indent << "Casters: " << this->Impl->Casters.size() << "\n";
+}

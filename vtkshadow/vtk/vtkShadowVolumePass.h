@@ -1,0 +1,112 @@
+/**
+ * @class   vtkShadowVolumePass
+ * @brief   Exact hard shadows by stencil shadow volumes, on every surface.
+ *
+ * Per frame: the opaque scene's depth (vtkShadowScreenMask), then for each
+ * casting light the volumes of every caster counted in the stencil and
+ * resolved into that light's channel of the screen mask, then the scene
+ * once, its lighting multiplying light I by channel I. The scene is never
+ * drawn once per light.
+ *
+ * Volumes come from the caster's mesh topology on the CPU (vsh_volume.h):
+ * silhouette edges extruded to infinity plus caps, with dark caps for
+ * closed meshes and per-edge multiplicities for open and non-manifold ones.
+ * A (caster, light) volume is rebuilt only when the light moved relative to
+ * the caster or the caster's mesh changed. Counting is z-pass where the
+ * near-plane region lies outside the caster's shadow (vsh_volume_zpass_safe)
+ * and z-fail (Carmack's reverse, far cap at infinity via depth clamping)
+ * elsewhere; each volume is scissored to its projected bounds and culled
+ * when it cannot reach the view. docs/shadow-volumes.md has the details.
+ */
+#ifndef vtkShadowVolumePass_h
+#define vtkShadowVolumePass_h
+
+#include "vtkShadowPassBase.h"
+#include "vtkshadowModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkActor;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+
+class VTKSHADOW_EXPORT vtkShadowVolumePass : public vtkShadowPassBase
+{
+public:
+  static vtkShadowVolumePass* New();
+  vtkTypeMacro(vtkShadowVolumePass, vtkShadowPassBase);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Depth bias of the volume faces in units of 2^-24 of the depth range
+   * (default 2), and the fraction of the depth's slope per pixel added to it
+   * (default 0.001); see glsl/vtkShadowVolumeFS.glsl.
+   */
+  vtkSetMacro(DepthBias, double);
+  vtkGetMacro(DepthBias, double);
+  vtkSetMacro(SlopeBias, double);
+  vtkGetMacro(SlopeBias, double);
+
+  /**
+   * Count every volume with z-fail, never z-pass (default off).
+   */
+  vtkSetMacro(ForceZFail, bool);
+  vtkGetMacro(ForceZFail, bool);
+
+  /**
+   * depth_bias, slope_bias, force_zfail, and the base's cast_headlight.
+   */
+  bool SetOption(const char* key, double value) override;
+
+  /**
+   * Per light: casters counted by z-pass / z-fail / culled, silhouette edges,
+   * volume quads, cap triangles, fill (pixels of the scissor rectangles, an
+   * upper bound of the pixels each volume layer touches); volume rebuilds
+   * and glyph instances.
+   */
+  std::string GetStatsJSON(vtkRenderer* renderer) const override;
+
+  /**
+   * How many (caster, light) volumes were built since creation: constant
+   * while neither casters nor lights move and no mesh changes (a camera
+   * orbit rebuilds nothing).
+   */
+  vtkIdType GetNumberOfVolumeBuilds() const;
+  long long GetMemoryBytes() const override;
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  // Shader hooks: the screen mask's lighting factors.
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+
+protected:
+  vtkShadowVolumePass();
+  ~vtkShadowVolumePass() override;
+
+  double DepthBias = 2.0;
+  double SlopeBias = 0.001;
+  bool ForceZFail = false;
+
+private:
+  vtkShadowVolumePass(const vtkShadowVolumePass&) = delete;
+  void operator=(const vtkShadowVolumePass&) = delete;
+
+  struct Internals;
+  struct Frame;
+  struct Volume;
+  std::unique_ptr<Internals> Impl;
+
+  void SetUpFrame(const vtkRenderState* s, Frame& frame);
+  void CountLight(
+    vtkOpenGLRenderWindow* window, vtkShaderProgram* program, const Frame& frame, int light);
+  void DrawCaster(vtkShaderProgram* program, const Frame& frame, int light, vtkActor* actor);
+  Volume* UpdateVolume(vtkActor* actor, int light, const double lightWorld[4]);
+};
+
+#endif
