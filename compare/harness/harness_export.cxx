@@ -40,17 +40,9 @@ void Put(std::string& o, T v)
 #endif
   o.append(reinterpret_cast<const char*>(b), sizeof(T));
 }
-}
 
-std::string PovScene(const ExportScene& s)
+void PovCamera(std::string& o, const ExportScene& s)
 {
-  std::string o;
-  o.reserve(1 << 20);
-  o += "// Written by vtkshadow-compare: numbers only, nothing from the scene file's text.\n";
-  o += "#version 3.7;\n";
-  o += "global_settings { assumed_gamma 1.0 ambient_light 0 max_trace_level 1 }\n";
-  o += "#ifndef (VSH_LIGHT) #declare VSH_LIGHT = 0; #end\n";
-  o += "#ifndef (VSH_SHADOWS) #declare VSH_SHADOWS = 1; #end\n";
   const double a = static_cast<double>(s.width) / s.height;
   const double t = std::tan(s.view_angle * M_PI / 360.0);
   const double horizontal = 2.0 * std::atan(a * t) * 180.0 / M_PI;
@@ -66,10 +58,17 @@ std::string PovScene(const ExportScene& s)
   Vec(o, s.focal);
   o += " }\n";
   o += "background { rgb 0 }\n";
+}
+
+// Every light, each inside `#if (<condition with K>)`.
+void PovLights(std::string& o, const ExportScene& s, const std::string& condition)
+{
   for (size_t k = 0; k < s.lights.size(); ++k)
   {
     const ExportLight& L = s.lights[k];
-    o += "#if (VSH_LIGHT = " + std::to_string(k) + ")\n  light_source { ";
+    std::string c = condition;
+    c.replace(c.find('K'), 1, std::to_string(k));
+    o += "#if (" + c + ")\n  light_source { ";
     Vec(o, L.position);
     o += " color rgb 1";
     double target[3];
@@ -91,37 +90,85 @@ std::string PovScene(const ExportScene& s)
     }
     o += " }\n#end\n";
   }
+}
+
+// One mesh2 with its normals; `tail` follows the face indices (texture,
+// shadow flags).
+void PovMesh(std::string& o, const ExportObject& ob, const std::string& tail)
+{
+  const size_t np = ob.points.size() / 3, nt = ob.triangles.size() / 3;
+  o += "mesh2 {\n vertex_vectors { " + std::to_string(np);
+  for (size_t i = 0; i < np; ++i)
+  {
+    o += i % 4 ? "," : ",\n  ";
+    Vec(o, &ob.points[3 * i]);
+  }
+  o += " }\n normal_vectors { " + std::to_string(np);
+  for (size_t i = 0; i < np; ++i)
+  {
+    o += i % 4 ? "," : ",\n  ";
+    Vec(o, &ob.normals[3 * i]);
+  }
+  o += " }\n face_indices { " + std::to_string(nt);
+  char buf[64];
+  for (size_t i = 0; i < nt; ++i)
+  {
+    snprintf(buf, sizeof buf, "%s<%u,%u,%u>", i % 6 ? "," : ",\n  ", ob.triangles[3 * i],
+      ob.triangles[3 * i + 1], ob.triangles[3 * i + 2]);
+    o += buf;
+  }
+  o += " }\n" + tail + "}\n";
+}
+
+const char* const kPovHeader =
+  "// Written by vtkshadow-compare: numbers only, nothing from the scene file's text.\n"
+  "#version 3.7;\n";
+} // namespace
+
+std::string PovScene(const ExportScene& s)
+{
+  std::string o;
+  o.reserve(1 << 20);
+  o += kPovHeader;
+  o += "global_settings { assumed_gamma 1.0 ambient_light 0 max_trace_level 1 }\n";
+  o += "#ifndef (VSH_LIGHT) #declare VSH_LIGHT = 0; #end\n";
+  o += "#ifndef (VSH_SHADOWS) #declare VSH_SHADOWS = 1; #end\n";
+  PovCamera(o, s);
+  PovLights(o, s, "VSH_LIGHT = K");
   o += "#declare VSH_T = texture { pigment { rgb 1 } finish { ambient 0 emission 0 diffuse 1 "
        "brilliance 1 specular 0 phong 0 reflection 0 } }\n";
   for (const ExportObject& ob : s.objects)
+    PovMesh(o, ob,
+      std::string(" texture { VSH_T }\n") +
+        (ob.casts ? " #if (VSH_SHADOWS = 0) no_shadow #end\n" : " no_shadow\n"));
+  return o;
+}
+
+std::string PovColourScene(const ExportScene& s)
+{
+  std::string o;
+  o.reserve(1 << 20);
+  o += kPovHeader;
+  // Two levels: the camera ray and one reflection (the pass draws one bounce).
+  o += "global_settings { assumed_gamma 1.0 ambient_light 0 max_trace_level 2 }\n";
+  o += "#ifndef (VSH_MIRROR_MASK) #declare VSH_MIRROR_MASK = 0; #end\n";
+  PovCamera(o, s);
+  PovLights(o, s, "K >= 0 & VSH_MIRROR_MASK = 0");
+  for (const ExportObject& ob : s.objects)
   {
-    const size_t np = ob.points.size() / 3, nt = ob.triangles.size() / 3;
-    o += "mesh2 {\n vertex_vectors { " + std::to_string(np);
-    for (size_t i = 0; i < np; ++i)
-    {
-      o += i % 4 ? "," : ",\n  ";
-      Vec(o, &ob.points[3 * i]);
-    }
-    o += " }\n normal_vectors { " + std::to_string(np);
-    for (size_t i = 0; i < np; ++i)
-    {
-      o += i % 4 ? "," : ",\n  ";
-      Vec(o, &ob.normals[3 * i]);
-    }
-    o += " }\n face_indices { " + std::to_string(nt);
-    char buf[64];
-    for (size_t i = 0; i < nt; ++i)
-    {
-      snprintf(buf, sizeof buf, "%s<%u,%u,%u>", i % 6 ? "," : ",\n  ", ob.triangles[3 * i],
-        ob.triangles[3 * i + 1], ob.triangles[3 * i + 2]);
-      o += buf;
-    }
-    o += " }\n texture { VSH_T }\n";
-    if (!ob.casts)
-      o += " no_shadow\n";
-    else
-      o += " #if (VSH_SHADOWS = 0) no_shadow #end\n";
-    o += "}\n";
+    const double R = ob.mirror > 0 ? ob.mirror : 0.0;
+    std::string t = " #if (VSH_MIRROR_MASK = 0)\n  texture { pigment { rgb ";
+    Vec(t, ob.color);
+    t += " } finish { ambient 0 emission 0 diffuse ";
+    Num(t, 1.0 - R);
+    t += " brilliance 1 specular 0 phong 0 reflection { ";
+    Num(t, R);
+    t += " } } }\n #else\n  texture { pigment { rgb ";
+    t += R > 0 ? "1" : "0";
+    t += " } finish { ambient 0 emission ";
+    t += R > 0 ? "1" : "0";
+    t += " diffuse 0 specular 0 phong 0 reflection 0 } }\n #end\n";
+    PovMesh(o, ob, t + (ob.casts ? "" : " no_shadow\n"));
   }
   return o;
 }
@@ -129,7 +176,7 @@ std::string PovScene(const ExportScene& s)
 std::string CyclesData(const ExportScene& s, int samples)
 {
   std::string o;
-  o.append("VSHCYC01", 8);
+  o.append("VSHCYC02", 8);
   Put<int32_t>(o, s.width);
   Put<int32_t>(o, s.height);
   Put<int32_t>(o, samples);
@@ -167,6 +214,9 @@ std::string CyclesData(const ExportScene& s, int samples)
     Put<int32_t>(o, static_cast<int32_t>(ob.points.size() / 3));
     Put<int32_t>(o, static_cast<int32_t>(ob.triangles.size() / 3));
     Put<int32_t>(o, ob.casts ? 1 : 0);
+    for (int i = 0; i < 3; ++i)
+      Put<double>(o, ob.color[i]);
+    Put<double>(o, ob.mirror);
     for (double v : ob.points)
       Put<double>(o, v);
     for (double v : ob.normals)

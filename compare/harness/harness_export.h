@@ -21,6 +21,8 @@ struct ExportObject
   std::vector<double> normals; // 3 per point, unit
   std::vector<uint32_t> triangles;
   bool casts = true;
+  double color[3] = { 1, 1, 1 }; // linear RGB: only the colour renders use it
+  double mirror = 0;             // reflectance R of a planar mirror, 0 = none
 };
 
 struct ExportLight
@@ -48,6 +50,7 @@ struct ExportScene
   double bounds_diagonal = 1;
   std::vector<ExportLight> lights;
   std::vector<ExportObject> objects;
+  bool has_mirror = false; // some object has mirror > 0: the colour renders run
 };
 
 // POV-Ray 3.7 scene. Light K and shadows on/off are chosen on the command
@@ -56,6 +59,13 @@ std::string PovScene(const ExportScene& s);
 
 // Binary data file for render_cycles.py (layout documented there).
 std::string CyclesData(const ExportScene& s, int samples);
+
+// POV-Ray 3.7 colour scene of a scene with mirrors (docs/reflections.md):
+// every light on, shadows on, objects in their colours with finish
+// { ambient 0 diffuse 1-R reflection { R } } (no fresnel, no specular), one
+// bounce. Declare=VSH_MIRROR_MASK=1 renders the mask instead: mirrors
+// emission 1, everything else black.
+std::string PovColourScene(const ExportScene& s);
 
 } // namespace vsh_harness
 

@@ -7,6 +7,7 @@
 
 #include "vsh_metrics.h"
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -19,6 +20,11 @@ struct Row
   std::string scene, test, reference = "povray", light_type, status, error, heatmap;
   int light = 0, width = 0, height = 0;
   vsh_metrics m{};
+  // Scenes with mirrors: the colour error over the mirror's pixels against
+  // POV-Ray (every light at once, so the same on each light's row), NaN
+  // otherwise; and the mirror region's heat map.
+  double reflection_mae = std::nan("");
+  std::string mirror_heatmap;
   // Set by --check: "" (not checked), "ok", "FAILED: why", "known failure: reason".
   std::string check;
 };
@@ -34,12 +40,17 @@ struct SceneResult
   std::map<std::string, double> seconds;       // renderer -> render time
   std::map<std::string, double> frame_seconds; // Blender renderer -> mean seconds per frame
   std::map<std::string, bool> cached;
+  std::string mirror_image; // POV-Ray's mirror pixels, when the scene has mirrors
 };
 
 // A metric of a row by name (vis_mae, wrong_pct, edge_px, false_shadow_pct,
 // false_light_pct, and wrong_of_shadow_pct when the metrics library has it).
 // `known` is false for any other name.
 double RowMetric(const vsh_metrics& m, const std::string& name, bool& known);
+
+// RowMetric, and also reflection_mae (NaN on rows without mirrors, which
+// then fails any limit on it).
+double RowMetric(const Row& r, const std::string& name, bool& known);
 
 // Whether the metrics library computes wrong_of_shadow_pct (compare/metrics).
 bool HaveWrongOfShadow();

@@ -27,11 +27,11 @@ double WrongOfShadow(const vsh_metrics& m)
 std::string CsvRow(const Row& r)
 {
   char buf[2048];
-  snprintf(buf, sizeof buf, "%s,%d,%s,%s,%s,%d,%d,%ld,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%s\n",
+  snprintf(buf, sizeof buf, "%s,%d,%s,%s,%s,%d,%d,%ld,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%s,%s\n",
     r.scene.c_str(), r.light, r.light_type.c_str(), r.test.c_str(), r.reference.c_str(), r.width,
     r.height, r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
     r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), false).c_str(),
-    r.status.c_str());
+    Num(r.reflection_mae, false).c_str(), r.status.c_str());
   return buf;
 }
 
@@ -43,11 +43,13 @@ std::string JsonRow(const Row& r)
     "\"reference\": \"%s\", \"valid_pixels\": %ld, \"compared_pixels\": %ld, "
     "\"vis_mae\": %.9g, \"wrong_pct\": %.9g, \"edge_px\": %.9g, "
     "\"false_shadow_pct\": %.9g, \"false_light_pct\": %.9g, \"wrong_of_shadow_pct\": %s, "
-    "\"status\": \"%s\", \"check\": \"%s\", \"heatmap\": \"%s\"}",
+    "\"reflection_mae\": %s, \"status\": \"%s\", \"check\": \"%s\", \"heatmap\": \"%s\", "
+    "\"mirror_heatmap\": \"%s\"}",
     r.light, r.light_type.c_str(), JsonEscape(r.test).c_str(), r.reference.c_str(),
     r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
     r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), true).c_str(),
-    r.status.c_str(), JsonEscape(r.check).c_str(), JsonEscape(r.heatmap).c_str());
+    Num(r.reflection_mae, true).c_str(), r.status.c_str(), JsonEscape(r.check).c_str(),
+    JsonEscape(r.heatmap).c_str(), JsonEscape(r.mirror_heatmap).c_str());
   return buf;
 }
 
@@ -88,7 +90,7 @@ bool WriteResults(const Options& opt, const std::vector<SceneResult>& all)
 {
   std::string csv = "scene,light,light_type,test,reference,width,height,valid_pixels,"
                     "compared_pixels,vis_mae,wrong_pct,edge_px,false_shadow_pct,false_light_pct,"
-                    "wrong_of_shadow_pct,status\n";
+                    "wrong_of_shadow_pct,reflection_mae,status\n";
   std::string json = "{\n  \"scenes\": [\n";
   for (size_t si = 0; si < all.size(); ++si)
   {

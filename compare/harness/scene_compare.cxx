@@ -63,6 +63,16 @@ double RowMetric(const vsh_metrics& m, const std::string& name, bool& known)
   return 0;
 }
 
+double RowMetric(const Row& r, const std::string& name, bool& known)
+{
+  if (name == "reflection_mae")
+  {
+    known = true;
+    return r.reflection_mae;
+  }
+  return RowMetric(r.m, name, known);
+}
+
 Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const std::string& test,
   const std::string& testdir, const std::string& light_type)
 {
