@@ -78,8 +78,8 @@ bool PovrayColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
     mirror[i] = m.rgb[3 * i] > 0.5f ? 255 : 0;
   char e2[1024] = "";
   const bool ok = std::rename((work + "/color.png").c_str(), (dir + "/color.png").c_str()) == 0 &&
-    vsh_png_write_gray8((dir + "/mirror.png").c_str(), mirror.data(), ex.width, ex.height, e2,
-      sizeof e2) == 0;
+    vsh_png_write_gray8(
+      (dir + "/mirror.png").c_str(), mirror.data(), ex.width, ex.height, e2, sizeof e2) == 0;
   if (!opt.keep_work)
     RemoveTree(work);
   if (!ok)
@@ -88,8 +88,8 @@ bool PovrayColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
 }
 
 // Cycles: the colour image (render_cycles.py cycles-color), floats.
-bool CyclesColour(const Options& opt, const SceneEntry& e, const ExportScene& ex, Colour& colour,
-  std::string& err)
+bool CyclesColour(
+  const Options& opt, const SceneEntry& e, const ExportScene& ex, Colour& colour, std::string& err)
 {
   const std::string dir = AbsPath(opt.out + "/" + e.dir_id + "/cycles");
   const std::string work = dir + "/.colourwork";
@@ -100,8 +100,8 @@ bool CyclesColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
     "-t", std::to_string(opt.threads), "--python", opt.cycles_script, "--", work + "/scene.bin",
     work, "cycles-color" };
   RunResult r = RunProcess(argv, work, dir + "/cycles-colour.log", opt.timeout * 4 + 60);
-  Progress(e.id + ": cycles colour" + (r.ok() ? "" : " FAILED") + " (" + Fmt(r.seconds, "%.1f") +
-    " s)");
+  Progress(
+    e.id + ": cycles colour" + (r.ok() ? "" : " FAILED") + " (" + Fmt(r.seconds, "%.1f") + " s)");
   std::string raw;
   const size_t n = static_cast<size_t>(ex.width) * ex.height;
   if (!r.ok() || !ReadFile(work + "/color.f32", raw) || raw.size() != 12 * n)
@@ -117,13 +117,13 @@ bool CyclesColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
   // An 8-bit picture for the report; the metric reads the floats.
   std::vector<unsigned char> rgb8(3 * n);
   for (size_t i = 0; i < 3 * n; ++i)
-    rgb8[i] = static_cast<unsigned char>(
-      std::lround(255.0 * std::min(1.0f, std::max(0.0f, std::isfinite(colour.rgb[i]) ? colour.rgb[i] : 0.0f))));
+    rgb8[i] = static_cast<unsigned char>(std::lround(
+      255.0 * std::min(1.0f, std::max(0.0f, std::isfinite(colour.rgb[i]) ? colour.rgb[i] : 0.0f))));
   char e2[1024] = "";
   if (!opt.keep_work)
     RemoveTree(work);
-  if (vsh_png_write_rgb8((dir + "/color.png").c_str(), rgb8.data(), ex.width, ex.height, e2,
-        sizeof e2) != 0)
+  if (vsh_png_write_rgb8(
+        (dir + "/color.png").c_str(), rgb8.data(), ex.width, ex.height, e2, sizeof e2) != 0)
     Progress("WARNING " + e.id + ": " + e2);
   return true;
 }

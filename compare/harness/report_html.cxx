@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <cstdio>
+#include <set>
 #include <unistd.h>
 
 namespace vsh_harness
