@@ -75,6 +75,12 @@ def generated(value):
     return math.ceil((value * GEN_FACTOR + GEN_POINTS) * 100) / 100
 
 
+# reflection_mae (scenes with mirrors, docs/reflections.md) is a colour error
+# in [0, 1], not a percentage: 1.25 x + 0.005, rounded up to 1e-4.
+def generated_mae(value):
+    return math.ceil((value * GEN_FACTOR + 0.005) * 10000) / 10000
+
+
 def where(scene, r):
     return "scene %s, light %d, %s" % (scene, r["light"], r["test"])
 
@@ -148,6 +154,9 @@ def generate(base, rows, known):
                 continue
             per_light = entry.setdefault(r["test"], {}).setdefault(metric, [None] * lights)
             per_light[r["light"]] = limit
+        if r.get("reflection_mae") is not None:
+            per_light = entry.setdefault(r["test"], {}).setdefault("reflection_mae", [None] * lights)
+            per_light[r["light"]] = generated_mae(r["reflection_mae"])
     out["scenes"].update(fresh)
     return out, refused
 

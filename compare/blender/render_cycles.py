@@ -8,6 +8,13 @@
 # PRESET is one of the fixed words `cycles` (default), `eevee` (Blender's own
 # EEVEE shadow defaults) or `eevee-best` (EEVEE shadow settings chosen for
 # hard shadows); see PRESETS below. EEVEE needs an X display (xvfb-run -a).
+# `cycles-color` renders the colour image of a scene with planar mirrors
+# instead (docs/reflections.md): every light at once, shadows on, objects in
+# their colours, a mirror of reflectance R = a mix (factor R) of its Diffuse
+# BSDF and a sharp white Glossy BSDF (no fresnel), one glossy bounce, lights
+# scaled to POV-Ray's units (no distance falloff, a white surface facing
+# the light shows 1); it writes OUTDIR/color.f32 (R, G, B per pixel,
+# float32, BOTTOM row first).
 #
 # DATAFILE is a binary file of numbers written by vtkshadow-compare (format
 # below); nothing in it is ever evaluated, so a scene file cannot run code
@@ -20,7 +27,7 @@
 # seconds of bpy.ops.render.render, i.e. one frame without Blender start-up).
 #
 # DATAFILE layout (little-endian):
-#   8 bytes   magic b"VSHCYC02"
+#   8 bytes   magic b"VSHCYC03"
 #   int32 x7  width, height, samples (Cycles only), seed (Cycles only),
 #             pixel_centre (1: BOX filter 0.01, every sample at the pixel centre;
 #             0: BOX filter 1.0 over the pixel), light_count, object_count
@@ -31,6 +38,7 @@
 #               size (point, spot: disk radius, Blender's shadow_soft_size;
 #               directional: angular diameter in degrees, Blender's sun angle; 0 hard)
 #   per object: int32 x3  point_count, triangle_count, casts
+#               float64 x4  colour (linear R, G, B), mirror reflectance (0: none)
 #               float64 x 3*point_count  points
 #               float64 x 3*point_count  normals
 #               int32   x 3*triangle_count  triangles
@@ -76,8 +84,8 @@ def read_data(path):
         pos += size
         return a
 
-    if take("<8s")[0] != b"VSHCYC02":
-        fail("%s: not a vtkshadow Cycles data file (version 02)" % path)
+    if take("<8s")[0] != b"VSHCYC03":
+        fail("%s: not a vtkshadow Cycles data file (version 03)" % path)
     width, height, samples, seed, centre, nlights, nobjects = take("<7i")
     camera = take("<10d")
     clip = take("<2d")
@@ -88,10 +96,11 @@ def read_data(path):
     objects = []
     for _ in range(nobjects):
         npts, ntri, casts = take("<3i")
+        colour = take("<4d")
         pts = take_array("d", 3 * npts)
         nrm = take_array("d", 3 * npts)
         tri = take_array("i", 3 * ntri)
-        objects.append((npts, ntri, casts, pts, nrm, tri))
+        objects.append((npts, ntri, casts, pts, nrm, tri, colour))
     if pos != len(data):
         fail("%s: trailing bytes" % path)
     return width, height, (samples, seed, centre), camera, clip, lights, objects
@@ -130,7 +139,10 @@ EEVEE_BEST = {
 }
 EEVEE_BEST_BIAS = 0.1
 EEVEE_BEST_CASCADE_EXPONENT = 0.5
-PRESETS = ("cycles", "eevee", "eevee-best")
+PRESETS = ("cycles", "eevee", "eevee-best", "cycles-color")
+# Samples of the colour render: the mix of diffuse and glossy is sampled one
+# closure per path, so the reflection needs many samples per pixel centre.
+COLOR_SAMPLES = 256
 
 
 def setup_cycles(scene, sampling):
@@ -179,7 +191,7 @@ def visible_depth(camera, clip, objects):
     eye = Vector(camera[0:3])
     f = (Vector(camera[3:6]) - eye).normalized()
     near, far = clip[1], clip[0]
-    for (npts, _ntri, _casts, pts, _nrm, _tri) in objects:
+    for (npts, _ntri, _casts, pts, _nrm, _tri, _colour) in objects:
         for i in range(npts):
             d = (pts[3 * i] - eye.x) * f.x + (pts[3 * i + 1] - eye.y) * f.y + (pts[3 * i + 2] - eye.z) * f.z
             if d > clip[0]:
@@ -193,10 +205,55 @@ def visible_depth(camera, clip, objects):
 def farthest_point(position, objects):
     p = Vector(position)
     best = 0.0
-    for (npts, _ntri, _casts, pts, _nrm, _tri) in objects:
+    for (npts, _ntri, _casts, pts, _nrm, _tri, _colour) in objects:
         for i in range(npts):
             best = max(best, (Vector(pts[3 * i:3 * i + 3]) - p).length)
     return best
+
+
+def make_colour_material(name, colour):
+    """POV-Ray's finish { diffuse 1-R reflection { R } } with pigment c:
+    (1-R) Lambert(c) + R perfect mirror (white, no fresnel)."""
+    (r, g, b, mirror) = colour
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nodes = mat.node_tree.nodes
+    nodes.clear()
+    links = mat.node_tree.links
+    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Color"].default_value = (r, g, b, 1.0)
+    diffuse.inputs["Roughness"].default_value = 0.0
+    out = nodes.new("ShaderNodeOutputMaterial")
+    if mirror <= 0:
+        links.new(diffuse.outputs["BSDF"], out.inputs["Surface"])
+        return mat
+    glossy = nodes.new("ShaderNodeBsdfGlossy")
+    glossy.distribution = "SHARP"
+    glossy.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+    glossy.inputs["Roughness"].default_value = 0.0
+    mix = nodes.new("ShaderNodeMixShader")
+    mix.inputs["Fac"].default_value = mirror
+    links.new(diffuse.outputs["BSDF"], mix.inputs[1])
+    links.new(glossy.outputs["BSDF"], mix.inputs[2])
+    links.new(mix.outputs["Shader"], out.inputs["Surface"])
+    return mat
+
+
+def colour_light(ldata, ltype):
+    """POV-Ray's light units: no distance falloff and a white Lambertian
+    surface facing the light at value 1. Cycles divides a sun's strength by
+    nothing and a Lambert BSDF gives albedo/pi, so the sun gets pi; a point
+    or spot light of power P has intensity P/(4 pi), and the Light Falloff
+    node's Constant output removes the 1/d^2, so P = 4 pi^2."""
+    ldata.energy = math.pi if ltype == 0 else 4.0 * math.pi * math.pi
+    if ltype == 0:
+        return
+    ldata.use_nodes = True
+    nodes = ldata.node_tree.nodes
+    emission = next(n for n in nodes if n.type == "EMISSION")
+    falloff = nodes.new("ShaderNodeLightFalloff")
+    falloff.inputs["Strength"].default_value = 1.0
+    ldata.node_tree.links.new(falloff.outputs["Constant"], emission.inputs["Strength"])
 
 
 def make_material(name, preset, casts):
@@ -268,6 +325,49 @@ def set_shadows(ldata, preset, on):
         ldata.use_shadow = on
 
 
+def place_light(scene, ldata, light):
+    (_ltype, px, py, pz, ax, ay, az, _cone, _size) = light
+    lobj = bpy.data.objects.new("light", ldata)
+    rot = frame_from_axis((ax, ay, az)).to_4x4()
+    rot.translation = Vector((px, py, pz))
+    lobj.matrix_world = rot
+    scene.collection.objects.link(lobj)
+    return lobj
+
+
+def render_colour(scene, lights, objects, depth, exr, outdir, width, height):
+    """cycles-color: every light at once, shadows on; color.f32 = RGB."""
+    for light in lights:
+        (ltype, px, py, pz, _ax, _ay, _az, cone, size) = light
+        # The light's size too: POV-Ray's colour scene makes it an area light.
+        ldata = make_light(int(ltype), cone, size, "cycles", (px, py, pz), objects, depth)
+        ldata.cycles.max_bounces = 1
+        colour_light(ldata, int(ltype))
+        set_shadows(ldata, "cycles", True)
+        place_light(scene, ldata, light)
+    scene.render.filepath = exr
+    bpy.ops.render.render(write_still=True)
+    img = bpy.data.images.load(exr, check_existing=False)
+    if tuple(img.size) != (width, height):
+        fail("rendered %dx%d, expected %dx%d" % (img.size[0], img.size[1], width, height))
+    px4 = array("f", bytes(4 * 4 * width * height))
+    img.pixels.foreach_get(px4)
+    rgb = array("f", bytes(4 * 3 * width * height))
+    for c in range(3):
+        rgb[c::3] = px4[c::4]
+    target = os.path.join(outdir, "color.f32")
+    with open(target + ".tmp", "wb") as f:
+        if sys.byteorder != "little":
+            rgb.byteswap()
+        rgb.tofile(f)
+    os.replace(target + ".tmp", target)
+    try:
+        os.remove(exr)
+    except OSError:
+        pass
+    sys.stderr.write("cycles-color: done\n")
+
+
 def main():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     if len(argv) not in (2, 3) or (len(argv) == 3 and argv[2] not in PRESETS):
@@ -275,7 +375,13 @@ def main():
              "-- DATAFILE OUTDIR [%s]" % "|".join(PRESETS))
     datafile, outdir = argv[0], argv[1]
     preset = argv[2] if len(argv) == 3 else "cycles"
+    colour = preset == "cycles-color"
+    if colour:
+        preset = "cycles"  # the same renderer settings, then the colour changes below
     width, height, samples, camera, clip, lights, objects = read_data(datafile)
+    if colour:
+        # (samples, seed, pixel centre): many samples, all at the pixel centre.
+        samples = (COLOR_SAMPLES, samples[1], 1)
 
     # Empty scene: delete the factory cube, light and camera.
     for obj in list(bpy.data.objects):
@@ -286,6 +392,11 @@ def main():
     if preset == "cycles":
         setup_cycles(scene, samples)
         depth = clip
+        if colour:
+            # Pixel centre like POV-Ray -A; one bounce: the mirror's reflection.
+            scene.cycles.filter_width = 0.01
+            scene.cycles.max_bounces = 1
+            scene.cycles.glossy_bounces = 1
     else:
         setup_eevee(scene, preset == "eevee-best")
         # A rasterizer needs a depth range fitted to the scene (as VTK's
@@ -311,7 +422,7 @@ def main():
     scene.render.use_sequencer = False
 
     materials = {}
-    for index, (npts, ntri, casts, pts, nrm, tri) in enumerate(objects):
+    for index, (npts, ntri, casts, pts, nrm, tri, rgbm) in enumerate(objects):
         mesh = bpy.data.meshes.new("m%d" % index)
         mesh.vertices.add(npts)
         mesh.vertices.foreach_set("co", array("f", pts))
@@ -327,9 +438,12 @@ def main():
         mesh.use_auto_smooth = True
         mesh.normals_split_custom_set_from_vertices(
             [tuple(nrm[3 * i:3 * i + 3]) for i in range(npts)])
-        if bool(casts) not in materials:
-            materials[bool(casts)] = make_material("white%d" % casts, preset, casts)
-        mesh.materials.append(materials[bool(casts)])
+        if colour:
+            mesh.materials.append(make_colour_material("c%d" % index, rgbm))
+        else:
+            if bool(casts) not in materials:
+                materials[bool(casts)] = make_material("white%d" % casts, preset, casts)
+            mesh.materials.append(materials[bool(casts)])
         obj = bpy.data.objects.new("o%d" % index, mesh)
         obj.visible_shadow = bool(casts)
         # No shadow-terminator tricks: shadow rays start on the true triangle.
@@ -361,6 +475,9 @@ def main():
     scene.camera = cam
 
     exr = os.path.join(outdir, "render.exr")
+    if colour:
+        render_colour(scene, lights, objects, depth, exr, outdir, width, height)
+        return
     frame_log = []
     for k, (ltype, px, py, pz, ax, ay, az, cone, size) in enumerate(lights):
         ltype = int(ltype)

@@ -139,7 +139,7 @@ void CheckKnown(KnownFailure& k, Row& r, CheckOutcome& out)
   for (const auto& fw : k.fails_while)
   {
     bool known = false;
-    const double v = RowMetric(r.m, fw.first, known);
+    const double v = RowMetric(r, fw.first, known);
     k.measured += (k.measured.empty() ? "" : ", ") + fw.first + " = " + Fmt(v, "%.4g");
     if (!known)
       out.failures.push_back(k.file + ": unknown metric '" + fw.first + "'");
@@ -166,7 +166,7 @@ void CheckLimits(
   for (const auto& lim : limits)
   {
     bool known = false;
-    const double value = RowMetric(r.m, lim.first, known);
+    const double value = RowMetric(r, lim.first, known);
     const bool pct =
       lim.first.size() > 4 && lim.first.compare(lim.first.size() - 4, 4, "_pct") == 0;
     ++out.comparisons;

@@ -40,18 +40,26 @@ void Put(std::string& o, T v)
 #endif
   o.append(reinterpret_cast<const char*>(b), sizeof(T));
 }
+
+void PovCamera(std::string& o, const ExportScene& s)
+{
+  const double a = static_cast<double>(s.width) / s.height;
+  const double t = std::tan(s.view_angle * M_PI / 360.0);
+  const double horizontal = 2.0 * std::atan(a * t) * 180.0 / M_PI;
+  o += "camera { perspective location ";
+  Vec(o, s.eye);
+  o += " sky ";
+  Vec(o, s.up);
+  o += " up y right -x*";
+  Num(o, a);
+  o += " angle ";
+  Num(o, horizontal);
+  o += " look_at ";
+  Vec(o, s.focal);
+  o += " }\n";
+  o += "background { rgb 0 }\n";
 }
 
-bool HasSoftLight(const ExportScene& s)
-{
-  for (const ExportLight& L : s.lights)
-    if (L.size > 0)
-      return true;
-  return false;
-}
-
-namespace
-{
 // Two unit vectors perpendicular to `axis` and to each other, turned about
 // it by `turn` radians.
 void Perpendiculars(const double axis[3], double turn, double a[3], double b[3])
@@ -101,36 +109,18 @@ void PovAreaLight(std::string& o, const ExportLight& L, int grid, int seed)
   if (L.type != 0)
     o += " orient";
 }
-}
 
-std::string PovScene(const ExportScene& s, int grid, int seed)
+// Every light, each inside `#if (<condition with K>)`; lights with a size
+// become area lights (PovAreaLight).
+void PovLights(
+  std::string& o, const ExportScene& s, const std::string& condition, int grid, int seed)
 {
-  std::string o;
-  o.reserve(1 << 20);
-  o += "// Written by vtkshadow-compare: numbers only, nothing from the scene file's text.\n";
-  o += "#version 3.7;\n";
-  o += "global_settings { assumed_gamma 1.0 ambient_light 0 max_trace_level 1 }\n";
-  o += "#ifndef (VSH_LIGHT) #declare VSH_LIGHT = 0; #end\n";
-  o += "#ifndef (VSH_SHADOWS) #declare VSH_SHADOWS = 1; #end\n";
-  const double a = static_cast<double>(s.width) / s.height;
-  const double t = std::tan(s.view_angle * M_PI / 360.0);
-  const double horizontal = 2.0 * std::atan(a * t) * 180.0 / M_PI;
-  o += "camera { perspective location ";
-  Vec(o, s.eye);
-  o += " sky ";
-  Vec(o, s.up);
-  o += " up y right -x*";
-  Num(o, a);
-  o += " angle ";
-  Num(o, horizontal);
-  o += " look_at ";
-  Vec(o, s.focal);
-  o += " }\n";
-  o += "background { rgb 0 }\n";
   for (size_t k = 0; k < s.lights.size(); ++k)
   {
     const ExportLight& L = s.lights[k];
-    o += "#if (VSH_LIGHT = " + std::to_string(k) + ")\n  light_source { ";
+    std::string c = condition;
+    c.replace(c.find('K'), 1, std::to_string(k));
+    o += "#if (" + c + ")\n  light_source { ";
     Vec(o, L.position);
     o += " color rgb 1";
     if (L.size > 0)
@@ -154,37 +144,93 @@ std::string PovScene(const ExportScene& s, int grid, int seed)
     }
     o += " }\n#end\n";
   }
+}
+
+// One mesh2 with its normals; `tail` follows the face indices (texture,
+// shadow flags).
+void PovMesh(std::string& o, const ExportObject& ob, const std::string& tail)
+{
+  const size_t np = ob.points.size() / 3, nt = ob.triangles.size() / 3;
+  o += "mesh2 {\n vertex_vectors { " + std::to_string(np);
+  for (size_t i = 0; i < np; ++i)
+  {
+    o += i % 4 ? "," : ",\n  ";
+    Vec(o, &ob.points[3 * i]);
+  }
+  o += " }\n normal_vectors { " + std::to_string(np);
+  for (size_t i = 0; i < np; ++i)
+  {
+    o += i % 4 ? "," : ",\n  ";
+    Vec(o, &ob.normals[3 * i]);
+  }
+  o += " }\n face_indices { " + std::to_string(nt);
+  char buf[64];
+  for (size_t i = 0; i < nt; ++i)
+  {
+    snprintf(buf, sizeof buf, "%s<%u,%u,%u>", i % 6 ? "," : ",\n  ", ob.triangles[3 * i],
+      ob.triangles[3 * i + 1], ob.triangles[3 * i + 2]);
+    o += buf;
+  }
+  o += " }\n" + tail + "}\n";
+}
+
+const char* const kPovHeader =
+  "// Written by vtkshadow-compare: numbers only, nothing from the scene file's text.\n"
+  "#version 3.7;\n";
+} // namespace
+
+bool HasSoftLight(const ExportScene& s)
+{
+  for (const ExportLight& L : s.lights)
+    if (L.size > 0)
+      return true;
+  return false;
+}
+
+std::string PovScene(const ExportScene& s, int grid, int seed)
+{
+  std::string o;
+  o.reserve(1 << 20);
+  o += kPovHeader;
+  o += "global_settings { assumed_gamma 1.0 ambient_light 0 max_trace_level 1 }\n";
+  o += "#ifndef (VSH_LIGHT) #declare VSH_LIGHT = 0; #end\n";
+  o += "#ifndef (VSH_SHADOWS) #declare VSH_SHADOWS = 1; #end\n";
+  PovCamera(o, s);
+  PovLights(o, s, "VSH_LIGHT = K", grid, seed);
   o += "#declare VSH_T = texture { pigment { rgb 1 } finish { ambient 0 emission 0 diffuse 1 "
        "brilliance 1 specular 0 phong 0 reflection 0 } }\n";
   for (const ExportObject& ob : s.objects)
+    PovMesh(o, ob,
+      std::string(" texture { VSH_T }\n") +
+        (ob.casts ? " #if (VSH_SHADOWS = 0) no_shadow #end\n" : " no_shadow\n"));
+  return o;
+}
+
+std::string PovColourScene(const ExportScene& s, int grid, int seed)
+{
+  std::string o;
+  o.reserve(1 << 20);
+  o += kPovHeader;
+  // Two levels: the camera ray and one reflection (the pass draws one bounce).
+  o += "global_settings { assumed_gamma 1.0 ambient_light 0 max_trace_level 2 }\n";
+  o += "#ifndef (VSH_MIRROR_MASK) #declare VSH_MIRROR_MASK = 0; #end\n";
+  PovCamera(o, s);
+  PovLights(o, s, "K >= 0 & VSH_MIRROR_MASK = 0", grid, seed);
+  for (const ExportObject& ob : s.objects)
   {
-    const size_t np = ob.points.size() / 3, nt = ob.triangles.size() / 3;
-    o += "mesh2 {\n vertex_vectors { " + std::to_string(np);
-    for (size_t i = 0; i < np; ++i)
-    {
-      o += i % 4 ? "," : ",\n  ";
-      Vec(o, &ob.points[3 * i]);
-    }
-    o += " }\n normal_vectors { " + std::to_string(np);
-    for (size_t i = 0; i < np; ++i)
-    {
-      o += i % 4 ? "," : ",\n  ";
-      Vec(o, &ob.normals[3 * i]);
-    }
-    o += " }\n face_indices { " + std::to_string(nt);
-    char buf[64];
-    for (size_t i = 0; i < nt; ++i)
-    {
-      snprintf(buf, sizeof buf, "%s<%u,%u,%u>", i % 6 ? "," : ",\n  ", ob.triangles[3 * i],
-        ob.triangles[3 * i + 1], ob.triangles[3 * i + 2]);
-      o += buf;
-    }
-    o += " }\n texture { VSH_T }\n";
-    if (!ob.casts)
-      o += " no_shadow\n";
-    else
-      o += " #if (VSH_SHADOWS = 0) no_shadow #end\n";
-    o += "}\n";
+    const double R = ob.mirror > 0 ? ob.mirror : 0.0;
+    std::string t = " #if (VSH_MIRROR_MASK = 0)\n  texture { pigment { rgb ";
+    Vec(t, ob.color);
+    t += " } finish { ambient 0 emission 0 diffuse ";
+    Num(t, 1.0 - R);
+    t += " brilliance 1 specular 0 phong 0 reflection { ";
+    Num(t, R);
+    t += " } } }\n #else\n  texture { pigment { rgb ";
+    t += R > 0 ? "1" : "0";
+    t += " } finish { ambient 0 emission ";
+    t += R > 0 ? "1" : "0";
+    t += " diffuse 0 specular 0 phong 0 reflection 0 } }\n #end\n";
+    PovMesh(o, ob, t + (ob.casts ? "" : " no_shadow\n"));
   }
   return o;
 }
@@ -197,7 +243,9 @@ std::string CyclesData(const ExportScene& s, int samples, int soft_samples, int 
   const int centre = samples == 1 ? 1 : 0;
   if (centre && HasSoftLight(s))
     samples = soft_samples;
-  o.append("VSHCYC02", 8);
+  // Version 03: 02 of the soft lights (seed, pixel centre, a size per light)
+  // and 02 of the mirrors (a colour and reflectance per object) together.
+  o.append("VSHCYC03", 8);
   Put<int32_t>(o, s.width);
   Put<int32_t>(o, s.height);
   Put<int32_t>(o, samples);
@@ -237,6 +285,9 @@ std::string CyclesData(const ExportScene& s, int samples, int soft_samples, int 
     Put<int32_t>(o, static_cast<int32_t>(ob.points.size() / 3));
     Put<int32_t>(o, static_cast<int32_t>(ob.triangles.size() / 3));
     Put<int32_t>(o, ob.casts ? 1 : 0);
+    for (int i = 0; i < 3; ++i)
+      Put<double>(o, ob.color[i]);
+    Put<double>(o, ob.mirror);
     for (double v : ob.points)
       Put<double>(o, v);
     for (double v : ob.normals)

@@ -21,6 +21,8 @@ struct ExportObject
   std::vector<double> normals; // 3 per point, unit
   std::vector<uint32_t> triangles;
   bool casts = true;
+  double color[3] = { 1, 1, 1 }; // linear RGB: only the colour renders use it
+  double mirror = 0;             // reflectance R of a planar mirror, 0 = none
 };
 
 struct ExportLight
@@ -52,6 +54,7 @@ struct ExportScene
   double bounds_diagonal = 1;
   std::vector<ExportLight> lights;
   std::vector<ExportObject> objects;
+  bool has_mirror = false; // some object has mirror > 0: the colour renders run
 };
 
 // POV-Ray 3.7 scene. Light K and shadows on/off are chosen on the command
@@ -68,6 +71,14 @@ bool HasSoftLight(const ExportScene& s);
 // with a soft light get `soft_samples` samples at the pixel centre when
 // `samples` is 1 (the pixel-centre reference), else `samples` over the pixel.
 std::string CyclesData(const ExportScene& s, int samples, int soft_samples = 1, int seed = 0);
+
+// POV-Ray 3.7 colour scene of a scene with mirrors (docs/reflections.md):
+// every light on, shadows on, objects in their colours with finish
+// { ambient 0 diffuse 1-R reflection { R } } (no fresnel, no specular), one
+// bounce. Declare=VSH_MIRROR_MASK=1 renders the mask instead: mirrors
+// emission 1, everything else black. Lights with a size are area lights as
+// in PovScene (grid, seed).
+std::string PovColourScene(const ExportScene& s, int grid = 17, int seed = 0);
 
 } // namespace vsh_harness
 

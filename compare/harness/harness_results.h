@@ -8,6 +8,7 @@
 #include "vsh_metrics.h"
 #include "vsh_penumbra.h"
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -24,6 +25,11 @@ struct Row
   // "no penumbra" (pen.penumbra_pixels 0) on scenes with hard lights only.
   vsh_penumbra pen{};
   std::string pen_heatmap;
+  // Scenes with mirrors: the colour error over the mirror's pixels against
+  // POV-Ray (every light at once, so the same on each light's row), NaN
+  // otherwise; and the mirror region's heat map.
+  double reflection_mae = std::nan("");
+  std::string mirror_heatmap;
   // Set by --check: "" (not checked), "ok", "FAILED: why", "known failure: reason".
   std::string check;
 };
@@ -39,12 +45,17 @@ struct SceneResult
   std::map<std::string, double> seconds;       // renderer -> render time
   std::map<std::string, double> frame_seconds; // Blender renderer -> mean seconds per frame
   std::map<std::string, bool> cached;
+  std::string mirror_image; // POV-Ray's mirror pixels, when the scene has mirrors
 };
 
 // A metric of a row by name (vis_mae, wrong_pct, edge_px, false_shadow_pct,
 // false_light_pct, and wrong_of_shadow_pct when the metrics library has it).
 // `known` is false for any other name.
 double RowMetric(const vsh_metrics& m, const std::string& name, bool& known);
+
+// RowMetric, and also reflection_mae (NaN on rows without mirrors, which
+// then fails any limit on it).
+double RowMetric(const Row& r, const std::string& name, bool& known);
 
 // Whether the metrics library computes wrong_of_shadow_pct (compare/metrics).
 bool HaveWrongOfShadow();

@@ -49,7 +49,8 @@ std::string CsvRow(const Row& r)
     r.height, r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
     r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), false).c_str(),
     r.status.c_str());
-  return buf + PenumbraFields(r.pen, ",", false) + "\n";
+  // reflection_mae last: the columns up to the penumbra ones keep their places.
+  return buf + PenumbraFields(r.pen, ",", false) + "," + Num(r.reflection_mae, false) + "\n";
 }
 
 std::string JsonRow(const Row& r)
@@ -60,11 +61,13 @@ std::string JsonRow(const Row& r)
     "\"reference\": \"%s\", \"valid_pixels\": %ld, \"compared_pixels\": %ld, "
     "\"vis_mae\": %.9g, \"wrong_pct\": %.9g, \"edge_px\": %.9g, "
     "\"false_shadow_pct\": %.9g, \"false_light_pct\": %.9g, \"wrong_of_shadow_pct\": %s, "
-    "\"status\": \"%s\", \"check\": \"%s\", \"heatmap\": \"%s\"",
+    "\"reflection_mae\": %s, \"status\": \"%s\", \"check\": \"%s\", \"heatmap\": \"%s\", "
+    "\"mirror_heatmap\": \"%s\"",
     r.light, r.light_type.c_str(), JsonEscape(r.test).c_str(), r.reference.c_str(),
     r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
     r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), true).c_str(),
-    r.status.c_str(), JsonEscape(r.check).c_str(), JsonEscape(r.heatmap).c_str());
+    Num(r.reflection_mae, true).c_str(), r.status.c_str(), JsonEscape(r.check).c_str(),
+    JsonEscape(r.heatmap).c_str(), JsonEscape(r.mirror_heatmap).c_str());
   return buf + PenumbraFields(r.pen, ", ", true) + ", \"pen_heatmap\": \"" +
     JsonEscape(r.pen_heatmap) + "\"}";
 }
@@ -108,7 +111,7 @@ bool WriteResults(const Options& opt, const std::vector<SceneResult>& all)
                     "compared_pixels,vis_mae,wrong_pct,edge_px,false_shadow_pct,false_light_pct,"
                     "wrong_of_shadow_pct,status,pen_pixels,pen_mae,pen_bias,pen_leak_pct,"
                     "pen_false_shadow_pct,pen_width_ratio,pen_contour_01_px,pen_contour_05_px,"
-                    "pen_contour_09_px\n";
+                    "pen_contour_09_px,reflection_mae\n";
   std::string json = "{\n  \"scenes\": [\n";
   for (size_t si = 0; si < all.size(); ++si)
   {

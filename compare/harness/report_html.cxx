@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <unistd.h>
 
 namespace vsh_harness
@@ -114,7 +115,8 @@ std::string RowTable(const SceneResult& sr, int k)
 {
   std::string h = "<table><tr><th>test</th><th>valid px</th><th>vis_mae</th><th>wrong_pct</th>"
                   "<th>edge_px</th><th>false_shadow_pct</th><th>false_light_pct</th>"
-                  "<th>wrong_of_shadow_pct</th><th>status</th><th>check</th></tr>";
+                  "<th>wrong_of_shadow_pct</th><th>reflection_mae</th><th>status</th>"
+                  "<th>check</th></tr>";
   for (const Row& r : sr.rows)
   {
     if (r.light != k)
@@ -123,9 +125,11 @@ std::string RowTable(const SceneResult& sr, int k)
     const double wos = RowMetric(r.m, "wrong_of_shadow_pct", known);
     char buf[512];
     snprintf(buf, sizeof buf,
-      "<td>%ld</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%s</td>",
+      "<td>%ld</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%s</td>"
+      "<td>%s</td>",
       r.m.valid_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px, r.m.false_shadow_pct,
-      r.m.false_light_pct, known && std::isfinite(wos) ? Fmt(wos, "%.4g").c_str() : "");
+      r.m.false_light_pct, known && std::isfinite(wos) ? Fmt(wos, "%.4g").c_str() : "",
+      std::isfinite(r.reflection_mae) ? Fmt(r.reflection_mae, "%.4f").c_str() : "");
     const char* cls = r.check.rfind("FAILED", 0) == 0 ? " class=\"err\""
       : r.check.rfind("known failure", 0) == 0        ? " class=\"known\""
                                                       : "";
@@ -191,6 +195,35 @@ std::string LightSection(const Options& opt, const SceneResult& sr, int k)
   return h + "</div>\n" + RowTable(sr, k) + PenumbraSection(sr, k);
 }
 
+// Scenes with mirrors: the colour images (every light), the mirror's pixels
+// and each test's heat map over them (reflection_mae in the tables below).
+std::string MirrorSection(const Options& opt, const SceneResult& sr)
+{
+  if (sr.mirror_image.empty())
+    return "";
+  std::string h = "<h3>mirrors: colour, every light (reflection_mae against povray over the "
+                  "mirror's pixels)</h3>\n<div>";
+  std::vector<std::string> imgs{ "povray", "cycles" };
+  for (const auto& t : opt.techniques)
+    imgs.push_back("vtk/" + t);
+  for (const auto& im : imgs)
+  {
+    const std::string rel = sr.entry.dir_id + "/" + im + "/color.png";
+    if (FileExists(opt.out + "/" + rel))
+      h += "<figure><img src=\"" + HtmlEscape(rel) + "\"><figcaption>" + HtmlEscape(im) +
+        "</figcaption></figure>";
+  }
+  h += "<figure><img src=\"" + HtmlEscape(sr.mirror_image) +
+    "\"><figcaption>mirror pixels (povray)</figcaption></figure></div><div>";
+  std::set<std::string> shown;
+  for (const Row& r : sr.rows)
+    if (!r.mirror_heatmap.empty() && shown.insert(r.test).second)
+      h += "<figure><img src=\"" + HtmlEscape(r.mirror_heatmap) + "\"><figcaption>" +
+        HtmlEscape(r.test) + " &minus; povray, mirror, " + Fmt(r.reflection_mae, "%.4f") +
+        "</figcaption></figure>";
+  return h + "</div>\n";
+}
+
 } // namespace
 
 bool WriteHtml(
@@ -209,6 +242,7 @@ bool WriteHtml(
       std::to_string(sr.height) + ")</p>\n";
     for (const auto& err : sr.errors)
       h += "<p class=\"err\">" + HtmlEscape(err) + "</p>\n";
+    h += MirrorSection(opt, sr);
     for (int k = 0; k < sr.lights; ++k)
       h += LightSection(opt, sr, k);
   }

@@ -85,6 +85,16 @@ void ComparePenumbra(const Options& opt, const std::string& dir_id, const std::s
 }
 } // namespace
 
+double RowMetric(const Row& r, const std::string& name, bool& known)
+{
+  if (name == "reflection_mae")
+  {
+    known = true;
+    return r.reflection_mae;
+  }
+  return RowMetric(r.m, name, known);
+}
+
 Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const std::string& test,
   const std::string& testdir, const std::string& light_type)
 {

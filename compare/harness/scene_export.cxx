@@ -154,6 +154,9 @@ bool BuildExport(vtkShadowScene* vs, const vsh_scene* s, int w, int h, ExportSce
       return false;
     ExportObject eo;
     eo.casts = vs->GetObjectCasts(o);
+    vs->GetObjectColor(o, eo.color);
+    eo.mirror = vs->GetObjectMirror(o);
+    ex.has_mirror = ex.has_mirror || eo.mirror > 0;
     ExportPolyData(pd, ex, eo, lo, hi);
     if (!eo.triangles.empty())
       ex.objects.push_back(std::move(eo));

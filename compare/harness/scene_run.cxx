@@ -2,6 +2,7 @@
 #include "scene_run.h"
 
 #include "harness_util.h"
+#include "reflection_run.h"
 #include "scene_compare.h"
 #include "scene_export.h"
 #include "vtk_runner.h"
@@ -93,6 +94,8 @@ SceneResult RunScene(const Options& opt,
     for (const std::string& b : peers_ok)
       res.rows.push_back(CompareWithReference(opt, e, k, b, b, res.light_types[k]));
   }
+  if (have_export && pov_ok)
+    RunReflections(opt, e, ex, ok_t, res);
   for (const Row& r : res.rows)
     if (!r.error.empty())
       res.errors.push_back(

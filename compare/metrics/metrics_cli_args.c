@@ -11,6 +11,9 @@ const char metrics_cli_usage[] =
     "Usage: vtkshadow-metrics --reference R.png --mask M.png --test T.png\n"
     "                         [--exclude E.png] [--band N] [--heatmap H.png]\n"
     "                         [--json OUT.json]\n"
+    "       vtkshadow-metrics --reflection --reference R.png --mask MIRROR.png\n"
+    "                         --test T.png [--exclude E.png] [--heatmap H.png]\n"
+    "                         [--json OUT.json]\n"
     "\n"
     "Compares the visibility image T (16- or 8-bit grayscale PNG, 65535 = lit)\n"
     "with the reference R over the pixels valid in M (non-zero = valid) and\n"
@@ -27,6 +30,10 @@ const char metrics_cli_usage[] =
     "  --heatmap H.png    write the signed error map (blue: too dark, red: too\n"
     "                     bright, white: exact, grey: invalid)\n"
     "  --json OUT.json    also write the JSON object to OUT.json\n"
+    "  --reflection       colour mode for planar mirrors: R and T are colour\n"
+    "                     renders (RGB or RGBA PNG, linear values), M the\n"
+    "                     mirror's pixels; prints reflection_mae, the mean\n"
+    "                     absolute colour error over them (no --band)\n"
     "  --help             show this text\n"
     "\n"
     "All images must have the same size. Outputs are written atomically.\n"
@@ -68,6 +75,14 @@ int metrics_cli_parse(int argc, char **argv, metrics_cli_args *a, char *err,
       a->help = 1;
       return 0;
     }
+    if (strcmp(arg, "--reflection") == 0) { /* a switch: takes no value */
+      if (a->reflection) {
+        snprintf(err, errlen, "--reflection given twice");
+        return -1;
+      }
+      a->reflection = 1;
+      continue;
+    }
     size_t k = 0;
     while (k < nslots && strcmp(arg, slots[k].name) != 0) ++k;
     if (k == nslots) {
@@ -94,6 +109,11 @@ int metrics_cli_parse(int argc, char **argv, metrics_cli_args *a, char *err,
   }
   if (band && parse_band(band, &a->band) != 0) {
     snprintf(err, errlen, "--band: expected a whole number >= 0, got '%s'", band);
+    return -1;
+  }
+  if (band && a->reflection) {
+    /* a band along a shadow boundary means nothing for colours */
+    snprintf(err, errlen, "--band '%s': not with --reflection", band);
     return -1;
   }
   const char *required[][2] = {

@@ -12,6 +12,7 @@ typedef struct metrics_cli_args {
   const char *heatmap;   /* --heatmap (optional): RGB error map to write */
   const char *json;      /* --json (optional): copy of stdout to write */
   int band;              /* --band N, default 0 (no band) */
+  int reflection;        /* --reflection: colour images, reflection_mae */
   int help;              /* --help given: print usage, nothing else */
 } metrics_cli_args;
 

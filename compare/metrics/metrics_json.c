@@ -58,17 +58,45 @@ static void sb_string(sbuf *b, const char *key, const char *value) {
   sb_printf(b, "\",\n");
 }
 
+/* The file names common to both objects. */
+static void sb_files(sbuf *b, const metrics_cli_args *a) {
+  sb_printf(b, "{\n");
+  sb_string(b, "reference", a->reference);
+  sb_string(b, "mask", a->mask);
+  sb_string(b, "test", a->test);
+  sb_string(b, "exclude", a->exclude);
+  sb_string(b, "heatmap", a->heatmap);
+}
+
+static char *sb_finish(sbuf *b) {
+  if (b->oom) {
+    free(b->s);
+    return NULL;
+  }
+  return b->s;
+}
+
+char *metrics_json_format_reflection(const metrics_cli_args *a, int width, int height,
+                                     long mirror_pixels, long compared, double mae) {
+  sbuf b = {malloc(512), 0, 512, 0};
+  if (!b.s) return NULL;
+  b.s[0] = '\0';
+  sb_files(&b, a);
+  sb_printf(&b, "  \"metric\": \"reflection\",\n");
+  sb_printf(&b, "  \"width\": %d,\n  \"height\": %d,\n", width, height);
+  sb_printf(&b, "  \"mirror_pixels\": %ld,\n", mirror_pixels);
+  sb_printf(&b, "  \"compared_pixels\": %ld,\n", compared);
+  sb_printf(&b, "  \"reflection_mae\": %.9g\n", mae);
+  sb_printf(&b, "}\n");
+  return sb_finish(&b);
+}
+
 char *metrics_json_format(const metrics_cli_args *a, int width, int height,
                           const vsh_metrics *m) {
   sbuf b = {malloc(512), 0, 512, 0};
   if (!b.s) return NULL;
   b.s[0] = '\0';
-  sb_printf(&b, "{\n");
-  sb_string(&b, "reference", a->reference);
-  sb_string(&b, "mask", a->mask);
-  sb_string(&b, "test", a->test);
-  sb_string(&b, "exclude", a->exclude);
-  sb_string(&b, "heatmap", a->heatmap);
+  sb_files(&b, a);
   sb_printf(&b, "  \"band\": %d,\n", a->band);
   sb_printf(&b, "  \"width\": %d,\n  \"height\": %d,\n", width, height);
   sb_printf(&b, "  \"valid_pixels\": %ld,\n", m->valid_pixels);
@@ -84,9 +112,5 @@ char *metrics_json_format(const metrics_cli_args *a, int width, int height,
   sb_printf(&b, "  \"wrong_of_shadow_pct\": %.9g,\n", m->wrong_of_shadow_pct);
   sb_printf(&b, "  \"wrong_of_test_shadow_pct\": %.9g\n", m->wrong_of_test_shadow_pct);
   sb_printf(&b, "}\n");
-  if (b.oom) {
-    free(b.s);
-    return NULL;
-  }
-  return b.s;
+  return sb_finish(&b);
 }

@@ -11,4 +11,9 @@
 char *metrics_json_format(const metrics_cli_args *a, int width, int height,
                           const vsh_metrics *m);
 
+/* The same for --reflection: file names, size, mirror_pixels (non-zero in
+ * the mask), compared_pixels and reflection_mae. */
+char *metrics_json_format_reflection(const metrics_cli_args *a, int width, int height,
+                                     long mirror_pixels, long compared, double mae);
+
 #endif

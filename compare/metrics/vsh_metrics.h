@@ -103,6 +103,28 @@ double vsh_flicker_pct(const unsigned char *const *wrong, const unsigned char *c
 int vsh_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
                           int width, int height, unsigned char *rgb);
 
+/* reflection_mae, the colour metric of planar mirrors (docs/reflections.md):
+ * rgb and rgb_ref are colour images, 3 floats (linear R, G, B) per pixel,
+ * row major; mirror (non-zero = set) the pixels where a mirror is the first
+ * surface seen (from the reference renderer); exclude (may be NULL) leaves
+ * pixels out. *mae = mean over the mirror's compared pixels of
+ * (|R - R_ref| + |G - G_ref| + |B - B_ref|) / 3, each channel clamped to
+ * [0,1] first (NaN counts as 0, like an unlit pixel), so it lies in [0,1].
+ * *pixels (may be NULL) gets the number of compared pixels. Returns
+ * VSH_METRICS_OK; VSH_METRICS_EMPTY when no pixel is compared (*mae = 0);
+ * VSH_METRICS_EINVAL (NULL image or mae, bad size; *mae = 0 when mae is
+ * not NULL). */
+int vsh_reflection_mae(const float *rgb, const float *rgb_ref, const unsigned char *mirror,
+                       const unsigned char *exclude, int width, int height, double *mae,
+                       long *pixels);
+
+/* The mirror region's heat map for the report: the colours of
+ * vsh_error_heatmap_rgb for e = mean(R,G,B) - mean(R_ref,G_ref,B_ref) (channels
+ * clamped as in vsh_reflection_mae) on mirror pixels, mid grey elsewhere. */
+int vsh_reflection_heatmap_rgb(const float *rgb, const float *rgb_ref,
+                               const unsigned char *mirror, int width, int height,
+                               unsigned char *out);
+
 #ifdef __cplusplus
 }
 #endif

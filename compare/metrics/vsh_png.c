@@ -26,6 +26,7 @@ typedef struct png_job {
   unsigned char *data;  /* decoded rows, rowbytes * height */
   png_bytep *rows;
   int width, height, depth;
+  int channels; /* wanted: 1 (grayscale) or 3 (RGB; an alpha channel is dropped) */
 } png_job;
 
 static void set_err(char *err, size_t errlen, const char *fmt, ...) {
@@ -75,9 +76,10 @@ static int read_body(png_job *job, png_structp png, png_infop info) {
   png_uint_32 h = png_get_image_height(png, info);
   int ct = png_get_color_type(png, info);
   int depth = png_get_bit_depth(png, info);
-  if (ct != PNG_COLOR_TYPE_GRAY) {
-    set_err(job->err, job->errlen, "%s: expected grayscale, got %s", job->path,
-            color_type_name(ct));
+  int rgb = ct == PNG_COLOR_TYPE_RGB || ct == PNG_COLOR_TYPE_RGB_ALPHA;
+  if (job->channels == 1 ? ct != PNG_COLOR_TYPE_GRAY : !rgb) {
+    set_err(job->err, job->errlen, "%s: expected %s, got %s", job->path,
+            job->channels == 1 ? "grayscale" : "RGB or RGBA", color_type_name(ct));
     return -1;
   }
   if (w == 0 || h == 0 || w > INT_MAX || h > INT_MAX ||
@@ -87,6 +89,9 @@ static int read_body(png_job *job, png_structp png, png_infop info) {
     return -1;
   }
   if (depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+  /* Colour renders may carry alpha (VTK's PNG writer); the colour is what
+   * is compared, so it is dropped. */
+  if (ct == PNG_COLOR_TYPE_RGB_ALPHA) png_set_strip_alpha(png);
   /* A tRNS chunk would turn into an alpha channel only with png_set_expand
    * or png_set_tRNS_to_alpha, neither of which is called: it is ignored. */
   png_set_interlace_handling(png);
@@ -94,7 +99,7 @@ static int read_body(png_job *job, png_structp png, png_infop info) {
 
   size_t rowbytes = png_get_rowbytes(png, info);
   size_t bps = depth == 16 ? 2 : 1;
-  if (rowbytes != (size_t)w * bps) {
+  if (rowbytes != (size_t)w * bps * (size_t)job->channels) {
     set_err(job->err, job->errlen, "%s: unexpected row layout", job->path);
     return -1;
   }
@@ -115,14 +120,16 @@ static int read_body(png_job *job, png_structp png, png_infop info) {
   return 0;
 }
 
-int vsh_png_read_gray(const char *path, float **pixels, int *width, int *height,
-                      int *bit_depth, char *err, size_t errlen) {
+/* Reads `channels` (1: grayscale, 3: RGB) samples per pixel as floats. */
+static int read_png(const char *path, int channels, float **pixels, int *width,
+                    int *height, int *bit_depth, char *err, size_t errlen) {
   *pixels = NULL;
   png_job job;
   memset(&job, 0, sizeof job);
   job.path = path;
   job.err = err;
   job.errlen = errlen;
+  job.channels = channels;
 
   job.fp = fopen(path, "rb");
   if (!job.fp) {
@@ -149,7 +156,7 @@ int vsh_png_read_gray(const char *path, float **pixels, int *width, int *height,
 
   float *out = NULL;
   if (rc == 0) {
-    size_t n = (size_t)job.width * (size_t)job.height;
+    size_t n = (size_t)job.width * (size_t)job.height * (size_t)channels;
     out = malloc(n * sizeof *out);
     if (!out) {
       set_err(err, errlen, "%s: out of memory", path);
@@ -176,6 +183,16 @@ int vsh_png_read_gray(const char *path, float **pixels, int *width, int *height,
   *height = job.height;
   if (bit_depth) *bit_depth = job.depth;
   return 0;
+}
+
+int vsh_png_read_gray(const char *path, float **pixels, int *width, int *height,
+                      int *bit_depth, char *err, size_t errlen) {
+  return read_png(path, 1, pixels, width, height, bit_depth, err, errlen);
+}
+
+int vsh_png_read_rgb(const char *path, float **rgb, int *width, int *height, int *bit_depth,
+                     char *err, size_t errlen) {
+  return read_png(path, 3, rgb, width, height, bit_depth, err, errlen);
 }
 
 /* Encodes already-packed rows (PNG byte order) into job->fp. */

@@ -30,6 +30,14 @@ extern "C" {
 int vsh_png_read_gray(const char *path, float **pixels, int *width, int *height,
                       int *bit_depth, char *err, size_t errlen);
 
+/* Reads an RGB or RGBA PNG (bit depth 8 or 16; alpha is dropped) into
+ * *rgb, 3 * width * height floats in [0,1] (R, G, B per pixel, row major,
+ * top row first), for colour comparisons (vsh_reflection_mae). Grayscale
+ * and palette files are refused, as the gray reader refuses colour.
+ * Returns 0, or -1 with err set and *rgb = NULL. */
+int vsh_png_read_rgb(const char *path, float **rgb, int *width, int *height, int *bit_depth,
+                     char *err, size_t errlen);
+
 /* Write width * height samples, row major, top row first, atomically
  * (see vsh_atomic.h). Return 0, or -1 with err set and nothing left on
  * disk (the destination, if it existed, is unchanged). */

@@ -17,21 +17,26 @@ enum { EXIT_OK = 0, EXIT_FAIL = 1, EXIT_BAD_INPUT = 2, EXIT_EMPTY = 3 };
 
 typedef struct image {
   const char *path;
-  float *px;
+  float *px; /* 1 float per pixel, 3 for colour images */
   int w, h;
 } image;
 
 static void complain(const char *msg) { fprintf(stderr, "vtkshadow-metrics: %s\n", msg); }
 
-static int load(image *im, const char *path) {
+/* colour: an RGB(A) render (--reflection's --reference and --test). */
+static int load_as(image *im, const char *path, int colour) {
   char err[1024];
   im->path = path;
-  if (vsh_png_read_gray(path, &im->px, &im->w, &im->h, NULL, err, sizeof err) != 0) {
+  int rc = colour ? vsh_png_read_rgb(path, &im->px, &im->w, &im->h, NULL, err, sizeof err)
+                  : vsh_png_read_gray(path, &im->px, &im->w, &im->h, NULL, err, sizeof err);
+  if (rc != 0) {
     complain(err);
     return -1;
   }
   return 0;
 }
+
+static int load(image *im, const char *path) { return load_as(im, path, 0); }
 
 /* Names both files and both sizes: "which one is wrong" is the question. */
 static int same_size(const image *a, const image *ref) {
@@ -39,6 +44,21 @@ static int same_size(const image *a, const image *ref) {
   fprintf(stderr, "vtkshadow-metrics: %s is %dx%d but %s is %dx%d\n", a->path, a->w, a->h,
           ref->path, ref->w, ref->h);
   return -1;
+}
+
+/* Writes json to --json and stdout; EXIT_OK or EXIT_FAIL. */
+static int emit(const metrics_cli_args *args, const char *json) {
+  char err[1024];
+  if (args->json && vsh_write_file_atomic(args->json, json, strlen(json), err, sizeof err)) {
+    complain(err);
+    return EXIT_FAIL;
+  }
+  fputs(json, stdout);
+  if (fflush(stdout) != 0) {
+    complain("cannot write to stdout");
+    return EXIT_FAIL;
+  }
+  return EXIT_OK;
 }
 
 /* Everything after the inputs are loaded and checked. */
@@ -79,16 +99,7 @@ static int run(const metrics_cli_args *args, const image *ref, const image *mask
     }
   }
   if (!(json = metrics_json_format(args, w, h, &m))) goto oom;
-  if (args->json && vsh_write_file_atomic(args->json, json, strlen(json), err, sizeof err)) {
-    complain(err);
-    goto done;
-  }
-  fputs(json, stdout);
-  if (fflush(stdout) != 0) {
-    complain("cannot write to stdout");
-    goto done;
-  }
-  status = EXIT_OK;
+  if ((status = emit(args, json)) != EXIT_OK) goto done;
   if (rc == VSH_METRICS_EMPTY) {
     /* all-zero metrics look like a perfect score: make the caller notice */
     fprintf(stderr, "vtkshadow-metrics: no pixel compared (%ld valid in %s, all excluded?)\n",
@@ -102,6 +113,48 @@ done:
   free(valid);
   free(user_ex);
   free(all_ex);
+  free(rgb);
+  free(json);
+  return status;
+}
+
+/* --reflection after the inputs are loaded and checked. */
+static int run_reflection(const metrics_cli_args *args, const image *ref, const image *mask,
+                          const image *test, const image *excl) {
+  int w = ref->w, h = ref->h;
+  size_t n = (size_t)w * (size_t)h;
+  unsigned char *mirror = malloc(n), *ex = excl->px ? malloc(n) : NULL, *rgb = NULL;
+  char *json = NULL, err[1024];
+  int status = EXIT_FAIL;
+  long mirror_px = 0, compared = 0;
+  double mae = 0.0;
+  if (!mirror || (excl->px && !ex)) goto oom;
+  for (size_t i = 0; i < n; ++i) mirror_px += (mirror[i] = mask->px[i] > 0.0f);
+  for (size_t i = 0; ex && i < n; ++i) ex[i] = excl->px[i] > 0.0f;
+  int rc = vsh_reflection_mae(test->px, ref->px, mirror, ex, w, h, &mae, &compared);
+  if (rc < 0) goto oom;
+  if (args->heatmap) {
+    if (!(rgb = malloc(3 * n))) goto oom;
+    vsh_reflection_heatmap_rgb(test->px, ref->px, mirror, w, h, rgb);
+    if (vsh_png_write_rgb8(args->heatmap, rgb, w, h, err, sizeof err) != 0) {
+      complain(err);
+      goto done;
+    }
+  }
+  if (!(json = metrics_json_format_reflection(args, w, h, mirror_px, compared, mae))) goto oom;
+  status = emit(args, json);
+  if (status == EXIT_OK && rc == VSH_METRICS_EMPTY) {
+    /* 0 looks like a perfect mirror: make the caller notice */
+    fprintf(stderr, "vtkshadow-metrics: no mirror pixel compared (%ld in %s, all excluded?)\n",
+            mirror_px, mask->path);
+    status = EXIT_EMPTY;
+  }
+  goto done;
+oom:
+  complain("out of memory");
+done:
+  free(mirror);
+  free(ex);
   free(rgb);
   free(json);
   return status;
@@ -121,11 +174,13 @@ int main(int argc, char **argv) {
   }
   image ref = {0}, mask = {0}, test = {0}, excl = {0};
   int status = EXIT_BAD_INPUT;
-  if (load(&ref, args.reference) == 0 && load(&mask, args.mask) == 0 &&
-      load(&test, args.test) == 0 && (!args.exclude || load(&excl, args.exclude) == 0) &&
-      same_size(&mask, &ref) == 0 && same_size(&test, &ref) == 0 &&
-      (!args.exclude || same_size(&excl, &ref) == 0)) {
-    status = run(&args, &ref, &mask, &test, &excl);
+  const int colour = args.reflection;
+  if (load_as(&ref, args.reference, colour) == 0 && load(&mask, args.mask) == 0 &&
+      load_as(&test, args.test, colour) == 0 &&
+      (!args.exclude || load(&excl, args.exclude) == 0) && same_size(&mask, &ref) == 0 &&
+      same_size(&test, &ref) == 0 && (!args.exclude || same_size(&excl, &ref) == 0)) {
+    status = colour ? run_reflection(&args, &ref, &mask, &test, &excl)
+                    : run(&args, &ref, &mask, &test, &excl);
   }
   free(ref.px);
   free(mask.px);

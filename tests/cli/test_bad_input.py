@@ -102,6 +102,23 @@ run_case([good, "--technique", "planar", "--set", "cascades=2"],
 run_case([good, "--technique", "csm", "--set", "cascades=9"],
          ["technique csm", '"cascades=9'], "cli-set-out-of-range")
 run_case([good, "--technique", "csm", "--set", "bogus=1"], ['"bogus=1'], "cli-set-unknown")
+# Planar mirrors (docs/reflections.md): --reflections and --image-light.
+mirror = os.path.join(args.source, "scenes/mirror/sphere-mirror-floor.json")
+run_case([mirror, "--technique", "planar", "--reflections", "yes"],
+         ["--reflections", "auto, on, off or no-shadows", '(got "yes")'], "cli-reflections-word")
+run_case([mirror, "--technique", "planar", "--reflections", "ON"],
+         ["--reflections", '(got "ON")'], "cli-reflections-case")
+run_case([mirror, "--technique", "planar", "--reflections", ""],
+         ["--reflections"], "cli-reflections-empty")
+# no value: the next option (run_case's --image) is taken as it, and refused
+run_case([mirror, "--technique", "planar", "--reflections"],
+         ["--reflections", '(got "--image")'], "cli-reflections-missing")
+run_case([mirror, "--technique", "planar", "--image-light", "-1"],
+         ["--image-light", '(got "-1")'], "cli-image-light-negative")
+run_case([mirror, "--technique", "planar", "--image-light", "1x"],
+         ["--image-light", '(got "1x")'], "cli-image-light-junk")
+run_case([mirror, "--technique", "planar", "--image-light", "1"],
+         ["--image-light", "out of range"], "cli-image-light-range")
 
 # The interleaved timing's options: each bad value names the option and the
 # value; the timing options without --stats are refused.
@@ -135,12 +152,13 @@ for option, value in (("--rounds", "3"), ("--time-also", "csm"), ("--fail-if-noi
 # How many cases ran: a moved data directory, an empty glob or a lost table
 # entry must not pass as "0 failed". tests/scene/data/bad held 77 bad scenes
 # when this was written (only ever grows); every one of them runs, plus the 3
-# mesh cases, every malformed mesh and the 10 command lines above.
+# mesh cases, every malformed mesh, the 17 command lines above, the timing
+# cases and the 3 timing options without --stats.
 bad_scenes = len(glob.glob(os.path.join(bad_dir, "*.json")))
 if bad_scenes < 77:
     failures.append("scene-count")
     print(f"FAIL: {bad_scenes} bad scenes in {bad_dir}, expected at least 77")
-expected = bad_scenes + 3 + len(BAD_MESHES) + 10 + len(TIMING_CASES) + 3
+expected = bad_scenes + 3 + len(BAD_MESHES) + 17 + len(TIMING_CASES) + 3
 if count != expected:
     failures.append("count")
     print(f"FAIL ran {count} cases, expected {expected}")

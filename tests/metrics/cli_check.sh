@@ -122,6 +122,38 @@ case $case in
     run 1 --reference "$R" --mask "$M" --test "$T" --json no/such/dir/out.json
     err_has 'no/such/dir/out.json: cannot create temporary file'
     [ ! -s out.txt ] || say "stdout not empty" ;;
+  reflection_ok)
+    C=$data/ref_rgb8.png CT=$data/test_rgba16.png
+    run 0 --reflection --reference "$C" --mask "$M" --test "$CT" --json out.json --heatmap heat.png
+    out_has '"metric": "reflection",'
+    out_has '"mirror_pixels": 56,'
+    out_has '"compared_pixels": 56,'
+    out_has '"reflection_mae": 0.03333333'
+    cmp -s out.txt out.json || say "--json file differs from stdout"
+    head -c 8 heat.png | od -An -c | grep -q 'P   N   G' || say "heat map is not a PNG"
+    [ ! -s err.txt ] || say "unexpected stderr: $(cat err.txt)" ;;
+  reflection_exclude)
+    run 0 --reference "$data/ref_rgb8.png" --mask "$M" --test "$data/test_rgba16.png" \
+      --exclude "$data/exclude_right8.png" --reflection
+    out_has '"compared_pixels": 28,'
+    grep -x -q '  "reflection_mae": 0' out.txt || say "reflection_mae is not 0: $(cat out.txt)" ;;
+  reflection_empty)
+    run 3 --reflection --reference "$data/ref_rgb8.png" --mask "$data/mask_empty8.png" \
+      --test "$data/test_rgba16.png"
+    out_has '"compared_pixels": 0,'
+    err_has 'no mirror pixel compared' ;;
+  reflection_gray)
+    bad "$R: expected RGB or RGBA, got grayscale" --reflection --reference "$R" --mask "$M" \
+      --test "$data/test_rgba16.png" ;;
+  reflection_band)
+    bad "--band '1': not with --reflection" --reflection --reference "$data/ref_rgb8.png" \
+      --mask "$M" --test "$data/test_rgba16.png" --band 1 ;;
+  reflection_twice)
+    bad "--reflection given twice" --reflection --reference "$data/ref_rgb8.png" \
+      --mask "$M" --test "$data/test_rgba16.png" --reflection ;;
+  reflection_size_mismatch)
+    bad "$data/small8x6.png is 8x6 but $data/ref_rgb8.png is 8x8" --reflection \
+      --reference "$data/ref_rgb8.png" --mask "$data/small8x6.png" --test "$data/test_rgba16.png" ;;
   *)
     say "unknown case"; exit 1 ;;
 esac

@@ -8,7 +8,14 @@ answers computed here, not from our own output:
   one-pixel band along the expected boundary must stay <= 0.05 %.
 - colour: the same kind of scene in POV-Ray (finish reflection R, diffuse
   1 - R, no fresnel), per light type; reflection_mae (mean absolute linear
-  colour error over the mirror's visible pixels) <= 0.02.
+  colour error over the mirror's visible pixels, computed by
+  vtkshadow-metrics --reflection over the mirror pixels ray cast here)
+  <= 0.02. A technique that casts no shadows (robust_techniques.py) is
+  compared with POV-Ray's render without shadows.
+
+Every case runs with every registered technique (--technique all, the
+default: the list of vtkshadow-render --list-techniques), since the mirrored
+scene is drawn by the technique's own pass.
 """
 import argparse
 import json
@@ -26,7 +33,24 @@ ap.add_argument("--bin", required=True)
 ap.add_argument("--out", required=True)
 ap.add_argument("--case", required=True)
 ap.add_argument("--povray", default="povray")
+ap.add_argument("--technique", default="all",
+                help="a technique name, or all (every registered technique)")
 args = ap.parse_args()
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from png_io import write_png  # noqa: E402
+from robust_techniques import profile  # noqa: E402
+
+
+def techniques():
+    if args.technique != "all":
+        return [args.technique]
+    out = subprocess.run([os.path.join(args.bin, "vtkshadow-render"), "--list-techniques"],
+                         check=True, capture_output=True, text=True, timeout=120).stdout
+    names = [line.split("\t")[0] for line in out.splitlines() if line.strip()]
+    if not names:
+        raise SystemExit("vtkshadow-render --list-techniques listed nothing")
+    return names
 os.makedirs(args.out, exist_ok=True)
 
 
@@ -98,7 +122,7 @@ def band(mask):
     return b
 
 
-def geometric(tag, cam, size, mirrors, offset=0.0, extra=()):
+def geometric(tag, cam, size, mirrors, technique, offset=0.0, extra=()):
     """Expected pixels: reflection of the sphere in a mirror, one bounce."""
     off = np.array([offset, offset, offset])
     c, rad = np.array([0.0, 0.0, 1.2]), 0.8
@@ -111,7 +135,8 @@ def geometric(tag, cam, size, mirrors, offset=0.0, extra=()):
                                             for k, v in cam.items()},
              "lights": [{"type": "directional", "direction": [0, 0, -1], "intensity": 0}],
              "objects": objects}
-    image = read_rgb(render(scene, tag, "none", extra))
+    tag = tag + "-" + technique
+    image = read_rgb(render(scene, tag, technique, extra))
     w, h = size
     e, d = rays(cam, w, h, 0.0)
     o = np.broadcast_to(e, d.shape)
@@ -142,15 +167,33 @@ WALL = {"origin": [-5, 3, 0], "point1": [5, 3, 0], "point2": [-5, 3, 4]}  # norm
 CAM = {"position": [0, -8, 4], "focal_point": [0, 0, 0.5], "view_up": [0, 0, 1], "view_angle": 30}
 
 
-def pov_compare(light):
-    """reflection_mae of VTK (planar shadows, matte) against POV-Ray."""
+def reflection_mae(ref_png, test_png, mask, tag):
+    """vtkshadow-metrics --reflection over the mirror pixels `mask`."""
+    mask_png = os.path.join(args.out, tag + "-mirror.png")
+    write_png(mask_png, mask.astype(np.uint8) * 255, 8)
+    out_json = os.path.join(args.out, tag + "-reflection.json")
+    subprocess.run([os.path.join(args.bin, "vtkshadow-metrics"), "--reflection",
+                    "--reference", ref_png, "--mask", mask_png, "--test", test_png,
+                    "--heatmap", os.path.join(args.out, tag + "-heat.png"),
+                    "--json", out_json], check=True, timeout=120, stdout=subprocess.DEVNULL)
+    with open(out_json) as fh:
+        m = json.load(fh)
+    if m["compared_pixels"] != int(mask.sum()):
+        raise SystemExit(f"{tag}: {m['compared_pixels']} pixels compared, {int(mask.sum())} set")
+    return m["reflection_mae"]
+
+
+def pov_compare(light, technique):
+    """reflection_mae of VTK (the technique's shadows, matte) against POV-Ray."""
+    shadows = profile(technique).casts
     R, col = 0.5, [0.9, 0.3, 0.2]
     w, h = 320, 240
     scene = {"size": [w, h], "camera": CAM, "lights": [light],
              "objects": [{"sphere": {"center": [0, 0, 1.2], "radius": 0.8, "resolution": 256},
                           "color": col},
                          {"plane": FLOOR, "mirror": R, "receiver": True, "color": [0.7, 0.7, 0.7]}]}
-    vtk = read_rgb(render(scene, "pov-" + light["type"], "planar", ["--matte"]))
+    tag = "pov-%s-%s" % (light["type"], technique)
+    vtk_png = render(scene, tag, technique, ["--matte"])
     a = w / h
     t = math.tan(math.radians(30) / 2)
     angle = math.degrees(2 * math.atan(a * t))
@@ -165,6 +208,8 @@ def pov_compare(light):
         L = ("light_source { %s color rgb 1 spotlight point_at %s radius %r falloff %r "
              "tightness 0 }" % (v(light["position"]), v(light["focal_point"]), c, c))
     fin = "ambient 0 diffuse %r specular 0 phong 0 reflection { %r }"
+    # A technique without shadows is compared with POV-Ray without them.
+    ns = "" if shadows else " no_shadow"
     pov = "\n".join([
         "#version 3.7;", "global_settings { assumed_gamma 1.0 ambient_light 0 max_trace_level 2 }",
         "background { rgb 0 }",
@@ -172,14 +217,14 @@ def pov_compare(light):
         % (v(CAM["position"]), a, angle, v(CAM["focal_point"])),
         L,
         "sphere { <0,0,1.2>, 0.8 pigment { rgb %s } finish { ambient 0 diffuse 1 specular 0 "
-        "phong 0 } }" % v(col),
+        "phong 0 }%s }" % (v(col), ns),
         "mesh { triangle { <-5,-5,0>, <5,-5,0>, <5,5,0> } triangle { <-5,-5,0>, <5,5,0>, "
-        "<-5,5,0> } pigment { rgb 0.7 } finish { %s } }" % (fin % (1 - R, R)),
+        "<-5,5,0> } pigment { rgb 0.7 } finish { %s }%s }" % (fin % (1 - R, R), ns),
     ])
-    pov_path = os.path.join(args.out, "pov-%s.pov" % light["type"])
+    pov_path = os.path.join(args.out, "pov-%s-shadows%d.pov" % (light["type"], shadows))
     with open(pov_path, "w") as fh:
         fh.write(pov)
-    out_png = "pov-%s-ref.png" % light["type"]
+    out_png = "pov-%s-shadows%d-ref.png" % (light["type"], shadows)
     subprocess.run([args.povray, "-D", "-P", "-V", "-A", "+FN8", "File_Gamma=1.0",
                     "Display_Gamma=1.0", "+W%d" % w, "+H%d" % h, "+WT2",
                     "+I" + os.path.basename(pov_path), "+O" + out_png],
@@ -190,28 +235,46 @@ def pov_compare(light):
     o = np.broadcast_to(e, d.shape)
     tf, _, _ = hit_rect(o, d, *(np.array(FLOOR[k], float) for k in ("origin", "point1", "point2")))
     mask = np.isfinite(tf) & (tf < hit_sphere(o, d, np.array([0, 0, 1.2]), 0.8))
-    mae = float(np.abs(np.clip(vtk, 0, 1) - np.clip(ref, 0, 1)).mean(axis=2)[mask].mean())
+    mae = reflection_mae(os.path.join(args.out, out_png), vtk_png, mask, tag)
     refl = ref[mask].max() > 0
-    print(f"pov-{light['type']}: reflection_mae {mae:.4f} over {int(mask.sum())} mirror pixels")
+    print(f"{tag}: reflection_mae {mae:.4f} over {int(mask.sum())} mirror pixels")
     return mae <= 0.02 and refl and mask.sum() > 1000
 
 
 cases = {
-    "basic": lambda: geometric("geo-basic", CAM, (320, 240), [FLOOR]),
-    "grazing": lambda: geometric("geo-grazing", {"position": [0, -30, 0.9], "focal_point": [0, 0, 0.9],
-                                                  "view_up": [0, 0, 1], "view_angle": 20},
-                                 (400, 200), [FLOOR]),
-    "wide": lambda: geometric("geo-wide", CAM, (480, 160), [FLOOR]),
-    "offset-1e6": lambda: geometric("geo-offset", CAM, (320, 240), [FLOOR], offset=1e6),
-    "below": lambda: geometric("geo-below", {"position": [0, -8, -3], "focal_point": [0, 0, 0.5],
-                                              "view_up": [0, 0, 1], "view_angle": 30},
-                               (320, 240), [FLOOR]),
-    "two-mirrors": lambda: geometric("geo-two", CAM, (320, 240), [FLOOR, WALL]),
-    "pov-directional": lambda: pov_compare({"type": "directional", "direction": [-3, -2, -6]}),
-    "pov-point": lambda: pov_compare({"type": "point", "position": [3, -2, 6]}),
-    "pov-spot": lambda: pov_compare({"type": "spot", "position": [3, -2, 6],
-                                     "focal_point": [0, 0, 0], "cone_angle": 40}),
+    "basic": lambda t: geometric("geo-basic", CAM, (320, 240), [FLOOR], t),
+    "grazing": lambda t: geometric("geo-grazing", {"position": [0, -30, 0.9], "focal_point": [0, 0, 0.9],
+                                                    "view_up": [0, 0, 1], "view_angle": 20},
+                                   (400, 200), [FLOOR], t),
+    "wide": lambda t: geometric("geo-wide", CAM, (480, 160), [FLOOR], t),
+    "offset-1e6": lambda t: geometric("geo-offset", CAM, (320, 240), [FLOOR], t, offset=1e6),
+    "below": lambda t: geometric("geo-below", {"position": [0, -8, -3], "focal_point": [0, 0, 0.5],
+                                                "view_up": [0, 0, 1], "view_angle": 30},
+                                 (320, 240), [FLOOR], t),
+    "two-mirrors": lambda t: geometric("geo-two", CAM, (320, 240), [FLOOR, WALL], t),
+    "pov-directional": lambda t: pov_compare({"type": "directional", "direction": [-3, -2, -6]}, t),
+    "pov-point": lambda t: pov_compare({"type": "point", "position": [3, -2, 6]}, t),
+    "pov-spot": lambda t: pov_compare({"type": "spot", "position": [3, -2, 6],
+                                       "focal_point": [0, 0, 0], "cone_angle": 40}, t),
 }
-ok = cases[args.case]()
-print("PASS" if ok else "FAIL", args.case)
-sys.exit(0 if ok else 1)
+# Known failures: (technique, case) -> why. Such a case must still fail
+# (printed "xfail"); once it passes, this test fails until the entry goes.
+KNOWN = {
+    (t, c): "VTK 9.1's own shadow-map pass (vtkShadowMapBakerPass + vtkShadowMapPass under a "
+            "vtkCameraPass) loses the sphere's reflection when a light casts: only a thin arc "
+            "of it is drawn (reflection_mae 0.02-0.05); the geometric cases, whose light has "
+            "intensity 0, pass. Not investigated further (issue 17 report)"
+    for t in ("vtk",) for c in ("pov-directional", "pov-point", "pov-spot")
+}
+failed = []
+for t in techniques():
+    ok = cases[args.case](t)
+    why = KNOWN.get((t, args.case))
+    if why and ok:
+        failed.append(t + " (known failure now passes: remove it from KNOWN)")
+    elif why:
+        print(f"xfail {t}: {why}")
+    elif not ok:
+        failed.append(t)
+print(("FAIL %s (%s)" % (args.case, ", ".join(failed))) if failed else "PASS " + args.case)
+sys.exit(1 if failed else 0)

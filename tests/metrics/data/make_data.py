@@ -54,3 +54,11 @@ write("gray_alpha8.png", png([[128, 255] * W for y in range(H)], 8, 4, 2))
 whole = png(ref, 16, 0, 1)
 write("truncated.png", whole[:len(whole) // 2])
 write("not_png.png", b"this is a text file, not a PNG\n")
+# Colour files for --reflection: reference (64, 128, 192) everywhere; test
+# 16-bit RGBA (alpha dropped), equal but for red 51 levels higher (0.2) in
+# columns 4-7. With mask8.png (56 mirror pixels), 28 pixels are off by
+# 0.2 / 3: reflection_mae = 1/30; excluding the right half gives 0.
+write("ref_rgb8.png", png([[64, 128, 192] * W for y in range(H)], 8, 2, 3))
+write("test_rgba16.png",
+      png([sum(([(64 + (51 if x >= 4 else 0)) * 257, 128 * 257, 192 * 257, 65535]
+                for x in range(W)), []) for y in range(H)], 16, 6, 4))
