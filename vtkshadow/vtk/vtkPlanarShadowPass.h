@@ -199,8 +199,8 @@ private:
   std::vector<vsh_planar_pair> SplitSoftPairs(
     const FrameState& frame, std::vector<vsh_planar_pair>& pairs);
   void AllocateSoft(vtkOpenGLRenderWindow* window, const FrameState& frame);
-  void DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state,
-    const FrameState& frame, const std::vector<vsh_planar_pair>& softPairs);
+  void DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const FrameState& frame,
+    const std::vector<vsh_planar_pair>& softPairs);
   void DrawSoftSample(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
     const vsh_planar_pair& pair, int sample, const float weight[4]);
   // Parts of them.
