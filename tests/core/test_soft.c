@@ -196,7 +196,51 @@ static void test_bad_arguments(void) {
   CHECK(vsh_soft_sphere_visibility_sun(p, s, 0.5, c, 180, 4, 4) == -1.0);
 }
 
+/* Homogeneous light samples: on the disk facing `toward` (positional), in
+ * the cone of half-angle angle/2 (directional), the light itself at size 0. */
+static void test_sample_light(void) {
+  const double point[4] = {2, 4, 6, 2}, c[3] = {1, 2, 3}, toward[3] = {1, 0, 0};
+  const double sun[4] = {0, 0, 3, 0}, n[3] = {0, -2, -3};
+  double out[4];
+  int i, inside = 1, facing = 1, cone = 1;
+  CHECK(vsh_soft_sample_light(point, 0.0, toward, 0, 1, 0.0, out) == 0);
+  CHECK(fabs(out[0] - 1) + fabs(out[1] - 2) + fabs(out[2] - 3) < 1e-15 && out[3] == 1.0);
+  for (i = 0; i < 64; ++i) {
+    double d[3];
+    CHECK(vsh_soft_sample_light(point, 0.5, toward, i, 64, 0.3, out) == 0);
+    d[0] = out[0] - c[0], d[1] = out[1] - c[1], d[2] = out[2] - c[2];
+    inside &= d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < 0.25;
+    facing &= fabs(d[0] * n[0] + d[1] * n[1] + d[2] * n[2]) < 1e-12; /* in the disk's plane */
+    CHECK(vsh_soft_sample_light(sun, 6.0, toward, i, 64, 0.0, out) == 0);
+    cone &= out[3] == 0.0 && out[2] > cos(3.0 * 3.14159265358979 / 180.0) - 1e-12;
+  }
+  CHECK(inside && facing && cone);
+  CHECK(vsh_soft_sample_light(point, -1.0, toward, 0, 4, 0.0, out) == -1);
+  CHECK(vsh_soft_sample_light(point, 0.5, c, 0, 4, 0.0, out) == -1); /* toward the centre */
+  CHECK(vsh_soft_sample_light(point, 0.5, toward, 4, 4, 0.0, out) == -1);
+  {
+    const double bad[4] = {0, 0, 1, -1};
+    CHECK(vsh_soft_sample_light(bad, 0.5, toward, 0, 4, 0.0, out) == -1);
+  }
+}
+
+/* A disk facing a fixed point equals the exact one where that point is p,
+ * and differs a little (foreshortened disk) away from it. */
+static void test_facing(void) {
+  const double s[3] = {0, 0, 1.2}, c[3] = {2.5, 1.5, 4}, ground[3] = {-1.07, -0.64, 0};
+  const double p[3] = {-1.3, -0.2, 0};
+  const double exact = vsh_soft_sphere_visibility_disk(ground, s, 0.5, c, 0.35, 32, 128);
+  const double same = vsh_soft_sphere_visibility_disk_facing(ground, s, 0.5, c, 0.35, ground, 32, 128);
+  const double a = vsh_soft_sphere_visibility_disk(p, s, 0.5, c, 0.35, 32, 128);
+  const double b = vsh_soft_sphere_visibility_disk_facing(p, s, 0.5, c, 0.35, s, 32, 128);
+  CHECK(exact == same);
+  CHECK(fabs(a - b) < 0.05);
+  CHECK(vsh_soft_sphere_visibility_disk_facing(p, s, 0.5, c, 0.35, c, 32, 128) == -1.0);
+}
+
 int main(void) {
+  test_sample_light();
+  test_facing();
   test_frame();
   test_disk_samples();
   test_light_points();

@@ -61,3 +61,10 @@ add_test(NAME harness.soft
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft.py --bin ${VTKSHADOW_BIN}
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/soft)
 set_tests_properties(harness.soft PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# planar's sampled area light against the exact penumbra; the hard case
+# unchanged (docs/soft-shadows.md).
+add_test(NAME harness.soft_planar
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_planar.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/soft_planar)
+set_tests_properties(harness.soft_planar PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)

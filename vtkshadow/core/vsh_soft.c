@@ -127,6 +127,7 @@ static double integrate_disk(vsh_soft_test blocked, const void *ctx, int rings, 
 
 typedef struct disk_ctx {
   const double *p, *s, *c;
+  const double *toward; /* the point the disk faces: p, or a fixed point */
   double R, r;
 } disk_ctx;
 
@@ -134,7 +135,7 @@ static int disk_blocked(const void *vctx, const double q[2]) {
   const disk_ctx *x = (const disk_ctx *)vctx;
   double at[3], d[3];
   int i;
-  if (vsh_soft_light_point(x->c, x->r, x->p, q, at)) return 0;
+  if (vsh_soft_light_point(x->c, x->r, x->toward, q, at)) return 0;
   for (i = 0; i < 3; ++i) d[i] = at[i] - x->p[i];
   return vsh_soft_ray_hits_sphere(x->p, d, 0.0, 1.0, x->s, x->R);
 }
@@ -144,7 +145,7 @@ double vsh_soft_sphere_visibility_disk(const double p[3], const double s[3], dou
   disk_ctx x;
   if (!(R > 0.0) || !(r >= 0.0) || rings < 1 || sectors < 1) return -1.0;
   if (p[0] == c[0] && p[1] == c[1] && p[2] == c[2]) return -1.0;
-  x.p = p, x.s = s, x.c = c, x.R = R, x.r = r;
+  x.p = p, x.s = s, x.c = c, x.R = R, x.r = r, x.toward = p;
   if (r == 0.0) {
     const double q[2] = {0.0, 0.0};
     return disk_blocked(&x, q) ? 0.0 : 1.0;
@@ -177,4 +178,31 @@ double vsh_soft_sphere_visibility_sun(const double p[3], const double s[3], doub
     return sun_blocked(&x, q) ? 0.0 : 1.0;
   }
   return integrate_disk(sun_blocked, &x, rings, sectors);
+}
+
+double vsh_soft_sphere_visibility_disk_facing(const double p[3], const double s[3], double R,
+                                              const double c[3], double r,
+                                              const double toward[3], int rings, int sectors) {
+  disk_ctx x;
+  if (!(R > 0.0) || !(r >= 0.0) || rings < 1 || sectors < 1) return -1.0;
+  if (toward[0] == c[0] && toward[1] == c[1] && toward[2] == c[2]) return -1.0;
+  if (p[0] == c[0] && p[1] == c[1] && p[2] == c[2]) return -1.0;
+  x.p = p, x.s = s, x.c = c, x.R = R, x.r = r, x.toward = toward;
+  return integrate_disk(disk_blocked, &x, rings, sectors);
+}
+
+int vsh_soft_sample_light(const double light[4], double size, const double toward[3], int i,
+                          int n, double turn, double out[4]) {
+  double q[2];
+  if (!(size >= 0.0) || !isfinite(size) || !(light[3] >= 0.0)) return -1;
+  if (vsh_soft_disk_sample(i, n, turn, q)) return -1;
+  if (light[3] > 0.0) {
+    const double c[3] = {light[0] / light[3], light[1] / light[3], light[2] / light[3]};
+    if (vsh_soft_light_point(c, size, toward, q, out)) return -1;
+    out[3] = 1.0;
+    return 0;
+  }
+  if (vsh_soft_sun_direction(light, size, q, out)) return -1;
+  out[3] = 0.0; /* a unit direction: vsh_planar needs only the direction */
+  return 0;
 }

@@ -67,6 +67,27 @@ double vsh_soft_sphere_visibility_sun(const double p[3], const double s[3], doub
                                       const double l[3], double angle_deg, int rings,
                                       int sectors);
 
+/* The same as vsh_soft_sphere_visibility_disk, but the disk faces the point
+ * `toward` (normal (toward - c)) for every p instead of facing p: the
+ * approximation of a technique that turns the light once per caster
+ * (vtkPlanarShadowPass's sampled area light faces each caster's centre),
+ * for measuring what that costs. Returns -1 for bad arguments or toward ==
+ * c. */
+double vsh_soft_sphere_visibility_disk_facing(const double p[3], const double s[3], double R,
+                                              const double c[3], double r,
+                                              const double toward[3], int rings, int sectors);
+
+/* Sample i of n of a light with a size, as a homogeneous light: `light` is
+ * (L, 1) for a point / spot light at L or (l, 0) for a directional light
+ * towards l (the convention of vsh_planar.h), size its radius (positional)
+ * or angular diameter in degrees (directional). A positional light's disk
+ * faces the point `toward`; a directional light ignores it. The samples
+ * are vsh_soft_disk_sample(i, n, turn): out = (point, 1) or (direction, 0).
+ * size 0 gives the light itself. Returns -1 for bad arguments (w neither 0
+ * nor positive, a non-finite or negative size, toward at the light). */
+int vsh_soft_sample_light(const double light[4], double size, const double toward[3], int i,
+                          int n, double turn, double out[4]);
+
 #ifdef __cplusplus
 }
 #endif

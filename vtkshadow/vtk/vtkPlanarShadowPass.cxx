@@ -34,10 +34,12 @@
 #include "vsh_mat4.h"
 #include "vsh_planar.h"
 #include "vsh_planar_plan.h"
+#include "vsh_soft.h"
 
 #include "vtkPlanarShadowLightFS.h"
 #include "vtkPlanarShadowMaskFS.h"
 #include "vtkPlanarShadowMaskVS.h"
+#include "vtkPlanarShadowSoftFS.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +53,8 @@ namespace
 {
 constexpr int MaxPairs = VSH_PLANAR_MAX_PAIRS;
 constexpr int MaxExplicitPlanes = 8;
+// Soft pairs per frame: one channel each of the RGBA16F accumulation.
+constexpr int MaxSoftPairs = 4;
 
 // Row vector (plane) times matrix: a plane acting on the matrix's input space.
 void PlaneTimesMatrix(const double plane[4], const double m[16], double out[4])
@@ -133,6 +137,14 @@ struct vtkPlanarShadowPass::Internals
   int DirtyBox[4] = { 0, 0, 0, 0 };
   bool DirtyAll = true;
   vsh_planar_rect Written; // this frame's writes, in NDC
+  // Sampled area lights: the shadowed fraction of up to four soft pairs
+  // (one channel each), the pair bit of each channel (-1: none), and
+  // whether the receivers' shaders have the soft lookup compiled in.
+  vtkTextureObject* Soft = nullptr;
+  int SoftSize[2] = { 0, 0 };
+  int SoftPair[MaxSoftPairs] = { -1, -1, -1, -1 };
+  bool SoftShader = false;
+  bool SoftWarned = false;
 
   // Per-frame values for SetShaderParameters.
   std::map<vtkProp*, int> ReceiverIndex;
@@ -173,6 +185,8 @@ vtkPlanarShadowPass::vtkPlanarShadowPass()
   , NumberOfShadowPairs(0)
   , NumberOfMaskTriangles(0)
   , NumberOfGeometryBuilds(0)
+  , SoftSamples(16)
+  , NumberOfSoftPairs(0)
   , Impl(new Internals)
 {
 }
@@ -187,6 +201,10 @@ vtkPlanarShadowPass::~vtkPlanarShadowPass()
   if (this->Impl->FBO)
   {
     this->Impl->FBO->Delete();
+  }
+  if (this->Impl->Soft)
+  {
+    this->Impl->Soft->Delete();
   }
 }
 
@@ -242,6 +260,7 @@ long long vtkPlanarShadowPass::GetMemoryBytes() const
 {
   long long bytes = static_cast<long long>(this->Impl->MaskSize[0]) * this->Impl->MaskSize[1] * 4 *
     this->Impl->MaskChannels;
+  bytes += static_cast<long long>(this->Impl->SoftSize[0]) * this->Impl->SoftSize[1] * 8;
   for (const auto& entry : this->Impl->Casters)
   {
     bytes += entry.second->Geometry.GetNumberOfBytes();
@@ -271,6 +290,8 @@ struct vtkPlanarShadowPass::FrameState
   int Size[2] = { 0, 0 }; // the viewport, and the mask, in pixels
   // Switched-on lights in the mappers' numbering.
   std::vector<vsh_planar_light> Lights;
+  // Each light's size: radius (positional) or angular diameter (directional).
+  std::vector<double> LightSize;
   // Receivers: an actor (nullptr for an explicit plane) and its plane, 4
   // doubles per receiver.
   std::vector<vtkActor*> Receivers;
@@ -321,12 +342,22 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     static_cast<int>(frame.Receivers.size()), frame.Lights.data(),
     static_cast<int>(frame.Lights.size()), frame.Eye, pairs.data(), MaxPairs);
   pairs.resize(std::max(count, 0));
-  this->DrawMask(window, frame, pairs);
+  // Pairs whose light has a size are sampled (SoftSamples hard shadows).
+  const std::vector<vsh_planar_pair> softPairs = this->SplitSoftPairs(frame, pairs);
+  this->DrawMask(window, frame, pairs, softPairs);
   this->ForgetRemovedCasters(window);
 
   // The scene, with the receivers' lighting reading the mask.
   impl.Mask->Activate();
+  if (!softPairs.empty())
+  {
+    impl.Soft->Activate();
+  }
   this->RenderDelegateWithShaderHooks(s);
+  if (!softPairs.empty())
+  {
+    impl.Soft->Deactivate();
+  }
   impl.Mask->Deactivate();
 }
 
@@ -343,6 +374,8 @@ void vtkPlanarShadowPass::GatherLights(vtkRenderer* renderer, FrameState& frame)
     vtkshadow::LightHomogeneous(light, info.homogeneous);
     info.casts = this->LightCasts(light, static_cast<int>(frame.Lights.size())) ? 1 : 0;
     frame.Lights.push_back(info);
+    frame.LightSize.push_back(
+      info.homogeneous[3] != 0.0 ? GetLightRadius(light) : GetLightAngle(light));
   }
   this->Impl->LightCount = static_cast<int>(frame.Lights.size());
 }
@@ -513,8 +546,8 @@ void vtkPlanarShadowPass::AttachStencil(const FrameState& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawMask(
-  vtkOpenGLRenderWindow* window, const FrameState& frame, const std::vector<vsh_planar_pair>& pairs)
+void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const FrameState& frame,
+  const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs)
 {
   Internals& impl = *this->Impl;
   this->AllocateMask(window, frame);
@@ -566,6 +599,10 @@ void vtkPlanarShadowPass::DrawMask(
     if (!vsh_planar_rect_pixels(&impl.Written, frame.Size, impl.DirtyBox))
     {
       std::fill_n(impl.DirtyBox, 4, 0);
+    }
+    if (!softPairs.empty())
+    {
+      this->DrawSoftPairs(window, state, frame, softPairs);
     }
   }
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);
@@ -623,13 +660,202 @@ void vtkPlanarShadowPass::DrawPair(vtkShaderProgram* program, vtkOpenGLState* st
     vtkShadowCasterGeometry* geometry = this->CasterGeometry(actor);
     if (geometry->GetNumberOfTriangles() > 0)
     {
-      this->DrawCaster(program, frame, pair, shadowDC, actor, *geometry, fans, fanRect);
+      this->DrawCaster(program, frame, pair, frame.Lights[pair.light].homogeneous, shadowDC, actor,
+        *geometry, fans, fanRect);
     }
   }
   if (!fans.empty())
   {
     this->FillFans(program, state, frame, fans, fanRect, bits);
   }
+}
+
+//------------------------------------------------------------------------------
+std::vector<vsh_planar_pair> vtkPlanarShadowPass::SplitSoftPairs(
+  const FrameState& frame, std::vector<vsh_planar_pair>& pairs)
+{
+  // A pair whose light has a size is sampled when SoftSamples > 1; the rest
+  // (and soft pairs beyond the accumulation's four channels) stay in the
+  // hard bit mask.
+  Internals& impl = *this->Impl;
+  std::vector<vsh_planar_pair> hard, soft;
+  for (const vsh_planar_pair& pair : pairs)
+  {
+    const bool sized = this->SoftSamples > 1 && frame.LightSize[pair.light] > 0.0;
+    if (sized && static_cast<int>(soft.size()) < MaxSoftPairs)
+    {
+      soft.push_back(pair);
+      continue;
+    }
+    if (sized && !impl.SoftWarned)
+    {
+      vtkWarningMacro("more than " << MaxSoftPairs
+                                   << " (receiver, light) pairs with a light size: the others "
+                                      "get the hard shadow of the light's centre");
+      impl.SoftWarned = true;
+    }
+    hard.push_back(pair);
+  }
+  pairs.swap(hard);
+  for (int k = 0; k < MaxSoftPairs; ++k)
+  {
+    impl.SoftPair[k] = k < static_cast<int>(soft.size()) ? soft[k].bit : -1;
+  }
+  // The soft lookup is compiled into the receivers' shaders only while
+  // there are soft pairs.
+  if (impl.SoftShader != !soft.empty())
+  {
+    impl.SoftShader = !soft.empty();
+    this->BumpShaderTime();
+  }
+  this->NumberOfSoftPairs = static_cast<int>(soft.size());
+  return soft;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::AllocateSoft(vtkOpenGLRenderWindow* window, const FrameState& frame)
+{
+  // RGBA16F, a soft pair per channel: sums of k / N are exact for N a power
+  // of two up to 1024 (and within 1e-3 otherwise).
+  Internals& impl = *this->Impl;
+  if (!impl.Soft)
+  {
+    impl.Soft = vtkTextureObject::New();
+  }
+  impl.Soft->SetContext(window);
+  const int* size = frame.Size;
+  if (impl.SoftSize[0] != size[0] || impl.SoftSize[1] != size[1] || !impl.Soft->GetHandle())
+  {
+    impl.Soft->ReleaseGraphicsResources(window);
+    impl.Soft->SetInternalFormat(GL_RGBA16F);
+    impl.Soft->SetFormat(GL_RGBA);
+    impl.Soft->SetDataType(GL_FLOAT);
+    impl.Soft->SetMinificationFilter(vtkTextureObject::Nearest);
+    impl.Soft->SetMagnificationFilter(vtkTextureObject::Nearest);
+    impl.Soft->Allocate2D(size[0], size[1], 4, VTK_FLOAT);
+    impl.SoftSize[0] = size[0];
+    impl.SoftSize[1] = size[1];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state,
+  const FrameState& frame, const std::vector<vsh_planar_pair>& softPairs)
+{
+  // The sampled area light: per soft pair, N hard shadows from stratified
+  // points on the light, each counted once per pixel (stencil) and added
+  // with weight 1/N to the pair's channel.
+  Internals& impl = *this->Impl;
+  this->AllocateSoft(window, frame);
+  impl.FBO->RemoveColorAttachment(0);
+  impl.FBO->AddColorAttachment(0, impl.Soft);
+  impl.FBO->ActivateDrawBuffers(1);
+  const GLfloat zero[4] = { 0, 0, 0, 0 };
+  glClearBufferfv(GL_COLOR, 0, zero);
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vtkPlanarShadowMaskVS, vtkPlanarShadowSoftFS, "");
+  if (!program)
+  {
+    return;
+  }
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  state->vtkglBlendEquation(GL_FUNC_ADD);
+  for (size_t k = 0; k < softPairs.size(); ++k)
+  {
+    ++this->NumberOfShadowPairs;
+    float weight[4] = { 0, 0, 0, 0 };
+    weight[k] = 1.0f / static_cast<float>(this->SoftSamples);
+    for (int sample = 0; sample < this->SoftSamples; ++sample)
+    {
+      this->DrawSoftSample(program, state, frame, softPairs[k], sample, weight);
+    }
+  }
+  state->vtkglStencilMask(0xff);
+  state->vtkglDisable(GL_STENCIL_TEST);
+  state->vtkglDisable(GL_BLEND);
+  glDisable(GL_CLIP_DISTANCE0);
+  glDisable(GL_CLIP_DISTANCE1);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::DrawSoftSample(vtkShaderProgram* program, vtkOpenGLState* state,
+  const FrameState& frame, const vsh_planar_pair& pair, int sample, const float weight[4])
+{
+  // One light sample's hard shadow into the stencil: bit 7 where a caster
+  // triangle covers the pixel, bits 0-6 the silhouette fans' winding number
+  // (mod 128); then the sample's weight wherever the stencil is not zero, so
+  // overlapping casters count once.
+  state->vtkglStencilMask(0xff);
+  glClearStencil(0);
+  state->vtkglClear(GL_STENCIL_BUFFER_BIT);
+  state->vtkglEnable(GL_STENCIL_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglStencilMask(0x80);
+  state->vtkglStencilFunc(GL_ALWAYS, 0x80, 0xff);
+  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  vtkActor* receiver = frame.Receivers[pair.receiver];
+  const double* receiverPlane = &frame.Planes[4 * pair.receiver];
+  const double size = frame.LightSize[pair.light];
+  std::vector<Fan> fans;
+  vsh_planar_rect fanRect;
+  vsh_planar_rect_init(&fanRect);
+  for (vtkActor* actor : frame.Casters)
+  {
+    if (actor == receiver || (!receiver && LiesInPlane(actor, receiverPlane)))
+    {
+      continue; // as in DrawPair
+    }
+    vtkShadowCasterGeometry* geometry = this->CasterGeometry(actor);
+    // The light's disk faces the caster's centre (docs/soft-shadows.md: the
+    // direction of its shadow's centre too); a directional light ignores it.
+    double b[6], centre[3];
+    actor->GetBounds(b);
+    for (int i = 0; i < 3; ++i)
+    {
+      centre[i] = 0.5 * (b[2 * i] + b[2 * i + 1]);
+    }
+    vsh_planar_light light;
+    light.casts = 1;
+    vsh_planar_pair samplePair;
+    if (geometry->GetNumberOfTriangles() == 0 ||
+      vsh_soft_sample_light(frame.Lights[pair.light].homogeneous, size, centre, sample,
+        this->SoftSamples, 0.0, light.homogeneous) != 0 ||
+      vsh_planar_plan_pairs(receiverPlane, 1, &light, 1, frame.Eye, &samplePair, 1) != 1)
+    {
+      continue; // no triangles, a caster centred on the light, or no shadow from this sample
+    }
+    double shadowDC[16];
+    vsh_mat4_multiply(frame.CameraRelative, samplePair.shadow, shadowDC);
+    this->DrawCaster(
+      program, frame, samplePair, light.homogeneous, shadowDC, actor, *geometry, fans, fanRect);
+  }
+  glDisable(GL_CLIP_DISTANCE0);
+  glDisable(GL_CLIP_DISTANCE1);
+  const float keepAll[4] = { 0, 0, 0, 1 };
+  program->SetUniform4f("receiverSideMC", keepAll);
+  program->SetUniform4f("belowLightMC", keepAll);
+  state->vtkglStencilMask(0x7f);
+  state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
+  state->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+  state->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+  for (const Fan& fan : fans)
+  {
+    float mcdc[16];
+    std::copy_n(fan.MCDC, 16, mcdc);
+    program->SetUniformMatrix4x4("shadowMCDC", mcdc);
+    fan.Geometry->DrawSilhouetteFans(program, fan.Light);
+    this->NumberOfMaskTriangles += fan.Geometry->GetNumberOfSilhouetteTriangles();
+  }
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
+  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  float w[4];
+  std::copy_n(weight, 4, w);
+  program->SetUniform4f("sampleWeight", w);
+  this->DrawViewportQuad(program);
 }
 
 //------------------------------------------------------------------------------
@@ -657,7 +883,7 @@ vtkShadowCasterGeometry* vtkPlanarShadowPass::CasterGeometry(vtkActor* actor)
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState& frame,
-  const vsh_planar_pair& pair, const double shadowDC[16], vtkActor* actor,
+  const vsh_planar_pair& pair, const double light[4], const double shadowDC[16], vtkActor* actor,
   vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans, vsh_planar_rect& fanRect)
 {
   // Model (shifted) -> world -> relative to the eye, in double.
@@ -687,7 +913,7 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
     Fan fan;
     fan.Geometry = &geometry;
     std::copy_n(mcdcF, 16, fan.MCDC);
-    vsh_mat4_transform_point4(inverse, frame.Lights[pair.light].homogeneous, fan.Light);
+    vsh_mat4_transform_point4(inverse, light, fan.Light);
     fans.push_back(fan);
     vsh_planar_rect_add_bounds(&fanRect, shadowDC, b, frame.Eye);
     return;
@@ -835,8 +1061,12 @@ bool vtkPlanarShadowPass::PreReplaceShaderValues(
   // Our declarations ride along with VTK's lighting declarations.
   if (fragmentShader.find("//VTK::Light::Dec") != std::string::npos)
   {
+    // The soft lookup only in frames with soft pairs: hard frames keep the
+    // hard shader, byte for byte.
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
-      std::string("//VTK::Light::Dec\n") + vtkPlanarShadowLightFS, false);
+      std::string("//VTK::Light::Dec\n") +
+        (this->Impl->SoftShader ? "#define VSH_PLANAR_SOFT 1\n" : "") + vtkPlanarShadowLightFS,
+      false);
   }
   return true;
 }
@@ -877,6 +1107,11 @@ bool vtkPlanarShadowPass::SetShaderParameters(
     program->SetUniform1iv("vshPlanarPlaneReceiver", impl.PlaneCount, impl.PlaneReceiver);
     program->SetUniform1fv("vshPlanarPlaneTolerance", impl.PlaneCount, impl.PlaneTolerance);
   }
+  if (impl.Soft && program->IsUniformUsed("vshPlanarSoft"))
+  {
+    program->SetUniformi("vshPlanarSoft", impl.Soft->GetTextureUnit());
+    program->SetUniform1iv("vshPlanarSoftPair", MaxSoftPairs, impl.SoftPair);
+  }
   return true;
 }
 
@@ -888,6 +1123,11 @@ void vtkPlanarShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     impl.Mask->ReleaseGraphicsResources(w);
   }
+  if (impl.Soft)
+  {
+    impl.Soft->ReleaseGraphicsResources(w);
+  }
+  impl.SoftSize[0] = impl.SoftSize[1] = 0;
   if (impl.FBO)
   {
     impl.FBO->ReleaseGraphicsResources(w);
@@ -927,6 +1167,8 @@ void vtkPlanarShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfShadowPairs: " << this->NumberOfShadowPairs << "\n";
   os << indent << "NumberOfMaskTriangles: " << this->NumberOfMaskTriangles << "\n";
   os << indent << "NumberOfGeometryBuilds: " << this->NumberOfGeometryBuilds << "\n";
+  os << indent << "SoftSamples: " << this->SoftSamples << "\n";
+  os << indent << "NumberOfSoftPairs: " << this->NumberOfSoftPairs << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -939,6 +1181,15 @@ bool vtkPlanarShadowPass::SetOption(const char* key, double value)
       return false;
     }
     this->SetDetectReceivers(value != 0.0);
+    return true;
+  }
+  if (key && std::string(key) == "soft_samples")
+  {
+    if (!(value >= 1.0 && value <= 1024.0) || value != std::floor(value))
+    {
+      return false;
+    }
+    this->SetSoftSamples(static_cast<int>(value));
     return true;
   }
   if (key && std::string(key) == "plane_tolerance")
@@ -959,6 +1210,8 @@ std::string vtkPlanarShadowPass::GetStatsJSON(vtkRenderer* renderer) const
   return "\"shadow_pairs\": " + std::to_string(this->NumberOfShadowPairs) +
     ", \"mask_triangles\": " + std::to_string(this->NumberOfMaskTriangles) +
     ", \"geometry_builds\": " + std::to_string(this->NumberOfGeometryBuilds) +
+    ", \"soft_pairs\": " + std::to_string(this->NumberOfSoftPairs) +
+    ", \"soft_samples\": " + std::to_string(this->SoftSamples) +
     ", \"detected_receivers\": " + this->DetectedReceiversJSON(renderer);
 }
 

@@ -99,6 +99,18 @@ public:
   vtkActor* GetDetectedReceiver(int index) const override;
 
   /**
+   * Light samples per (receiver, light) pair for a light with a size (a
+   * point or spot light's radius, a directional light's angle): N hard
+   * shadows from stratified points on the light, averaged (the sampled area
+   * light, docs/soft-shadows.md). 1 draws the hard shadow of the light's
+   * centre (the hard path, unchanged). Default 16; lights without a size
+   * always take the hard path. At most 4 soft pairs per frame (the others
+   * are drawn hard, with a warning).
+   */
+  vtkSetClampMacro(SoftSamples, int, 1, 1024);
+  vtkGetMacro(SoftSamples, int);
+
+  /**
    * Number of (receiver, light) pairs that cast in the last frame, and the
    * number of caster triangles drawn into the mask in it.
    */
@@ -117,7 +129,8 @@ public:
   long long GetMemoryBytes() const override;
 
   /**
-   * plane_tolerance (0..1), detect_receivers (0/1), and the base's options.
+   * plane_tolerance (0..1), detect_receivers (0/1), soft_samples (1..1024),
+   * and the base's options.
    */
   bool SetOption(const char* key, double value) override;
 
@@ -161,6 +174,8 @@ protected:
   int NumberOfShadowPairs;
   vtkIdType NumberOfMaskTriangles;
   int NumberOfGeometryBuilds;
+  int SoftSamples;
+  int NumberOfSoftPairs;
 
 private:
   vtkPlanarShadowPass(const vtkPlanarShadowPass&) = delete;
@@ -178,8 +193,16 @@ private:
   void GatherCasters(const std::vector<vtkActor*>& actors, FrameState& frame);
   void SetUpCamera(vtkRenderer* renderer, FrameState& frame);
   void DrawMask(vtkOpenGLRenderWindow* window, const FrameState& frame,
-    const std::vector<vsh_planar_pair>& pairs);
+    const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs);
   void ForgetRemovedCasters(vtkOpenGLRenderWindow* window);
+  // Sampled area lights: which pairs are soft, and their accumulation.
+  std::vector<vsh_planar_pair> SplitSoftPairs(
+    const FrameState& frame, std::vector<vsh_planar_pair>& pairs);
+  void AllocateSoft(vtkOpenGLRenderWindow* window, const FrameState& frame);
+  void DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const FrameState& frame,
+    const std::vector<vsh_planar_pair>& softPairs);
+  void DrawSoftSample(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
+    const vsh_planar_pair& pair, int sample, const float weight[4]);
   // Parts of them.
   void UpdateReceivingSet();
   void AllocateMask(vtkOpenGLRenderWindow* window, const FrameState& frame);
@@ -188,8 +211,8 @@ private:
     const vsh_planar_pair& pair);
   vtkShadowCasterGeometry* CasterGeometry(vtkActor* actor);
   void DrawCaster(vtkShaderProgram* program, const FrameState& frame, const vsh_planar_pair& pair,
-    const double shadowDC[16], vtkActor* actor, vtkShadowCasterGeometry& geometry,
-    std::vector<Fan>& fans, vsh_planar_rect& fanRect);
+    const double light[4], const double shadowDC[16], vtkActor* actor,
+    vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans, vsh_planar_rect& fanRect);
   void FillFans(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
     const std::vector<Fan>& fans, const vsh_planar_rect& fanRect, const unsigned int bits[4]);
   void DrawViewportQuad(vtkShaderProgram* program);

@@ -18,6 +18,15 @@ uniform int vshPlanarLightCount;
 // Off receivers the bits stay 0, so every light is unblocked.
 uint vshPlanarBase = 0u;
 uvec4 vshPlanarBits = uvec4(0u);
+#ifdef VSH_PLANAR_SOFT
+// Sampled area lights (the pass defines VSH_PLANAR_SOFT only in frames with
+// soft pairs, so hard frames run the code above unchanged): channel k of
+// vshPlanarSoft holds the shadowed fraction of the soft pair whose bit is
+// vshPlanarSoftPair[k] (-1: none).
+uniform sampler2D vshPlanarSoft;
+uniform int vshPlanarSoftPair[4];
+vec4 vshPlanarSoftShadow = vec4(0.0);
+#endif
 void vshPlanarPrepare(vec3 positionVC)
 {
   int receiver = vshPlanarReceiver;
@@ -33,6 +42,10 @@ void vshPlanarPrepare(vec3 positionVC)
   {
     vshPlanarBase = uint(receiver * vshPlanarLightCount);
     vshPlanarBits = texelFetch(vshPlanarMask, ivec2(gl_FragCoord.xy) - vshPlanarMaskOrigin, 0);
+#ifdef VSH_PLANAR_SOFT
+    vshPlanarSoftShadow =
+      texelFetch(vshPlanarSoft, ivec2(gl_FragCoord.xy) - vshPlanarMaskOrigin, 0);
+#endif
   }
 }
 // 0 where light `light` is blocked at this fragment, 1 elsewhere. The pass
@@ -40,6 +53,15 @@ void vshPlanarPrepare(vec3 positionVC)
 float vshPlanarLit(int light)
 {
   uint pair = vshPlanarBase + uint(light);
+#ifdef VSH_PLANAR_SOFT
+  for (int k = 0; k < 4; ++k)
+  {
+    if (int(pair) == vshPlanarSoftPair[k])
+    {
+      return clamp(1.0 - vshPlanarSoftShadow[k], 0.0, 1.0);
+    }
+  }
+#endif
   uint word = vshPlanarBits[min(pair >> 5u, 3u)];
   return float(((word >> (pair & 31u)) & 1u) ^ 1u);
 }
