@@ -24,8 +24,8 @@
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowRankReduction.h"
-#include "vtkSmartPointer.h"
 #include "vtkShadowScreenMask.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 

@@ -6,8 +6,8 @@
 #include "vtkNoShadowPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlanarShadowPass.h"
-#include "vtkShadowVolumePass.h"
 #include "vtkRayTracedShadowPass.h"
+#include "vtkShadowVolumePass.h"
 
 #include <cstring>
 #include <string>
