@@ -51,13 +51,12 @@ def shoot(technique):
     return png
 
 
-# Known wrong in ParaView today (found by this test, not fixed yet): planar's
-# receivers read a mask that shows no shadow in ParaView's view (the pairs
-# and mask triangles are there: see ShadowStatus), so planar, and auto when it
-# picks planar, draw none; VTK's own baseline darkens the lit floor too.
-# These are reported as KNOWN FAILURE; one that starts working fails the test
-# until it is taken off this list.
-KNOWN = {("planar", "shadow"), ("auto", "shadow"), ("vtk", "lit")}
+# Known wrong in ParaView today: VTK's own baseline darkens the lit floor
+# (see docs/paraview.md). It is reported as KNOWN FAILURE; once it starts
+# working it fails the test until it is taken off this list. (planar, and
+# auto when it picks planar, were on it until receivers drawn by ParaView's
+# vtkPVLODActor through its inner Device actor were recognised.)
+KNOWN = {("vtk", "lit")}
 known_seen = set()
 
 
