@@ -32,6 +32,12 @@ add_test(NAME python.enable_shadows
           ${PROJECT_SOURCE_DIR})
 set_tests_properties(python.enable_shadows PROPERTIES LABELS "render" TIMEOUT 900)
 
+# planar with a vtkLODActor floor: the mapper draws its inner Device actor,
+# which shares the floor's property keys (ParaView's actors do the same).
+add_test(NAME python.lod_receiver
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_lod_receiver.py)
+set_tests_properties(python.lod_receiver PROPERTIES LABELS "render" TIMEOUT 120)
+
 # C API from a .c file.
 add_executable(test_capi capi/test_capi.c)
 target_link_libraries(test_capi PRIVATE vtkshadow::vtkshadow)

@@ -230,6 +230,16 @@ void vtkPVRenderViewWithShadows::Render(bool interactive, bool skip_rendering)
   {
     this->MarkPlanarReceivers();
   }
+  // csm's reductions run inside IceT's draw callback, which IceT skips on a
+  // rank with nothing on screen (its "empty images" optimisation): the other
+  // ranks would then wait in the reduction for ever. Every rank draws, as
+  // ParaView does for Surface LIC's collectives. (The flag is recomputed
+  // from the representations in Update, so it is set before every render.)
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (this->Pass && controller && controller->GetNumberOfProcesses() > 1)
+  {
+    this->RenderEmptyImages = true;
+  }
   this->Superclass::Render(interactive, skip_rendering);
 }
 

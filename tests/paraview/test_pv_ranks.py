@@ -2,9 +2,16 @@
 that shadows it on the last rank, and the composited image must equal the
 one-rank image.
 
-    vtkshadow-pvbatch test_pv_ranks.py SCENE OUTDIR render TECHNIQUE
+    vtkshadow-pvbatch test_pv_ranks.py SCENE OUTDIR render TECHNIQUE [LAYOUT]
         renders the scene split over the ranks, writes OUTDIR/<ranks>-<technique>.png
         and OUTDIR/<ranks>-<technique>.json (the view's ShadowStatus);
+        LAYOUT (the file names get -LAYOUT) puts, instead of the default split:
+          empty      floor and sphere on rank 0, nothing on the last rank;
+          offscreen  floor and sphere on rank 0, and on the last rank only a
+                     sphere behind the camera (nothing of it on screen, its
+                     shadow off the floor).
+        A rank with nothing on screen must still join every reduction, or
+        the ranks deadlock (run_ranks.sh runs these under a timeout);
     python3 test_pv_ranks.py compare REFERENCE.png IMAGE.png NONE.png SHADOW_PIXEL
         (run by the same pvbatch) checks IMAGE against REFERENCE: at most 0.1%
         of the pixels wrong outside a one-pixel band (a pixel is wrong when no
@@ -18,7 +25,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 
-def render(scene_path, out, technique):
+def render(scene_path, out, technique, layout="split"):
     from paraview.simple import (CreateView, ProgrammableSource, Render, SaveScreenshot,
                                  Show)
     from vtkmodules.vtkParallelCore import vtkMultiProcessController
@@ -31,25 +38,35 @@ def render(scene_path, out, technique):
     view = CreateView("RenderViewWithShadows")
     view.ViewSize = [480, 360]
     # Every rank runs the source's script: rank 0 makes the floor, the last
-    # rank the sphere (one rank: both).
+    # rank the sphere (one rank: both); see LAYOUT above.
+    if layout not in ("split", "empty", "offscreen"):
+        sys.exit("test_pv_ranks.py: unknown layout %r (split, empty, offscreen)" % layout)
+    cam = scene["camera"]["position"]
+    behind = [cam[0], cam[1] - 6.0, cam[2]]  # the camera looks towards +y
     script = """
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 from vtkmodules.vtkFiltersSources import vtkSphereSource, vtkPlaneSource
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData
 c = vtkMultiProcessController.GetGlobalController()
 rank, last = c.GetLocalProcessId(), c.GetNumberOfProcesses() - 1
+layout = %r
 parts = vtkAppendPolyData()
+def sphere(center, radius):
+    s = vtkSphereSource(); s.SetCenter(center); s.SetRadius(radius)
+    s.SetThetaResolution(96); s.SetPhiResolution(96)
+    parts.AddInputConnection(s.GetOutputPort())
 if rank == 0:
     p = vtkPlaneSource(); p.SetOrigin(%r); p.SetPoint1(%r); p.SetPoint2(%r)
     parts.AddInputConnection(p.GetOutputPort())
-if rank == last:
-    s = vtkSphereSource(); s.SetCenter(%r); s.SetRadius(%r)
-    s.SetThetaResolution(96); s.SetPhiResolution(96)
-    parts.AddInputConnection(s.GetOutputPort())
+if (rank == last) if layout == "split" else (rank == 0):
+    sphere(%r, %r)
+if layout == "offscreen" and rank == last:
+    sphere(%r, 0.5)
 if parts.GetNumberOfInputConnections(0):
     parts.Update()
     self.GetPolyDataOutput().ShallowCopy(parts.GetOutput())
-""" % (plane["origin"], plane["point1"], plane["point2"], sphere["center"], sphere["radius"])
+""" % (layout, plane["origin"], plane["point1"], plane["point2"], sphere["center"],
+       sphere["radius"], behind)
     source = ProgrammableSource(OutputDataSetType="vtkPolyData", Script=script)
     display = Show(source, view)
     display.AmbientColor = display.DiffuseColor = [0.9, 0.9, 0.9]
@@ -57,8 +74,15 @@ if parts.GetNumberOfInputConnections(0):
     pv_scene.populate(view, scene_no_objects)
     view.ShadowTechnique = technique
     Render(view)
+    if layout == "offscreen":
+        # ParaView fits the camera to all the data on the first render: put
+        # the scene's camera back so that the extra sphere is off screen.
+        cam = scene["camera"]
+        view.CameraPosition = cam["position"]
+        view.CameraFocalPoint = cam["focal_point"]
+        view.CameraViewUp = cam["view_up"]
     Render(view)
-    name = "%d-%s" % (ranks, technique)
+    name = "%d-%s" % (ranks, technique) + ("" if layout == "split" else "-" + layout)
     png = os.path.join(out, name + ".png")
     SaveScreenshot(png, view, ImageResolution=view.ViewSize)
     view.UpdatePropertyInformation()
@@ -108,4 +132,4 @@ if __name__ == "__main__":
         compare(sys.argv[2], sys.argv[3], sys.argv[4], json.loads(sys.argv[5]))
     else:
         os.makedirs(sys.argv[2], exist_ok=True)
-        render(sys.argv[1], sys.argv[2], sys.argv[4])
+        render(sys.argv[1], sys.argv[2], sys.argv[4], *sys.argv[5:6])

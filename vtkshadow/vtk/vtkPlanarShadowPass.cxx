@@ -8,6 +8,7 @@
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -154,6 +155,13 @@ struct vtkPlanarShadowPass::Internals
   int PlaneReceiver[MaxExplicitPlanes] = {};
   float PlaneTolerance[MaxExplicitPlanes] = {};
   std::vector<vtkProp*> Receiving; // sorted (from the map)
+  // Receivers by their property keys, and the frame's props (sorted): a
+  // prop the mapper draws that is not one of the frame's props is an inner
+  // actor drawing for an outer one whose property keys it shares
+  // (vtkLODActor's and ParaView's vtkPVLODActor's Device): it receives as
+  // the outer actor does.
+  std::map<vtkInformation*, vtkProp*> ReceiverByKeys;
+  std::vector<vtkProp*> FrameProps;
   bool EveryoneReceives = false;
   std::vector<vtkWeakPointer<vtkActor>> Detected; // in the last frame
 
@@ -171,8 +179,22 @@ struct vtkPlanarShadowPass::Internals
     return added;
   }
 
+  // The receiver an actor draws for: itself, or the outer actor of an
+  // inner one (see ReceiverByKeys).
+  vtkProp* Outer(vtkProp* prop) const
+  {
+    if (!prop || this->ReceiverIndex.count(prop) ||
+      std::binary_search(this->FrameProps.begin(), this->FrameProps.end(), prop))
+    {
+      return prop;
+    }
+    auto it = this->ReceiverByKeys.find(prop->GetPropertyKeys());
+    return it == this->ReceiverByKeys.end() ? prop : it->second;
+  }
+
   bool CanReceive(vtkProp* prop) const
   {
+    prop = this->Outer(prop);
     return this->EveryoneReceives ||
       std::binary_search(this->Receiving.begin(), this->Receiving.end(), prop);
   }
@@ -333,6 +355,8 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
 
   this->GatherLights(renderer, frame);
   const std::vector<vtkActor*> actors = OpaqueActors(s);
+  impl.FrameProps.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
+  std::sort(impl.FrameProps.begin(), impl.FrameProps.end());
   this->GatherReceivers(actors, frame);
   this->GatherCasters(actors, frame);
   this->SetUpCamera(renderer, frame);
@@ -385,6 +409,7 @@ void vtkPlanarShadowPass::GatherReceivers(const std::vector<vtkActor*>& actors, 
 {
   Internals& impl = *this->Impl;
   impl.ReceiverIndex.clear();
+  impl.ReceiverByKeys.clear();
   // Marked actors, or else the flat ones (detection).
   const vtkshadow::ReceiverChoice choice = this->ChooseReceivers(actors);
   impl.Detected.assign(
@@ -409,6 +434,14 @@ void vtkPlanarShadowPass::GatherReceivers(const std::vector<vtkActor*>& actors, 
       continue;
     }
     impl.ReceiverIndex[actor] = static_cast<int>(frame.Receivers.size());
+    // Keys now, so that an inner actor sharing them can be traced back (the
+    // render pass would give the actor keys in PreRender anyway).
+    if (!actor->GetPropertyKeys())
+    {
+      vtkNew<vtkInformation> keys;
+      actor->SetPropertyKeys(keys);
+    }
+    impl.ReceiverByKeys[actor->GetPropertyKeys()] = actor;
     frame.Receivers.push_back(actor);
     frame.Planes.insert(frame.Planes.end(), plane.Plane, plane.Plane + 4);
   }
@@ -1096,7 +1129,7 @@ bool vtkPlanarShadowPass::SetShaderParameters(
   }
   program->SetUniformi("vshPlanarMask", impl.Mask->GetTextureUnit());
   program->SetUniform2i("vshPlanarMaskOrigin", impl.MaskOrigin);
-  auto it = impl.ReceiverIndex.find(prop);
+  auto it = impl.ReceiverIndex.find(impl.Outer(prop));
   program->SetUniformi("vshPlanarReceiver", it == impl.ReceiverIndex.end() ? -1 : it->second);
   program->SetUniformi("vshPlanarLightCount", std::max(impl.LightCount, 1));
   program->SetUniformi("vshPlanarPlaneCount", impl.PlaneCount);
