@@ -25,6 +25,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
+#include "vtkShadowClipSpaceQuad.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkSmartPointer.h"
@@ -125,9 +126,7 @@ struct vtkPlanarShadowPass::Internals
   // Stencil for silhouette fans (winding numbers), and a screen quad.
   unsigned int Stencil = 0;
   int StencilSize[2] = { 0, 0 };
-  vtkSmartPointer<vtkOpenGLBufferObject> Quad;
-  vtkSmartPointer<vtkOpenGLVertexArrayObject> QuadVAO;
-  vtkShaderProgram* QuadProgram = nullptr;
+  vtkShadowClipSpaceQuad Quad; // over the whole viewport (DrawViewportQuad)
   int MaskSize[2] = { 0, 0 };
   int MaskChannels = 4; // 32-bit channels: 1 up to 32 pairs, else 4
   int MaskOrigin[2] = { 0, 0 };
@@ -1035,33 +1034,12 @@ void vtkPlanarShadowPass::FillFans(vtkShaderProgram* program, vtkOpenGLState* st
 void vtkPlanarShadowPass::DrawViewportQuad(vtkShaderProgram* program)
 {
   // A quad over the viewport in clip space sets the bit.
-  Internals& impl = *this->Impl;
-  if (!impl.Quad)
-  {
-    const std::vector<float> corners = { -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, -1, 1,
-      0 };
-    impl.Quad = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    impl.Quad->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-    impl.Quad->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
-    impl.QuadVAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-    impl.QuadProgram = nullptr;
-  }
-  if (impl.QuadProgram != program)
-  {
-    impl.QuadVAO->ShaderProgramChanged();
-    impl.QuadVAO->Bind();
-    impl.QuadVAO->AddAttributeArray(
-      program, impl.Quad, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-    impl.QuadProgram = program;
-  }
   float identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   const float keep[4] = { 0, 0, 0, 1 };
   program->SetUniformMatrix4x4("shadowMCDC", identity);
   program->SetUniform4f("receiverSideMC", keep);
   program->SetUniform4f("belowLightMC", keep);
-  impl.QuadVAO->Bind();
-  glDrawArrays(GL_TRIANGLES, 0, 6);
-  impl.QuadVAO->Release();
+  this->Impl->Quad.Draw(program);
 }
 
 //------------------------------------------------------------------------------
@@ -1172,14 +1150,7 @@ void vtkPlanarShadowPass::ReleaseGraphicsResources(vtkWindow* w)
     impl.Stencil = 0;
     impl.StencilSize[0] = impl.StencilSize[1] = 0;
   }
-  if (impl.QuadVAO)
-  {
-    impl.QuadVAO->ReleaseGraphicsResources();
-    impl.Quad->ReleaseGraphicsResources();
-  }
-  impl.Quad = nullptr;
-  impl.QuadVAO = nullptr;
-  impl.QuadProgram = nullptr;
+  impl.Quad.ReleaseGraphicsResources();
   for (auto& entry : impl.Casters)
   {
     entry.second->Geometry.ReleaseGraphicsResources(w);

@@ -16,6 +16,7 @@
 #include "vtkRenderer.h"
 #include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
+#include "vtkShadowClipSpaceQuad.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowPassBase.h"
 #include "vtkTextureObject.h"
@@ -47,9 +48,7 @@ struct vtkShadowScreenMask::Internals
   // The opaque scene, lights first so the mappers build the same shader
   // variant as in the main pass.
   vtkSmartPointer<vtkSequencePass> DepthScene;
-  vtkSmartPointer<vtkOpenGLBufferObject> Quad;
-  vtkSmartPointer<vtkOpenGLVertexArrayObject> QuadVAO;
-  vtkShaderProgram* QuadProgram = nullptr;
+  vtkShadowClipSpaceQuad Quad;
   // CPU copies for UploadLight: RGBA8 per layer, and which layers changed.
   std::vector<unsigned char> Staged[LayerCount];
   bool Dirty[LayerCount] = { false, false };
@@ -259,32 +258,7 @@ void vtkShadowScreenMask::EndDraw()
 //------------------------------------------------------------------------------
 void vtkShadowScreenMask::DrawFullScreen(vtkShaderProgram* program)
 {
-  Internals& impl = *this->Impl;
-  if (!program)
-  {
-    return;
-  }
-  if (!impl.Quad)
-  {
-    const std::vector<float> corners = { -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, -1, 1,
-      0 };
-    impl.Quad = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    impl.Quad->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-    impl.Quad->Upload(corners, vtkOpenGLBufferObject::ArrayBuffer);
-    impl.QuadVAO = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-    impl.QuadProgram = nullptr;
-  }
-  if (impl.QuadProgram != program)
-  {
-    impl.QuadVAO->ShaderProgramChanged();
-    impl.QuadVAO->Bind();
-    impl.QuadVAO->AddAttributeArray(
-      program, impl.Quad, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-    impl.QuadProgram = program;
-  }
-  impl.QuadVAO->Bind();
-  glDrawArrays(GL_TRIANGLES, 0, 6);
-  impl.QuadVAO->Release();
+  this->Impl->Quad.Draw(program);
 }
 
 //------------------------------------------------------------------------------
@@ -491,11 +465,6 @@ void vtkShadowScreenMask::ReleaseGraphicsResources(vtkWindow* w)
   {
     impl.DepthScene->ReleaseGraphicsResources(w);
   }
-  if (impl.Quad)
-  {
-    impl.Quad->ReleaseGraphicsResources();
-    impl.QuadVAO->ReleaseGraphicsResources();
-    impl.QuadProgram = nullptr;
-  }
+  impl.Quad.ReleaseGraphicsResources();
   impl.Window = nullptr;
 }
