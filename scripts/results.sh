@@ -1,8 +1,9 @@
 #!/bin/sh
 # Regenerate docs/results.md: speed against error of every technique on every
 # scene in scenes/ (bench/vtkshadow-bench, with POV-Ray references and the
-# Blender EEVEE peer through vtkshadow-compare), how cost grows with triangles
-# and pixels (bench/bench_growth.py), assembled by bench/make_results.py.
+# Blender EEVEE peer through vtkshadow-compare), how cost grows with triangles,
+# pixels, lights and coverage (bench/bench_growth.py), assembled by
+# bench/make_results.py.
 # Timing: per scene (and per growth row) one vtkshadow-render process times
 # every configuration in one window, interleaved in blocks (5 warm-up frames
 # each, 4 rounds of 15 frames, the order changed every round) at the scenes'
