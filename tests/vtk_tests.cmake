@@ -76,6 +76,12 @@ add_test(NAME cli.bench_growth
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_bench_growth.py
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/bench_growth)
 set_tests_properties(cli.bench_growth PROPERTIES LABELS "render" TIMEOUT 1800)
+# bench/bench_soft.py on one soft scene at a tiny size against POV-Ray:
+# rows, penumbra figures that fall with samples, the front, bad options.
+add_test(NAME cli.bench_soft
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_bench_soft.py
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/bench_soft)
+set_tests_properties(cli.bench_soft PROPERTIES LABELS "render" TIMEOUT 1800)
 
 # Visibility against the exact answer by ray casting (tests/render/).
 function(vtkshadow_visibility_test name)
