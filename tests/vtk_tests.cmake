@@ -148,3 +148,8 @@ add_test(NAME mesh.read_fuzz
 set_tests_properties(mesh.read_fuzz PROPERTIES LABELS "unit" TIMEOUT 900
   ENVIRONMENT VSH_FUZZ_ITERATIONS=1000)
 
+# csm's maps under a mirror on still frames (tests/render/test_reflection_bakes.py).
+add_test(NAME render.reflection_csm_bakes
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection_bakes.py
+          ${CMAKE_SOURCE_DIR})
+set_tests_properties(render.reflection_csm_bakes PROPERTIES LABELS "render")
