@@ -126,6 +126,12 @@ foreach(case pov-directional pov-point pov-spot pov-wall-directional pov-wall-po
   set_tests_properties(harness.reflection_${case} PROPERTIES LABELS "harness")
 endforeach()
 
+# csm's maps under a mirror on still frames (tests/render/test_reflection_bakes.py).
+add_test(NAME render.reflection_csm_bakes
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection_bakes.py
+          ${CMAKE_SOURCE_DIR})
+set_tests_properties(render.reflection_csm_bakes PROPERTIES LABELS "render")
+
 # Every test of this directory may use the shared X server.
 get_property(vtkshadow_vtk_tests DIRECTORY PROPERTY TESTS)
 foreach(test IN LISTS vtkshadow_vtk_tests)
@@ -148,8 +154,3 @@ add_test(NAME mesh.read_fuzz
 set_tests_properties(mesh.read_fuzz PROPERTIES LABELS "unit" TIMEOUT 900
   ENVIRONMENT VSH_FUZZ_ITERATIONS=1000)
 
-# csm's maps under a mirror on still frames (tests/render/test_reflection_bakes.py).
-add_test(NAME render.reflection_csm_bakes
-  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection_bakes.py
-          ${CMAKE_SOURCE_DIR})
-set_tests_properties(render.reflection_csm_bakes PROPERTIES LABELS "render")
