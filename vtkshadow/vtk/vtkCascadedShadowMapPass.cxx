@@ -244,6 +244,34 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   this->Impl->Atlas->Deactivate();
 }
 
+namespace
+{
+// FNV-1a over the casters' identity, matrix values and mesh times, in
+// order: equal for an unchanged set of casters (a caster leaving changes it).
+unsigned long long CasterContentKey(const std::vector<vtkActor*>& casters)
+{
+  unsigned long long h = 1469598103934665603ULL;
+  auto mix = [&h](const void* data, size_t n)
+  {
+    const unsigned char* b = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i)
+    {
+      h = (h ^ b[i]) * 1099511628211ULL;
+    }
+  };
+  for (vtkActor* actor : casters)
+  {
+    const vtkMTimeType mesh = vtkshadow::MeshTime(actor);
+    mix(&actor, sizeof(actor));
+    mix(&actor->GetMatrix()->Element[0][0], 16 * sizeof(double));
+    mix(&mesh, sizeof(mesh));
+  }
+  const size_t count = casters.size();
+  mix(&count, sizeof(count));
+  return h;
+}
+}
+
 //------------------------------------------------------------------------------
 // Casters and receivers (every visible opaque actor receives), the camera in
 // double, the lights, and the settings: the plain inputs of the plan.
@@ -268,13 +296,18 @@ void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame
     {
       frame.Casters.push_back(actor);
       vsh_bounds_merge(&scene.casters, &ab);
-      // The actor's placement, not its own MTime: VTK's pass machinery gives
-      // actors property keys during the first frame, which bumps it.
-      frame.CasterTime =
-        std::max({ frame.CasterTime, actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor) });
     }
   }
-  frame.CasterTime += frame.Casters.size(); // a caster leaving the scene changes it too
+  // The actors' placement by value, not their own MTime (VTK's pass
+  // machinery gives actors property keys during the first frame, which
+  // bumps it) nor their matrices' (set back to equal values by a mirror).
+  const unsigned long long key = CasterContentKey(frame.Casters);
+  if (key != this->Impl->CasterKey || this->Impl->CasterStamp.GetMTime() == 0)
+  {
+    this->Impl->CasterKey = key;
+    this->Impl->CasterStamp.Modified();
+  }
+  frame.CasterTime = this->Impl->CasterStamp.GetMTime();
   scene.caster_count = static_cast<int>(frame.Casters.size());
   // Across ranks: every rank plans from everyone's casters and receivers, so
   // the light matrices, the tiles and the reuse decisions agree.

@@ -9,6 +9,7 @@
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkSmartPointer.h"
+#include "vtkTimeStamp.h"
 
 #include "vsh_csm.h"
 #include "vsh_csm_plan.h"
@@ -107,6 +108,12 @@ struct vtkCascadedShadowMapPass::Internals
   // reduced over them.
   vtkSmartPointer<vtkMultiProcessController> Controller;
   std::vector<float> ReduceScratch;
+  // The casters' state by content (actors, matrix values, mesh times): a
+  // new stamp only when it differs from the last frame's, so a matrix set
+  // back to the same values (vtkPlanarReflectionPass restores every actor's
+  // after its mirrored draw, which moves the matrices' MTime) keeps the maps.
+  unsigned long long CasterKey = 0;
+  vtkTimeStamp CasterStamp;
 };
 
 #endif

@@ -241,6 +241,12 @@ void vtkShadowVolumePass::CountLight(
   Internals& impl = *this->Impl;
   vtkOpenGLState* state = window->GetState();
   impl.State = state;
+  // The caller's winding (GL_CW while vtkPlanarReflectionPass draws a
+  // mirrored world): DrawCaster sets its own per caster, and the delegate's
+  // draw afterwards must see the caller's again, or the mappers' two-sided
+  // lighting flips every normal of the mirrored scene.
+  GLint frontFace = GL_CCW;
+  glGetIntegerv(GL_FRONT_FACE, &frontFace);
   impl.Mask.BeginDraw(light);
   {
     vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
@@ -276,7 +282,7 @@ void vtkShadowVolumePass::CountLight(
       this->DrawCaster(program, frame, light, actor);
     }
     glDisable(GL_DEPTH_CLAMP);
-    glFrontFace(GL_CCW);
+    glFrontFace(static_cast<GLenum>(frontFace));
     state->vtkglDisable(GL_SCISSOR_TEST);
     impl.Mask.ResolveStencil(light);
   }
