@@ -105,11 +105,13 @@ vec2 vshReceiverPlane(int tile, vec3 p, vec3 n, float eps)
 }
 
 // Distance along the light of a raw map depth z (window, 0..1): from the
-// near plane (orthographic), from the light (perspective).
+// near plane (orthographic), from the light (perspective: ndc z = -x + y / d
+// with x = -(f + n) / (f - n) and y = -2 f n / (f - n), both negative, so
+// the denominator is negative for every depth in the map).
 float vshMapDistance(int tile, float z, bool perspective)
 {
   vec2 pz = vshTileDepth[tile];
-  return perspective ? pz.y / max(z * 2.0 - 1.0 + pz.x, 1e-30) : z * vshTileSoft[tile].y;
+  return perspective ? pz.y / min(z * 2.0 - 1.0 + pz.x, -1e-30) : z * vshTileSoft[tile].y;
 }
 
 // PCSS (Fernando 2005) for map `tile` at atlas `uv`, reference depth `ref`
