@@ -83,6 +83,13 @@ struct vtkCascadedShadowMapPass::Internals
   float ToLightVC[VSH_CSM_MAX_LIGHTS][4] = { { 0 } };
   float ViewToWorld[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   float PixelSize[2] = { 0, 0 }; // world size of a pixel: [0] + [1] * view depth
+  // PCSS: per light (mappers' numbering) its size term (vsh_pcss_light_term:
+  // tan(angle / 2) or the radius; 0 hard), whether this frame compiles PCSS
+  // in, and the raw-depth binding of the atlas (sampler object, unit).
+  float SoftTerm[VSH_CSM_MAX_LIGHTS] = { 0 };
+  bool PCSS = false;
+  unsigned int RawSampler = 0;
+  int RawUnit = -1;
   float FadeStart = 0.0f;
   float MaxDistance = 0.0f;
   std::string ShaderSignature; // kinds, filter: what the generated code depends on
