@@ -42,11 +42,15 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # (technique, [(setting, value)]): the soft settings of each technique, and
 # the hard techniques as the baseline a soft technique must beat. planar
 # averages soft_samples hard shadows from points on the light; raytrace
-# traces `samples` rays per pixel towards the light's disk; csm, volume and
-# auto as they are by default.
+# traces `samples` rays per pixel towards the light's disk; csm filters by
+# PCSS (its default for lights with a size: 16 blocker and 24 filter taps;
+# soft=0 is the hard shadow of the light's centre, and a 32 / 64-tap
+# variant); volume (hard) and auto as they are by default.
 CONFIGS = ([("planar", [("soft_samples", n)]) for n in (1, 4, 16, 64)] +
            [("raytrace", [("samples", n)]) for n in (1, 4, 16, 64)] +
-           [("csm", []), ("volume", []), ("auto", [])])
+           [("csm", [("soft", 0)]), ("csm", []),
+            ("csm", [("pcss_blocker_taps", 32), ("pcss_filter_taps", 64)]),
+            ("volume", []), ("auto", [])])
 PEERS = ("cycles", "eevee", "eevee-best")
 
 
