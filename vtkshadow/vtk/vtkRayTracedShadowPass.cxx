@@ -180,7 +180,9 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
     frame.Samples.push_back(sized ? this->Samples : 1);
     frame.Channels.push_back(i);
   }
-  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(s))
+  // The renderer's actors, not the render state's frustum-culled ones: a
+  // caster behind the camera still shadows the view.
+  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
   {
     const bool casts = !vtkshadow::HasFlag(a.Actor, NO_CAST());
     frame.Actors.push_back({ a.Actor, casts });
