@@ -52,7 +52,8 @@ foreach(row IN ITEMS
     "needles-point 0 0.02 1.0"
     "needles-spot 0 0.02 1.0"
     "casters-behind-camera 0 0.02 1.0"
-    "casters-behind-camera 1 0.02 1.0")
+    "casters-behind-camera 1 0.02 1.0"
+    "thin-plate-long-floor 0 0.02 1.0")
   separate_arguments(f UNIX_COMMAND "${row}")
   list(GET f 0 case)
   list(GET f 1 light)

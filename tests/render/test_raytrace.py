@@ -14,6 +14,11 @@ the floor, ...) and the ones below, which shadow maps find hard:
   offset-1e6-{point,spot}           sphere-floor moved by 1e6 on every axis
   scale-1e-6-{point,spot}           sphere-floor scaled by 1e-6 about the origin
   sphere-floor-{point,spot}-16x9    the other light types at 16:9
+  thin-plate-long-floor             the thin plate on a floor 2e5 long in two
+                                    tiles (the far one out of view): a float
+                                    frame at the scene's centre puts the plate
+                                    at 1e5, whose shadow-ray offset (0.05)
+                                    exceeds its thickness (0.01)
   casters-behind-camera             every caster behind the camera (VTK's
                                     frustum culler drops them from the
                                     render state), a directional (--light 0)
@@ -85,6 +90,17 @@ def thin_plate_point(size):
     return s
 
 
+def thin_plate_long_floor(size):
+    s = tp.thin_plate(size)
+    s["objects"] = [o for o in s["objects"] if o.get("name") != "floor"]
+    # Two tiles: one mesh 2e5 long would itself be stored with 0.008 float
+    # steps (its offset rule then exceeds the plate: docs/raytraced-shadows.md).
+    s["objects"].append(floor(5))
+    s["objects"].append(dict(floor(5, y0=5, y1=2e5), name="far floor"))
+    s["description"] += " (the floor 2e5 long)"
+    return s
+
+
 def casters_behind_camera(size):
     """Two spheres and a box behind the camera (outside the view frustum, so
     VTK's culler leaves them out of the render state's props) and a floor in
@@ -114,6 +130,7 @@ EXTRA = {
     "sphere-floor-point-16x9": (lambda: sphere_floor("point", S169), 1500),
     "sphere-floor-spot-16x9": (lambda: sphere_floor("spot", S169), 1500),
     "casters-behind-camera": (lambda: casters_behind_camera(S43), 3000),
+    "thin-plate-long-floor": (lambda: thin_plate_long_floor(S43), 500),
 }
 CASES = dict(tp.CASES, **EXTRA)
 
