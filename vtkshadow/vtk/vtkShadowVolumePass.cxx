@@ -42,25 +42,18 @@ namespace
 {
 constexpr int MaxLights = vtkShadowScreenMask::MaxLights;
 
-// The renderer's actors that cast: visible, with a mapper, opaque
-// (translucent geometry neither blocks nor shows shadows), not NO_CAST. From
-// the renderer's props, not the render state's: VTK's frustum culler drops
-// the props outside the view from the latter, and a caster behind the
-// camera still throws its shadow into the view.
+// The renderer's actors that cast: those of vtkshadow::ShadowActors (from
+// the renderer's props, not the render state's frustum-culled ones: a
+// caster behind the camera still throws its shadow into the view) without
+// NO_CAST.
 std::vector<vtkActor*> CastingActors(vtkRenderer* renderer)
 {
   std::vector<vtkActor*> actors;
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
+  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
   {
-    auto* actor = vtkActor::SafeDownCast(prop);
-    if (actor && actor->GetVisibility() && actor->GetMapper() &&
-      !actor->HasTranslucentPolygonalGeometry() &&
-      !vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()))
+    if (!vtkshadow::HasFlag(a.Actor, vtkShadowPassBase::NO_CAST()))
     {
-      actors.push_back(actor);
+      actors.push_back(a.Actor);
     }
   }
   return actors;
