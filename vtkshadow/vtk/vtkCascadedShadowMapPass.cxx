@@ -299,14 +299,22 @@ void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame
 
   vsh_bounds_init_empty(&scene.casters);
   vsh_bounds_init_empty(&scene.receivers);
+  // Receivers are what the frame draws (the render state's frustum-culled
+  // list); casters come from the renderer's props, because a caster behind
+  // the camera or beside the view still throws its shadow into it.
   for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(s))
   {
-    vtkActor* actor = shadowActor.Actor;
     vsh_bounds ab;
     vsh_bounds_from_vtk(&ab, shadowActor.Bounds);
     vsh_bounds_merge(&scene.receivers, &ab);
+  }
+  for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(renderer))
+  {
+    vtkActor* actor = shadowActor.Actor;
     if (!vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()))
     {
+      vsh_bounds ab;
+      vsh_bounds_from_vtk(&ab, shadowActor.Bounds);
       frame.Casters.push_back(actor);
       vsh_bounds_merge(&scene.casters, &ab);
     }

@@ -357,7 +357,14 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   impl.FrameProps.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
   std::sort(impl.FrameProps.begin(), impl.FrameProps.end());
   this->GatherReceivers(actors, frame);
-  this->GatherCasters(actors, frame);
+  // Casters from the renderer's props, not the frustum-culled list: a
+  // caster behind the camera still shadows a receiver in view.
+  std::vector<vtkActor*> casters;
+  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
+  {
+    casters.push_back(a.Actor);
+  }
+  this->GatherCasters(casters, frame);
   this->SetUpCamera(renderer, frame);
   // Which (receiver, light) pairs cast, with their matrices: plain planning.
   std::vector<vsh_planar_pair> pairs(MaxPairs);
