@@ -18,6 +18,16 @@ Cases:
               face): planar, exact.
   concave     an L-shaped prism whose tall arm shadows its low arm: csm,
               because planar cannot draw a shadow on its own caster.
+  volume-thin three needles (boxes 0.03 wide, about 4 px on screen) over
+              a sphere that is no plane: maps would lose the needles'
+              shadows (the thin-caster term) and shadow volumes, exact,
+              with a few dozen silhouette edges and a small fill, cost less
+              than rays: volume, checked against the exact answer; the
+              stats show the weighed candidates and the pick.
+  volume-fill a sphere shadowing another one close to the camera, no thin
+              part: maps meet the target, and the volumes' scissored fill
+              (over the whole window) makes them cost more than the map:
+              csm, with volume weighed and not picked.
   max-error   --max-error 2px gives the cascaded pass a texel target of
               exactly 2; --max-error 0.5 the closed form of
               vsh_auto_texel_target for the window, the casters'
@@ -88,6 +98,42 @@ def concave_scene(out):
     mesh = os.path.join(out, "l-prism.obj")
     l_prism(mesh)
     return scene([{"type": "directional", "direction": [1, 0.2, -1]}], [{"mesh": mesh}, floor(5)])
+
+
+def needles():
+    """Three thin boxes over a sphere receiver (no plane: planar is out)."""
+    boxes = [{"box": {"min": [-1.0, y - 0.015, 1.6], "max": [1.0, y + 0.015, 1.63]}}
+             for y in (-0.3, 0.0, 0.3)]
+    camera = {"position": [0, -5, 3.5], "focal_point": [0, 0, 0.6], "view_up": [0, 0, 1],
+              "view_angle": 35}
+    return scene([{"type": "directional", "direction": [0.2, 0.1, -1]}],
+                 boxes + [sphere([0, 0, 0.1], 1.3)], camera)
+
+
+def near_spheres():
+    camera = {"position": [0, -3.2, 1.6], "focal_point": [0, 0, 0.6], "view_up": [0, 0, 1],
+              "view_angle": 40}
+    return scene([{"type": "directional", "direction": [0.1, 0.3, -1]}],
+                 [sphere([0, 0, 1.5], 0.6, 64), sphere([0.1, 0.3, -0.2], 0.8, 64)], camera)
+
+
+def general_case(c, args, name, builder, want):
+    """The light's general choice (no planar receiver in the scene) and what
+    auto weighed for it."""
+    ts, _ = stats(args.bin, args.out, name, builder())
+    general = ts.get("general") or [{}]
+    g = general[0]
+    c.check(ts.get("light_choices") == [want] and g.get("pick") == want,
+            f"{name}: choice {ts.get('light_choices')}, general pick {g.get('pick')} (want "
+            f"{want}); reason: {ts.get('reason')}")
+    c.check(g.get("volume_error_pct") == 0 and g.get("volume_unsupported_casters") == 0 and
+            g.get("volume_silhouette_edges", 0) > 0 and g.get("volume_fill_px", 0) > 0,
+            f"{name}: volume predicted exact, {g.get('volume_silhouette_edges')} silhouette "
+            f"edges, {g.get('volume_fill_px')} px of fill")
+    costs = {k: g.get(k + "_ms") for k in ("csm", "volume", "raytrace")}
+    c.check(all(isinstance(v, (int, float)) and v > 0 for v in costs.values()),
+            f"{name}: predicted ms {costs}")
+    return ts, g
 
 
 def stats(bin_dir, out, name, sc, extra=()):
@@ -181,7 +227,7 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True,
                     choices=["mixed", "idle-light", "out-of-view", "box", "concave",
-                             "max-error"])
+                             "volume-thin", "volume-fill", "max-error"])
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     c = Checks()
@@ -201,6 +247,23 @@ def main():
         c.check(ts.get("choice") == "csm" and "not convex" in str(ts.get("reason")),
                 f"concave: choice {ts.get('choice')} {ts.get('light_choices')}; reason: "
                 f"{ts.get('reason')}")
+    elif args.case == "volume-thin":
+        ts, g = general_case(c, args, "volume-thin", needles, "volume")
+        c.check(g.get("csm_error_pct", 0) > 0.5 and g.get("volume_ms", 1e9) < g.get("raytrace_ms", 0),
+                f"volume-thin: maps predicted {g.get('csm_error_pct')}% wrong (target 0.5), volume "
+                f"{g.get('volume_ms')} ms < raytrace {g.get('raytrace_ms')} ms")
+        failed, _, m = run_case(args.bin, args.out, "volume-thin", needles(), 0, "auto", "all", 0.5,
+                                99.9, 0)
+        c.check(not failed, f"volume-thin: against the exact answer: wrong_pct "
+                            f"{m['wrong_pct']:.4f} (bound 0.5)")
+    elif args.case == "volume-fill":
+        ts, g = general_case(c, args, "volume-fill", near_spheres, "csm")
+        w, h = S43
+        c.check(g.get("csm_error_pct", 1) <= 0.5 and g.get("volume_fill_px", 0) > w * h and
+                g.get("volume_ms", 0) > g.get("csm_ms", 1e9),
+                f"volume-fill: maps meet the target ({g.get('csm_error_pct')}%), volume fill "
+                f"{g.get('volume_fill_px')} px > the window's {w * h}, volume {g.get('volume_ms')} "
+                f"ms > csm {g.get('csm_ms')} ms")
     else:
         max_error_case(c, args)
     print(f"{args.case}: {'FAILED (%d checks)' % c.failed if c.failed else 'passed'}")
