@@ -2,22 +2,23 @@
 `volume` candidate): frame time above `none` against window pixels,
 silhouette edges and scissored fill.
 
-  python3 bench/bench_volume_cost.py --bin build/bin --out DIR
+  tests/gl-run.sh build/bin/vtkshadow-python bench/bench_volume_cost.py --bin build/bin --out DIR
           [--frames 10] [--rounds 4] [--warmup 3] [--quick]
-
-(under tests/gl-run.sh or xvfb-run -a when there is no display.)
 
 Scenes (written to DIR): one directional light; a grid of n x n spheres of
 tessellation r (silhouette edges grow with n^2 r), their radius and the
 camera distance changing the fill, with and without a floor (whose volume
-fills most of the window), at 320x240 and 640x480. Each scene is timed by
+fills most of the window), some with a non-casting sphere of tessellation t
+beside them (scene triangles without volumes: the depth pre-pass draws it),
+at 320x240 and 640x480. Each scene is timed by
 one vtkshadow-render process with `none` and `volume` interleaved
 (--time-also); the figure per scene is the median over rounds of volume's
 round median minus none's. The volume pass's own --stats give the inputs
 (volume_quads = sum of silhouette multiplicities, fill_px = the scissor
 rectangles), so the model is fitted on the quantities auto predicts.
 
-Fit: least squares of ms = a pixels + b edges + c fill (no intercept: the
+Fit: least squares of ms = a pixels + t triangles + b edges + c fill (no
+intercept: the
 model has none); a coefficient that fits negative (noise) is dropped and the
 rest refitted. Prints the table, the coefficients and the residuals, and
 writes DIR/volume_cost.json. Not a test: timings on a shared machine are
@@ -31,9 +32,21 @@ import platform
 import subprocess
 import sys
 
+import vtkshadow
 
-def scene(size, n, res, radius, distance, floor):
+
+def triangles(path):
+    s = vtkshadow.vtkShadowScene()
+    if not s.Load(path):
+        sys.exit(f"bench_volume_cost: {path}: {s.GetErrorMessage()}")
+    return sum(s.GetObjectPolyData(i).GetNumberOfPolys() for i in range(s.GetNumberOfObjects()))
+
+
+def scene(size, n, res, radius, distance, floor, extra=0):
     objects = []
+    if extra:
+        objects.append({"sphere": {"center": [1.2, 1.0, 0.3], "radius": 0.3,
+                                   "resolution": extra}, "casts": False})
     step = 3.0 * radius
     for i in range(n):
         for j in range(n):
@@ -50,14 +63,15 @@ def scene(size, n, res, radius, distance, floor):
             "objects": objects}
 
 
-CONFIGS = [  # (size, n, res, radius, distance, floor)
+CONFIGS = [  # (size, n, res, radius, distance, floor, non-casting sphere's res)
     ((320, 240), 1, 16, 0.5, 8, False), ((320, 240), 1, 128, 0.5, 8, False),
-    ((320, 240), 4, 64, 0.2, 8, False), ((320, 240), 8, 64, 0.1, 8, False),
+    ((320, 240), 4, 32, 0.2, 8, False), ((320, 240), 8, 16, 0.1, 8, False),
     ((320, 240), 1, 32, 1.5, 5, False), ((320, 240), 1, 32, 0.5, 8, True),
-    ((640, 480), 1, 16, 0.5, 8, False), ((640, 480), 1, 256, 0.5, 8, False),
-    ((640, 480), 6, 128, 0.15, 8, False), ((640, 480), 10, 96, 0.08, 8, False),
+    ((320, 240), 1, 16, 0.5, 8, False, 200),
+    ((640, 480), 1, 16, 0.5, 8, False), ((640, 480), 1, 160, 0.5, 8, False),
+    ((640, 480), 6, 24, 0.15, 8, False), ((640, 480), 12, 12, 0.06, 8, False),
     ((640, 480), 1, 32, 1.5, 5, False), ((640, 480), 1, 32, 0.5, 8, True),
-    ((640, 480), 3, 32, 0.4, 8, True),
+    ((640, 480), 3, 32, 0.4, 8, True), ((640, 480), 1, 16, 0.5, 8, False, 200),
 ]
 
 
@@ -83,9 +97,13 @@ def measure(args, index, config):
     ms = diffs[mid] if len(diffs) % 2 else 0.5 * (diffs[mid - 1] + diffs[mid])
     light = vol["technique_stats"]["lights"][0]
     w, h = config[0]
-    return {"config": list(config), "pixels": w * h, "edges": light["volume_quads"],
+    return {"config": list(config), "pixels": w * h, "triangles": triangles(path),
+            "edges": light["volume_quads"],
             "fill_px": light["fill_px"], "ms": ms, "none_ms": none["ms"]["median"],
             "noise": entries["none#2"]["ratio_to_none"]["median"]}
+
+
+TERMS = ["pixels", "triangles", "edges", "fill_px"]
 
 
 def solve(rows, terms):
@@ -107,13 +125,13 @@ def solve(rows, terms):
 
 
 def fit(rows):
-    terms = ["pixels", "edges", "fill_px"]
+    terms = list(TERMS)
     while terms:
         coef = solve(rows, terms)
         negative = [t for t in terms if coef is None or coef[t] < 0]
         if not negative:
-            return {t: coef.get(t, 0.0) for t in ["pixels", "edges", "fill_px"]} | {
-                "dropped": [t for t in ["pixels", "edges", "fill_px"] if t not in terms]}
+            return {t: coef.get(t, 0.0) for t in TERMS} | {
+                "dropped": [t for t in TERMS if t not in terms]}
         terms.remove(negative[0])
     return None
 
@@ -132,18 +150,19 @@ def main():
     for i, config in enumerate(CONFIGS[:4] if args.quick else CONFIGS):
         rows.append(measure(args, i, config))
         r = rows[-1]
-        print("%-40s pixels %7d edges %6d fill %8d: volume - none %7.3f ms (none %.2f, noise %.3f)"
-              % (str(config), r["pixels"], r["edges"], r["fill_px"], r["ms"], r["none_ms"],
-                 r["noise"]), flush=True)
+        print("%-44s pixels %6d triangles %7d edges %5d fill %8d: volume - none %7.3f ms "
+              "(none %.2f, noise %.3f)" % (str(config), r["pixels"], r["triangles"], r["edges"],
+                                          r["fill_px"], r["ms"], r["none_ms"], r["noise"]),
+              flush=True)
     coef = fit(rows)
     if coef is None:
         sys.exit("bench_volume_cost: no fit (every term came out negative)")
-    print("fit: ms = %.4g * pixels + %.4g * edges + %.4g * fill_px (dropped: %s)"
-          % (coef["pixels"], coef["edges"], coef["fill_px"], coef["dropped"] or "none"))
+    print("fit: ms = %.4g * pixels + %.4g * triangles + %.4g * edges + %.4g * fill_px "
+          "(dropped: %s)" % (coef["pixels"], coef["triangles"], coef["edges"], coef["fill_px"],
+                             coef["dropped"] or "none"))
     for r in rows:
-        pred = coef["pixels"] * r["pixels"] + coef["edges"] * r["edges"] + \
-            coef["fill_px"] * r["fill_px"]
-        print("  measured %7.3f predicted %7.3f" % (r["ms"], pred))
+        pred = sum(coef[t] * r[t] for t in TERMS)
+        print("  %-44s measured %8.3f predicted %8.3f" % (str(r["config"]), r["ms"], pred))
     with open(os.path.join(args.out, "volume_cost.json"), "w") as f:
         json.dump({"machine": platform.node(), "cpu": platform.processor(), "rows": rows,
                    "coefficients": coef}, f, indent=1)

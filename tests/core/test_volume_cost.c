@@ -7,9 +7,15 @@
 #include <float.h>
 #include <math.h>
 
+static double cost4(double pixels, double triangles, double edges, double fill)
+{
+  const vsh_volume_ms_input in = {pixels, triangles, edges, fill};
+  return vsh_volume_cost_ms(&in);
+}
+
 static double cost(double pixels, double edges, double fill)
 {
-  const vsh_volume_ms_input in = {pixels, edges, fill};
+  const vsh_volume_ms_input in = {pixels, 0.0, edges, fill};
   return vsh_volume_cost_ms(&in);
 }
 
@@ -17,6 +23,7 @@ static void test_terms(void)
 {
   /* The coefficients are what a measurement gives: positive and finite. */
   CHECK(VSH_VOLUME_MS_PER_PIXEL > 0.0 && isfinite(VSH_VOLUME_MS_PER_PIXEL));
+  CHECK(VSH_VOLUME_MS_PER_TRIANGLE > 0.0 && isfinite(VSH_VOLUME_MS_PER_TRIANGLE));
   CHECK(VSH_VOLUME_MS_PER_EDGE > 0.0 && isfinite(VSH_VOLUME_MS_PER_EDGE));
   CHECK(VSH_VOLUME_MS_PER_FILL_PX > 0.0 && isfinite(VSH_VOLUME_MS_PER_FILL_PX));
   /* Each term on its own, then their sum: the model is linear. */
@@ -25,6 +32,11 @@ static void test_terms(void)
   CHECK_NEAR(cost(0.0, 0.0, 5e4), VSH_VOLUME_MS_PER_FILL_PX * 5e4, 1e-12);
   CHECK_NEAR(cost(640.0 * 480.0, 1000.0, 5e4),
              cost(640.0 * 480.0, 0.0, 0.0) + cost(0.0, 1000.0, 0.0) + cost(0.0, 0.0, 5e4), 1e-12);
+  CHECK_NEAR(cost4(0.0, 1e5, 0.0, 0.0), VSH_VOLUME_MS_PER_TRIANGLE * 1e5, 1e-12);
+  CHECK_NEAR(cost4(3e5, 1e5, 1000.0, 5e4), cost(3e5, 1000.0, 5e4) + cost4(0.0, 1e5, 0.0, 0.0),
+             1e-12);
+  CHECK(cost4(0.0, -1.0, 0.0, 0.0) == INFINITY && cost4(0.0, NAN, 0.0, 0.0) == INFINITY);
+  CHECK(cost4(0.0, INFINITY, 0.0, 0.0) == INFINITY);
   /* Nothing at all costs nothing; 0 edges and 0 fill leave the screen term. */
   CHECK(cost(0.0, 0.0, 0.0) == 0.0);
   CHECK(cost(100.0, 0.0, 0.0) > 0.0);

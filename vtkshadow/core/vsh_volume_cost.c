@@ -8,6 +8,7 @@
  * median over interleaved rounds of volume's frame time minus none's in the
  * same round), CALIBRATION. */
 const double VSH_VOLUME_MS_PER_PIXEL = 1.0e-5;
+const double VSH_VOLUME_MS_PER_TRIANGLE = 1.0e-4;
 const double VSH_VOLUME_MS_PER_EDGE = 1.0e-4;
 const double VSH_VOLUME_MS_PER_FILL_PX = 1.0e-5;
 
@@ -18,9 +19,11 @@ static int usable(double x)
 
 double vsh_volume_cost_ms(const vsh_volume_ms_input *in)
 {
-  if (!in || !usable(in->pixels) || !usable(in->silhouette_edges) || !usable(in->fill_px))
+  if (!in || !usable(in->pixels) || !usable(in->scene_triangles) ||
+      !usable(in->silhouette_edges) || !usable(in->fill_px))
     return INFINITY;
   const double ms = VSH_VOLUME_MS_PER_PIXEL * in->pixels +
+                    VSH_VOLUME_MS_PER_TRIANGLE * in->scene_triangles +
                     VSH_VOLUME_MS_PER_EDGE * in->silhouette_edges +
                     VSH_VOLUME_MS_PER_FILL_PX * in->fill_px;
   return isfinite(ms) ? ms : INFINITY;

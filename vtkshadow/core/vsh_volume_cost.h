@@ -8,6 +8,10 @@
  *                                           work: the depth pre-pass, the
  *                                           stencil clear and resolve, the
  *                                           mask lookup in the lighting
+ *      + MS_PER_TRIANGLE * scene_triangles  the depth pre-pass draws the
+ *                                           opaque scene once more (the
+ *                                           first measurements showed this
+ *                                           term dominating on big meshes)
  *      + MS_PER_EDGE    * silhouette_edges  per side quad (sum of the edges'
  *                                           multiplicities over the casters):
  *                                           the CPU's silhouette and volume
@@ -31,17 +35,19 @@ extern "C" {
 
 typedef struct vsh_volume_ms_input {
   double pixels;           /* the viewport's pixels */
+  double scene_triangles;  /* the opaque scene's triangles (the depth pre-pass) */
   double silhouette_edges; /* sum of the silhouette multiplicities: side quads */
   double fill_px;          /* sum of the casters' scissor rectangles, pixels */
 } vsh_volume_ms_input;
 
 /* The fitted coefficients (vsh_volume_cost.c). */
 extern const double VSH_VOLUME_MS_PER_PIXEL;
+extern const double VSH_VOLUME_MS_PER_TRIANGLE;
 extern const double VSH_VOLUME_MS_PER_EDGE;
 extern const double VSH_VOLUME_MS_PER_FILL_PX;
 
-/* The model above. 0 edges and 0 fill leave the screen term (the depth
- * pre-pass is paid even when no volume reaches the view). Returns +inf
+/* The model above. 0 edges and 0 fill leave the screen and scene terms
+ * (the depth pre-pass is paid even when no volume reaches the view). Returns +inf
  * (never cheaper than anything finite) for NULL, NaN or negative inputs
  * and when the sum overflows; +inf inputs give +inf. */
 double vsh_volume_cost_ms(const vsh_volume_ms_input *in);

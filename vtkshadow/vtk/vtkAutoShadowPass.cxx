@@ -562,6 +562,7 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
        << ", \"volume_error_pct\": "
        << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].predicted_error_pct)
        << ", \"volume_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].cost)
+       << ", \"volume_scene_triangles\": " << volume.scene_triangles
        << ", \"volume_silhouette_edges\": " << volume.silhouette_edges
        << ", \"volume_fill_px\": " << volume.fill_px
        << ", \"volume_unsupported_casters\": " << unsupported
@@ -612,6 +613,7 @@ int vtkAutoShadowPass::VolumeInputs(
   const int* size = renderer->GetSize();
   const int width = std::max(size[0], 1), height = std::max(size[1], 1);
   input.pixels = static_cast<double>(width) * height;
+  input.scene_triangles = 0.0;
   input.silhouette_edges = 0.0;
   input.fill_px = 0.0;
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -630,11 +632,13 @@ int vtkAutoShadowPass::VolumeInputs(
   int unsupported = this->TranslucentCasters(renderer);
   for (size_t i = 0; i < impl.Objects.size(); ++i)
   {
+    vtkActor* actor = impl.Actors[i];
+    // The depth pre-pass draws every opaque actor, casting or not.
+    input.scene_triangles += static_cast<double>(impl.For(actor).Geometry.GetNumberOfTriangles());
     if (!impl.Objects[i].casts)
     {
       continue;
     }
-    vtkActor* actor = impl.Actors[i];
     const double edges = this->VolumeEdges(actor, light, index);
     if (edges < 0.0)
     {
