@@ -3,7 +3,7 @@
 silhouette edges and scissored fill.
 
   tests/gl-run.sh build/bin/vtkshadow-python bench/bench_volume_cost.py --bin build/bin --out DIR
-          [--frames 10] [--rounds 4] [--warmup 3] [--quick]
+          [--frames 10] [--rounds 4] [--warmup 3] [--quick] [--refit RUN.json...]
 
 Scenes (written to DIR): one directional light; a grid of n x n spheres of
 tessellation r (silhouette edges grow with n^2 r), their radius and the
@@ -20,7 +20,8 @@ rectangles), so the model is fitted on the quantities auto predicts.
 Fit: least squares of ms = a pixels + t triangles + b edges + c fill (no
 intercept: the
 model has none); a coefficient that fits negative (noise) is dropped and the
-rest refitted. Prints the table, the coefficients and the residuals, and
+rest refitted. --refit fits the rows of earlier runs' volume_cost.json
+files together (no rendering): several runs average the noise. Prints the table, the coefficients and the residuals, and
 writes DIR/volume_cost.json. Not a test: timings on a shared machine are
 noisy; copy the coefficients into vtkshadow/core/vsh_volume_cost.c with the
 date and machine.
@@ -32,10 +33,9 @@ import platform
 import subprocess
 import sys
 
-import vtkshadow
-
 
 def triangles(path):
+    import vtkshadow  # only when rendering (under vtkshadow-python)
     s = vtkshadow.vtkShadowScene()
     if not s.Load(path):
         sys.exit(f"bench_volume_cost: {path}: {s.GetErrorMessage()}")
@@ -144,10 +144,15 @@ def main():
     ap.add_argument("--rounds", type=int, default=4)
     ap.add_argument("--warmup", type=int, default=3)
     ap.add_argument("--quick", action="store_true", help="the first 4 scenes only")
+    ap.add_argument("--refit", nargs="+", default=[], help="volume_cost.json of earlier runs")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     rows = []
-    for i, config in enumerate(CONFIGS[:4] if args.quick else CONFIGS):
+    for path in args.refit:
+        with open(path) as f:
+            rows += json.load(f)["rows"]
+    configs = [] if args.refit else CONFIGS[:4] if args.quick else CONFIGS
+    for i, config in enumerate(configs):
         rows.append(measure(args, i, config))
         r = rows[-1]
         print("%-44s pixels %6d triangles %7d edges %5d fill %8d: volume - none %7.3f ms "

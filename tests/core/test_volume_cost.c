@@ -65,9 +65,10 @@ static void test_degenerate(void)
 
 static void test_error_and_choice(void)
 {
-  CHECK(vsh_volume_predicted_error(0) == 0.0);
-  CHECK(vsh_volume_predicted_error(-3) == 0.0);
-  CHECK(vsh_volume_predicted_error(1) == INFINITY);
+  CHECK(vsh_volume_predicted_error(0, 0) == 0.0);
+  CHECK(vsh_volume_predicted_error(-3, 0) == 0.0);
+  CHECK(vsh_volume_predicted_error(1, 0) == INFINITY);
+  CHECK(vsh_volume_predicted_error(0, 1) == INFINITY);
   /* In auto's pick: exact and cheap wins over a map that misses a thin
    * caster; a huge fill loses to the map, and to rays. */
   const double pixels = 640.0 * 480.0;
@@ -86,7 +87,7 @@ static void test_error_and_choice(void)
         VSH_AUTO_GENERAL_RAYTRACE);
   /* An unsupported caster: volume never meets the target. */
   c[VSH_AUTO_GENERAL_VOLUME].cost = 0.0;
-  c[VSH_AUTO_GENERAL_VOLUME].predicted_error_pct = vsh_volume_predicted_error(1);
+  c[VSH_AUTO_GENERAL_VOLUME].predicted_error_pct = vsh_volume_predicted_error(1, 0);
   CHECK(vsh_auto_pick_cheapest(c, VSH_AUTO_GENERAL_COUNT, 0.5, &met) ==
         VSH_AUTO_GENERAL_RAYTRACE);
 }

@@ -144,6 +144,13 @@ def general_case(c, args, name, builder, want):
             f"{name}: volume pass drew {drawn.get('volume_quads')} quads and "
             f"{drawn.get('fill_px')} px of fill (auto predicted "
             f"{g.get('volume_silhouette_edges')} and {g.get('volume_fill_px')})")
+    # The measured fill (occlusion query of the previous frame: samples of
+    # volume faces in front of the scene) is below the scissor estimate
+    # (an upper bound of one layer) times the two layers of closed casters.
+    samples = drawn.get("fill_samples_passed", -1)
+    c.check(0 < samples <= 2 * drawn.get("fill_px", 0),
+            f"{name}: measured fill {samples} samples passed, scissor estimate "
+            f"{drawn.get('fill_px')} px")
     costs = {k: g.get(k + "_ms") for k in ("csm", "volume", "raytrace")}
     c.check(all(isinstance(v, (int, float)) and v > 0 for v in costs.values()),
             f"{name}: predicted ms {costs}")

@@ -29,7 +29,7 @@ double vsh_volume_cost_ms(const vsh_volume_ms_input *in)
   return isfinite(ms) ? ms : INFINITY;
 }
 
-double vsh_volume_predicted_error(int unsupported_casters)
+double vsh_volume_predicted_error(int unsupported_casters, int soft_light)
 {
-  return unsupported_casters > 0 ? INFINITY : 0.0;
+  return unsupported_casters > 0 || soft_light ? INFINITY : 0.0;
 }

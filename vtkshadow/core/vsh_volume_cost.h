@@ -53,13 +53,15 @@ extern const double VSH_VOLUME_MS_PER_FILL_PX;
 double vsh_volume_cost_ms(const vsh_volume_ms_input *in);
 
 /* The wrong_pct volumes are predicted to have for one light: 0 (exact)
- * when every caster is one they draw exactly, +inf (never meets a
- * target) when `unsupported_casters` > 0. Volumes are exact for polygonal
- * meshes, closed, open or non-manifold, glyph instances included (their
- * silhouettes are built per instance); they do not draw casters without
- * triangles (lines, vertices: the pass has no mesh to extrude) and skip
- * translucent casters, whose shadows the other techniques draw. */
-double vsh_volume_predicted_error(int unsupported_casters);
+ * when every caster is one they draw exactly and the light is a point
+ * (hard shadows), +inf (never meets a target) when `unsupported_casters` >
+ * 0 or `soft_light` is set. Volumes are exact for polygonal meshes,
+ * closed, open or non-manifold, glyph instances included (their
+ * silhouettes are built per instance). They do not support: casters
+ * without triangles (lines, vertices: the pass has no mesh to extrude),
+ * translucent casters (the pass skips them), and lights with a size (a
+ * radius or angle: volumes have no penumbra). */
+double vsh_volume_predicted_error(int unsupported_casters, int soft_light);
 
 #ifdef __cplusplus
 }

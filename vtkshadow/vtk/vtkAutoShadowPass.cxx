@@ -13,8 +13,8 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPropCollection.h"
 #include "vtkPlanarShadowPass.h"
+#include "vtkPropCollection.h"
 #include "vtkRayTracedShadowPass.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -65,6 +65,7 @@ struct vtkAutoShadowPass::Internals
   std::vector<vtkWeakPointer<vtkActor>> Detected; // receivers found, not marked
   std::string GeneralJSON;                        // per map light: the candidates auto weighed
   std::vector<std::vector<double>> Lights;        // per switched-on light: homogeneous, world
+  std::vector<bool> SoftLights;                   // per switched-on light: has a radius or angle
 
   // What was chosen: for the frame and per switched-on light.
   vtkshadow::TechniqueSet Choice = vtkshadow::TechniqueSet::None;
@@ -156,6 +157,7 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   Internals& impl = *this->Impl;
   impl.LightChoices.clear();
   impl.Lights.clear();
+  impl.SoftLights.clear();
   this->LightReasons.clear();
   double stretch = 1.0, edgeLength = 0.0;
   std::vector<double> edgeLengths; // per light: its casters' outline (map lights)
@@ -164,6 +166,7 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     double homogeneous[4];
     vtkshadow::LightHomogeneous(light, homogeneous);
     impl.Lights.emplace_back(homogeneous, homogeneous + 4);
+    impl.SoftLights.push_back(GetLightRadius(light) > 0.0 || GetLightAngle(light) > 0.0);
     const vsh_auto_light_choice c =
       vsh_auto_choose_light(impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous,
         light->LightTypeIsHeadlight() ? 1 : 0, concave);
@@ -349,8 +352,8 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   // pass's delegate), so switching keeps VTK's passes: each does its shadow
   // work for its lights, then renders through the next.
   vtkRenderPass* next = this->EnsureDelegatePass();
-  vtkShadowPassBase* const candidates[] = { this->PlanarPass, this->CascadedPass,
-    this->VolumePass, this->RayTracedPass };
+  vtkShadowPassBase* const candidates[] = { this->PlanarPass, this->CascadedPass, this->VolumePass,
+    this->RayTracedPass };
   const bool used[] = { planar, csm, volume, rays };
   for (int i = 0; i < 4; ++i)
   {
@@ -523,7 +526,8 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
       MapLookupMsPerPixel * pixels };
     w.Unsupported =
       this->VolumeInputs(renderer, impl.Lights[l].data(), static_cast<int>(l), w.Volume);
-    w.Candidates[VSH_AUTO_GENERAL_VOLUME] = { 1, vsh_volume_predicted_error(w.Unsupported),
+    w.Candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
+      vsh_volume_predicted_error(w.Unsupported, impl.SoftLights[l] ? 1 : 0),
       vsh_volume_cost_ms(&w.Volume) };
     w.Candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, 0.0,
       this->RayTracedPass->EstimateFrameMilliseconds(pixels, 1.0, 1) };
@@ -556,8 +560,8 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
   static const char* const names[VSH_AUTO_GENERAL_COUNT] = { "csm", "volume", "raytrace" };
   std::ostringstream json;
   json.precision(4);
-  json << (impl.GeneralJSON.empty() ? "" : ", ") << "{\"light\": " << l
-       << ", \"csm_error_pct\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].predicted_error_pct)
+  json << (impl.GeneralJSON.empty() ? "" : ", ") << "{\"light\": " << l << ", \"csm_error_pct\": "
+       << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].predicted_error_pct)
        << ", \"csm_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].cost)
        << ", \"volume_error_pct\": "
        << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].predicted_error_pct)
@@ -565,8 +569,8 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
        << ", \"volume_scene_triangles\": " << volume.scene_triangles
        << ", \"volume_silhouette_edges\": " << volume.silhouette_edges
        << ", \"volume_fill_px\": " << volume.fill_px
-       << ", \"volume_unsupported_casters\": " << unsupported
-       << ", \"volume_available\": " << (candidates[VSH_AUTO_GENERAL_VOLUME].available ? "true" : "false")
+       << ", \"volume_unsupported_casters\": " << unsupported << ", \"volume_available\": "
+       << (candidates[VSH_AUTO_GENERAL_VOLUME].available ? "true" : "false")
        << ", \"raytrace_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_RAYTRACE].cost)
        << ", \"pick\": \"" << (pick >= 0 ? names[pick] : "csm") << "\"}";
   impl.GeneralJSON += json.str();
