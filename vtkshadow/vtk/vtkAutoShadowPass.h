@@ -84,10 +84,10 @@ public:
   vtkGetMacro(MaxTexelPixels, double);
 
   /**
-   * "none", "planar", "csm", "raytrace" or a combination such as
-   * "planar+csm" for the last frame, and why;
+   * "none", "planar", "csm", "volume", "raytrace" or a combination such
+   * as "planar+csm" for the last frame, and why;
    * per light (mapper numbering: switched-on lights in order) "none",
-   * "planar", "csm" or "raytrace" and why.
+   * "planar", "csm", "volume" or "raytrace" and why.
    */
   const char* GetChoice() const;
   const char* GetReason() const { return this->Reason.c_str(); }
@@ -146,7 +146,9 @@ public:
   /**
    * choice, reason, texel_target_px, texel_stretch, edge_length_px and
    * light_choices, detected_receivers, then the details of the cascaded pass when it is used,
-   * else of the planar pass.
+   * else of the planar pass; thinnest_caster_px and general (per light given maps, every
+   * candidate's predicted error and ms, volume's inputs and the pick); the volume and
+   * ray-traced passes' own stats when used.
    */
   std::string GetStatsJSON(vtkRenderer* renderer) const override;
 
