@@ -1,14 +1,22 @@
-"""How each technique's frame time grows with triangle count and with pixel count.
+"""How each technique's frame time grows with triangles, pixels, lights and screen coverage.
 
   tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py --out DIR
                   [--frames 15] [--rounds 4] [--warmup 5] [--noise-tolerance 0.03]
-                  [--triangles 10000,100000,1000000] [--sizes 320x240,640x480,1280x960]
+                  [--triangles 10000,100000,1000000]
+                  [--sizes 320x240,640x480,1280x960,1920x1080]
+                  [--lights 1,2,3,4] [--view-angles 40,20,10]
                   [--base-size 640x480] [--base-triangles 100000]
 
 Scenes (written to DIR, in the vtkshadow scene format): a sphere over a floor
 lit by one directional light, the sphere tessellated to about 10k, 100k and
-1M triangles (--triangles), at 640x480 (--base-size); and the 100k scene
-(--base-triangles) at 320x240, 640x480 and 1280x960 (--sizes). The ctest
+1M triangles (--triangles), at 640x480 (--base-size); the 100k scene
+(--base-triangles) at 320x240 to 1920x1080 (--sizes); the 100k scene with 1
+to 4 lights (a directional light, then point lights; --lights); and the 100k
+scene seen through narrower view angles (--view-angles), so that the sphere,
+its shadow and its shadow volume cover more of the screen. Each row also
+gives what the exact techniques' cost is made of, from their own stats of
+the last frame: volume's silhouette edges and fill (volume pixels, light 0)
+and raytrace's rays per second per thread. The ctest
 cli.bench_growth runs it on a tiny configuration and checks what it writes. Each scene is rendered with every technique of the registry
 (vtkShadowTechnique.GetKnownTechniques(): none, vtk (map 2048), planar, csm,
 auto, ...) in one vtkshadow-render --stats process per scene: every
@@ -38,15 +46,22 @@ from vtkshadow_bench import log, run_timing  # noqa: E402
 # are against it).
 TECHNIQUES = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()
 TRIANGLES = "10000,100000,1000000"
-SIZES = "320x240,640x480,1280x960"
+SIZES = "320x240,640x480,1280x960,1920x1080"
+LIGHTS = "1,2,3,4"
+VIEW_ANGLES = "40,20,10"
+# Lights after the first (directional) one, for the lights table.
+POINT_LIGHTS = [{"type": "point", "position": [3, 2, 6]},
+                {"type": "point", "position": [-3, 2, 5]},
+                {"type": "point", "position": [0, -3, 6]}]
 
 
-def scene(resolution, size):
-    return {"description": "bench_growth: sphere over a floor, one directional light",
+def scene(resolution, size, lights=1, view_angle=30):
+    return {"description": "bench_growth: sphere over a floor, %d light(s)" % lights,
             "size": list(size),
             "camera": {"position": [0, -8, 5], "focal_point": [0, 0, 0.5], "view_up": [0, 0, 1],
-                       "view_angle": 30},
-            "lights": [{"type": "directional", "direction": [-3, -2, -6]}],
+                       "view_angle": view_angle},
+            "lights": [{"type": "directional", "direction": [-3, -2, -6]}]
+            + POINT_LIGHTS[:lights - 1],
             "objects": [{"sphere": {"center": [0, 0, 1.2], "radius": 0.5,
                                     "resolution": resolution}},
                         {"plane": {"origin": [-5, -5, 0], "point1": [5, -5, 0],
@@ -60,10 +75,10 @@ def triangles(path):
     return sum(s.GetObjectPolyData(i).GetNumberOfPolys() for i in range(s.GetNumberOfObjects()))
 
 
-def write_scene(out, name, resolution, size):
+def write_scene(out, name, resolution, size, lights=1, view_angle=30):
     path = os.path.join(out, name + ".json")
     with open(path, "w") as f:
-        json.dump(scene(resolution, size), f, indent=1)
+        json.dump(scene(resolution, size, lights, view_angle), f, indent=1)
     return path
 
 
@@ -82,9 +97,24 @@ def resolution_for(out, target, size):
     return best, count
 
 
+def cost_details(entries):
+    """What the exact techniques' cost is made of, from their stats of the
+    last timed frame: volume's silhouette edges and fill (volume pixels) of
+    light 0, raytrace's rays per second per thread. None where a technique
+    is not registered or did not say."""
+    vol = ((entries.get("volume") or {}).get("technique_stats") or {}).get("lights") or [{}]
+    rt = (entries.get("raytrace") or {}).get("technique_stats") or {}
+    threads = rt.get("threads") or 0
+    return {"volume_silhouette_edges": vol[0].get("silhouette_edges"),
+            "volume_fill_px": vol[0].get("fill_px"),
+            "raytrace_rays_per_s_per_thread": (rt["rays_per_second"] / threads
+                                               if threads and rt.get("rays_per_second")
+                                               else None)}
+
+
 def measure(cases, a):
     """cases: [(label, path, size)] -> {label: {technique: (ms, ratio, min ms, max ms)},
-    with "none#2" (the noise floor) and "too_noisy"}."""
+    with "none#2" (the noise floor), "too_noisy" and "details" (cost_details)}."""
     results = {}
     for label, path, size in cases:
         d = os.path.join(a.out, "runs", label.replace(" ", "_").replace(",", ""))
@@ -97,21 +127,30 @@ def measure(cases, a):
                               entries[t]["ms"]["min"], entries[t]["ms"]["max"])
                           for t in TECHNIQUES + ["none#2"]}
         results[label]["too_noisy"] = st["noise_floor"]["too_noisy"]
+        results[label]["details"] = cost_details(entries)
         log(f"growth {label}: " + ", ".join(f"{t} {results[label][t][0]:.1f} ms "
                                             f"({results[label][t][1]:.2f})"
                                             for t in TECHNIQUES + ["none#2"]))
     return results
 
 
+DETAIL_COLUMNS = [("volume_silhouette_edges", "volume silhouette edges", "{:,}"),
+                  ("volume_fill_px", "volume fill px", "{:,}"),
+                  ("raytrace_rays_per_s_per_thread", "raytrace rays/s per thread", "{:,.0f}")]
+
+
 def table(title, results, labels):
     lines = [f"| {title} | " + " | ".join(f"{t} ms (x none)" for t in TECHNIQUES) +
-             " | noise floor none#2 / none |",
-             "|---|" + "---:|" * (len(TECHNIQUES) + 1)]
+             " | noise floor none#2 / none | " + " | ".join(h for _, h, _ in DETAIL_COLUMNS) +
+             " |", "|---|" + "---:|" * (len(TECHNIQUES) + 1 + len(DETAIL_COLUMNS))]
     for label in labels:
         r = results[label]
+        det = r["details"]
         lines.append(f"| {label} | " + " | ".join(
             f"{r[t][0]:.1f} ({r[t][1]:.2f})" for t in TECHNIQUES) +
-            f" | {r['none#2'][1]:.3f}{' TOO NOISY' if r['too_noisy'] else ''} |")
+            f" | {r['none#2'][1]:.3f}{' TOO NOISY' if r['too_noisy'] else ''} | " +
+            " | ".join("-" if det[k] is None else f.format(det[k]) for k, _, f in DETAIL_COLUMNS)
+            + " |")
     return lines
 
 
@@ -143,6 +182,22 @@ def triangle_count(text):
     return int(text)
 
 
+def light_count(text):
+    if not text.isdigit() or not 1 <= int(text) <= 1 + len(POINT_LIGHTS):
+        raise ValueError(f"expected a whole number of lights in 1..{1 + len(POINT_LIGHTS)}")
+    return int(text)
+
+
+def view_angle(text):
+    try:
+        v = float(text)
+    except ValueError:
+        v = float("nan")
+    if not 1 <= v <= 120:
+        raise ValueError("expected a view angle in degrees in [1, 120]")
+    return v
+
+
 def options():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--out", required=True)
@@ -152,6 +207,9 @@ def options():
     ap.add_argument("--noise-tolerance", type=float, default=0.03)
     ap.add_argument("--triangles", default=TRIANGLES, help="triangle counts of the first table")
     ap.add_argument("--sizes", default=SIZES, help="window sizes of the second table")
+    ap.add_argument("--lights", default=LIGHTS, help="light counts of the third table (1..4)")
+    ap.add_argument("--view-angles", default=VIEW_ANGLES,
+                    help="camera view angles in degrees of the fourth table (coverage)")
     ap.add_argument("--base-size", default="640x480", help="window of the first table")
     ap.add_argument("--base-triangles", default="100000", help="triangles of the second table")
     a = ap.parse_args()
@@ -165,6 +223,8 @@ def options():
             ap.error(f"{name}: expected {want} (got {value!r})")
     a.triangles = parse_list(ap, "--triangles", a.triangles, triangle_count)
     a.sizes = parse_list(ap, "--sizes", a.sizes, size_of)
+    a.lights = parse_list(ap, "--lights", a.lights, light_count)
+    a.view_angles = parse_list(ap, "--view-angles", a.view_angles, view_angle)
     a.base_size = parse_list(ap, "--base-size", a.base_size, size_of)[0]
     a.base_triangles = parse_list(ap, "--base-triangles", a.base_triangles, triangle_count)[0]
     return a
@@ -185,24 +245,38 @@ def main():
     for w, h in a.sizes:
         label = f"{w}x{h} ({w * h:,} px)"
         size_cases.append((label, write_scene(a.out, f"px-{w}x{h}", res, (w, h)), (w, h)))
-    results = measure(tri_cases + size_cases, a)
+    light_cases = [(f"{k} light{'s' if k > 1 else ''}",
+                    write_scene(a.out, f"lights-{k}", res, a.base_size, lights=k), a.base_size)
+                   for k in a.lights]
+    angle_cases = [(f"view angle {v:g} deg",
+                    write_scene(a.out, f"angle-{v:g}", res, a.base_size, view_angle=v),
+                    a.base_size) for v in a.view_angles]
+    results = measure(tri_cases + size_cases + light_cases + angle_cases, a)
     with open(os.path.join(a.out, "growth.json"), "w") as f:
         json.dump(results, f, indent=1)
     cmd = " ".join(shlex.quote(x) for x in ["tests/gl-run.sh", "build/bin/vtkshadow-python",
                                             "bench/bench_growth.py"] + sys.argv[1:])
     noisy = sum(1 for r in results.values() if r["too_noisy"])
-    lines = ["## How cost grows with triangles and pixels", "",
+    lines = ["## How cost grows with triangles, pixels, lights and coverage", "",
              f"Produced by `{cmd}` (also run by `sh scripts/results.sh`). A sphere over a floor, "
-             "one directional light, camera orbit of vtkshadow-render. Each row is one "
+             "one directional light (the lights table adds point lights), camera orbit of "
+             "vtkshadow-render. Each row is one "
              "vtkshadow-render process timing every technique in one window, interleaved: "
              f"{a.warmup} warm-up frames each, then {a.rounds} rounds of one {a.frames}-frame "
              "block per technique, the order changed every round. Each cell: median over rounds "
              "of the block medians in ms, and in brackets the median over rounds of (technique / "
-             "none of the same round). The last column is none timed again against none: the "
-             f"row's noise floor, TOO NOISY outside 1.00 +- {a.noise_tolerance:.2f}"
-             f" ({noisy} of {len(results)} rows).", ""]
+             "none of the same round). The noise floor column is none timed again against none: "
+             f"the row's noise floor, TOO NOISY outside 1.00 +- {a.noise_tolerance:.2f}"
+             f" ({noisy} of {len(results)} rows). The last columns are what the exact "
+             "techniques' cost is made of (their stats of the last frame): volume's silhouette "
+             "edges and fill (pixels its volumes cover, light 0; the cost that grows with "
+             "coverage) and raytrace's occlusion rays per second per thread.", ""]
     lines += table(f"triangles, {bw}x{bh}", results, [c[0] for c in tri_cases]) + [""]
     lines += table(f"pixels, {base_count:,} triangles", results, [c[0] for c in size_cases])
+    lines += [""] + table(f"lights, {bw}x{bh}, {base_count:,} triangles", results,
+                          [c[0] for c in light_cases])
+    lines += [""] + table(f"coverage, {bw}x{bh}, {base_count:,} triangles", results,
+                          [c[0] for c in angle_cases])
     lines.append("")
     with open(os.path.join(a.out, "growth.md"), "w") as f:
         f.write("\n".join(lines) + "\n")

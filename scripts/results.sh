@@ -1,14 +1,18 @@
 #!/bin/sh
 # Regenerate docs/results.md: speed against error of every technique on every
 # scene in scenes/ (bench/vtkshadow-bench, with POV-Ray references and the
-# Blender EEVEE peer through vtkshadow-compare), how cost grows with triangles
-# and pixels (bench/bench_growth.py), assembled by bench/make_results.py.
+# Blender EEVEE peer through vtkshadow-compare), how cost grows with triangles,
+# pixels, lights and coverage (bench/bench_growth.py), assembled by
+# bench/make_results.py; penumbra error against time for lights with a size
+# (bench/bench_soft.py).
 # Timing: per scene (and per growth row) one vtkshadow-render process times
-# every configuration in one window, interleaved in blocks (5 warm-up frames
-# each, 4 rounds of 15 frames, the order changed every round) at the scenes'
-# own size (800x600), with none timed twice as the noise floor
+# every configuration in one window, interleaved in blocks (3 warm-up frames
+# each, 4 rounds of 10 frames, the order changed every round; the growth and
+# soft benches 2 warm-up frames and 3 rounds of 8) at the scenes' own size (800x600), with
+# none timed twice as the noise floor
 # (docs/performance.md, "How frames are timed"); errors are measured at half
-# size against POV-Ray.
+# size against POV-Ray; for lights with a size (scenes/soft, bench/bench_soft.py)
+# the penumbra error against POV-Ray's area light, with Cycles and EEVEE as peers.
 # About an hour on 2 otherwise idle cores (the timing runs every configuration at
 # 800x600; much longer on a loaded machine); progress goes to stderr. Run from anywhere,
 # after the README's main command (`sh scripts/main.sh`: it installs
@@ -31,10 +35,12 @@ mkdir -p "$OUT"
 # entries go; POV-Ray's references stay cached.
 rm -rf out/results-cache/eevee out/results-cache/eevee-best
 sh tests/gl-run.sh build/bin/vtkshadow-python bench/vtkshadow_bench.py scenes \
-  --out "$OUT/bench" --scale 0.5 --timing-scale 1 --frames 15 --rounds 4 --warmup 5 \
+  --out "$OUT/bench" --scale 0.5 --timing-scale 1 --frames 10 --rounds 4 --warmup 3 \
   --grid small \
   --peers basic,scivis,cad --cache out/results-cache > "$OUT/bench.txt"
 sh tests/gl-run.sh build/bin/vtkshadow-python bench/bench_growth.py \
-  --out "$OUT/growth" --frames 15 --rounds 4 --warmup 5 > "$OUT/growth.txt"
+  --out "$OUT/growth" --frames 8 --rounds 3 --warmup 2 > "$OUT/growth.txt"
+sh tests/gl-run.sh build/bin/vtkshadow-python bench/bench_soft.py \
+  --out "$OUT/soft" --frames 8 --rounds 3 --warmup 2 --cache out/results-cache > "$OUT/soft.txt"
 /usr/bin/python3 bench/make_results.py --bench "$OUT/bench" --growth "$OUT/growth" \
-  --command "sh scripts/results.sh" --output docs/results.md
+  --soft "$OUT/soft" --command "sh scripts/results.sh" --output docs/results.md

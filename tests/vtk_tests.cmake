@@ -76,6 +76,12 @@ add_test(NAME cli.bench_growth
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_bench_growth.py
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/bench_growth)
 set_tests_properties(cli.bench_growth PROPERTIES LABELS "render" TIMEOUT 1800)
+# bench/bench_soft.py on one soft scene at a tiny size against POV-Ray:
+# rows, penumbra figures that fall with samples, the front, bad options.
+add_test(NAME cli.bench_soft
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_bench_soft.py
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/bench_soft)
+set_tests_properties(cli.bench_soft PROPERTIES LABELS "render" TIMEOUT 1800)
 
 # Visibility against the exact answer by ray casting (tests/render/).
 function(vtkshadow_visibility_test name)
@@ -119,12 +125,18 @@ foreach(case basic grazing wide offset-1e6 below two-mirrors)
             --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/reflection --case ${case})
   set_tests_properties(render.reflection_${case} PROPERTIES LABELS "render")
 endforeach()
-foreach(case pov-directional pov-point pov-spot)
+foreach(case pov-directional pov-point pov-spot pov-wall-directional pov-wall-point)
   add_test(NAME harness.reflection_${case}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection.py
             --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/reflection --case ${case})
   set_tests_properties(harness.reflection_${case} PROPERTIES LABELS "harness")
 endforeach()
+
+# csm's maps under a mirror on still frames (tests/render/test_reflection_bakes.py).
+add_test(NAME render.reflection_csm_bakes
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection_bakes.py
+          ${CMAKE_SOURCE_DIR})
+set_tests_properties(render.reflection_csm_bakes PROPERTIES LABELS "render")
 
 # Every test of this directory may use the shared X server.
 get_property(vtkshadow_vtk_tests DIRECTORY PROPERTY TESTS)

@@ -92,7 +92,7 @@ char *metrics_json_format_reflection(const metrics_cli_args *a, int width, int h
 }
 
 char *metrics_json_format(const metrics_cli_args *a, int width, int height,
-                          const vsh_metrics *m) {
+                          const vsh_metrics *m, const vsh_penumbra *pen) {
   sbuf b = {malloc(512), 0, 512, 0};
   if (!b.s) return NULL;
   b.s[0] = '\0';
@@ -110,7 +110,15 @@ char *metrics_json_format(const metrics_cli_args *a, int width, int height,
   sb_printf(&b, "  \"ref_shadow_pixels\": %ld,\n", m->ref_shadow_pixels);
   sb_printf(&b, "  \"test_shadow_pixels\": %ld,\n", m->test_shadow_pixels);
   sb_printf(&b, "  \"wrong_of_shadow_pct\": %.9g,\n", m->wrong_of_shadow_pct);
-  sb_printf(&b, "  \"wrong_of_test_shadow_pct\": %.9g\n", m->wrong_of_test_shadow_pct);
+  sb_printf(&b, "  \"wrong_of_test_shadow_pct\": %.9g,\n", m->wrong_of_test_shadow_pct);
+  /* Penumbra figures (issue 15): over the reference's penumbra, which the
+   * boundary band would remove, so they honour --exclude only. */
+  sb_printf(&b, "  \"pen_pixels\": %ld,\n", pen->penumbra_pixels);
+  sb_printf(&b, "  \"pen_mae\": %.9g,\n", pen->pen_mae);
+  sb_printf(&b, "  \"pen_bias\": %.9g,\n", pen->pen_bias);
+  sb_printf(&b, "  \"pen_leak_pct\": %.9g,\n", pen->leak_pct);
+  sb_printf(&b, "  \"pen_false_shadow_pct\": %.9g,\n", pen->false_shadow_pct);
+  sb_printf(&b, "  \"pen_width_ratio\": %.9g\n", pen->width_ratio);
   sb_printf(&b, "}\n");
   return sb_finish(&b);
 }

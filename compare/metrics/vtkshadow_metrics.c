@@ -98,7 +98,9 @@ static int run(const metrics_cli_args *args, const image *ref, const image *mask
       goto done;
     }
   }
-  if (!(json = metrics_json_format(args, w, h, &m))) goto oom;
+  vsh_penumbra pen;
+  if (vsh_penumbra_compute(test->px, ref->px, valid, user_ex, w, h, &pen) < 0) goto oom;
+  if (!(json = metrics_json_format(args, w, h, &m, &pen))) goto oom;
   if ((status = emit(args, json)) != EXIT_OK) goto done;
   if (rc == VSH_METRICS_EMPTY) {
     /* all-zero metrics look like a perfect score: make the caller notice */

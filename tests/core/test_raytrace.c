@@ -170,6 +170,31 @@ static void test_offset(void)
   CHECK_NEAR(o[2] - 3, 1e6 * VSH_RT_OFFSET_RELATIVE, 1e-12);
 }
 
+/* The float frame stays while the eye is within the near distance of its
+ * origin (at 1e6 offsets and 1e-6 scales alike), and moves otherwise. */
+static void test_frame_usable(void)
+{
+  const double at_eye[3] = { 0, 0, 0 };
+  const double near_far_1e6[3] = { 0, 1e5, 4e3 }; /* hard/near-far-1e6's centre */
+  CHECK(vsh_rt_frame_usable(at_eye, 0.1));
+  CHECK(vsh_rt_frame_usable(at_eye, 0.0));
+  CHECK(!vsh_rt_frame_usable(near_far_1e6, 0.1));
+  CHECK(vsh_rt_frame_usable(near_far_1e6, 2e5));
+  for (double scale = 1e-6; scale <= 1e6; scale *= 1e3) {
+    const double on[3] = { 0.6 * scale, 0.0, 0.8 * scale };  /* |.| = scale */
+    const double off[3] = { 0.6 * scale, 1e-9 * scale, 0.8 * scale * (1 + 1e-6) };
+    CHECK(vsh_rt_frame_usable(on, scale * (1 + 1e-12)));
+    CHECK(!vsh_rt_frame_usable(off, scale));
+  }
+  const double bad[3] = { NAN, 0, 0 };
+  const double inf[3] = { INFINITY, 0, 0 };
+  CHECK(!vsh_rt_frame_usable(bad, 1.0));
+  CHECK(!vsh_rt_frame_usable(inf, INFINITY));
+  CHECK(!vsh_rt_frame_usable(near_far_1e6, NAN));
+  CHECK(!vsh_rt_frame_usable(near_far_1e6, -1.0));
+  CHECK(!vsh_rt_frame_usable(near_far_1e6, INFINITY));
+}
+
 static void test_lights(void)
 {
   vsh_rt_light l;
@@ -352,6 +377,7 @@ int main(void)
   test_pixel_ray(0, 1e-6);
   test_parallel_and_degenerate();
   test_offset();
+  test_frame_usable();
   test_lights();
   test_disk();
   test_light_samples();

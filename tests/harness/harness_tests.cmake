@@ -68,3 +68,11 @@ add_test(NAME harness.soft_planar
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_planar.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/soft_planar)
 set_tests_properties(harness.soft_planar PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# csm's PCSS (soft=1) against the exact penumbra: pen_mae per light within
+# what it reaches, at most half the hard shadow's, and size 0 / soft=0 the
+# hard path byte for byte (docs/soft-shadows.md).
+add_test(NAME harness.soft_csm
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_csm.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/soft_csm)
+set_tests_properties(harness.soft_csm PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)

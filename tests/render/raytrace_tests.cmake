@@ -50,7 +50,10 @@ foreach(row IN ITEMS
     "thin-plate-point 0 0.02 1.0"
     "needles-directional 0 0.02 1.0"
     "needles-point 0 0.02 1.0"
-    "needles-spot 0 0.02 1.0")
+    "needles-spot 0 0.02 1.0"
+    "casters-behind-camera 0 0.02 1.0"
+    "casters-behind-camera 1 0.02 1.0"
+    "thin-plate-long-floor 0 0.02 1.0")
   separate_arguments(f UNIX_COMMAND "${row}")
   list(GET f 0 case)
   list(GET f 1 light)

@@ -14,6 +14,16 @@ the floor, ...) and the ones below, which shadow maps find hard:
   offset-1e6-{point,spot}           sphere-floor moved by 1e6 on every axis
   scale-1e-6-{point,spot}           sphere-floor scaled by 1e-6 about the origin
   sphere-floor-{point,spot}-16x9    the other light types at 16:9
+  thin-plate-long-floor             the thin plate on a floor 2e5 long in two
+                                    tiles (the far one out of view): a float
+                                    frame at the scene's centre puts the plate
+                                    at 1e5, whose shadow-ray offset (0.05)
+                                    exceeds its thickness (0.01)
+  casters-behind-camera             every caster behind the camera (VTK's
+                                    frustum culler drops them from the
+                                    render state), a directional (--light 0)
+                                    and a point light (--light 1) behind
+                                    them throw their shadows into the view
 
 and a caching check (--case caching): still frames trace nothing, moving an
 actor re-commits the top level without rebuilding any mesh, changing one
@@ -80,6 +90,34 @@ def thin_plate_point(size):
     return s
 
 
+def thin_plate_long_floor(size):
+    s = tp.thin_plate(size)
+    s["objects"] = [o for o in s["objects"] if o.get("name") != "floor"]
+    # Two tiles: one mesh 2e5 long would itself be stored with 0.008 float
+    # steps (its offset rule then exceeds the plate: docs/raytraced-shadows.md).
+    s["objects"].append(floor(5))
+    s["objects"].append(dict(floor(5, y0=5, y1=2e5), name="far floor"))
+    s["description"] += " (the floor 2e5 long)"
+    return s
+
+
+def casters_behind_camera(size):
+    """Two spheres and a box behind the camera (outside the view frustum, so
+    VTK's culler leaves them out of the render state's props) and a floor in
+    front; the lights shine past the camera, so every shadow in view comes
+    from a caster the frame does not draw."""
+    return {"description": "raytrace test: casters behind the camera, shadows in view",
+            "size": list(size),
+            "camera": {"position": [0, -4, 2], "focal_point": [0, 2, 0],
+                       "view_up": [0, 0, 1], "view_angle": 40},
+            "lights": [{"type": "directional", "direction": [0.15, 1, -0.25]},
+                       {"type": "point", "position": [0, -9, 3]}],
+            "objects": [sphere([0, -6, 1.5], 0.6), sphere([-1.6, -5.5, 1.2], 0.4),
+                        {"box": {"min": [1.0, -6.6, 0.6], "max": [1.6, -6.0, 2.0]},
+                         "name": "box"},
+                        floor(12)]}
+
+
 EXTRA = {
     "needles-directional": (lambda: needles("directional", S43), 600),
     "needles-point": (lambda: needles("point", S43), 1500),
@@ -91,6 +129,8 @@ EXTRA = {
     "scale-1e-6-spot": (lambda: moved(sphere_floor("spot", S169), scale=1e-6), 1500),
     "sphere-floor-point-16x9": (lambda: sphere_floor("point", S169), 1500),
     "sphere-floor-spot-16x9": (lambda: sphere_floor("spot", S169), 1500),
+    "casters-behind-camera": (lambda: casters_behind_camera(S43), 3000),
+    "thin-plate-long-floor": (lambda: thin_plate_long_floor(S43), 500),
 }
 CASES = dict(tp.CASES, **EXTRA)
 

@@ -101,12 +101,16 @@ with open(os.path.join(bench, "summary.md"), "w") as f:
     f.write("### basic-one (errors 400x300, timing 800x600)\n\nsynthetic summary\n")
 with open(os.path.join(growth, "growth.md"), "w") as f:
     f.write("## How cost grows with triangles and pixels\n\nsynthetic growth\n")
+soft = os.path.join(OUT, "soft")
+os.makedirs(soft, exist_ok=True)
+with open(os.path.join(soft, "soft.md"), "w") as f:
+    f.write("## Soft shadows: penumbra error against frame time\n\nsynthetic soft\n")
 out_md = os.path.join(OUT, "results.md")
 if os.path.exists(out_md):
     os.remove(out_md)
 p = subprocess.run([sys.executable, os.path.join(SOURCE, "bench", "make_results.py"),
                     "--bench", bench, "--growth", growth, "--command", "synthetic",
-                    "--output", out_md], capture_output=True, text=True, timeout=120)
+                    "--soft", soft, "--output", out_md], capture_output=True, text=True, timeout=120)
 check(p.returncode == 0, f"make_results: status {p.returncode}: {p.stderr[-2000:]}")
 text = open(out_md).read() if os.path.exists(out_md) else ""
 
@@ -164,6 +168,8 @@ peer = text.split("## Peer: Blender EEVEE", 1)[-1].split("## ", 1)[0]
 for tech in ("eevee default", "volume default", "raytrace default", "vtk map=2048"):
     check("| basic-one | %s |" % tech in peer, f"peer table: {tech}")
 check("synthetic growth" in text and "#### basic-one" in text, "growth and summary included")
+check(0 < text.find("synthetic growth") < text.find("synthetic soft") < text.find("#### basic-one"),
+      "the soft section between growth and the per-scene tables")
 # Numbers in the goal cells are finite.
 for k, g in goal.items():
     for cell in (g or [])[1:4]:

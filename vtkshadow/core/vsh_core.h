@@ -18,5 +18,6 @@
 #include "vsh_frustum.h"
 #include "vsh_reflect.h"
 #include "vsh_soft.h"
+#include "vsh_pcss.h"
 
 #endif

@@ -86,6 +86,21 @@ double vsh_rt_offset_distance(double magnitude);
 void vsh_rt_offset_origin(const double point[3], const double normal[3], double magnitude,
                           double out[3]);
 
+/* Whether the tracer's float frame may stay at `origin_to_eye` (the eye
+ * minus the frame's origin, world units) for a camera whose nearest visible
+ * surface is at least `near_distance` from the eye (the near clipping
+ * plane). A visible point at distance d from the eye has coordinates of
+ * magnitude at most d + |origin_to_eye| in that frame, so its float rounding
+ * and the shadow ray's offset (vsh_rt_offset_distance) grow with it: a frame
+ * centred on a 2e5-wide scene puts a floor 2 units from the camera at 1e5,
+ * offsets its rays by 0.05 and lifts them over the contact shadow of a
+ * 1-unit box (hard/near-far-1e6). The frame is usable while
+ * |origin_to_eye| <= near_distance, i.e. every visible point keeps at least
+ * half the precision of a frame at the eye; else the caller moves the origin
+ * to the eye. 0 for non-finite input or near_distance <= 0 unless the origin
+ * is the eye. */
+int vsh_rt_frame_usable(const double origin_to_eye[3], double near_distance);
+
 typedef enum vsh_rt_light_kind {
   VSH_RT_DIRECTIONAL = 0,
   VSH_RT_POINT = 1,

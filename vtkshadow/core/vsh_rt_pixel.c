@@ -106,6 +106,20 @@ double vsh_rt_offset_distance(double magnitude)
   return fmax(VSH_RT_OFFSET_RELATIVE * m, 1e-300);
 }
 
+int vsh_rt_frame_usable(const double origin_to_eye[3], double near_distance)
+{
+  const double d = sqrt(origin_to_eye[0] * origin_to_eye[0] +
+                        origin_to_eye[1] * origin_to_eye[1] +
+                        origin_to_eye[2] * origin_to_eye[2]);
+  if (!isfinite(d)) {
+    return 0;
+  }
+  if (!(near_distance > 0) || !isfinite(near_distance)) {
+    return d == 0.0;
+  }
+  return d <= near_distance;
+}
+
 void vsh_rt_offset_origin(const double point[3], const double normal[3], double magnitude,
                           double out[3])
 {

@@ -27,6 +27,7 @@
 #include "vtkShadowScreenMask.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
+#include "vtkTextureUnitManager.h"
 #include "vtk_glew.h"
 
 #include "vsh_bounds.h"
@@ -34,6 +35,7 @@
 #include "vsh_csm.h"
 #include "vsh_csm_plan.h"
 #include "vsh_mat4.h"
+#include "vsh_pcss.h"
 
 #include "vtkShadowMapDepthFS.h"
 #include "vtkShadowMapDepthVS.h"
@@ -77,6 +79,11 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
   , DebugCascades(false)
   , Resolve(FORWARD)
   , TapTexelPixels(4.0)
+  , Soft(SOFT_PCSS)
+  , PCSSBlockerTaps(16)
+  , PCSSFilterTaps(24)
+  , PCSSMaxTexels(48.0)
+  , UsedPCSS(false)
   , UsedScreenResolve(false)
   , UsedResolution(0)
   , NumberOfMapsRendered(0)
@@ -125,6 +132,10 @@ void vtkCascadedShadowMapPass::CopySettings(vtkCascadedShadowMapPass* o)
   this->DebugCascades = o->DebugCascades;
   this->Resolve = o->Resolve;
   this->TapTexelPixels = o->TapTexelPixels;
+  this->Soft = o->Soft;
+  this->PCSSBlockerTaps = o->PCSSBlockerTaps;
+  this->PCSSFilterTaps = o->PCSSFilterTaps;
+  this->PCSSMaxTexels = o->PCSSMaxTexels;
   this->CastHeadlightShadows = o->CastHeadlightShadows;
   this->SkippedLights = o->SkippedLights;
   this->Modified();
@@ -233,6 +244,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   // The scene, with every receiver's lighting reading the maps (forward) or
   // the mask the resolve wrote from them (screen).
   this->Impl->Atlas->Activate();
+  this->BindRawAtlas(window);
   if (this->Impl->Screen)
   {
     this->RenderScreenResolved(s, window);
@@ -241,7 +253,36 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   {
     this->RenderDelegateWithShaderHooks(s);
   }
+  this->UnbindRawAtlas(window);
   this->Impl->Atlas->Deactivate();
+}
+
+namespace
+{
+// FNV-1a over the casters' identity, matrix values and mesh times, in
+// order: equal for an unchanged set of casters (a caster leaving changes it).
+unsigned long long CasterContentKey(const std::vector<vtkActor*>& casters)
+{
+  unsigned long long h = 1469598103934665603ULL;
+  auto mix = [&h](const void* data, size_t n)
+  {
+    const unsigned char* b = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i)
+    {
+      h = (h ^ b[i]) * 1099511628211ULL;
+    }
+  };
+  for (vtkActor* actor : casters)
+  {
+    const vtkMTimeType mesh = vtkshadow::MeshTime(actor);
+    mix(&actor, sizeof(actor));
+    mix(&actor->GetMatrix()->Element[0][0], 16 * sizeof(double));
+    mix(&mesh, sizeof(mesh));
+  }
+  const size_t count = casters.size();
+  mix(&count, sizeof(count));
+  return h;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -268,13 +309,18 @@ void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame
     {
       frame.Casters.push_back(actor);
       vsh_bounds_merge(&scene.casters, &ab);
-      // The actor's placement, not its own MTime: VTK's pass machinery gives
-      // actors property keys during the first frame, which bumps it.
-      frame.CasterTime =
-        std::max({ frame.CasterTime, actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor) });
     }
   }
-  frame.CasterTime += frame.Casters.size(); // a caster leaving the scene changes it too
+  // The actors' placement by value, not their own MTime (VTK's pass
+  // machinery gives actors property keys during the first frame, which
+  // bumps it) nor their matrices' (set back to equal values by a mirror).
+  const unsigned long long key = CasterContentKey(frame.Casters);
+  if (key != this->Impl->CasterKey || this->Impl->CasterStamp.GetMTime() == 0)
+  {
+    this->Impl->CasterKey = key;
+    this->Impl->CasterStamp.Modified();
+  }
+  frame.CasterTime = this->Impl->CasterStamp.GetMTime();
   scene.caster_count = static_cast<int>(frame.Casters.size());
   // Across ranks: every rank plans from everyone's casters and receivers, so
   // the light matrices, the tiles and the reuse decisions agree.
@@ -308,6 +354,8 @@ void vtkCascadedShadowMapPass::GatherLights(vtkRenderer* renderer, Frame& frame)
   // for) lag one frame behind.
   vtkshadow::UpdateLights(renderer);
   int l = 0;
+  Internals& impl = *this->Impl;
+  impl.PCSS = false;
   for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
   {
     vsh_csm_light plain{};
@@ -315,9 +363,24 @@ void vtkCascadedShadowMapPass::GatherLights(vtkRenderer* renderer, Frame& frame)
     light->GetTransformedFocalPoint(plain.focal_point);
     plain.positional = light->GetPositional() ? 1 : 0;
     plain.cone_angle = light->GetConeAngle();
-    plain.casts = this->LightCasts(light, l++) ? 1 : 0;
+    plain.casts = this->LightCasts(light, l) ? 1 : 0;
+    if (l < MaxLights)
+    {
+      // The size only matters with PCSS on and for a light that casts; 0
+      // keeps the light's lookup hard.
+      const double term =
+        vsh_pcss_light_term(plain.positional, GetLightRadius(light), GetLightAngle(light));
+      impl.SoftTerm[l] = (this->Soft == SOFT_PCSS && plain.casts) ? static_cast<float>(term) : 0.0f;
+      impl.PCSS = impl.PCSS || impl.SoftTerm[l] > 0.0f;
+    }
+    ++l;
     frame.Lights.push_back(plain);
   }
+  for (; l < MaxLights; ++l)
+  {
+    impl.SoftTerm[l] = 0.0f;
+  }
+  this->UsedPCSS = impl.PCSS;
   frame.Scene.lights = frame.Lights.data();
   frame.Scene.light_count = static_cast<int>(frame.Lights.size());
 }
@@ -400,8 +463,7 @@ void vtkCascadedShadowMapPass::UpdateShaderState(const Frame& frame)
   impl.PixelSize[0] = 0.0f;
   impl.PixelSize[1] = static_cast<float>(
     2.0 * std::tan(vtkMath::RadiansFromDegrees(0.5 * frame.Scene.camera.view_angle)) / height);
-  std::string signature = std::to_string(this->Filter) + "/" + std::to_string(this->PCFSize) + "/" +
-    std::to_string(this->TapTexelPixels) + (impl.Screen ? "/screen:" : "/forward:");
+  std::string signature = this->LookupDefines() + (impl.Screen ? "/screen:" : "/forward:");
   for (int l = 0; l < plan.tiles.light_count; ++l)
   {
     signature += std::to_string(plan.tiles.kind[l]);
@@ -497,7 +559,8 @@ void vtkCascadedShadowMapPass::SelectReusable(
   p.reach_texels = 2.0 + this->BiasScale * 2.0 +
     (this->Filter == PCF          ? 0.5 * this->PCFSize + 1.0
         : this->Filter == POISSON ? this->PoissonRadius + 1.0
-                                  : 1.0);
+                                  : 1.0) +
+    (impl.PCSS ? this->PCSSMaxTexels + 1.0 : 0.0);
   p.caster_time = frame.CasterTime;
   vsh_csm_selection selection;
   vsh_csm_select_reusable(
@@ -638,9 +701,7 @@ bool vtkCascadedShadowMapPass::PreReplaceShaderValues(
   }
   // Compile-time filter, then the lookup functions, then one prologue that
   // calls the right lookup for each light that casts.
-  const std::string code = "#define VSH_FILTER " + std::to_string(this->Filter) +
-    "\n#define VSH_PCF_HALF " + std::to_string(this->PCFSize / 2) + "\n#define VSH_TAP_TEXEL_PX " +
-    std::to_string(this->TapTexelPixels) + "\n" + vtkShadowMapLightFS +
+  const std::string code = this->LookupDefines() + vtkShadowMapLightFS +
     "void vshShadowPrepare(vec3 posVC, vec3 normalVC)\n{\n"
     "  float depth = -posVC.z;\n  float fade = vshShadowFade(depth);\n" +
     vtkshadow::CascadedLookupCode(
@@ -731,7 +792,7 @@ void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
   // Per map: view coordinates -> map clip space (camera-relative, double),
   // its atlas rectangle, bias, texel size and far depth.
   std::vector<float> matrices(16 * tiles), rects(4 * tiles), bias(2 * tiles), fars(tiles),
-    texels(tiles), depth(2 * tiles, 0.0f);
+    texels(tiles), depth(2 * tiles, 0.0f), soft(2 * tiles, 0.0f);
   double viewToRelative[16];
   {
     // vshViewToWorld holds the transposed view rotation as floats; rebuild
@@ -769,6 +830,15 @@ void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
       depth[2 * t + 0] = static_cast<float>(terms[0]);
       depth[2 * t + 1] = static_cast<float>(terms[1]);
     }
+    // PCSS: the light's size term and what turns a map depth into a
+    // distance: the depth range (orthographic) or the near distance
+    // (perspective, where the blocker search starts).
+    if (tile.light >= 0 && tile.light < MaxLights)
+    {
+      soft[2 * t + 0] = impl.SoftTerm[tile.light];
+    }
+    soft[2 * t + 1] =
+      static_cast<float>(tile.view.perspective ? tile.view.near_far[0] : tile.view.depth_extent);
   }
   program->SetUniformMatrix4x4v("vshTileMatrix", tiles, matrices.data());
   program->SetUniform4fv("vshTileRect", tiles, rects.data());
@@ -776,6 +846,70 @@ void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
   program->SetUniform1fv("vshTileFar", tiles, fars.data());
   program->SetUniform1fv("vshTileTexel", tiles, texels.data());
   program->SetUniform2fv("vshTileDepth", tiles, depth.data());
+  if (impl.PCSS && impl.RawUnit >= 0)
+  {
+    program->SetUniformi("vshShadowAtlasRaw", impl.RawUnit);
+    program->SetUniform2fv("vshTileSoft", tiles, soft.data());
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkCascadedShadowMapPass::LookupDefines() const
+{
+  std::string out = "#define VSH_FILTER " + std::to_string(this->Filter) +
+    "\n#define VSH_PCF_HALF " + std::to_string(this->PCFSize / 2) + "\n#define VSH_TAP_TEXEL_PX " +
+    std::to_string(this->TapTexelPixels) + "\n";
+  if (this->Impl->PCSS)
+  {
+    out += "#define VSH_PCSS 1\n#define VSH_PCSS_BLOCKER_TAPS " +
+      std::to_string(this->PCSSBlockerTaps) + "\n#define VSH_PCSS_FILTER_TAPS " +
+      std::to_string(this->PCSSFilterTaps) + "\n#define VSH_PCSS_MAX_TEXELS " +
+      std::to_string(this->PCSSMaxTexels) + "\n";
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::BindRawAtlas(vtkOpenGLRenderWindow* window)
+{
+  Internals& impl = *this->Impl;
+  if (!impl.PCSS)
+  {
+    return;
+  }
+  if (!impl.RawSampler)
+  {
+    glGenSamplers(1, &impl.RawSampler);
+    glSamplerParameteri(impl.RawSampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(impl.RawSampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(impl.RawSampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(impl.RawSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(impl.RawSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  impl.RawUnit = window->GetTextureUnitManager()->Allocate();
+  if (impl.RawUnit < 0)
+  {
+    vtkWarningMacro("no texture unit left for PCSS's blocker search: hard shadows");
+    return;
+  }
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + impl.RawUnit);
+  glBindTexture(GL_TEXTURE_2D, impl.Atlas->GetHandle());
+  glBindSampler(impl.RawUnit, impl.RawSampler);
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::UnbindRawAtlas(vtkOpenGLRenderWindow* window)
+{
+  Internals& impl = *this->Impl;
+  if (impl.RawUnit < 0)
+  {
+    return;
+  }
+  window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + impl.RawUnit);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glBindSampler(impl.RawUnit, 0);
+  window->GetTextureUnitManager()->Free(impl.RawUnit);
+  impl.RawUnit = -1;
 }
 
 //------------------------------------------------------------------------------
@@ -792,6 +926,11 @@ void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   impl.AtlasSize[0] = impl.AtlasSize[1] = 0;
   impl.Rendered.clear();
+  if (impl.RawSampler)
+  {
+    glDeleteSamplers(1, &impl.RawSampler);
+    impl.RawSampler = 0;
+  }
   if (impl.Mask)
   {
     impl.Mask->ReleaseGraphicsResources(w);
@@ -832,6 +971,11 @@ void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DebugCascades: " << this->DebugCascades << "\n";
   os << indent << "Resolve: " << this->Resolve << "\n";
   os << indent << "TapTexelPixels: " << this->TapTexelPixels << "\n";
+  os << indent << "Soft: " << this->Soft << "\n";
+  os << indent << "PCSSBlockerTaps: " << this->PCSSBlockerTaps << "\n";
+  os << indent << "PCSSFilterTaps: " << this->PCSSFilterTaps << "\n";
+  os << indent << "PCSSMaxTexels: " << this->PCSSMaxTexels << "\n";
+  os << indent << "UsedPCSS: " << this->UsedPCSS << "\n";
   os << indent << "UsedScreenResolve: " << this->UsedScreenResolve << "\n";
   os << indent << "UsedResolution: " << this->UsedResolution << "\n";
   os << indent << "NumberOfMapsRendered: " << this->NumberOfMapsRendered << "\n";
@@ -927,6 +1071,22 @@ bool vtkCascadedShadowMapPass::SetOption(const char* key, double v)
   {
     this->SetTapTexelPixels(v);
   }
+  else if (k == "soft" && integral(SOFT_OFF, SOFT_PCSS))
+  {
+    this->SetSoft(static_cast<int>(v));
+  }
+  else if (k == "pcss_blocker_taps" && integral(1, 64))
+  {
+    this->SetPCSSBlockerTaps(static_cast<int>(v));
+  }
+  else if (k == "pcss_filter_taps" && integral(1, 64))
+  {
+    this->SetPCSSFilterTaps(static_cast<int>(v));
+  }
+  else if (k == "pcss_max_texels" && in(1, 256))
+  {
+    this->SetPCSSMaxTexels(v);
+  }
   else
   {
     return this->Superclass::SetOption(key, v);
@@ -943,7 +1103,11 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
       << ", \"maps_rendered_total\": " << this->TotalMapsRendered
       << ", \"maps_reused_last_frame\": " << this->NumberOfMapsReused << ", \"resolve\": \""
       << (this->UsedScreenResolve ? "screen" : "forward")
-      << "\", \"overdraw\": " << this->Impl->Overdraw << ", \"lights\": [";
+      << "\", \"overdraw\": " << this->Impl->Overdraw << ", \"soft\": \""
+      << (this->UsedPCSS ? "pcss" : "hard")
+      << "\", \"pcss_blocker_taps\": " << (this->UsedPCSS ? this->PCSSBlockerTaps : 0)
+      << ", \"pcss_filter_taps\": " << (this->UsedPCSS ? this->PCSSFilterTaps : 0)
+      << ", \"pcss_max_texels\": " << this->PCSSMaxTexels << ", \"lights\": [";
   const int lights = renderer ? renderer->GetLights()->GetNumberOfItems() : 0;
   for (int l = 0; l < lights; ++l)
   {

@@ -183,6 +183,36 @@ public:
   vtkSetClampMacro(TapTexelPixels, double, 0.0, 1e6);
   vtkGetMacro(TapTexelPixels, double);
 
+  enum SoftModes
+  {
+    SOFT_OFF = 0,
+    SOFT_PCSS = 1
+  };
+
+  /**
+   * Lights with a size (vtkShadowPassBase::GetLightRadius / GetLightAngle).
+   * SOFT_PCSS (default): percentage-closer soft shadows for every casting
+   * light with a size, a blocker search over the region the light's size
+   * and the receiver's depth in the map span, then a filter as wide as the
+   * penumbra the blockers' mean depth gives (vsh_pcss.h), with
+   * PCSSBlockerTaps and PCSSFilterTaps samples on a per-pixel rotated Vogel
+   * disk, the kernel at most PCSSMaxTexels texels in radius and inside the
+   * map's tile. Lights without a size keep the hard lookup, and a frame
+   * without any light with a size compiles the same shader as SOFT_OFF.
+   * SOFT_OFF: the hard shadow of every light's centre.
+   * (docs/soft-shadows.md)
+   */
+  vtkSetClampMacro(Soft, int, SOFT_OFF, SOFT_PCSS);
+  vtkGetMacro(Soft, int);
+  vtkSetClampMacro(PCSSBlockerTaps, int, 1, 64);
+  vtkGetMacro(PCSSBlockerTaps, int);
+  vtkSetClampMacro(PCSSFilterTaps, int, 1, 64);
+  vtkGetMacro(PCSSFilterTaps, int);
+  vtkSetClampMacro(PCSSMaxTexels, double, 1.0, 256.0);
+  vtkGetMacro(PCSSMaxTexels, double);
+  /** Whether the last frame compiled PCSS in (a casting light had a size). */
+  vtkGetMacro(UsedPCSS, bool);
+
   /**
    * Tint each cascade with its own colour (debug view).
    */
@@ -214,7 +244,8 @@ public:
    * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
    * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
    * fade, debug_cascades, resolve (0 forward, 1 screen, 2 choose),
-   * tap_texel_px, and the base's cast_headlight.
+   * tap_texel_px, soft (0 off, 1 PCSS), pcss_blocker_taps, pcss_filter_taps,
+   * pcss_max_texels, and the base's cast_headlight.
    */
   bool SetOption(const char* key, double value) override;
 
@@ -271,6 +302,11 @@ protected:
   bool DebugCascades;
   int Resolve;
   double TapTexelPixels;
+  int Soft;
+  int PCSSBlockerTaps;
+  int PCSSFilterTaps;
+  double PCSSMaxTexels;
+  bool UsedPCSS;
   bool UsedScreenResolve;
   int UsedResolution;
   int NumberOfMapsRendered;
@@ -306,6 +342,12 @@ private:
   void RenderScreenResolved(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   bool ResolveScreen(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
   void SetLookupUniforms(vtkShaderProgram* program);
+  // The #defines of vtkShadowMapLightFS (filter, PCSS), forward and resolve.
+  std::string LookupDefines() const;
+  // PCSS's blocker search reads raw depths: the atlas bound a second time
+  // through a sampler object without depth comparison.
+  void BindRawAtlas(vtkOpenGLRenderWindow* window);
+  void UnbindRawAtlas(vtkOpenGLRenderWindow* window);
 };
 
 #endif

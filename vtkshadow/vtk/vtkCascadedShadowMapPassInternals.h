@@ -9,6 +9,7 @@
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkSmartPointer.h"
+#include "vtkTimeStamp.h"
 
 #include "vsh_csm.h"
 #include "vsh_csm_plan.h"
@@ -82,6 +83,13 @@ struct vtkCascadedShadowMapPass::Internals
   float ToLightVC[VSH_CSM_MAX_LIGHTS][4] = { { 0 } };
   float ViewToWorld[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   float PixelSize[2] = { 0, 0 }; // world size of a pixel: [0] + [1] * view depth
+  // PCSS: per light (mappers' numbering) its size term (vsh_pcss_light_term:
+  // tan(angle / 2) or the radius; 0 hard), whether this frame compiles PCSS
+  // in, and the raw-depth binding of the atlas (sampler object, unit).
+  float SoftTerm[VSH_CSM_MAX_LIGHTS] = { 0 };
+  bool PCSS = false;
+  unsigned int RawSampler = 0;
+  int RawUnit = -1;
   float FadeStart = 0.0f;
   float MaxDistance = 0.0f;
   std::string ShaderSignature; // kinds, filter: what the generated code depends on
@@ -107,6 +115,12 @@ struct vtkCascadedShadowMapPass::Internals
   // reduced over them.
   vtkSmartPointer<vtkMultiProcessController> Controller;
   std::vector<float> ReduceScratch;
+  // The casters' state by content (actors, matrix values, mesh times): a
+  // new stamp only when it differs from the last frame's, so a matrix set
+  // back to the same values (vtkPlanarReflectionPass restores every actor's
+  // after its mirrored draw, which moves the matrices' MTime) keeps the maps.
+  unsigned long long CasterKey = 0;
+  vtkTimeStamp CasterStamp;
 };
 
 #endif

@@ -186,10 +186,7 @@ bool vtkCascadedShadowMapPass::DepthPreciseEnough(const Frame& frame) const
 void vtkCascadedShadowMapPass::UpdateResolveSources()
 {
   Internals& impl = *this->Impl;
-  const std::string head = "//VTK::System::Dec\n#define VSH_FILTER " +
-    std::to_string(this->Filter) + "\n#define VSH_PCF_HALF " + std::to_string(this->PCFSize / 2) +
-    "\n#define VSH_TAP_TEXEL_PX " + std::to_string(this->TapTexelPixels) + "\n" +
-    vtkShadowMapLightFS;
+  const std::string head = "//VTK::System::Dec\n" + this->LookupDefines() + vtkShadowMapLightFS;
   for (int layer = 0; layer < 2; ++layer)
   {
     impl.ResolveSource[layer] = head +

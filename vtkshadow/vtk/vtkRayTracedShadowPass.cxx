@@ -54,6 +54,7 @@ struct vtkRayTracedShadowPass::FrameState
   std::vector<int> Samples;         // their rays per pixel (1 for a light without a size)
   std::vector<vtkShadowEmbreeScene::Actor> Actors;
   double Eye[3] = { 0, 0, 0 };
+  double Near = 0; // the near clipping plane's distance: nothing visible is nearer
   double View[16];
   double Projection[16];
   std::vector<double> Key;
@@ -130,6 +131,7 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
   frame.Size[1] = std::max(frame.Size[1], 1);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->GetPosition(frame.Eye);
+  frame.Near = camera->GetClippingRange()[0];
   vtkMatrix4x4::DeepCopy(frame.View, camera->GetViewTransformMatrix());
   vtkMatrix4x4::DeepCopy(frame.Projection,
     camera->GetProjectionTransformMatrix(
@@ -180,7 +182,9 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
     frame.Samples.push_back(sized ? this->Samples : 1);
     frame.Channels.push_back(i);
   }
-  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(s))
+  // The renderer's actors, not the render state's frustum-culled ones: a
+  // caster behind the camera still shadows the view.
+  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
   {
     const bool casts = !vtkshadow::HasFlag(a.Actor, NO_CAST());
     frame.Actors.push_back({ a.Actor, casts });
@@ -203,7 +207,7 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
     vtkErrorMacro("ray-traced shadows: " << impl.Mask.GetError());
     return false;
   }
-  if (!impl.Scene.Update(frame.Actors))
+  if (!impl.Scene.Update(frame.Actors, frame.Eye, frame.Near))
   {
     vtkErrorMacro("ray-traced shadows: " << impl.Scene.GetError());
     return false;

@@ -13,7 +13,9 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
+#include "vtkRenderer.h"
 
 #include <algorithm>
 #include <vector>
@@ -60,26 +62,54 @@ struct ShadowActor
   double Bounds[6];
 };
 
-// The render state's actors that can cast or receive: visible, with a
-// mapper, opaque (translucent geometry neither blocks nor shows shadows
-// here) and with initialised bounds.
+// Appends `prop` to `out` when it can cast or receive: an actor, visible,
+// with a mapper, opaque (translucent geometry neither blocks nor shows
+// shadows here) and with initialised bounds.
+inline void AppendShadowActor(vtkProp* prop, std::vector<ShadowActor>& out)
+{
+  auto* actor = vtkActor::SafeDownCast(prop);
+  if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
+    actor->HasTranslucentPolygonalGeometry())
+  {
+    return;
+  }
+  ShadowActor a{ actor, { 0, 0, 0, 0, 0, 0 } };
+  actor->GetBounds(a.Bounds);
+  if (vtkMath::AreBoundsInitialized(a.Bounds))
+  {
+    out.push_back(a);
+  }
+}
+
+// The render state's actors that can cast or receive. VTK's frustum culler
+// has dropped the props outside the view from this list: right for what the
+// frame draws, wrong for casters (see the overload below).
 inline std::vector<ShadowActor> ShadowActors(const vtkRenderState* s)
 {
   std::vector<ShadowActor> out;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
-      actor->HasTranslucentPolygonalGeometry())
-    {
-      continue;
-    }
-    ShadowActor a{ actor, { 0, 0, 0, 0, 0, 0 } };
-    actor->GetBounds(a.Bounds);
-    if (vtkMath::AreBoundsInitialized(a.Bounds))
-    {
-      out.push_back(a);
-    }
+    AppendShadowActor(s->GetPropArray()[i], out);
+  }
+  return out;
+}
+
+// The renderer's actors that can cast or receive, from its props rather than
+// the render state's frustum-culled ones: a caster behind the camera (or
+// beside the view) still throws its shadow into the view.
+inline std::vector<ShadowActor> ShadowActors(vtkRenderer* renderer)
+{
+  std::vector<ShadowActor> out;
+  vtkPropCollection* props = renderer ? renderer->GetViewProps() : nullptr;
+  if (!props)
+  {
+    return out;
+  }
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    AppendShadowActor(prop, out);
   }
   return out;
 }

@@ -1,7 +1,7 @@
 #include "vtkShadowEmbreeScene.h"
 
+#include "vsh_raytrace.h"
 #include "vtkActor.h"
-#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkShadowCasterTriangles.h"
 
@@ -206,31 +206,12 @@ std::vector<double> vtkShadowEmbreeScene::PlacementKey(const std::vector<Actor>&
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors)
+bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const double eye[3])
 {
   const auto start = std::chrono::steady_clock::now();
-  // The top levels' origin: the centre of the actors' world bounds.
-  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
-  bool any = false;
-  for (const Actor& a : actors)
-  {
-    double b[6];
-    a.Prop->GetBounds(b);
-    if (!vtkMath::AreBoundsInitialized(b))
-    {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = any ? std::min(lo[k], b[2 * k]) : b[2 * k];
-      hi[k] = any ? std::max(hi[k], b[2 * k + 1]) : b[2 * k + 1];
-    }
-    any = true;
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    this->Centre[k] = 0.5 * (lo[k] + hi[k]);
-  }
+  // The top levels' origin: the eye (see Update), so a visible point's
+  // float coordinates are as precise as its distance from the camera allows.
+  std::copy_n(eye, 3, this->Centre);
   for (RTCScene* top : { &this->Visible, &this->Casters })
   {
     if (*top)
@@ -316,7 +297,8 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors)
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowEmbreeScene::Update(const std::vector<Actor>& actors)
+bool vtkShadowEmbreeScene::Update(
+  const std::vector<Actor>& actors, const double eye[3], double nearDistance)
 {
   this->Error.clear();
   if (!this->Device)
@@ -343,11 +325,17 @@ bool vtkShadowEmbreeScene::Update(const std::vector<Actor>& actors)
   {
     it = it->second->Seen ? std::next(it) : this->Meshes.erase(it);
   }
+  // A camera move keeps the top levels while their origin stays within the
+  // near distance of the eye (vsh_rt_frame_usable); further away, points
+  // near the camera would lose float precision (and their shadow rays start
+  // too far off the surface), so the origin moves to the eye.
   std::vector<double> placement = this->PlacementKey(actors);
-  if (!this->Visible || placement != this->Placement)
+  const double toEye[3] = { eye[0] - this->Centre[0], eye[1] - this->Centre[1],
+    eye[2] - this->Centre[2] };
+  if (!this->Visible || placement != this->Placement || !vsh_rt_frame_usable(toEye, nearDistance))
   {
     this->Placement.swap(placement);
-    this->BuildTopLevel(actors);
+    this->BuildTopLevel(actors, eye);
   }
   return this->Error.empty();
 }

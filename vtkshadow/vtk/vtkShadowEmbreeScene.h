@@ -60,10 +60,14 @@ public:
   void operator=(const vtkShadowEmbreeScene&) = delete;
 
   /**
-   * Bring the scenes up to date with the frame's opaque actors. False (with
-   * GetError()) when Embree fails; actors without triangles are left out.
+   * Bring the scenes up to date with the frame's opaque actors, seen from
+   * `eye` (world) with nothing visible nearer than `nearDistance` (the near
+   * clipping plane). False (with GetError()) when Embree fails; actors
+   * without triangles are left out. The top levels are re-committed when an
+   * actor moves, a mesh changes, or the eye is further than nearDistance
+   * from their origin (which then moves to the eye).
    */
-  bool Update(const std::vector<Actor>& actors);
+  bool Update(const std::vector<Actor>& actors, const double eye[3], double nearDistance);
 
   RTCScene GetVisible() const { return this->Visible; }
   RTCScene GetCasters() const { return this->Casters; }
@@ -85,7 +89,7 @@ public:
 private:
   struct Mesh;
   Mesh* UpdateMesh(vtkActor* actor);
-  bool BuildTopLevel(const std::vector<Actor>& actors);
+  bool BuildTopLevel(const std::vector<Actor>& actors, const double eye[3]);
   std::vector<double> PlacementKey(const std::vector<Actor>& actors) const;
 
   RTCDevice Device = nullptr;

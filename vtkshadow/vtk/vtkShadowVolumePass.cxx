@@ -42,25 +42,18 @@ namespace
 {
 constexpr int MaxLights = vtkShadowScreenMask::MaxLights;
 
-// The renderer's actors that cast: visible, with a mapper, opaque
-// (translucent geometry neither blocks nor shows shadows), not NO_CAST. From
-// the renderer's props, not the render state's: VTK's frustum culler drops
-// the props outside the view from the latter, and a caster behind the
-// camera still throws its shadow into the view.
+// The renderer's actors that cast: those of vtkshadow::ShadowActors (from
+// the renderer's props, not the render state's frustum-culled ones: a
+// caster behind the camera still throws its shadow into the view) without
+// NO_CAST.
 std::vector<vtkActor*> CastingActors(vtkRenderer* renderer)
 {
   std::vector<vtkActor*> actors;
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
+  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
   {
-    auto* actor = vtkActor::SafeDownCast(prop);
-    if (actor && actor->GetVisibility() && actor->GetMapper() &&
-      !actor->HasTranslucentPolygonalGeometry() &&
-      !vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()))
+    if (!vtkshadow::HasFlag(a.Actor, vtkShadowPassBase::NO_CAST()))
     {
-      actors.push_back(actor);
+      actors.push_back(a.Actor);
     }
   }
   return actors;
@@ -255,6 +248,12 @@ void vtkShadowVolumePass::CountLight(
   Internals& impl = *this->Impl;
   vtkOpenGLState* state = window->GetState();
   impl.State = state;
+  // The caller's winding (GL_CW while vtkPlanarReflectionPass draws a
+  // mirrored world): DrawCaster sets its own per caster, and the delegate's
+  // draw afterwards must see the caller's again, or the mappers' two-sided
+  // lighting flips every normal of the mirrored scene.
+  GLint frontFace = GL_CCW;
+  glGetIntegerv(GL_FRONT_FACE, &frontFace);
   impl.Mask.BeginDraw(light);
   {
     vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
@@ -318,7 +317,7 @@ void vtkShadowVolumePass::CountLight(
     }
     impl.Stats[light].SamplesPassed = query.Last;
     glDisable(GL_DEPTH_CLAMP);
-    glFrontFace(GL_CCW);
+    glFrontFace(static_cast<GLenum>(frontFace));
     state->vtkglDisable(GL_SCISSOR_TEST);
     impl.Mask.ResolveStencil(light);
   }

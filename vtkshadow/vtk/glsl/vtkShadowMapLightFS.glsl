@@ -1,6 +1,8 @@
 // vtkCascadedShadowMapPass: shadow factors for the mapper's lighting code.
 // Inserted after VTK's lighting declarations, after the pass's #defines
-// (VSH_FILTER: 0 hardware 2x2, 1 NxN PCF, 2 Poisson; VSH_PCF_HALF) and
+// (VSH_FILTER: 0 hardware 2x2, 1 NxN PCF, 2 Poisson; VSH_PCF_HALF; VSH_PCSS
+// with VSH_PCSS_BLOCKER_TAPS, VSH_PCSS_FILTER_TAPS, VSH_PCSS_MAX_TEXELS in
+// frames where a casting light has a size) and
 // followed by a generated vshShadowPrepare() that calls vshShadowCascades,
 // vshShadowSpot or vshShadowPoint for each light that casts. The filter and
 // the lights' kinds are compiled in, not branched on: a software rasterizer
@@ -27,6 +29,12 @@ uniform float vshBlendBand;
 uniform float vshShadowMaxDistance;  // 0: none
 uniform float vshShadowFadeStart;
 uniform int vshDebugCascades;
+#ifdef VSH_PCSS
+uniform sampler2D vshShadowAtlasRaw; // the same atlas, no depth comparison
+uniform vec2 vshTileSoft[24];        // (size term, depth scale) per map: x tan(angle / 2)
+                                     // (directional) or radius (positional), 0 hard; y the
+                                     // depth range (orthographic, world) or near distance
+#endif
 float vshShadowFactor[8];
 int vshShadowCascadeShown = -1;
 
@@ -49,6 +57,108 @@ bool vshShadowFacing(int l, vec3 posVC, vec3 normalVC, float margin)
   vec3 toLight = light.xyz - posVC * light.w;
   return dot(normalVC, toLight) > margin * length(toLight);
 }
+
+#ifdef VSH_PCSS
+// Sample k of n on the unit disk, stratified by area (Vogel's golden-angle
+// spiral, as vsh_soft_disk_sample), turned by `turn` radians.
+vec2 vshVogel(int k, int n, float turn)
+{
+  float a = float(k) * 2.39996323 + turn;
+  return sqrt((float(k) + 0.5) / float(n)) * vec2(cos(a), sin(a));
+}
+
+// A per-pixel rotation of the disk (interleaved gradient noise): few taps
+// then give noise instead of the banding of one fixed pattern.
+float vshPCSSTurn()
+{
+  return 6.28318531 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+}
+
+// Map position of a view-space point: (atlas uv, window depth).
+vec3 vshMapPoint(int tile, vec3 q)
+{
+  vec4 c = vshTileMatrix[tile] * vec4(q, 1.0);
+  vec3 n = c.xyz / c.w;
+  vec4 rect = vshTileRect[tile];
+  return vec3(rect.xy + (n.xy * 0.5 + 0.5) * rect.zw, n.z * 0.5 + 0.5);
+}
+
+// Receiver plane depth bias (Isidoro 2006): the change of the receiver's
+// map depth per unit of atlas uv, from two steps of `eps` along the surface
+// at p. A wide kernel over a surface sloped in the map would otherwise
+// shadow the surface with itself. 0 where the surface is edge-on to the
+// light (its terms are 0 there anyway).
+vec2 vshReceiverPlane(int tile, vec3 p, vec3 n, float eps)
+{
+  vec3 a = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  vec3 t1 = normalize(cross(n, a));
+  vec3 t2 = cross(n, t1);
+  vec3 q0 = vshMapPoint(tile, p);
+  vec3 d1 = vshMapPoint(tile, p + t1 * eps) - q0;
+  vec3 d2 = vshMapPoint(tile, p + t2 * eps) - q0;
+  float det = d1.x * d2.y - d1.y * d2.x;
+  if (abs(det) <= 1e-3 * (dot(d1.xy, d1.xy) + dot(d2.xy, d2.xy)))
+  {
+    return vec2(0.0);
+  }
+  return vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) / det;
+}
+
+// Distance along the light of a raw map depth z (window, 0..1): from the
+// near plane (orthographic), from the light (perspective: ndc z = -x + y / d
+// with x = -(f + n) / (f - n) and y = -2 f n / (f - n), both negative, so
+// the denominator is negative for every depth in the map).
+float vshMapDistance(int tile, float z, bool perspective)
+{
+  vec2 pz = vshTileDepth[tile];
+  return perspective ? pz.y / min(z * 2.0 - 1.0 + pz.x, -1e-30) : z * vshTileSoft[tile].y;
+}
+
+// PCSS (Fernando 2005) for map `tile` at atlas `uv`, reference depth `ref`
+// (biased), receiver distance `dr` along the light: blockers searched over
+// the half-width a blocker at the map's near plane would give (every
+// blocker the receiver sees is inside it), then a filter of the half-width
+// their mean distance gives: vsh_pcss_sun_halfwidth (directional, world)
+// or vsh_pcss_disk_halfwidth (per unit distance), over the map's texel
+// (vshTileTexel: world, or at distance 1), clamped to VSH_PCSS_MAX_TEXELS
+// and to the tile.
+float vshShadowPCSS(int tile, vec3 p, vec3 normalVC, vec2 uv, vec2 lo, vec2 hi, float ref,
+  float dr, bool perspective, float reach)
+{
+  vec2 soft = vshTileSoft[tile];
+  float texel = vshTileTexel[tile];
+  vec2 grad = vshReceiverPlane(tile, p, normalVC, texel * reach);
+  float search = perspective ? soft.x * max(1.0 / soft.y - 1.0 / dr, 0.0) : soft.x * dr;
+  vec2 searchUV = min(search / texel, VSH_PCSS_MAX_TEXELS) * vshAtlasTexel;
+  float turn = vshPCSSTurn();
+  float blockers = 0.0;
+  float sumD = 0.0;
+  for (int k = 0; k < VSH_PCSS_BLOCKER_TAPS; ++k)
+  {
+    vec2 offset = vshVogel(k, VSH_PCSS_BLOCKER_TAPS, turn) * searchUV;
+    float z = texture(vshShadowAtlasRaw, clamp(uv + offset, lo, hi)).r;
+    if (z < ref + dot(grad, offset))
+    {
+      blockers += 1.0;
+      sumD += vshMapDistance(tile, z, perspective);
+    }
+  }
+  if (blockers == 0.0)
+  {
+    return 1.0;
+  }
+  float db = sumD / blockers;
+  float width = perspective ? soft.x * max(1.0 / db - 1.0 / dr, 0.0) : soft.x * max(dr - db, 0.0);
+  vec2 kernelUV = min(width / texel, VSH_PCSS_MAX_TEXELS) * vshAtlasTexel;
+  float sum = 0.0;
+  for (int k = 0; k < VSH_PCSS_FILTER_TAPS; ++k)
+  {
+    vec2 offset = vshVogel(k, VSH_PCSS_FILTER_TAPS, turn + 1.0) * kernelUV;
+    sum += texture(vshShadowAtlas, vec3(clamp(uv + offset, lo, hi), ref + dot(grad, offset)));
+  }
+  return sum / float(VSH_PCSS_FILTER_TAPS);
+}
+#endif
 
 // Fraction of the light reaching the fragment according to map `tile`
 // (perspective: a spot or point-light map, whose texels grow with distance).
@@ -87,6 +197,13 @@ float vshShadowSample(int tile, vec3 posVC, vec3 normalVC, bool perspective)
   {
     ref = clamp(ndc.z * 0.5 + 0.5 - bias.x, 0.0, 1.0);
   }
+#ifdef VSH_PCSS
+  if (vshTileSoft[tile].x > 0.0)
+  {
+    float dr = perspective ? clip.w : ref * vshTileSoft[tile].y;
+    return vshShadowPCSS(tile, p, normalVC, uv, lo, hi, ref, dr, perspective, reach);
+  }
+#endif
 #if VSH_FILTER == 0
   return texture(vshShadowAtlas, vec3(clamp(uv, lo, hi), ref));
 #else
