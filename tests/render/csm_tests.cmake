@@ -71,7 +71,7 @@ vtkshadow_exact_cases(auto all
 # visible shadow, a receiver out of view, a box (convex, corners repeated
 # per face), an L-shaped prism (concave), the --max-error target), each
 # light's shadows against the exact answer (tests/render/test_auto_choice.py).
-foreach(case mixed idle-light out-of-view box concave max-error)
+foreach(case mixed idle-light out-of-view box concave volume-thin volume-fill max-error)
   add_test(NAME render.auto_choice.${case}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_auto_choice.py
             --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/auto_choice --case ${case})

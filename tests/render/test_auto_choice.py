@@ -16,8 +16,19 @@ Cases:
               behind the camera: none.
   box         a box over the floor (a convex mesh whose corners repeat per
               face): planar, exact.
-  concave     an L-shaped prism whose tall arm shadows its low arm: csm,
+  concave     an L-shaped prism whose tall arm shadows its low arm: a general
+              technique (csm or volume, the one auto's weighing picked),
               because planar cannot draw a shadow on its own caster.
+  volume-thin three needles (boxes 0.03 wide, about 4 px on screen) over
+              a sphere that is no plane: maps would lose the needles'
+              shadows (the thin-caster term) and shadow volumes, exact,
+              with a few dozen silhouette edges and a small fill, cost less
+              than rays: volume, checked against the exact answer; the
+              stats show the weighed candidates and the pick.
+  volume-fill 20 spheres lit from behind, towards the camera: no thin part,
+              maps meet the target, and the volumes' scissored fill (each
+              volume reaches the camera: several windows in all) makes them
+              cost more than the map: csm, with volume weighed, not picked.
   max-error   --max-error 2px gives the cascaded pass a texel target of
               exactly 2; --max-error 0.5 the closed form of
               vsh_auto_texel_target for the window, the casters'
@@ -90,12 +101,69 @@ def concave_scene(out):
     return scene([{"type": "directional", "direction": [1, 0.2, -1]}], [{"mesh": mesh}, floor(5)])
 
 
-def stats(bin_dir, out, name, sc, extra=()):
+def needles():
+    """Three thin boxes over a sphere receiver (no plane: planar is out)."""
+    boxes = [{"box": {"min": [-1.0, y - 0.015, 1.6], "max": [1.0, y + 0.015, 1.63]}}
+             for y in (-0.3, 0.0, 0.3)]
+    camera = {"position": [0, -5, 3.5], "focal_point": [0, 0, 0.6], "view_up": [0, 0, 1],
+              "view_angle": 35}
+    return scene([{"type": "directional", "direction": [0.2, 0.1, -1]}],
+                 boxes + [sphere([0, 0, 0.1], 1.3)], camera)
+
+
+def near_spheres():
+    """20 spheres lit from behind them towards the camera: every volume
+    reaches the camera, so each one's scissor rectangle is most of the
+    window (the fill is several windows)."""
+    camera = {"position": [0, -4, 2], "focal_point": [0, 0, 0.8], "view_up": [0, 0, 1],
+              "view_angle": 40}
+    balls = [sphere([x, y, 0.9], 0.25, 32) for x in (-1.2, -0.6, 0, 0.6, 1.2)
+             for y in (0.0, 0.7, 1.4, 2.1)]
+    return scene([{"type": "directional", "direction": [0.1, -1, -0.6]}], balls, camera)
+
+
+def general_case(c, args, name, builder, want):
+    """The light's general choice (no planar receiver in the scene) and what
+    auto weighed for it."""
+    ts, _ = stats(args.bin, args.out, name, builder())
+    general = ts.get("general") or [{}]
+    g = general[0]
+    c.check(ts.get("light_choices") == [want] and g.get("pick") == want,
+            f"{name}: choice {ts.get('light_choices')}, general pick {g.get('pick')} (want "
+            f"{want}); reason: {ts.get('reason')}")
+    c.check(g.get("volume_error_pct") == 0 and g.get("volume_unsupported_casters") == 0 and
+            g.get("volume_silhouette_edges", 0) > 0 and g.get("volume_fill_px", 0) > 0,
+            f"{name}: volume predicted exact, {g.get('volume_silhouette_edges')} silhouette "
+            f"edges, {g.get('volume_fill_px')} px of fill")
+    # The inputs auto predicted are what the volume pass then draws (its own
+    # --stats for the same frame): the same silhouettes and scissor rules.
+    ts_volume, _ = stats(args.bin, args.out, name + "-volume", builder(), technique="volume")
+    drawn = ts_volume.get("lights", [{}])[0]
+    c.check(drawn.get("volume_quads") == g.get("volume_silhouette_edges") and
+            abs(drawn.get("fill_px", 0) - g.get("volume_fill_px", 0)) <=
+            0.01 * g.get("volume_fill_px", 0),
+            f"{name}: volume pass drew {drawn.get('volume_quads')} quads and "
+            f"{drawn.get('fill_px')} px of fill (auto predicted "
+            f"{g.get('volume_silhouette_edges')} and {g.get('volume_fill_px')})")
+    # The measured fill (occlusion query of the previous frame: samples of
+    # volume faces in front of the scene) is below the scissor estimate
+    # (an upper bound of one layer) times the two layers of closed casters.
+    samples = drawn.get("fill_samples_passed", -1)
+    c.check(0 < samples <= 2 * drawn.get("fill_px", 0),
+            f"{name}: measured fill {samples} samples passed, scissor estimate "
+            f"{drawn.get('fill_px')} px")
+    costs = {k: g.get(k + "_ms") for k in ("csm", "volume", "raytrace")}
+    c.check(all(isinstance(v, (int, float)) and v > 0 for v in costs.values()),
+            f"{name}: predicted ms {costs}")
+    return ts, g
+
+
+def stats(bin_dir, out, name, sc, extra=(), technique="auto"):
     path = os.path.join(out, name + ".json")
     with open(path, "w") as f:
         json.dump(sc, f)
     st = os.path.join(out, name + "-stats.json")
-    run = subprocess.run([os.path.join(bin_dir, "vtkshadow-render"), path, "--technique", "auto",
+    run = subprocess.run([os.path.join(bin_dir, "vtkshadow-render"), path, "--technique", technique,
                           "--image", os.path.join(out, name + ".png"), "--stats", st,
                           "--frames", "2", "--quiet", *extra], capture_output=True, text=True)
     if run.returncode != 0:
@@ -181,7 +249,7 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True,
                     choices=["mixed", "idle-light", "out-of-view", "box", "concave",
-                             "max-error"])
+                             "volume-thin", "volume-fill", "max-error"])
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     c = Checks()
@@ -198,9 +266,35 @@ def main():
         choice_case(c, args, "box", box_scene, "planar", ["planar"])
     elif args.case == "concave":
         ts, _ = stats(args.bin, args.out, "concave", concave_scene(args.out))
-        c.check(ts.get("choice") == "csm" and "not convex" in str(ts.get("reason")),
+        # Not planar; which general technique is the cost models' call
+        # (volume since it is a candidate: 14 silhouette edges), and it must
+        # be the pick auto reports weighing.
+        pick = (ts.get("general") or [{}])[0].get("pick")
+        c.check(ts.get("choice") in ("csm", "volume") and ts.get("choice") == pick and
+                "not convex" in str(ts.get("reason")),
                 f"concave: choice {ts.get('choice')} {ts.get('light_choices')}; reason: "
                 f"{ts.get('reason')}")
+        failed, _, m = run_case(args.bin, args.out, "concave", concave_scene(args.out), 0, "auto",
+                                "all", 0.5, 99.9, 0)
+        c.check(not failed, f"concave: against the exact answer: wrong_pct "
+                            f"{m['wrong_pct']:.4f} (bound 0.5)")
+    elif args.case == "volume-thin":
+        ts, g = general_case(c, args, "volume-thin", needles, "volume")
+        c.check(g.get("csm_error_pct", 0) > 0.5 and g.get("volume_ms", 1e9) < g.get("raytrace_ms", 0),
+                f"volume-thin: maps predicted {g.get('csm_error_pct')}% wrong (target 0.5), volume "
+                f"{g.get('volume_ms')} ms < raytrace {g.get('raytrace_ms')} ms")
+        failed, _, m = run_case(args.bin, args.out, "volume-thin", needles(), 0, "auto", "all", 0.5,
+                                99.9, 0)
+        c.check(not failed, f"volume-thin: against the exact answer: wrong_pct "
+                            f"{m['wrong_pct']:.4f} (bound 0.5)")
+    elif args.case == "volume-fill":
+        ts, g = general_case(c, args, "volume-fill", near_spheres, "csm")
+        w, h = S43
+        c.check(g.get("csm_error_pct", 1) <= 0.5 and g.get("volume_fill_px", 0) > 5 * w * h and
+                g.get("volume_ms", 0) > g.get("csm_ms", 1e9),
+                f"volume-fill: maps meet the target ({g.get('csm_error_pct')}%), volume fill "
+                f"{g.get('volume_fill_px')} px > 5 windows of {w * h}, volume {g.get('volume_ms')} "
+                f"ms > csm {g.get('csm_ms')} ms")
     else:
         max_error_case(c, args)
     print(f"{args.case}: {'FAILED (%d checks)' % c.failed if c.failed else 'passed'}")

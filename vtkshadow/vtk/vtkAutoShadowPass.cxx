@@ -14,6 +14,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlanarShadowPass.h"
+#include "vtkPropCollection.h"
 #include "vtkRayTracedShadowPass.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -24,10 +25,15 @@
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkShadowTechniqueSet.h"
+#include "vtkShadowVolumePass.h"
 #include "vtkWeakPointer.h"
 
 #include "vsh_auto.h"
 #include "vsh_auto_general.h"
+#include "vsh_mat4.h"
+#include "vsh_silhouette.h"
+#include "vsh_volume.h"
+#include "vsh_volume_cost.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +53,9 @@ struct vtkAutoShadowPass::Internals
     // Silhouette length (data units) per light, with the light (data
     // coordinates) it was computed for.
     std::map<int, std::pair<std::vector<double>, double>> Silhouette;
+    // Shadow-volume side quads per light, with the light (shifted data
+    // coordinates) they were counted for.
+    std::map<int, std::pair<std::vector<double>, double>> VolumeEdges;
   };
   std::map<vtkProp*, std::unique_ptr<Caster>> Casters;
 
@@ -55,6 +64,8 @@ struct vtkAutoShadowPass::Internals
   std::vector<vtkActor*> Actors;
   std::vector<vtkWeakPointer<vtkActor>> Detected; // receivers found, not marked
   std::string GeneralJSON;                        // per map light: the candidates auto weighed
+  std::vector<std::vector<double>> Lights;        // per switched-on light: homogeneous, world
+  std::vector<bool> SoftLights;                   // per switched-on light: has a radius or angle
 
   // What was chosen: for the frame and per switched-on light.
   vtkshadow::TechniqueSet Choice = vtkshadow::TechniqueSet::None;
@@ -76,6 +87,7 @@ struct vtkAutoShadowPass::Internals
       caster->MeshTime = t;
       caster->Convex = caster->Geometry.Update(actor) && caster->Geometry.IsConvex();
       caster->Silhouette.clear();
+      caster->VolumeEdges.clear();
     }
     return *caster;
   }
@@ -116,6 +128,7 @@ vtkAutoShadowPass::vtkAutoShadowPass()
   : PlanarPass(vtkPlanarShadowPass::New())
   , CascadedPass(vtkCascadedShadowMapPass::New())
   , RayTracedPass(vtkRayTracedShadowPass::New())
+  , VolumePass(vtkShadowVolumePass::New())
   , Reason("not rendered yet")
   , MaxError(0.5)
   , MaxTexelPixels(0.0)
@@ -132,6 +145,7 @@ vtkAutoShadowPass::~vtkAutoShadowPass()
   this->PlanarPass->Delete();
   this->CascadedPass->Delete();
   this->RayTracedPass->Delete();
+  this->VolumePass->Delete();
 }
 
 //------------------------------------------------------------------------------
@@ -142,6 +156,8 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   const int concave = this->FindConcaveCaster();
   Internals& impl = *this->Impl;
   impl.LightChoices.clear();
+  impl.Lights.clear();
+  impl.SoftLights.clear();
   this->LightReasons.clear();
   double stretch = 1.0, edgeLength = 0.0;
   std::vector<double> edgeLengths; // per light: its casters' outline (map lights)
@@ -149,6 +165,8 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   {
     double homogeneous[4];
     vtkshadow::LightHomogeneous(light, homogeneous);
+    impl.Lights.emplace_back(homogeneous, homogeneous + 4);
+    impl.SoftLights.push_back(GetLightRadius(light) > 0.0 || GetLightAngle(light) > 0.0);
     const vsh_auto_light_choice c =
       vsh_auto_choose_light(impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous,
         light->LightTypeIsHeadlight() ? 1 : 0, concave);
@@ -264,11 +282,13 @@ void vtkAutoShadowPass::ApplyLightMasks()
   const int count = static_cast<int>(techniques.size());
   const unsigned int planarLights = vsh_auto_light_mask(techniques.data(), count, VSH_AUTO_PLANAR);
   const unsigned int csmLights = vsh_auto_light_mask(techniques.data(), count, VSH_AUTO_CSM);
+  const unsigned int volumeLights = vsh_auto_light_mask(techniques.data(), count, VSH_AUTO_VOLUME);
   const unsigned int rayLights = vsh_auto_light_mask(techniques.data(), count, VSH_AUTO_RAYTRACE);
   this->PlanarPass->SetSkippedLights(~planarLights);
   this->CascadedPass->SetSkippedLights(~csmLights);
+  this->VolumePass->SetSkippedLights(~volumeLights);
   this->RayTracedPass->SetSkippedLights(~rayLights);
-  impl.Choice = vtkshadow::FromLightMasks(planarLights, csmLights, 0u, rayLights);
+  impl.Choice = vtkshadow::FromLightMasks(planarLights, csmLights, volumeLights, rayLights);
 }
 
 //------------------------------------------------------------------------------
@@ -308,6 +328,7 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   this->Decide(s);
   const bool planar = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Planar);
   const bool csm = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Cascaded);
+  const bool volume = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Volume);
   const bool rays = vtkshadow::Has(this->Impl->Choice, TechniqueSet::RayTraced);
   // A pass no longer used keeps no GL memory.
   vtkWindow* window = s->GetRenderer()->GetRenderWindow();
@@ -319,6 +340,10 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   {
     this->CascadedPass->ReleaseGraphicsResources(window);
   }
+  if (!volume && vtkshadow::Has(previous, TechniqueSet::Volume))
+  {
+    this->VolumePass->ReleaseGraphicsResources(window);
+  }
   if (!rays && vtkshadow::Has(previous, TechniqueSet::RayTraced))
   {
     this->RayTracedPass->ReleaseGraphicsResources(window);
@@ -327,10 +352,10 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   // pass's delegate), so switching keeps VTK's passes: each does its shadow
   // work for its lights, then renders through the next.
   vtkRenderPass* next = this->EnsureDelegatePass();
-  vtkShadowPassBase* const candidates[] = { this->PlanarPass, this->CascadedPass,
+  vtkShadowPassBase* const candidates[] = { this->PlanarPass, this->CascadedPass, this->VolumePass,
     this->RayTracedPass };
-  const bool used[] = { planar, csm, rays };
-  for (int i = 0; i < 3; ++i)
+  const bool used[] = { planar, csm, volume, rays };
+  for (int i = 0; i < 4; ++i)
   {
     if (used[i])
     {
@@ -464,13 +489,24 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
 {
   // Each map light: csm predicts the target met by its texel model unless a
   // caster part is too thin for the texels (then the part's lost shadow);
-  // raytrace is exact. Costs in milliseconds per frame from each model.
+  // volume and raytrace are exact (volume only for casters it draws).
+  // Costs in milliseconds per frame from each model.
   Internals& impl = *this->Impl;
   impl.GeneralJSON.clear();
   const int* size = renderer->GetSize();
   const double pixels = std::max(1.0, static_cast<double>(size[0]) * size[1]);
   this->UsedThinnestPixels = std::numeric_limits<double>::infinity();
   bool measured = false;
+  struct Weighed
+  {
+    size_t Light;
+    vsh_auto_candidate Candidates[VSH_AUTO_GENERAL_COUNT];
+    vsh_volume_ms_input Volume;
+    int Unsupported;
+    int Pick;
+  };
+  std::vector<Weighed> weighed;
+  bool anyVolume = false, anyRays = false;
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
     if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
@@ -482,35 +518,206 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
       this->UsedThinnestPixels = this->ThinnestCasterPixels(renderer);
       measured = true;
     }
+    Weighed w = {};
+    w.Light = l;
     const double thin = vsh_auto_thin_caster_error(
       this->UsedThinnestPixels, this->UsedTexelTarget, edgeLengths[l], pixels);
-    vsh_auto_candidate candidates[VSH_AUTO_GENERAL_COUNT] = {};
-    candidates[VSH_AUTO_GENERAL_CSM] = { 1, thin > 0.0 ? thin : 0.0, MapLookupMsPerPixel * pixels };
-    candidates[VSH_AUTO_GENERAL_VOLUME] = { 0, 0.0, 0.0 };
-    candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, 0.0,
+    w.Candidates[VSH_AUTO_GENERAL_CSM] = { 1, thin > 0.0 ? thin : 0.0,
+      MapLookupMsPerPixel * pixels };
+    w.Unsupported =
+      this->VolumeInputs(renderer, impl.Lights[l].data(), static_cast<int>(l), w.Volume);
+    w.Candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
+      vsh_volume_predicted_error(w.Unsupported, impl.SoftLights[l] ? 1 : 0),
+      vsh_volume_cost_ms(&w.Volume) };
+    w.Candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, 0.0,
       this->RayTracedPass->EstimateFrameMilliseconds(pixels, 1.0, 1) };
     int met = 0;
-    const int pick =
-      vsh_auto_pick_cheapest(candidates, VSH_AUTO_GENERAL_COUNT, this->MaxError, &met);
-    std::ostringstream json;
-    json.precision(4);
-    json << (impl.GeneralJSON.empty() ? "" : ", ") << "{\"light\": " << l
-         << ", \"csm_error_pct\": " << JSONNumber(candidates[0].predicted_error_pct)
-         << ", \"csm_ms\": " << candidates[0].cost
-         << ", \"raytrace_ms\": " << JSONNumber(candidates[2].cost) << "}";
-    impl.GeneralJSON += json.str();
-    if (pick == VSH_AUTO_GENERAL_RAYTRACE)
+    w.Pick = vsh_auto_pick_cheapest(w.Candidates, VSH_AUTO_GENERAL_COUNT, this->MaxError, &met);
+    anyVolume = anyVolume || w.Pick == VSH_AUTO_GENERAL_VOLUME;
+    anyRays = anyRays || w.Pick == VSH_AUTO_GENERAL_RAYTRACE;
+    weighed.push_back(w);
+  }
+  // The volume and ray-traced passes each own a screen mask whose lighting
+  // hook declares the same names: they cannot both hook one frame. When the
+  // lights want both, the volume lights choose again without volumes.
+  for (Weighed& w : weighed)
+  {
+    if (anyVolume && anyRays && w.Pick == VSH_AUTO_GENERAL_VOLUME)
     {
-      impl.LightChoices[l] = vtkshadow::TechniqueSet::RayTraced;
-      std::ostringstream why;
-      why.precision(3);
-      why << "a caster part " << this->UsedThinnestPixels
-          << " px wide is narrower than two map texels of " << this->UsedTexelTarget
-          << " px: maps may lose its shadow (predicted " << candidates[0].predicted_error_pct
-          << "% wrong), ray tracing is exact";
-      this->LightReasons[l] += "; " + why.str();
+      w.Candidates[VSH_AUTO_GENERAL_VOLUME].available = 0;
+      int met = 0;
+      w.Pick = vsh_auto_pick_cheapest(w.Candidates, VSH_AUTO_GENERAL_COUNT, this->MaxError, &met);
+    }
+    this->ApplyGeneralPick(w.Light, w.Candidates, w.Volume, w.Unsupported, w.Pick);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* candidates,
+  const vsh_volume_ms_input& volume, int unsupported, int pick)
+{
+  Internals& impl = *this->Impl;
+  static const char* const names[VSH_AUTO_GENERAL_COUNT] = { "csm", "volume", "raytrace" };
+  std::ostringstream json;
+  json.precision(4);
+  json << (impl.GeneralJSON.empty() ? "" : ", ") << "{\"light\": " << l << ", \"csm_error_pct\": "
+       << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].predicted_error_pct)
+       << ", \"csm_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].cost)
+       << ", \"volume_error_pct\": "
+       << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].predicted_error_pct)
+       << ", \"volume_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].cost)
+       << ", \"volume_scene_triangles\": " << volume.scene_triangles
+       << ", \"volume_silhouette_edges\": " << volume.silhouette_edges
+       << ", \"volume_fill_px\": " << volume.fill_px
+       << ", \"volume_unsupported_casters\": " << unsupported << ", \"volume_available\": "
+       << (candidates[VSH_AUTO_GENERAL_VOLUME].available ? "true" : "false")
+       << ", \"raytrace_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_RAYTRACE].cost)
+       << ", \"pick\": \"" << (pick >= 0 ? names[pick] : "csm") << "\"}";
+  impl.GeneralJSON += json.str();
+  if (pick != VSH_AUTO_GENERAL_RAYTRACE && pick != VSH_AUTO_GENERAL_VOLUME)
+  {
+    return;
+  }
+  const vsh_auto_candidate& map = candidates[VSH_AUTO_GENERAL_CSM];
+  std::ostringstream why;
+  why.precision(3);
+  if (map.predicted_error_pct > this->MaxError)
+  {
+    why << "a caster part " << this->UsedThinnestPixels
+        << " px wide is narrower than two map texels of " << this->UsedTexelTarget
+        << " px: maps may lose its shadow (predicted " << map.predicted_error_pct << "% wrong), ";
+  }
+  else
+  {
+    why << "maps predicted " << map.cost << " ms, ";
+  }
+  if (pick == VSH_AUTO_GENERAL_VOLUME)
+  {
+    impl.LightChoices[l] = vtkshadow::TechniqueSet::Volume;
+    why << "shadow volumes are exact and cheapest (predicted " << candidates[pick].cost
+        << " ms: " << volume.silhouette_edges << " silhouette edges, " << volume.fill_px
+        << " px of fill)";
+  }
+  else
+  {
+    impl.LightChoices[l] = vtkshadow::TechniqueSet::RayTraced;
+    why << "ray tracing is exact (predicted " << candidates[pick].cost << " ms)";
+  }
+  this->LightReasons[l] += "; " + why.str();
+}
+
+//------------------------------------------------------------------------------
+int vtkAutoShadowPass::VolumeInputs(
+  vtkRenderer* renderer, const double light[4], int index, vsh_volume_ms_input& input)
+{
+  // What the volume pass would draw for this light: every caster's volume
+  // scissored to its projected bounds (vsh_volume_screen_rect, the pass's
+  // own rule, camera-relative in double), and its silhouette's side quads.
+  Internals& impl = *this->Impl;
+  const int* size = renderer->GetSize();
+  const int width = std::max(size[0], 1), height = std::max(size[1], 1);
+  input.pixels = static_cast<double>(width) * height;
+  input.scene_triangles = 0.0;
+  input.silhouette_edges = 0.0;
+  input.fill_px = 0.0;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double eye[3], view[16], projection[16], clip[16];
+  camera->GetPosition(eye);
+  vtkMatrix4x4::DeepCopy(view, camera->GetViewTransformMatrix());
+  view[3] = view[7] = view[11] = 0.0; // inputs are relative to the eye
+  vtkMatrix4x4::DeepCopy(
+    projection, camera->GetProjectionTransformMatrix(static_cast<double>(width) / height, -1, 1));
+  vsh_mat4_multiply(projection, view, clip);
+  double relative[4] = { light[0], light[1], light[2], light[3] };
+  for (int k = 0; k < 3; ++k)
+  {
+    relative[k] -= light[3] * eye[k];
+  }
+  int unsupported = this->TranslucentCasters(renderer);
+  for (size_t i = 0; i < impl.Objects.size(); ++i)
+  {
+    vtkActor* actor = impl.Actors[i];
+    // The depth pre-pass draws every opaque actor, casting or not.
+    input.scene_triangles += static_cast<double>(impl.For(actor).Geometry.GetNumberOfTriangles());
+    if (!impl.Objects[i].casts)
+    {
+      continue;
+    }
+    const double edges = this->VolumeEdges(actor, light, index);
+    if (edges < 0.0)
+    {
+      ++unsupported; // no triangles: nothing to extrude
+      continue;
+    }
+    double bounds[6];
+    std::copy_n(impl.Objects[i].bounds, 6, bounds);
+    for (int k = 0; k < 3; ++k)
+    {
+      bounds[2 * k] -= eye[k];
+      bounds[2 * k + 1] -= eye[k];
+    }
+    int rect[4];
+    if (edges > 0.0 && vsh_volume_screen_rect(clip, bounds, relative, width, height, rect))
+    {
+      input.silhouette_edges += edges;
+      input.fill_px += static_cast<double>(rect[2]) * rect[3];
     }
   }
+  return unsupported;
+}
+
+//------------------------------------------------------------------------------
+int vtkAutoShadowPass::TranslucentCasters(vtkRenderer* renderer) const
+{
+  // Translucent actors are not in auto's objects (no technique here casts
+  // them); the volume pass skips them too, so volumes cannot promise their
+  // shadows: each one that casts counts as unsupported.
+  int count = 0;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    count += actor && actor->GetVisibility() && actor->GetMapper() &&
+        actor->HasTranslucentPolygonalGeometry() &&
+        !vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST())
+      ? 1
+      : 0;
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+double vtkAutoShadowPass::VolumeEdges(vtkActor* actor, const double light[4], int index)
+{
+  Internals::Caster& caster = this->Impl->For(actor);
+  vtkShadowCasterGeometry& geometry = caster.Geometry;
+  const vsh_mesh_topology* topology =
+    geometry.GetNumberOfTriangles() > 0 ? geometry.GetTopology() : nullptr;
+  double model[16], inverse[16], inData[4], stored[4];
+  vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
+  if (!topology || !vsh_mat4_inverse(model, inverse))
+  {
+    return -1.0;
+  }
+  vsh_mat4_transform_point4(inverse, light, inData);
+  geometry.ShiftLight(inData, stored);
+  auto& cached = caster.VolumeEdges[index];
+  const std::vector<double> key(stored, stored + 4);
+  if (cached.first != key)
+  {
+    // The volume pass's own silhouette rule (vsh_volume_build): lit faces
+    // for closed meshes, both sides with multiplicities for the others.
+    vsh_silhouette silhouette;
+    const bool ok = vsh_silhouette_build(topology, stored,
+                      topology->closed ? VSH_SILHOUETTE_LIT_FACES : VSH_SILHOUETTE_BOTH_SIDES,
+                      &silhouette) == VSH_MESH_OK;
+    cached.first = key;
+    cached.second = ok ? static_cast<double>(silhouette.total_multiplicity) : -1.0;
+    vsh_silhouette_free(&silhouette);
+  }
+  return cached.second;
 }
 
 //------------------------------------------------------------------------------
@@ -541,6 +748,7 @@ void vtkAutoShadowPass::SetResidualLight(double residual)
   this->PlanarPass->SetResidualLight(this->ResidualLight);
   this->CascadedPass->SetResidualLight(this->ResidualLight);
   this->RayTracedPass->SetResidualLight(this->ResidualLight);
+  this->VolumePass->SetResidualLight(this->ResidualLight);
 }
 
 //------------------------------------------------------------------------------
@@ -569,6 +777,10 @@ long long vtkAutoShadowPass::GetMemoryBytes() const
   {
     bytes += this->CascadedPass->GetMemoryBytes();
   }
+  if (vtkshadow::Has(this->Impl->Choice, vtkshadow::TechniqueSet::Volume))
+  {
+    bytes += this->VolumePass->GetMemoryBytes();
+  }
   if (vtkshadow::Has(this->Impl->Choice, vtkshadow::TechniqueSet::RayTraced))
   {
     bytes += this->RayTracedPass->GetMemoryBytes();
@@ -582,6 +794,7 @@ void vtkAutoShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   this->PlanarPass->ReleaseGraphicsResources(w);
   this->CascadedPass->ReleaseGraphicsResources(w);
   this->RayTracedPass->ReleaseGraphicsResources(w);
+  this->VolumePass->ReleaseGraphicsResources(w);
   this->Superclass::ReleaseGraphicsResources(w);
 }
 
@@ -625,7 +838,7 @@ bool vtkAutoShadowPass::SetOption(const char* key, double value)
     return this->Superclass::SetOption(key, value); // SetResidualLight: all passes
   }
   return this->CascadedPass->SetOption(key, value) || this->PlanarPass->SetOption(key, value) ||
-    this->RayTracedPass->SetOption(key, value);
+    this->RayTracedPass->SetOption(key, value) || this->VolumePass->SetOption(key, value);
 }
 
 //------------------------------------------------------------------------------
@@ -667,6 +880,10 @@ std::string vtkAutoShadowPass::GetStatsJSON(vtkRenderer* renderer) const
   if (vtkshadow::Has(this->Impl->Choice, TechniqueSet::RayTraced))
   {
     out << ", \"raytrace\": {" << this->RayTracedPass->GetStatsJSON(renderer) << "}";
+  }
+  if (vtkshadow::Has(this->Impl->Choice, TechniqueSet::Volume))
+  {
+    out << ", \"volume\": {" << this->VolumePass->GetStatsJSON(renderer) << "}";
   }
   return out.str();
 }

@@ -17,8 +17,11 @@
  *   when it is large, with the map resolution and count chosen by the
  *   core's error estimate so that the on-screen texel size meets the
  *   target), predicted to meet it unless a caster part is narrower than two
- *   texels (the thin-caster term), or "raytrace" (vtkRayTracedShadowPass,
- *   exact), costed by its own model of measured rays per second.
+ *   texels (the thin-caster term), "volume" (vtkShadowVolumePass, exact
+ *   for polygonal casters, costed by vsh_volume_cost_ms from the
+ *   silhouette edges and the volumes' scissored fill) or "raytrace"
+ *   (vtkRayTracedShadowPass, exact), costed by its own model of measured
+ *   rays per second.
  * Lights of several kinds in one scene are drawn in one frame: the chosen
  * passes delegate to each other, each skipping the others' lights
  * (SkippedLights), and all multiply their factor into the lighting.
@@ -46,7 +49,10 @@ class vtkCascadedShadowMapPass;
 class vtkRenderer;
 class vtkPlanarShadowPass;
 class vtkRayTracedShadowPass;
+class vtkShadowVolumePass;
 class vtkProp;
+struct vsh_volume_ms_input;
+struct vsh_auto_candidate;
 
 class VTKSHADOW_EXPORT vtkAutoShadowPass : public vtkShadowPassBase
 {
@@ -65,6 +71,7 @@ public:
   vtkGetObjectMacro(PlanarPass, vtkPlanarShadowPass);
   vtkGetObjectMacro(CascadedPass, vtkCascadedShadowMapPass);
   vtkGetObjectMacro(RayTracedPass, vtkRayTracedShadowPass);
+  vtkGetObjectMacro(VolumePass, vtkShadowVolumePass);
 
   /**
    * The error target: wrong_pct (percent of the frame's pixels; default
@@ -77,10 +84,10 @@ public:
   vtkGetMacro(MaxTexelPixels, double);
 
   /**
-   * "none", "planar", "csm", "raytrace" or a combination such as
-   * "planar+csm" for the last frame, and why;
+   * "none", "planar", "csm", "volume", "raytrace" or a combination such
+   * as "planar+csm" for the last frame, and why;
    * per light (mapper numbering: switched-on lights in order) "none",
-   * "planar", "csm" or "raytrace" and why.
+   * "planar", "csm", "volume" or "raytrace" and why.
    */
   const char* GetChoice() const;
   const char* GetReason() const { return this->Reason.c_str(); }
@@ -139,7 +146,9 @@ public:
   /**
    * choice, reason, texel_target_px, texel_stretch, edge_length_px and
    * light_choices, detected_receivers, then the details of the cascaded pass when it is used,
-   * else of the planar pass.
+   * else of the planar pass; thinnest_caster_px and general (per light given maps, every
+   * candidate's predicted error and ms, volume's inputs and the pick); the volume and
+   * ray-traced passes' own stats when used.
    */
   std::string GetStatsJSON(vtkRenderer* renderer) const override;
 
@@ -153,6 +162,7 @@ protected:
   vtkPlanarShadowPass* PlanarPass;
   vtkCascadedShadowMapPass* CascadedPass;
   vtkRayTracedShadowPass* RayTracedPass;
+  vtkShadowVolumePass* VolumePass;
   std::string Reason;
   std::vector<std::string> LightReasons;
   double MaxError;
@@ -184,6 +194,20 @@ private:
   // the target and it is the cheapest such candidate, else an exact one.
   void ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths);
   double ThinnestCasterPixels(vtkRenderer* renderer);
+  // Shadow volumes for light number `index` (`light` homogeneous, world):
+  // the cost model's inputs (silhouette edges, scissored fill) and how many
+  // casters volumes cannot draw (no triangles, translucent).
+  int VolumeInputs(
+    vtkRenderer* renderer, const double light[4], int index, vsh_volume_ms_input& input);
+  // The volume silhouette's quads (sum of multiplicities) of one caster for
+  // light number `index`, cached per light while light and mesh stay put;
+  // -1 when the caster has no mesh to extrude.
+  double VolumeEdges(vtkActor* actor, const double light[4], int index);
+  int TranslucentCasters(vtkRenderer* renderer) const;
+  // Records the weighed candidates of map light `l` in the stats and, when
+  // an exact technique won, the light's new choice and why.
+  void ApplyGeneralPick(size_t l, const vsh_auto_candidate* candidates,
+    const vsh_volume_ms_input& volume, int unsupported, int pick);
   double PixelWorldSize(vtkRenderer* renderer, const double center[3]) const;
   void DescribeChoice();
   // Pixels of shadow outline the casters in view throw under light number

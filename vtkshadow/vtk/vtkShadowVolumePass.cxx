@@ -67,6 +67,19 @@ struct LightStats
   long long SilhouetteEdges = 0, Quads = 0, CapTriangles = 0;
   double FillPx = 0.0;
   double Cost = 0.0;
+  // Samples of the volumes' faces that passed the depth test in the
+  // previous frame this light was counted (GL_SAMPLES_PASSED; -1 unknown).
+  long long SamplesPassed = -1;
+};
+
+// One GL_SAMPLES_PASSED query per light around its volume draws. Its result
+// is read a frame later (when it is available), so the count never stalls
+// the pipeline; a light whose query is still running skips a frame.
+struct FillQuery
+{
+  GLuint Id = 0;
+  bool Pending = false;
+  long long Last = -1;
 };
 }
 
@@ -97,6 +110,7 @@ struct vtkShadowVolumePass::Internals
   std::map<vtkActor*, std::unique_ptr<Caster>> Casters;
   long long FrameNumber = 0;
   LightStats Stats[MaxLights];
+  FillQuery Queries[MaxLights];
   int LightCount = 0;
   long long VolumeBuilds = 0;
   long long Instances = 0;
@@ -270,10 +284,38 @@ void vtkShadowVolumePass::CountLight(
     program->SetUniformf("depthBias", static_cast<float>(this->DepthBias * std::ldexp(1.0, -24)));
     program->SetUniformf("slopeBias", static_cast<float>(this->SlopeBias));
     program->SetUniformf("maxSlopeBias", static_cast<float>(std::ldexp(1.0, -12)));
+    FillQuery& query = impl.Queries[light];
+    if (query.Pending)
+    {
+      GLuint available = 0;
+      glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT_AVAILABLE, &available);
+      if (available)
+      {
+        GLuint samples = 0;
+        glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT, &samples);
+        query.Last = static_cast<long long>(samples);
+        query.Pending = false;
+      }
+    }
+    if (!query.Id)
+    {
+      glGenQueries(1, &query.Id);
+    }
+    const bool measure = query.Id && !query.Pending;
+    if (measure)
+    {
+      glBeginQuery(GL_SAMPLES_PASSED, query.Id);
+    }
     for (vtkActor* actor : frame.Casters)
     {
       this->DrawCaster(program, frame, light, actor);
     }
+    if (measure)
+    {
+      glEndQuery(GL_SAMPLES_PASSED);
+      query.Pending = true;
+    }
+    impl.Stats[light].SamplesPassed = query.Last;
     glDisable(GL_DEPTH_CLAMP);
     glFrontFace(static_cast<GLenum>(frontFace));
     state->vtkglDisable(GL_SCISSOR_TEST);
@@ -495,6 +537,7 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
         << ", \"silhouette_edges\": " << s.SilhouetteEdges << ", \"volume_quads\": " << s.Quads
         << ", \"cap_triangles\": " << s.CapTriangles
         << ", \"fill_px\": " << static_cast<long long>(s.FillPx)
+        << ", \"fill_samples_passed\": " << s.SamplesPassed
         << ", \"cost\": " << static_cast<long long>(s.Cost) << "}";
   }
   out << "]";
@@ -528,6 +571,14 @@ void vtkShadowVolumePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& impl = *this->Impl;
   impl.Mask.ReleaseGraphicsResources(w);
+  for (FillQuery& query : impl.Queries)
+  {
+    if (query.Id && w)
+    {
+      glDeleteQueries(1, &query.Id);
+    }
+    query = FillQuery();
+  }
   for (auto& entry : impl.Casters)
   {
     entry.second->Geometry.ReleaseGraphicsResources(w);
