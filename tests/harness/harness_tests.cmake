@@ -4,7 +4,8 @@
 #
 # harness.library.<group>: the whole scene library at test scale (0.4, i.e.
 # 320x240), POV-Ray and Cycles rendered fresh (--no-cache), every VTK
-# technique, --check against scenes/thresholds.json.
+# technique, --check against scenes/thresholds.json (mirror: wrong_pct and
+# reflection colour; soft: against POV-Ray's area lights).
 # harness.<unit>: cache invalidation, missing / hanging / crashing renderer,
 # hostile scene, unknown renderer name, HTML escaping, faults (renderer
 # killed mid-frame, full / read-only output folder, damaged cache entry).
@@ -18,7 +19,7 @@ if(NOT VTKSHADOW_POVRAY OR NOT VTKSHADOW_BLENDER)
 endif()
 
 set(_harness_src ${CMAKE_CURRENT_LIST_DIR})
-foreach(group basic scivis cad hard)
+foreach(group basic scivis cad hard mirror soft)
   add_test(NAME harness.library.${group}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_BIN}/vtkshadow-compare ${PROJECT_SOURCE_DIR}/scenes/${group}
             --out ${VTKSHADOW_TEST_OUT}/harness/library-${group} --scale 0.4 --no-cache --check
