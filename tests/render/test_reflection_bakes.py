@@ -26,7 +26,8 @@ import os
 import sys
 
 import vtkshadow
-from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer, vtkWindowToImageFilter
 
 source = sys.argv[1]
 technique = sys.argv[2] if len(sys.argv) > 2 else "csm"
@@ -48,9 +49,20 @@ def reflection_stats(mirror, renderer):
     return json.loads("{" + mirror.GetStatsJSON(renderer) + "}")["reflections"]
 
 
+def grab(window):
+    shot = vtkWindowToImageFilter()
+    shot.SetInput(window)
+    shot.ReadFrontBufferOff()
+    shot.ShouldRerenderOff()  # the frame just rendered, not one more
+    shot.Update()
+    return vtk_to_numpy(shot.GetOutput().GetPointData().GetScalars()).copy()
+
+
 def work(reflections, shadows, frames=6):
-    """Work done per frame, the reflection stats of the last frame, and the
-    mirror worlds' bytes after the reflections are switched off."""
+    """Work done per frame, the reflection stats of the last frame, the
+    mirror worlds' bytes after the reflections are switched off, and the
+    pixels that differ between the first frame and the last (a still frame
+    that reuses each world's maps or mask draws the same image)."""
     scene = vtkshadow.vtkShadowScene()
     if not scene.Load(scene_path):
         sys.exit(scene.GetErrorMessage())
@@ -71,11 +83,15 @@ def work(reflections, shadows, frames=6):
         renderer.SetPass(mirror)
     else:
         renderer.SetPass(shadow_pass)
-    counts = []
+    counts, images = [], []
     for _ in range(frames):
         before = total()
         window.Render()
         counts.append(total() - before)
+        images.append(grab(window))
+    changed = int((images[0] != images[-1]).any(axis=-1).sum())
+    if not (images[0] != images[0][0]).any():
+        changed = -1  # a blank image proves nothing
     stats, released = {}, None
     if mirror:
         stats = reflection_stats(mirror, renderer)
@@ -83,7 +99,7 @@ def work(reflections, shadows, frames=6):
         window.Render()
         released = shadow_pass.GetWorldsMemoryBytes()
     window.Finalize()
-    return counts, stats, released
+    return counts, stats, released, changed
 
 
 def check(cond, what):
@@ -93,19 +109,22 @@ def check(cond, what):
 
 
 unit = "maps baked" if technique == "csm" else "worlds traced"
-off, _, _ = work(False, False)
+off, _, _, changed = work(False, False)
 check(off[0] > 0 and sum(off[1:]) == 0, f"{technique}, no reflections: {unit} per frame {off}")
-plain, stats, _ = work(True, False)
+check(changed == 0, f"no reflections: the last still frame equals the first ({changed} px differ)")
+plain, stats, _, changed = work(True, False)
 check(stats.get("drawn") == 1, f"the mirror is drawn: {stats}")
 check(plain[0] > 0 and sum(plain[1:]) == 0,
       f"{technique}, reflections without shadows: {unit} per frame {plain} (a still frame: none)")
 check(stats.get("mirror_worlds_bytes") == 0,
       f"without shadows in the reflection no memory is held for the mirror's world: {stats}")
-shadowed, stats, released = work(True, True)
+check(changed == 0, f"no-shadows: the last still frame equals the first ({changed} px differ)")
+shadowed, stats, released, changed = work(True, True)
 check(stats.get("drawn") == 1, f"the mirror is drawn: {stats}")
 check(shadowed[0] > off[0] and sum(shadowed[1:]) == 0,
       f"{technique}, reflections with shadows: {unit} per frame {shadowed} (the first frame "
       f"more than {off[0]}: both worlds; a still frame: none)")
+check(changed == 0, f"with shadows: the last still frame equals the first ({changed} px differ)")
 check(stats.get("mirror_worlds_bytes", 0) > 0,
       f"the mirror's world holds memory, reported: {stats.get('mirror_worlds_bytes')}")
 check(released == 0, f"switching the reflections off frees it: {released} bytes left")
