@@ -137,6 +137,11 @@ add_test(NAME render.reflection_csm_bakes
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection_bakes.py
           ${CMAKE_SOURCE_DIR})
 set_tests_properties(render.reflection_csm_bakes PROPERTIES LABELS "render")
+# raytrace's still frames under a mirror: nothing traced in either world.
+add_test(NAME render.reflection_raytrace_traces
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection_bakes.py
+          ${CMAKE_SOURCE_DIR} raytrace)
+set_tests_properties(render.reflection_raytrace_traces PROPERTIES LABELS "render")
 
 # Every test of this directory may use the shared X server.
 get_property(vtkshadow_vtk_tests DIRECTORY PROPERTY TESTS)

@@ -789,6 +789,30 @@ long long vtkAutoShadowPass::GetMemoryBytes() const
 }
 
 //------------------------------------------------------------------------------
+void vtkAutoShadowPass::SetWorldKey(int key)
+{
+  this->Superclass::SetWorldKey(key);
+  this->PlanarPass->SetWorldKey(key);
+  this->CascadedPass->SetWorldKey(key);
+  this->RayTracedPass->SetWorldKey(key);
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ReleaseWorlds(vtkWindow* w, int first)
+{
+  this->PlanarPass->ReleaseWorlds(w, first);
+  this->CascadedPass->ReleaseWorlds(w, first);
+  this->RayTracedPass->ReleaseWorlds(w, first);
+}
+
+//------------------------------------------------------------------------------
+long long vtkAutoShadowPass::GetWorldsMemoryBytes() const
+{
+  return this->PlanarPass->GetWorldsMemoryBytes() + this->CascadedPass->GetWorldsMemoryBytes() +
+    this->RayTracedPass->GetWorldsMemoryBytes();
+}
+
+//------------------------------------------------------------------------------
 void vtkAutoShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->PlanarPass->ReleaseGraphicsResources(w);

@@ -134,6 +134,13 @@ public:
    * GL memory of the passes in use, as of the last frame.
    */
   long long GetMemoryBytes() const override;
+  /**
+   * The world key goes to every technique pass auto chains, and so do
+   * ReleaseWorlds and the worlds' memory (vtkShadowPassBase::SetWorldKey).
+   */
+  void SetWorldKey(int key) override;
+  void ReleaseWorlds(vtkWindow* w, int first) override;
+  long long GetWorldsMemoryBytes() const override;
 
   /**
    * max_error, max_texel_px, residual_light (all passes); any other key goes

@@ -55,6 +55,21 @@ using vtkshadow::ToFloatTransposed;
 
 namespace
 {
+// Free one world's atlas (the objects stay, to be allocated again).
+void ReleaseHeld(vtkshadow::CascadedHeldMaps& held, vtkWindow* w)
+{
+  if (held.Atlas)
+  {
+    held.Atlas->ReleaseGraphicsResources(w);
+  }
+  if (held.FBO)
+  {
+    held.FBO->ReleaseGraphicsResources(w);
+  }
+  held.AtlasSize[0] = held.AtlasSize[1] = 0;
+  held.Rendered.clear();
+}
+
 constexpr int MaxLights = VSH_CSM_MAX_LIGHTS;
 constexpr int MaxTiles = VSH_CSM_MAX_TILES;
 }
@@ -94,17 +109,7 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
 }
 
 //------------------------------------------------------------------------------
-vtkCascadedShadowMapPass::~vtkCascadedShadowMapPass()
-{
-  if (this->Impl->Atlas)
-  {
-    this->Impl->Atlas->Delete();
-  }
-  if (this->Impl->FBO)
-  {
-    this->Impl->FBO->Delete();
-  }
-}
+vtkCascadedShadowMapPass::~vtkCascadedShadowMapPass() = default;
 
 //------------------------------------------------------------------------------
 void vtkCascadedShadowMapPass::CopySettings(vtkCascadedShadowMapPass* o)
@@ -147,7 +152,12 @@ void vtkCascadedShadowMapPass::SetController(vtkMultiProcessController* controll
   if (this->Impl->Controller != controller)
   {
     this->Impl->Controller = controller;
-    this->Impl->Rendered.clear(); // maps of one rank are not the reduced ones
+    // Maps of one rank are not the reduced ones, in any world.
+    this->Impl->Held.Rendered.clear();
+    for (auto& parked : this->Impl->Parked)
+    {
+      parked.second.Rendered.clear();
+    }
     this->Modified();
   }
 }
@@ -210,7 +220,67 @@ long long vtkCascadedShadowMapPass::GetMemoryBytes() const
 {
   const long long mask =
     this->UsedScreenResolve && this->Impl->Mask ? this->Impl->Mask->GetMemoryBytes() : 0;
-  return static_cast<long long>(this->Impl->AtlasSize[0]) * this->Impl->AtlasSize[1] * 4 + mask;
+  long long atlases = this->Impl->Held.Bytes();
+  for (const auto& parked : this->Impl->Parked)
+  {
+    atlases += parked.second.Bytes();
+  }
+  return atlases + mask;
+}
+
+//------------------------------------------------------------------------------
+long long vtkCascadedShadowMapPass::GetWorldsMemoryBytes() const
+{
+  const Internals& impl = *this->Impl;
+  long long bytes = impl.HeldWorld != 0 ? impl.Held.Bytes() : 0;
+  for (const auto& parked : impl.Parked)
+  {
+    bytes += parked.first != 0 ? parked.second.Bytes() : 0;
+  }
+  return bytes;
+}
+
+//------------------------------------------------------------------------------
+// Park the held maps of the world drawn last and take out those of the world
+// this frame draws (empty the first time: it bakes them).
+void vtkCascadedShadowMapPass::SelectWorld(int world)
+{
+  Internals& impl = *this->Impl;
+  if (world == impl.HeldWorld)
+  {
+    return;
+  }
+  std::swap(impl.Parked[impl.HeldWorld], impl.Held);
+  auto it = impl.Parked.find(world);
+  if (it != impl.Parked.end())
+  {
+    std::swap(impl.Held, it->second);
+    impl.Parked.erase(it);
+  }
+  impl.HeldWorld = world;
+}
+
+//------------------------------------------------------------------------------
+void vtkCascadedShadowMapPass::ReleaseWorlds(vtkWindow* w, int first)
+{
+  Internals& impl = *this->Impl;
+  first = std::max(first, 1);
+  if (impl.HeldWorld >= first)
+  {
+    this->SelectWorld(0);
+  }
+  for (auto it = impl.Parked.begin(); it != impl.Parked.end();)
+  {
+    if (it->first >= first)
+    {
+      ReleaseHeld(it->second, w);
+      it = impl.Parked.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -228,6 +298,9 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     vtkErrorMacro("vtkCascadedShadowMapPass needs an OpenGL render window");
     return;
   }
+  this->SelectWorld(this->WorldKey);
+  // World 0 starts each frame (a mirror's world is drawn after it).
+  this->Impl->FrameMapsRendered = this->WorldKey == 0 ? 0 : this->Impl->FrameMapsRendered;
   Frame frame;
   this->GatherScene(s, frame);
   this->PlanMaps(frame);
@@ -239,11 +312,16 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   std::vector<int> bake;
   this->SelectReusable(frame, resolution, bake);
   this->BakeMaps(window, frame, bake, resolution);
-  this->ReleaseRemovedCasters(window, frame);
+  if (this->WorldKey == 0)
+  {
+    // A mirrored world leaves its mirror out: only the scene itself says
+    // which casters are gone.
+    this->ReleaseRemovedCasters(window, frame);
+  }
 
   // The scene, with every receiver's lighting reading the maps (forward) or
   // the mask the resolve wrote from them (screen).
-  this->Impl->Atlas->Activate();
+  this->Impl->Held.Atlas->Activate();
   this->BindRawAtlas(window);
   if (this->Impl->Screen)
   {
@@ -254,7 +332,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     this->RenderDelegateWithShaderHooks(s);
   }
   this->UnbindRawAtlas(window);
-  this->Impl->Atlas->Deactivate();
+  this->Impl->Held.Atlas->Deactivate();
 }
 
 namespace
@@ -323,12 +401,12 @@ void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame
   // machinery gives actors property keys during the first frame, which
   // bumps it) nor their matrices' (set back to equal values by a mirror).
   const unsigned long long key = CasterContentKey(frame.Casters);
-  if (key != this->Impl->CasterKey || this->Impl->CasterStamp.GetMTime() == 0)
+  if (key != this->Impl->Held.CasterKey || this->Impl->Held.CasterStamp.GetMTime() == 0)
   {
-    this->Impl->CasterKey = key;
-    this->Impl->CasterStamp.Modified();
+    this->Impl->Held.CasterKey = key;
+    this->Impl->Held.CasterStamp.Modified();
   }
-  frame.CasterTime = this->Impl->CasterStamp.GetMTime();
+  frame.CasterTime = this->Impl->Held.CasterStamp.GetMTime();
   scene.caster_count = static_cast<int>(frame.Casters.size());
   // Across ranks: every rank plans from everyone's casters and receivers, so
   // the light matrices, the tiles and the reuse decisions agree.
@@ -502,46 +580,46 @@ int vtkCascadedShadowMapPass::AllocateAtlas(vtkOpenGLRenderWindow* window)
       << " exceeds the GL limit " << maxSize << ": using " << layout.resolution);
   }
   this->UsedResolution = layout.resolution;
-  if (!impl.Atlas)
+  if (!impl.Held.Atlas)
   {
-    impl.Atlas = vtkTextureObject::New();
-    impl.FBO = vtkOpenGLFramebufferObject::New();
+    impl.Held.Atlas = vtkSmartPointer<vtkTextureObject>::New();
+    impl.Held.FBO = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   }
-  impl.Atlas->SetContext(window);
-  impl.FBO->SetContext(window);
-  if (!impl.Atlas->GetHandle() || impl.AtlasSize[0] != layout.width ||
-    impl.AtlasSize[1] != layout.height)
+  impl.Held.Atlas->SetContext(window);
+  impl.Held.FBO->SetContext(window);
+  if (!impl.Held.Atlas->GetHandle() || impl.Held.AtlasSize[0] != layout.width ||
+    impl.Held.AtlasSize[1] != layout.height)
   {
-    impl.Atlas->ReleaseGraphicsResources(window);
-    impl.Atlas->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.Atlas->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.Atlas->SetMinificationFilter(vtkTextureObject::Linear);
-    impl.Atlas->SetMagnificationFilter(vtkTextureObject::Linear);
-    impl.Atlas->SetDepthTextureCompare(true);
-    impl.Atlas->SetDepthTextureCompareFunction(vtkTextureObject::Lequal);
-    impl.Atlas->AllocateDepth(layout.width, layout.height, vtkTextureObject::Float32);
+    impl.Held.Atlas->ReleaseGraphicsResources(window);
+    impl.Held.Atlas->SetWrapS(vtkTextureObject::ClampToEdge);
+    impl.Held.Atlas->SetWrapT(vtkTextureObject::ClampToEdge);
+    impl.Held.Atlas->SetMinificationFilter(vtkTextureObject::Linear);
+    impl.Held.Atlas->SetMagnificationFilter(vtkTextureObject::Linear);
+    impl.Held.Atlas->SetDepthTextureCompare(true);
+    impl.Held.Atlas->SetDepthTextureCompareFunction(vtkTextureObject::Lequal);
+    impl.Held.Atlas->AllocateDepth(layout.width, layout.height, vtkTextureObject::Float32);
     // The setters above change nothing the second time, so the texture
     // object's time is older than its last SendParameters and the new GL
     // texture would never get the depth compare mode: every lookup would
     // then read as shadowed (found by the robustness suite: auto re-sizing
     // its maps after a window resize).
-    impl.Atlas->Modified();
-    impl.AtlasSize[0] = layout.width;
-    impl.AtlasSize[1] = layout.height;
-    impl.Rendered.clear(); // nothing held survives a new texture
+    impl.Held.Atlas->Modified();
+    impl.Held.AtlasSize[0] = layout.width;
+    impl.Held.AtlasSize[1] = layout.height;
+    impl.Held.Rendered.clear(); // nothing held survives a new texture
   }
   // A held map is only reusable in the slot and at the texel size it was
   // rendered with: a new grid or resolution (auto's texel target follows the
   // window size and the casters) can keep the atlas size but not its layout.
-  if (impl.TileGrid[0] != layout.columns || impl.TileGrid[1] != layout.rows ||
-    impl.RenderedResolution != layout.resolution)
+  if (impl.Held.TileGrid[0] != layout.columns || impl.Held.TileGrid[1] != layout.rows ||
+    impl.Held.RenderedResolution != layout.resolution)
   {
-    impl.Rendered.clear();
+    impl.Held.Rendered.clear();
   }
-  impl.TileGrid[0] = layout.columns;
-  impl.TileGrid[1] = layout.rows;
-  impl.RenderedResolution = layout.resolution;
-  impl.Rendered.resize(tiles);
+  impl.Held.TileGrid[0] = layout.columns;
+  impl.Held.TileGrid[1] = layout.rows;
+  impl.Held.RenderedResolution = layout.resolution;
+  impl.Held.Rendered.resize(tiles);
   return layout.resolution;
 }
 
@@ -572,7 +650,7 @@ void vtkCascadedShadowMapPass::SelectReusable(
   p.caster_time = frame.CasterTime;
   vsh_csm_selection selection;
   vsh_csm_select_reusable(
-    &p, impl.Plan.tiles.tiles, impl.Plan.tiles.tile_count, impl.Rendered.data(), &selection);
+    &p, impl.Plan.tiles.tiles, impl.Plan.tiles.tile_count, impl.Held.Rendered.data(), &selection);
   this->NumberOfMapsReused = selection.reused_count;
   bake.assign(selection.bake, selection.bake + selection.bake_count);
 }
@@ -591,9 +669,9 @@ void vtkCascadedShadowMapPass::BakeMaps(
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(vtkShadowMapDepthVS, vtkShadowMapDepthFS, "");
   state->PushFramebufferBindings();
-  impl.FBO->Bind();
-  impl.FBO->AddDepthAttachment(impl.Atlas);
-  impl.FBO->DeactivateDrawBuffers();
+  impl.Held.FBO->Bind();
+  impl.Held.FBO->AddDepthAttachment(impl.Held.Atlas);
+  impl.Held.FBO->DeactivateDrawBuffers();
   {
     vtkOpenGLState::ScopedglViewport viewport(state);
     vtkOpenGLState::ScopedglScissor scissor(state);
@@ -622,7 +700,7 @@ void vtkCascadedShadowMapPass::BakeMaps(
       }
       geometry->Update(actor);
     }
-    const int columns = impl.TileGrid[0];
+    const int columns = impl.Held.TileGrid[0];
     for (int t : bake)
     {
       const int x = (t % columns) * resolution, y = (t / columns) * resolution;
@@ -634,13 +712,14 @@ void vtkCascadedShadowMapPass::BakeMaps(
       this->DrawCasters(program, frame, impl.Plan.tiles.tiles[t]);
       // Each rank drew its own casters: the nearest depth of all is the map.
       vtkshadow::AllReduceDepthRegion(
-        impl.Controller, impl.Atlas, x, y, resolution, resolution, impl.ReduceScratch);
+        impl.Controller, impl.Held.Atlas, x, y, resolution, resolution, impl.ReduceScratch);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
-  impl.FBO->RemoveDepthAttachment();
+  impl.Held.FBO->RemoveDepthAttachment();
   state->PopFramebufferBindings();
   this->TotalMapsRendered += this->NumberOfMapsRendered;
+  this->Impl->FrameMapsRendered += this->NumberOfMapsRendered;
 }
 
 //------------------------------------------------------------------------------
@@ -761,7 +840,7 @@ bool vtkCascadedShadowMapPass::SetShaderParameters(
     }
     return true;
   }
-  if (impl.Atlas && program->IsUniformUsed("vshShadowAtlas"))
+  if (impl.Held.Atlas && program->IsUniformUsed("vshShadowAtlas"))
   {
     this->SetLookupUniforms(program);
   }
@@ -776,9 +855,9 @@ void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
   Internals& impl = *this->Impl;
   vsh_csm_tile_plan& plan = impl.Plan.tiles;
   const int tiles = std::min<int>(plan.tile_count, MaxTiles);
-  program->SetUniformi("vshShadowAtlas", impl.Atlas->GetTextureUnit());
-  const float texel[2] = { 1.0f / std::max(impl.AtlasSize[0], 1),
-    1.0f / std::max(impl.AtlasSize[1], 1) };
+  program->SetUniformi("vshShadowAtlas", impl.Held.Atlas->GetTextureUnit());
+  const float texel[2] = { 1.0f / std::max(impl.Held.AtlasSize[0], 1),
+    1.0f / std::max(impl.Held.AtlasSize[1], 1) };
   program->SetUniform2f("vshAtlasTexel", texel);
   program->SetUniformi("vshShadowLightCount", std::min(plan.light_count, MaxLights));
   program->SetUniform1iv("vshShadowKind", MaxLights, plan.kind);
@@ -820,9 +899,9 @@ void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
     double m[16];
     vsh_mat4_multiply(tile.view.world_to_clip, viewToRelative, m);
     ToFloatTransposed(m, &matrices[16 * t]);
-    const int columns = impl.TileGrid[0];
-    const double w = static_cast<double>(this->UsedResolution) / impl.AtlasSize[0];
-    const double h = static_cast<double>(this->UsedResolution) / impl.AtlasSize[1];
+    const int columns = impl.Held.TileGrid[0];
+    const double w = static_cast<double>(this->UsedResolution) / impl.Held.AtlasSize[0];
+    const double h = static_cast<double>(this->UsedResolution) / impl.Held.AtlasSize[1];
     rects[4 * t + 0] = static_cast<float>((t % columns) * w);
     rects[4 * t + 1] = static_cast<float>((t / columns) * h);
     rects[4 * t + 2] = static_cast<float>(w);
@@ -901,7 +980,7 @@ void vtkCascadedShadowMapPass::BindRawAtlas(vtkOpenGLRenderWindow* window)
     return;
   }
   window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + impl.RawUnit);
-  glBindTexture(GL_TEXTURE_2D, impl.Atlas->GetHandle());
+  glBindTexture(GL_TEXTURE_2D, impl.Held.Atlas->GetHandle());
   glBindSampler(impl.RawUnit, impl.RawSampler);
 }
 
@@ -924,16 +1003,12 @@ void vtkCascadedShadowMapPass::UnbindRawAtlas(vtkOpenGLRenderWindow* window)
 void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& impl = *this->Impl;
-  if (impl.Atlas)
+  ReleaseHeld(impl.Held, w);
+  for (auto& parked : impl.Parked)
   {
-    impl.Atlas->ReleaseGraphicsResources(w);
+    ReleaseHeld(parked.second, w);
   }
-  if (impl.FBO)
-  {
-    impl.FBO->ReleaseGraphicsResources(w);
-  }
-  impl.AtlasSize[0] = impl.AtlasSize[1] = 0;
-  impl.Rendered.clear();
+  impl.Parked.clear();
   if (impl.RawSampler)
   {
     glDeleteSamplers(1, &impl.RawSampler);
@@ -1109,7 +1184,10 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
   out.precision(6);
   out << "\"resolution\": " << this->UsedResolution
       << ", \"maps_rendered_total\": " << this->TotalMapsRendered
-      << ", \"maps_reused_last_frame\": " << this->NumberOfMapsReused << ", \"resolve\": \""
+      << ", \"maps_reused_last_frame\": " << this->NumberOfMapsReused
+      << ", \"frame_maps_rendered\": " << this->Impl->FrameMapsRendered
+      << ", \"worlds_held\": " << 1 + this->Impl->Parked.size()
+      << ", \"other_worlds_bytes\": " << this->GetWorldsMemoryBytes() << ", \"resolve\": \""
       << (this->UsedScreenResolve ? "screen" : "forward")
       << "\", \"overdraw\": " << this->Impl->Overdraw << ", \"soft\": \""
       << (this->UsedPCSS ? "pcss" : "hard")

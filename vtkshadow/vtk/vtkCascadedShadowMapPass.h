@@ -269,7 +269,16 @@ public:
   /** Cascades whose earlier map still covered every lookup of the last frame. */
   vtkGetMacro(NumberOfMapsReused, int);
   vtkGetMacro(TotalMapsRendered, int);
+  /** Every world's atlas (and the screen mask when used). */
   long long GetMemoryBytes() const override;
+
+  /**
+   * One set of held maps (atlas, what its tiles hold, the casters' key) per
+   * world key: a mirror's reflection keeps its own maps, so a still frame
+   * bakes nothing in either world (docs/reflections.md).
+   */
+  void ReleaseWorlds(vtkWindow* w, int first) override;
+  long long GetWorldsMemoryBytes() const override;
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
@@ -324,6 +333,7 @@ private:
   // tiles per light kind, reuse) is plain C in vsh_csm_plan.h; these turn
   // VTK's state into its inputs and its plan into GL work.
   struct Frame;
+  void SelectWorld(int world);
   void GatherScene(const vtkRenderState* s, Frame& frame);
   void GatherLights(vtkRenderer* renderer, Frame& frame);
   void GatherSettings(vsh_csm_settings& out) const;

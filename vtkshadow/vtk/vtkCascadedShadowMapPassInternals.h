@@ -6,9 +6,11 @@
 #define vtkCascadedShadowMapPassInternals_h
 
 #include "vtkCascadedShadowMapPass.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
 #include "vtkTimeStamp.h"
 
 #include "vsh_csm.h"
@@ -21,8 +23,6 @@
 
 class vtkActor;
 class vtkMultiProcessController;
-class vtkOpenGLFramebufferObject;
-class vtkTextureObject;
 
 namespace vtkshadow
 {
@@ -37,6 +37,32 @@ inline void ToFloatTransposed(const double m[16], float out[16])
     }
   }
 }
+
+/**
+ * What the pass keeps from frame to frame for one world: the atlas, what
+ * each of its tiles holds, and the casters' content key. A mirror's
+ * reflection is another world (other casters' matrices, other lights): with
+ * one set, each world's bake overwrote the other's tiles every frame.
+ */
+struct CascadedHeldMaps
+{
+  vtkSmartPointer<vtkTextureObject> Atlas;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
+  int AtlasSize[2] = { 0, 0 };
+  int TileGrid[2] = { 1, 1 };
+  int RenderedResolution = 0; // texels per tile edge of the held maps
+  // What each atlas tile holds: the view it was rendered with (relative to
+  // the camera position then), so a later frame can reuse it.
+  std::vector<vsh_csm_held_map> Rendered;
+  // The casters' state by content (actors, matrix values, mesh times): a
+  // new stamp only when it differs from the last frame's, so a matrix set
+  // back to the same values (vtkPlanarReflectionPass restores every actor's
+  // after its mirrored draw, which moves the matrices' MTime) keeps the maps.
+  unsigned long long CasterKey = 0;
+  vtkTimeStamp CasterStamp;
+
+  long long Bytes() const { return 4LL * this->AtlasSize[0] * this->AtlasSize[1]; }
+};
 
 /**
  * GLSL statements that set `target(I)` ("%d" stands for I) to the shadow
@@ -67,17 +93,15 @@ struct vtkCascadedShadowMapPass::Internals
 {
   double SplitFractions[VSH_CSM_MAX_CASCADES] = { 0 };
   std::map<vtkActor*, std::unique_ptr<vtkShadowCasterGeometry>> Casters;
-  vtkTextureObject* Atlas = nullptr;
-  vtkOpenGLFramebufferObject* FBO = nullptr;
-  int AtlasSize[2] = { 0, 0 };
-  int TileGrid[2] = { 1, 1 };
-  int RenderedResolution = 0; // texels per tile edge of the held maps
+  // The held maps of the world being drawn (vtkShadowPassBase::SetWorldKey)
+  // and, parked by key, those of the other worlds (a mirror's reflection).
+  vtkshadow::CascadedHeldMaps Held;
+  int HeldWorld = 0;
+  std::map<int, vtkshadow::CascadedHeldMaps> Parked;
+  int FrameMapsRendered = 0; // in every world since world 0 was last drawn
   // This frame's maps and, per light in the mappers' numbering, their kind
   // and range of tiles (the shader's uniforms).
   vsh_csm_plan Plan{};
-  // What each atlas tile holds: the view it was rendered with (relative to
-  // the camera position then), so a later frame can reuse it.
-  std::vector<vsh_csm_held_map> Rendered;
   float LightVC[VSH_CSM_MAX_LIGHTS][3] = { { 0 } };
   // Per light (direction to the light, 0) or (position, 1), view coordinates.
   float ToLightVC[VSH_CSM_MAX_LIGHTS][4] = { { 0 } };
@@ -115,12 +139,6 @@ struct vtkCascadedShadowMapPass::Internals
   // reduced over them.
   vtkSmartPointer<vtkMultiProcessController> Controller;
   std::vector<float> ReduceScratch;
-  // The casters' state by content (actors, matrix values, mesh times): a
-  // new stamp only when it differs from the last frame's, so a matrix set
-  // back to the same values (vtkPlanarReflectionPass restores every actor's
-  // after its mirrored draw, which moves the matrices' MTime) keeps the maps.
-  unsigned long long CasterKey = 0;
-  vtkTimeStamp CasterStamp;
 };
 
 #endif

@@ -48,6 +48,7 @@ struct vtkPlanarReflectionPass::Mirror
   vtkActor* Actor = nullptr;
   double R = 0;
   double Plane[4] = { 0, 0, 1, 0 };
+  int World = 0; // the delegate's world key for this mirror's reflection
 };
 
 struct vtkPlanarReflectionPass::Internals
@@ -255,8 +256,24 @@ void vtkPlanarReflectionPass::FindMirrors(const vtkRenderState* s)
     const double origin[3] = { 0, 0, 0 };
     if (vsh_reflect_eye_sees(mirror.Plane, origin, size, 1e-9))
     {
+      mirror.World = static_cast<int>(impl.Mirrors.size()) + 1;
       impl.Mirrors.push_back(mirror);
     }
+  }
+}
+
+//------------------------------------------------------------------------------
+// The technique keeps state per world (vtkShadowPassBase::SetWorldKey): the
+// worlds of mirrors no longer seen, or no longer drawn by the technique, are
+// freed at once.
+void vtkPlanarReflectionPass::ReleaseUnusedWorlds(const vtkRenderState* s)
+{
+  auto* technique = vtkShadowPassBase::SafeDownCast(this->DelegatePass);
+  if (technique)
+  {
+    const bool mirrored = this->Reflections && this->ReflectShadows;
+    const int used = mirrored ? static_cast<int>(this->Impl->Mirrors.size()) : 0;
+    technique->ReleaseWorlds(s->GetRenderer()->GetRenderWindow(), used + 1);
   }
 }
 
@@ -267,11 +284,17 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   impl.Drawn = 0;
   impl.ClipActive = false;
+  auto* technique = vtkShadowPassBase::SafeDownCast(this->EnsureDelegatePass());
+  if (technique)
+  {
+    technique->SetWorldKey(0);
+  }
   if (!this->Reflections)
   {
     impl.Mirrors.clear();
     impl.Found = 0;
     this->RenderDelegate(s);
+    this->ReleaseUnusedWorlds(s);
     return;
   }
   this->FindMirrors(s);
@@ -279,6 +302,7 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
   // one shader for the scene and its reflection (it is off outside the
   // mirrored draw).
   this->RenderDelegateWithShaderHooks(s);
+  this->ReleaseUnusedWorlds(s);
   if (impl.Mirrors.empty())
   {
     return;
@@ -457,9 +481,18 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
   // A reflection flips the winding of every triangle: the outside of the
   // mirrored geometry is clockwise on screen (and for the lights' maps).
   glFrontFace(GL_CW);
+  auto* technique = vtkShadowPassBase::SafeDownCast(delegate);
+  if (technique)
+  {
+    technique->SetWorldKey(mirror.World); // its own maps, still-frame state
+  }
   this->PreRender(&mirrored);
   delegate->Render(&mirrored);
   this->PostRender(&mirrored);
+  if (technique)
+  {
+    technique->SetWorldKey(0);
+  }
   glFrontFace(GL_CCW);
 
   impl.ClipActive = false;
@@ -590,6 +623,7 @@ std::string vtkPlanarReflectionPass::GetStatsJSON(vtkRenderer* renderer) const
      << ", \"reflect_shadows\": " << (this->ReflectShadows ? "true" : "false")
      << ", \"mirrors\": " << this->Impl->Found << ", \"seen\": " << this->Impl->Mirrors.size()
      << ", \"drawn\": " << this->Impl->Drawn
+     << ", \"mirror_worlds_bytes\": " << (base ? base->GetWorldsMemoryBytes() : 0)
      << ", \"stencil\": " << (this->Impl->Stencil ? "true" : "false") << "}";
   return inner.empty() ? os.str() : inner + ", " + os.str();
 }

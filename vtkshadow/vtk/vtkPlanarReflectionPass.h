@@ -79,7 +79,12 @@ public:
    */
   long long GetMemoryBytes() const override;
   /**
-   * The delegate's details and "reflections": mirrors found, drawn, why not.
+   * The delegate's details and "reflections": mirrors found, drawn, why not,
+   * and mirror_worlds_bytes, the GPU memory the technique holds for the
+   * mirrored worlds (its second set of maps or masks: each mirror's
+   * reflection is drawn with world key 1 + its index among the mirrors seen,
+   * vtkShadowPassBase::SetWorldKey; freed when the mirror is no longer seen
+   * or its reflection is drawn without the technique).
    */
   std::string GetStatsJSON(vtkRenderer* renderer) const override;
   /**
@@ -110,6 +115,7 @@ private:
   void FindMirrors(const vtkRenderState* s);
   bool RenderMirrored(const vtkRenderState* s, const Mirror& mirror);
   void Composite(const vtkRenderState* s, const Mirror& mirror);
+  void ReleaseUnusedWorlds(const vtkRenderState* s);
 };
 
 #endif

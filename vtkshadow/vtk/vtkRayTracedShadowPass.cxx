@@ -21,6 +21,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <thread>
 
@@ -28,20 +30,43 @@ vtkStandardNewMacro(vtkRayTracedShadowPass);
 
 struct vtkRayTracedShadowPass::Internals
 {
-  vtkShadowScreenMask Mask;
+  // What a still frame reuses, per world (vtkShadowPassBase::SetWorldKey):
+  // the mask with the last traced visibility and what that frame depended
+  // on (an equal key means a still frame). A mirror's reflection is another
+  // world: with one mask, the two views alternated and every frame traced.
+  struct World
+  {
+    vtkShadowScreenMask Mask;
+    std::vector<double> LastKey;
+    bool HaveMask = false;
+  };
+  std::map<int, std::unique_ptr<World>> Worlds;
+  World* W = nullptr;        // the world being drawn
+  int FrameWorldsTraced = 0; // worlds traced since world 0 was last drawn
   vtkShadowEmbreeScene Scene;
   vsh_rt_cost_model Cost;
   std::vector<float> Depth;
   std::vector<std::vector<float>> Visibility;
-  // What the last traced frame depended on: an equal key means a still frame.
-  std::vector<double> LastKey;
-  bool HaveMask = false;
   bool Still = false;
   vtkShadowRayTracer::Counters Counters;
   int LightsTraced = 0;
   double FrameSeconds = 0;
 
-  Internals() { vsh_rt_cost_model_default(&this->Cost); }
+  Internals()
+  {
+    vsh_rt_cost_model_default(&this->Cost);
+    this->Select(0);
+  }
+
+  void Select(int key)
+  {
+    std::unique_ptr<World>& world = this->Worlds[key];
+    if (!world)
+    {
+      world.reset(new World);
+    }
+    this->W = world.get();
+  }
 };
 
 // The frame in plain data: what GatherFrame collects and the stages read.
@@ -87,9 +112,12 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
   }
   Internals& impl = *this->Impl;
   const auto start = std::chrono::steady_clock::now();
+  impl.Select(this->WorldKey);
+  // World 0 starts each frame (a mirror's world is drawn after it).
+  impl.FrameWorldsTraced = this->WorldKey == 0 ? 0 : impl.FrameWorldsTraced;
   FrameState frame;
   this->GatherFrame(s, frame);
-  impl.Still = impl.HaveMask && frame.Key == impl.LastKey;
+  impl.Still = impl.W->HaveMask && frame.Key == impl.W->LastKey;
   this->NumberOfRaysTraced = 0;
   if (impl.Still)
   {
@@ -101,24 +129,25 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
   }
   else
   {
-    impl.HaveMask = this->Trace(s, frame);
-    impl.LastKey = impl.HaveMask ? frame.Key : std::vector<double>();
-    if (impl.HaveMask)
+    impl.W->HaveMask = this->Trace(s, frame);
+    impl.W->LastKey = impl.W->HaveMask ? frame.Key : std::vector<double>();
+    if (impl.W->HaveMask)
     {
       this->Upload(frame);
       ++this->NumberOfTracedFrames;
+      ++impl.FrameWorldsTraced;
     }
   }
   impl.FrameSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!impl.HaveMask)
+  if (!impl.W->HaveMask)
   {
     this->RenderDelegate(s); // no shadows rather than garbage
     return;
   }
-  impl.Mask.Activate();
+  impl.W->Mask.Activate();
   this->RenderDelegateWithShaderHooks(s);
-  impl.Mask.Deactivate();
+  impl.W->Mask.Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -202,9 +231,9 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
   Internals& impl = *this->Impl;
   impl.Counters = vtkShadowRayTracer::Counters();
   impl.LightsTraced = 0;
-  if (!impl.Mask.RenderDepth(s, frame.LightCount))
+  if (!impl.W->Mask.RenderDepth(s, frame.LightCount))
   {
-    vtkErrorMacro("ray-traced shadows: " << impl.Mask.GetError());
+    vtkErrorMacro("ray-traced shadows: " << impl.W->Mask.GetError());
     return false;
   }
   if (!impl.Scene.Update(frame.Actors, frame.Eye, frame.Near))
@@ -216,10 +245,10 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
   {
     return true; // every channel reads lit
   }
-  impl.Mask.ReadDepth(impl.Depth);
+  impl.W->Mask.ReadDepth(impl.Depth);
   vtkShadowRayTracer::Frame rays;
   rays.Depth = impl.Depth.data();
-  const int* size = impl.Mask.GetSize();
+  const int* size = impl.W->Mask.GetSize();
   if (vsh_rt_view_init(frame.Projection, frame.View, size[0], size[1], &rays.View) != VSH_RT_OK)
   {
     return true; // a degenerate camera shows nothing to shadow
@@ -246,9 +275,9 @@ void vtkRayTracedShadowPass::Upload(const FrameState& frame)
   Internals& impl = *this->Impl;
   for (int l = 0; l < impl.LightsTraced; ++l)
   {
-    impl.Mask.UploadLight(frame.Channels[l], impl.Visibility[l].data());
+    impl.W->Mask.UploadLight(frame.Channels[l], impl.Visibility[l].data());
   }
-  impl.Mask.FinishUploads();
+  impl.W->Mask.FinishUploads();
 }
 
 //------------------------------------------------------------------------------
@@ -287,7 +316,46 @@ double vtkRayTracedShadowPass::EstimateFrameMilliseconds(
 //------------------------------------------------------------------------------
 long long vtkRayTracedShadowPass::GetMemoryBytes() const
 {
-  return this->Impl->Mask.GetMemoryBytes();
+  long long bytes = 0;
+  for (const auto& world : this->Impl->Worlds)
+  {
+    bytes += world.second->Mask.GetMemoryBytes();
+  }
+  return bytes;
+}
+
+//------------------------------------------------------------------------------
+long long vtkRayTracedShadowPass::GetWorldsMemoryBytes() const
+{
+  long long bytes = 0;
+  for (const auto& world : this->Impl->Worlds)
+  {
+    bytes += world.first != 0 ? world.second->Mask.GetMemoryBytes() : 0;
+  }
+  return bytes;
+}
+
+//------------------------------------------------------------------------------
+void vtkRayTracedShadowPass::ReleaseWorlds(vtkWindow* w, int first)
+{
+  Internals& impl = *this->Impl;
+  first = std::max(first, 1);
+  for (auto it = impl.Worlds.begin(); it != impl.Worlds.end();)
+  {
+    if (it->first >= first)
+    {
+      it->second->Mask.ReleaseGraphicsResources(w);
+      it = impl.Worlds.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+  if (impl.Worlds.find(this->WorldKey) == impl.Worlds.end())
+  {
+    impl.Select(0);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -342,7 +410,7 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
   const double rays = double(c.PrimaryRays + c.ShadowRays);
   std::ostringstream out;
   out << "\"still_frame\": " << (impl.Still ? "true" : "false")
-      << ", \"traced\": " << (impl.Still || !impl.HaveMask ? "false" : "true")
+      << ", \"traced\": " << (impl.Still || !impl.W->HaveMask ? "false" : "true")
       << ", \"rays_traced\": " << static_cast<long long>(rays)
       << ", \"primary_rays\": " << c.PrimaryRays << ", \"shadow_rays\": " << c.ShadowRays
       << ", \"lights_traced\": " << impl.LightsTraced << ", \"samples\": " << this->Samples
@@ -356,6 +424,9 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"rays_per_second_per_thread_model\": " << impl.Cost.rays_per_second_per_thread
       << ", \"threads\": " << c.Threads << ", \"shadow_stage_ms\": " << 1e3 * impl.FrameSeconds
       << ", \"traced_frames\": " << this->NumberOfTracedFrames
+      << ", \"worlds_held\": " << impl.Worlds.size()
+      << ", \"frame_worlds_traced\": " << impl.FrameWorldsTraced
+      << ", \"other_worlds_bytes\": " << this->GetWorldsMemoryBytes()
       << ", \"meshes\": " << impl.Scene.GetNumberOfMeshes()
       << ", \"triangles\": " << impl.Scene.GetNumberOfTriangles()
       << ", \"mesh_builds\": " << impl.Scene.GetMeshBuilds()
@@ -368,10 +439,13 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
 //------------------------------------------------------------------------------
 void vtkRayTracedShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 {
-  this->Impl->Mask.ReleaseGraphicsResources(w);
-  // The mask's textures are gone: the next frame traces again.
-  this->Impl->HaveMask = false;
-  this->Impl->LastKey.clear();
+  // The masks' textures are gone: the next frame traces again.
+  for (auto& world : this->Impl->Worlds)
+  {
+    world.second->Mask.ReleaseGraphicsResources(w);
+    world.second->HaveMask = false;
+    world.second->LastKey.clear();
+  }
   this->Superclass::ReleaseGraphicsResources(w);
 }
 
@@ -379,21 +453,21 @@ void vtkRayTracedShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 bool vtkRayTracedShadowPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
-  return this->Impl->Mask.PreReplaceShaderValues(fragmentShader, prop);
+  return this->Impl->W->Mask.PreReplaceShaderValues(fragmentShader, prop);
 }
 
 //------------------------------------------------------------------------------
 bool vtkRayTracedShadowPass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
+  return this->Impl->W->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
 }
 
 //------------------------------------------------------------------------------
 bool vtkRayTracedShadowPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
-  this->Impl->Mask.SetShaderParameters(program);
+  this->Impl->W->Mask.SetShaderParameters(program);
   return true;
 }
 

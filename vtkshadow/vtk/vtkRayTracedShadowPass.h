@@ -87,6 +87,12 @@ public:
   double EstimateFrameMilliseconds(double pixels, double coverage, int lights) const;
 
   long long GetMemoryBytes() const override;
+  /**
+   * One still-frame state (mask, last key) per world key: a mirror's
+   * reflection keeps its own, so a still frame traces in neither world.
+   */
+  void ReleaseWorlds(vtkWindow* w, int first) override;
+  long long GetWorldsMemoryBytes() const override;
   bool SetOption(const char* key, double value) override;
   std::string GetStatsJSON(vtkRenderer* renderer) const override;
 

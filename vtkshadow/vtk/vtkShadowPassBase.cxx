@@ -71,6 +71,7 @@ vtkShadowPassBase::vtkShadowPassBase()
   , ResidualLight(0.0)
   , SkippedLights(0)
   , ShaderTime(0)
+  , WorldKey(0)
 {
   this->BumpShaderTime();
 }
@@ -216,6 +217,7 @@ void vtkShadowPassBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
   os << indent << "SkippedLights: " << this->SkippedLights << "\n";
   os << indent << "ResidualLight: " << this->ResidualLight << "\n";
+  os << indent << "WorldKey: " << this->WorldKey << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)
   {
@@ -227,3 +229,14 @@ void vtkShadowPassBase::PrintSelf(ostream& os, vtkIndent indent)
     os << "(none)\n";
   }
 }
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::SetWorldKey(int key)
+{
+  // Not Modified(): switching worlds twice a frame must not look like a
+  // change of settings to anything that watches the pass's MTime.
+  this->WorldKey = key > 0 ? key : 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::ReleaseWorlds(vtkWindow*, int) {}

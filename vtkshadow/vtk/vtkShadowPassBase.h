@@ -128,6 +128,27 @@ public:
    */
   virtual long long GetMemoryBytes() const { return 0; }
 
+  ///@{
+  /**
+   * The world the next Render() draws: 0 (default) is the scene itself,
+   * K > 0 another view of it that comes back every frame, such as the scene
+   * mirrored through mirror K (vtkPlanarReflectionPass sets it around its
+   * mirrored draws and sets 0 back). Passes that keep state from frame to
+   * frame (csm's held maps, raytrace's still-frame mask) keep one set per
+   * world, so two worlds drawn in turn do not overwrite each other's and a
+   * still frame re-does nothing in either. Negative keys are taken as 0.
+   */
+  virtual void SetWorldKey(int key);
+  int GetWorldKey() const { return this->WorldKey; }
+  /**
+   * Free the state kept for every world key >= `first` (never world 0): the
+   * mirrors went away. GetWorldsMemoryBytes is the part of GetMemoryBytes()
+   * held for worlds other than 0.
+   */
+  virtual void ReleaseWorlds(vtkWindow* w, int first);
+  virtual long long GetWorldsMemoryBytes() const { return 0; }
+  ///@}
+
   /**
    * Details of the last frame rendered on `renderer` as the members of a
    * JSON object, without braces ("" when there is nothing to say).
@@ -193,6 +214,7 @@ protected:
   double ResidualLight;
   unsigned int SkippedLights;
   vtkMTimeType ShaderTime;
+  int WorldKey;
 
 private:
   vtkShadowPassBase(const vtkShadowPassBase&) = delete;
