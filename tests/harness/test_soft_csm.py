@@ -23,63 +23,26 @@ shadow of the light's centre):
 Prints every figure; exits 1 when any bound fails.
 """
 import argparse
-import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from test_soft import SCENE  # noqa: E402  (the same scene as the references' test)
+import soft_penumbra_common as common  # noqa: E402
+from soft_penumbra_common import (SCENE, SIZE, failures, run,  # noqa: E402,F401
+                                  same_bytes, scene_with)
 
-SIZE = "160x120"
 # Per light: point r 0.5 above, point r 0.35 to the side, sun 6 degrees.
 BOUNDS = [0.055, 0.07, 0.04]
 HARD_RATIO = 0.5
 WIDTH_TOL = 0.5
 
-failures = []
-
-
-def run(cmd):
-    print("+", " ".join(cmd), flush=True)
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    if r.returncode != 0:
-        print(r.stdout[-2000:], r.stderr[-4000:])
-        failures.append("command failed: " + " ".join(cmd[:4]))
-    return r
-
-
-def scene_with(out, name, size):
-    scene = json.loads(json.dumps(SCENE))
-    if size is not None:
-        for light in scene["lights"]:
-            light["radius" if "radius" in light else "angle"] = size
-    path = os.path.join(out, name + ".json")
-    with open(path, "w") as f:
-        json.dump(scene, f)
-    return path
-
 
 def render(args, scene, soft, k, stem):
-    vis, mask, image = stem + "_vis.png", stem + "_mask.png", stem + ".png"
-    run([os.path.join(args.bin, "vtkshadow-render"), scene, "--technique", "csm", "--set",
-         "soft=%d" % soft, "--light", str(k), "--size", SIZE, "--visibility", vis, "--mask",
-         mask, "--image", image, "--quiet"])
-    return vis, mask, image
+    return common.render(args.bin, scene, "csm", "soft=%d" % soft, k, stem)
 
 
 def exact(args, scene, k, vis, mask):
-    r = run([os.path.join(args.bin, "exact_penumbra"), scene, str(k), vis, mask])
-    try:
-        return json.loads(r.stdout)
-    except ValueError:
-        failures.append("exact_penumbra gave no JSON")
-        return None
-
-
-def same_bytes(a, b):
-    with open(a, "rb") as fa, open(b, "rb") as fb:
-        return fa.read() == fb.read()
+    return common.exact(args.bin, scene, k, vis, mask)
 
 
 def check_soft(args, scene):

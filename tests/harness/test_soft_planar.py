@@ -21,58 +21,26 @@ light, integrated per pixel, vsh_soft):
 Prints every figure; exits 1 when any bound fails.
 """
 import argparse
-import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from test_soft import SCENE  # noqa: E402  (the same scene as the references' test)
+import soft_penumbra_common as common  # noqa: E402
+from soft_penumbra_common import (SCENE, SIZE, failures, run,  # noqa: E402,F401
+                                  same_bytes, scene_with)
 
-SIZE = "160x120"
 BOUNDS = {64: 0.02, 16: 0.03}
 BIAS_MAX = 0.006
 WIDTH_TOL = 0.1
 HARD_MAE_MAX = 0.002
 
-failures = []
-
-
-def run(cmd):
-    print("+", " ".join(cmd), flush=True)
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    if r.returncode != 0:
-        print(r.stdout[-2000:], r.stderr[-4000:])
-        failures.append("command failed: " + " ".join(cmd[:4]))
-    return r
-
-
-def scene_with(out, name, size):
-    scene = json.loads(json.dumps(SCENE))
-    if size is not None:
-        for light in scene["lights"]:
-            light["radius" if "radius" in light else "angle"] = size
-    path = os.path.join(out, name + ".json")
-    with open(path, "w") as f:
-        json.dump(scene, f)
-    return path
-
 
 def render(args, scene, n, k, stem):
-    vis, mask, image = stem + "_vis.png", stem + "_mask.png", stem + ".png"
-    run([os.path.join(args.bin, "vtkshadow-render"), scene, "--technique", "planar", "--set",
-         "soft_samples=%d" % n, "--light", str(k), "--size", SIZE, "--visibility", vis, "--mask",
-         mask, "--image", image, "--quiet"])
-    return vis, mask, image
+    return common.render(args.bin, scene, "planar", "soft_samples=%d" % n, k, stem)
 
 
 def exact(args, scene, k, vis, mask):
-    r = run([os.path.join(args.bin, "exact_penumbra"), scene, str(k), vis, mask])
-    try:
-        return json.loads(r.stdout)
-    except ValueError:
-        failures.append("exact_penumbra gave no JSON")
-        return None
+    return common.exact(args.bin, scene, k, vis, mask)
 
 
 def check_soft(args, scene):

@@ -1,0 +1,62 @@
+"""What the exact-penumbra tests of the soft techniques share
+(test_soft_planar.py, test_soft_csm.py): the scene of test_soft.py with the
+lights' sizes set, one vtkshadow-render run of a technique with a setting,
+exact_penumbra's figures for its visibility, and the failure list each
+script reports from.
+"""
+import json
+import os
+import subprocess
+
+from test_soft import SCENE
+
+SIZE = "160x120"
+failures = []
+
+
+def run(cmd):
+    """Runs cmd; a non-zero status is a failure (output printed)."""
+    print("+", " ".join(cmd), flush=True)
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        print(r.stdout[-2000:], r.stderr[-4000:])
+        failures.append("command failed: " + " ".join(cmd[:4]))
+    return r
+
+
+def scene_with(out, name, size):
+    """test_soft.py's scene with every light's radius / angle set to size
+    (None: as it is), written to OUT/NAME.json."""
+    scene = json.loads(json.dumps(SCENE))
+    if size is not None:
+        for light in scene["lights"]:
+            light["radius" if "radius" in light else "angle"] = size
+    path = os.path.join(out, name + ".json")
+    with open(path, "w") as f:
+        json.dump(scene, f)
+    return path
+
+
+def render(bindir, scene, technique, setting, k, stem):
+    """vtkshadow-render of light k with --set SETTING: (visibility, mask,
+    image) paths STEM_vis.png, STEM_mask.png, STEM.png."""
+    vis, mask, image = stem + "_vis.png", stem + "_mask.png", stem + ".png"
+    run([os.path.join(bindir, "vtkshadow-render"), scene, "--technique", technique, "--set",
+         setting, "--light", str(k), "--size", SIZE, "--visibility", vis, "--mask", mask,
+         "--image", image, "--quiet"])
+    return vis, mask, image
+
+
+def exact(bindir, scene, k, vis, mask):
+    """exact_penumbra's JSON figures of a visibility image, or None."""
+    r = run([os.path.join(bindir, "exact_penumbra"), scene, str(k), vis, mask])
+    try:
+        return json.loads(r.stdout)
+    except ValueError:
+        failures.append("exact_penumbra gave no JSON")
+        return None
+
+
+def same_bytes(a, b):
+    with open(a, "rb") as fa, open(b, "rb") as fb:
+        return fa.read() == fb.read()
