@@ -18,7 +18,9 @@ Rules (docs/harness.md, "--check, thresholds and known failures"):
   for each metric of LIMITED, the limit ceil100(MEASURED * GEN_FACTOR +
   GEN_POINTS): measured at --scale 0.4 (320x240), 1.25 x + 0.25 points, so a
   regression fails --check while renderer noise does not. Rows of "cycles"
-  (POV-Ray against Cycles) are bounded by the file's default (0.1% wrong).
+  (POV-Ray against Cycles) are bounded by the file's default (0.1% wrong),
+  except where the reference has a penumbra (pen_pixels > 0: a light with a
+  size, sampled by both renderers), which get the same generated limit.
 - A limit of REFUSED_PCT (50%) or more bounds nothing: the script refuses to
   write it (exit 2) and names the row. Such a row goes into
   known-failures.json (beside the thresholds file) with its reason; listed
@@ -137,7 +139,17 @@ def generate(base, rows, known):
         old = out["scenes"].get(scene, {})
         if "no_valid_pixels" in old:
             entry["no_valid_pixels"] = old["no_valid_pixels"]
-        if r["test"] == "cycles" or (scene, r["test"], r["light"]) in known:
+        if r["test"] == "cycles":
+            # POV-Ray against Cycles: the file's default bounds it, except
+            # where the reference has a penumbra (a light with a size): both
+            # renderers sample the light there, so their agreement gets a
+            # limit from its measurement like every other row.
+            if r["status"] == "ok" and (r.get("pen_pixels") or 0) > 0:
+                limit = generated(r["wrong_pct"])
+                entry.setdefault("cycles", {}).setdefault("wrong_pct", [None] * lights)[
+                    r["light"]] = limit
+            continue
+        if (scene, r["test"], r["light"]) in known:
             continue
         if r["status"] == "error":
             refused.append("%s: the row failed (%s); no limit from a failed run"
