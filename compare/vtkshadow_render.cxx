@@ -147,6 +147,10 @@ vtkSmartPointer<vtkShadowPassBase> MakePass(
 void SetUpTiming(const Run& run, vtkOpenGLRenderer* renderer, TimingRun& timing, int& main)
 {
   const RenderOptions& options = run.Options;
+  auto* installed = vtkShadowPassBase::SafeDownCast(renderer->GetPass());
+  // With mirrors the installed pass is the mirrors' pass around the
+  // technique's (RenderColourAndStats).
+  auto* mirrors = vtkPlanarReflectionPass::SafeDownCast(installed);
   timing.Rounds = options.Rounds;
   timing.Frames = options.Frames;
   timing.Warmup = options.Warmup;
@@ -159,9 +163,18 @@ void SetUpTiming(const Run& run, vtkOpenGLRenderer* renderer, TimingRun& timing,
     entry.Technique = technique;
     entry.Settings = settings;
     entry.Pass = pass ? vtkSmartPointer<vtkShadowPassBase>(pass) : MakePass(technique, settings);
+    if (!pass && mirrors && entry.Pass)
+    {
+      // Every entry draws the mirrors as the installed pass does, each
+      // through its own reflection pass (its worlds' caches are its own).
+      vtkNew<vtkPlanarReflectionPass> reflections;
+      reflections->SetDelegatePass(entry.Pass);
+      reflections->SetReflectShadows(mirrors->GetReflectShadows());
+      reflections->SetReflections(mirrors->GetReflections());
+      entry.Pass = reflections.GetPointer();
+    }
     timing.Entries.push_back(entry);
   };
-  auto* installed = vtkShadowPassBase::SafeDownCast(renderer->GetPass());
   const bool mainIsNone = MainTimingLabel(options) == "none";
   if (!mainIsNone)
   {

@@ -33,11 +33,11 @@ def finite_positive(v):
     return isinstance(v, (int, float)) and math.isfinite(v) and v > 0
 
 
-def run(name, extra):
+def run(name, extra, scene_path=scene):
     stats = os.path.join(args.out, name + ".json")
     if os.path.exists(stats):
         os.remove(stats)
-    cmd = [render, scene, "--image", os.path.join(args.out, name + ".png"), "--stats", stats,
+    cmd = [render, scene_path, "--image", os.path.join(args.out, name + ".png"), "--stats", stats,
            "--size", "160x120", "--frames", "3", "--rounds", "4", "--warmup", "1"] + extra
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     doc = None
@@ -131,6 +131,18 @@ if doc:
     check(doc["shadowed_ms"] == doc["unshadowed_ms"], "none: shadowed is none")
 else:
     check(False, "none: no stats written")
+
+# 2b. A scene with a mirror: every entry draws the mirrors as the main one
+# does (each through its own reflection pass), so none#2 and a --time-also
+# technique are timed with their reflections, not without.
+p, doc = run("mirror", ["--technique", "none", "--time-also", "csm", "--quiet"],
+             os.path.join(args.source, "scenes/mirror/sphere-mirror-floor.json"))
+check(p.returncode == 0, f"mirror: status {p.returncode}: {p.stderr[-2000:]}")
+for e in (doc or {}).get("timing", {}).get("entries", []):
+    refl = (e.get("technique_stats") or {}).get("reflections") or {}
+    check(refl.get("mirrors", 0) >= 1 and refl.get("drawn", 0) >= 1,
+          f"mirror: entry {e.get('label')} drew no mirror: {refl}")
+check(doc and len(doc["timing"]["entries"]) == 3, "mirror: none, none#2 and csm timed")
 
 # 3. The bench, timing only: one row per configuration plus none#2. The
 # bench is a Python script that imports the vtkshadow module; under the

@@ -149,6 +149,17 @@ for mark, detect, label in ((0, True, "opted out"), (None, False, "detection off
     choice, lights, reason = auto_choice(mark, detect)
     check(choice == "csm" and lights == ["csm"] and reason.endswith("detected []"),
           f"auto without a receiver ({label}): {choice} {lights} ({reason})")
+# raytrace's cost estimate (what auto weighs it by): a hard light traces
+# one ray per pixel, a light with a size Samples; with Samples 1 they agree.
+if hasattr(vtkshadow, "vtkRayTracedShadowPass"):
+    rt = vtkshadow.vtkRayTracedShadowPass()
+    hard = rt.EstimateFrameMilliseconds(480000, 1.0, 1, False)
+    sized = rt.EstimateFrameMilliseconds(480000, 1.0, 1, True)
+    check(0 < hard and sized > 10 * hard,
+          f"raytrace estimate: hard {hard} ms, sized ({rt.GetSamples()} rays) {sized} ms")
+    rt.SetSamples(1)
+    check(rt.EstimateFrameMilliseconds(480000, 1.0, 1, True) == hard,
+          "raytrace estimate: 1 sample equals the hard light's")
 print(str(technique)[:40].replace("\n", " "), "...")
 print("python.api:", "FAILED" if failures else "ok", f"({len(failures)} failures)")
 sys.exit(1 if failures else 0)

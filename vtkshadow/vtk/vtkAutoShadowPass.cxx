@@ -530,7 +530,7 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
       vsh_volume_predicted_error(w.Unsupported, impl.SoftLights[l] ? 1 : 0),
       vsh_volume_cost_ms(&w.Volume) };
     w.Candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, 0.0,
-      this->RayTracedPass->EstimateFrameMilliseconds(pixels, 1.0, 1) };
+      this->RayTracedPass->EstimateFrameMilliseconds(pixels, 1.0, 1, impl.SoftLights[l]) };
     int met = 0;
     w.Pick = vsh_auto_pick_cheapest(w.Candidates, VSH_AUTO_GENERAL_COUNT, this->MaxError, &met);
     anyVolume = anyVolume || w.Pick == VSH_AUTO_GENERAL_VOLUME;

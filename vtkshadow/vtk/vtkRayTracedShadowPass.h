@@ -81,10 +81,11 @@ public:
   /**
    * The estimated milliseconds of shadow work for a moving frame of
    * `pixels` viewport pixels, `coverage` of them (0..1) showing lit
-   * surfaces, `lights` lights at the current Samples and threads, from the
-   * rays per second this pass measured so far (vsh_rt_cost_ms).
+   * surfaces, `lights` lights at the current threads, from the rays per
+   * second this pass measured so far (vsh_rt_cost_ms). Lights with a size
+   * (`sized`) trace Samples rays per pixel, hard lights one.
    */
-  double EstimateFrameMilliseconds(double pixels, double coverage, int lights) const;
+  double EstimateFrameMilliseconds(double pixels, double coverage, int lights, bool sized) const;
 
   long long GetMemoryBytes() const override;
   /**
