@@ -40,7 +40,7 @@ import sys
 import vtkshadow
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtkshadow_bench import log, run_timing  # noqa: E402
+from vtkshadow_bench import check_ranges, log, run_timing, timing_checks  # noqa: E402
 
 # Every registered technique, in registry order ("none" first: the ratios
 # are against it).
@@ -213,14 +213,7 @@ def options():
     ap.add_argument("--base-size", default="640x480", help="window of the first table")
     ap.add_argument("--base-triangles", default="100000", help="triangles of the second table")
     a = ap.parse_args()
-    for name, value, ok, want in (
-            ("--frames", a.frames, 1 <= a.frames <= 100000, "an integer in [1, 100000]"),
-            ("--rounds", a.rounds, 1 <= a.rounds <= 1000, "an integer in [1, 1000]"),
-            ("--warmup", a.warmup, 0 <= a.warmup <= 10000, "an integer in [0, 10000]"),
-            ("--noise-tolerance", a.noise_tolerance, 0 < a.noise_tolerance < 1,
-             "a number in (0, 1)")):
-        if not ok:
-            ap.error(f"{name}: expected {want} (got {value!r})")
+    check_ranges(ap, timing_checks(a))
     a.triangles = parse_list(ap, "--triangles", a.triangles, triangle_count)
     a.sizes = parse_list(ap, "--sizes", a.sizes, size_of)
     a.lights = parse_list(ap, "--lights", a.lights, light_count)

@@ -55,7 +55,7 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bench_goals import verdict  # noqa: E402
-from vtkshadow_bench import run_timing  # noqa: E402
+from vtkshadow_bench import check_ranges, run_timing, timing_checks  # noqa: E402
 
 SECTION = "## Planar shadows: overhead against none"
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -354,14 +354,7 @@ def options():
     ap.add_argument("--output", default=os.path.join(REPO, "docs", "performance.md"))
     ap.add_argument("--no-write", action="store_true")
     a = ap.parse_args()
-    for name, value, ok, want in (
-            ("--frames", a.frames, 1 <= a.frames <= 100000, "an integer in [1, 100000]"),
-            ("--rounds", a.rounds, 1 <= a.rounds <= 1000, "an integer in [1, 1000]"),
-            ("--warmup", a.warmup, 0 <= a.warmup <= 10000, "an integer in [0, 10000]"),
-            ("--noise-tolerance", a.noise_tolerance, 0 < a.noise_tolerance < 1,
-             "a number in (0, 1)")):
-        if not ok:
-            ap.error(f"{name}: expected {want} (got {value!r})")
+    check_ranges(ap, timing_checks(a))
     if a.scenes_only and not a.out:
         ap.error("--scenes-only: needs --out DIR")
     known = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()

@@ -194,16 +194,10 @@ def options():
     ap.add_argument("--renderers", default="povray,cycles,eevee,eevee-best",
                     help="harness renderers; povray (the reference) is required")
     a = ap.parse_args()
-    for name, ok, want in (("--frames", 1 <= a.frames <= 100000, "an integer in [1, 100000]"),
-                           ("--rounds", 1 <= a.rounds <= 1000, "an integer in [1, 1000]"),
-                           ("--warmup", 0 <= a.warmup <= 10000, "an integer in [0, 10000]"),
-                           ("--noise-tolerance", 0 < a.noise_tolerance < 1, "a number in (0, 1)"),
-                           ("--scale", 0 < a.scale <= 4, "a number in (0, 4]"),
-                           ("--timing-scale", 0 < a.timing_scale <= 4, "a number in (0, 4]"),
-                           ("--light", 0 <= a.light <= 7, "an integer in [0, 7]")):
-        if not ok:
-            ap.error("%s: expected %s (got %r)" % (name, want, getattr(a, name[2:].replace(
-                "-", "_"))))
+    vb.check_ranges(ap, vb.timing_checks(a) + [
+        ("--scale", a.scale, 0 < a.scale <= 4, "a number in (0, 4]"),
+        ("--timing-scale", a.timing_scale, 0 < a.timing_scale <= 4, "a number in (0, 4]"),
+        ("--light", a.light, 0 <= a.light <= 7, "an integer in [0, 7]")])
     if "povray" not in a.renderers.split(","):
         ap.error("--renderers: povray is the reference and must be listed (got %r)" % a.renderers)
     a.scenes = a.scenes or sorted(glob.glob(os.path.join(REPO, "scenes", "soft", "*.json")))

@@ -579,21 +579,33 @@ def summary(results, a, cmdline):
     return "\n".join(lines)
 
 
+def timing_checks(a):
+    """(option, value, ok, what is expected) of the interleaved-timing
+    options every bench shares: --frames, --rounds, --warmup,
+    --noise-tolerance."""
+    return [("--frames", a.frames, 1 <= a.frames <= 100000, "an integer in [1, 100000]"),
+            ("--rounds", a.rounds, 1 <= a.rounds <= 1000, "an integer in [1, 1000]"),
+            ("--warmup", a.warmup, 0 <= a.warmup <= 10000, "an integer in [0, 10000]"),
+            ("--noise-tolerance", a.noise_tolerance, 0 < a.noise_tolerance < 1,
+             "a number in (0, 1)")]
+
+
+def check_ranges(p, checks):
+    """p.error (exit status 2, naming the option and the value) for the first
+    of `checks` ((option, value, ok, expected)) that is not ok."""
+    for name, value, ok, want in checks:
+        if not ok:
+            p.error("%s: expected %s (got %r)" % (name, want, value))
+
+
 def check_options(p, a):
     """Ranges of the numeric options (p.error: exit status 2, naming the
     option and the value)."""
     a.timing_scale = a.scale if a.timing_scale is None else a.timing_scale
-    for name, value, ok, want in (
-            ("--frames", a.frames, 1 <= a.frames <= 100000, "an integer in [1, 100000]"),
-            ("--rounds", a.rounds, 1 <= a.rounds <= 1000, "an integer in [1, 1000]"),
-            ("--warmup", a.warmup, 0 <= a.warmup <= 10000, "an integer in [0, 10000]"),
-            ("--noise-tolerance", a.noise_tolerance, 0 < a.noise_tolerance < 1,
-             "a number in (0, 1)"),
-            ("--scale", a.scale, 0 < a.scale <= 8, "a number in (0, 8]"),
-            ("--timing-scale", a.timing_scale, 0 < a.timing_scale <= 8, "a number in (0, 8]"),
-            ("--light", a.light, a.light >= 0, "an integer >= 0")):
-        if not ok:
-            p.error("%s: expected %s (got %r)" % (name, want, value))
+    check_ranges(p, timing_checks(a) + [
+        ("--scale", a.scale, 0 < a.scale <= 8, "a number in (0, 8]"),
+        ("--timing-scale", a.timing_scale, 0 < a.timing_scale <= 8, "a number in (0, 8]"),
+        ("--light", a.light, a.light >= 0, "an integer >= 0")])
 
 
 def main():
