@@ -21,6 +21,12 @@ Rules (docs/harness.md, "--check, thresholds and known failures"):
   (POV-Ray against Cycles) are bounded by the file's default (0.1% wrong),
   except where the reference has a penumbra (pen_pixels > 0: a light with a
   size, sampled by both renderers), which get the same generated limit.
+- Exact techniques (EXACT: volume and raytrace) also get, on every row of a
+  hard light (no penumbra in the reference), the fixed bound of issues 12 and
+  13 on wrong_band_pct (wrong pixels outside the one-pixel band along the
+  reference's shadow boundary): 0.05%, not a generated limit. A row over it
+  is refused like a 50% row: fix the technique or list the row as a known
+  failure with its reason. --verify checks that each such row has it.
 - A limit of REFUSED_PCT (50%) or more bounds nothing: the script refuses to
   write it (exit 2) and names the row. Such a row goes into
   known-failures.json (beside the thresholds file) with its reason; listed
@@ -51,6 +57,10 @@ REFUSED_PCT = 50.0
 DESCRIPTION = ("Per-scene, per-light --check limits of vtkshadow-compare (docs/harness.md); "
                "measured at --scale 0.4, written by scenes/update_thresholds.py")
 DEFAULT = {"cycles": {"wrong_pct": 0.1}}
+# Issues 12 and 13: an exact technique is at most 0.05% wrong outside the
+# one-pixel band, on every scene whose lights are points (no penumbra).
+EXACT = {"vtk/volume": 0.05, "vtk/raytrace": 0.05}
+EXACT_METRIC = "wrong_band_pct"
 
 
 def load_known(path):
@@ -104,6 +114,13 @@ def row_limits(thresholds, scene, r):
     return limits
 
 
+def exact_bound(r):
+    """The fixed wrong_band_pct bound of a row, or None when it has none."""
+    if r["test"] not in EXACT or (r.get("pen_pixels") or 0) > 0:
+        return None
+    return EXACT[r["test"]]
+
+
 def verify(thresholds, rows, known):
     """Every problem of `thresholds` against the measured rows, one line each."""
     problems = []
@@ -114,6 +131,10 @@ def verify(thresholds, rows, known):
         limits = row_limits(thresholds, scene, r)
         if not limits:
             problems.append("%s: no limit (and not a known failure)" % where(scene, r))
+        if exact_bound(r) is not None and limits.get(EXACT_METRIC) != exact_bound(r):
+            problems.append("%s: %s limit %s, but an exact technique on a hard light is bound "
+                            "by %g" % (where(scene, r), EXACT_METRIC, limits.get(EXACT_METRIC),
+                                       exact_bound(r)))
         for metric, limit in sorted(limits.items()):
             measured = r.get(metric)
             if metric.endswith("_pct") and limit >= REFUSED_PCT:
@@ -166,6 +187,16 @@ def generate(base, rows, known):
                 continue
             per_light = entry.setdefault(r["test"], {}).setdefault(metric, [None] * lights)
             per_light[r["light"]] = limit
+        bound = exact_bound(r)
+        if bound is not None:
+            measured = r.get(EXACT_METRIC)
+            if measured is None or measured > bound:
+                refused.append("%s: %s measured %s, over the exact bound %g: fix the technique "
+                               "or list the row in known-failures.json with its reason"
+                               % (where(scene, r), EXACT_METRIC, measured, bound))
+            else:
+                entry.setdefault(r["test"], {}).setdefault(EXACT_METRIC, [None] * lights)[
+                    r["light"]] = bound
         if r.get("reflection_mae") is not None:
             per_light = entry.setdefault(r["test"], {}).setdefault("reflection_mae", [None] * lights)
             per_light[r["light"]] = generated_mae(r["reflection_mae"])

@@ -30,6 +30,10 @@ struct Row
   // otherwise; and the mirror region's heat map.
   double reflection_mae = std::nan("");
   std::string mirror_heatmap;
+  // wrong_pct outside the one-pixel band along the reference's shadow
+  // boundary (vsh_boundary_band, radius 1): the measure issues 12 and 13
+  // bound exact techniques by. NaN when not measured.
+  double wrong_band_pct = std::nan("");
   // Set by --check: "" (not checked), "ok", "FAILED: why", "known failure: reason".
   std::string check;
 };

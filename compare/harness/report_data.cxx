@@ -50,7 +50,8 @@ std::string CsvRow(const Row& r)
     r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), false).c_str(),
     r.status.c_str());
   // reflection_mae last: the columns up to the penumbra ones keep their places.
-  return buf + PenumbraFields(r.pen, ",", false) + "," + Num(r.reflection_mae, false) + "\n";
+  return buf + PenumbraFields(r.pen, ",", false) + "," + Num(r.reflection_mae, false) + "," +
+    Num(r.wrong_band_pct, false) + "\n";
 }
 
 std::string JsonRow(const Row& r)
@@ -68,7 +69,8 @@ std::string JsonRow(const Row& r)
     r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), true).c_str(),
     Num(r.reflection_mae, true).c_str(), r.status.c_str(), JsonEscape(r.check).c_str(),
     JsonEscape(r.heatmap).c_str(), JsonEscape(r.mirror_heatmap).c_str());
-  return buf + PenumbraFields(r.pen, ", ", true) + ", \"pen_heatmap\": \"" +
+  return buf + PenumbraFields(r.pen, ", ", true) +
+    ", \"wrong_band_pct\": " + Num(r.wrong_band_pct, true) + ", \"pen_heatmap\": \"" +
     JsonEscape(r.pen_heatmap) + "\"}";
 }
 
@@ -111,7 +113,7 @@ bool WriteResults(const Options& opt, const std::vector<SceneResult>& all)
                     "compared_pixels,vis_mae,wrong_pct,edge_px,false_shadow_pct,false_light_pct,"
                     "wrong_of_shadow_pct,status,pen_pixels,pen_mae,pen_bias,pen_leak_pct,"
                     "pen_false_shadow_pct,pen_width_ratio,pen_contour_01_px,pen_contour_05_px,"
-                    "pen_contour_09_px,reflection_mae\n";
+                    "pen_contour_09_px,reflection_mae,wrong_band_pct\n";
   std::string json = "{\n  \"scenes\": [\n";
   for (size_t si = 0; si < all.size(); ++si)
   {

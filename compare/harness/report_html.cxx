@@ -113,10 +113,11 @@ std::string CheckSection(const Options& opt, const CheckOutcome& check)
 
 std::string RowTable(const SceneResult& sr, int k)
 {
-  std::string h = "<table><tr><th>test</th><th>valid px</th><th>vis_mae</th><th>wrong_pct</th>"
-                  "<th>edge_px</th><th>false_shadow_pct</th><th>false_light_pct</th>"
-                  "<th>wrong_of_shadow_pct</th><th>reflection_mae</th><th>status</th>"
-                  "<th>check</th></tr>";
+  std::string h =
+    "<table><tr><th>test</th><th>valid px</th><th>vis_mae</th><th>wrong_pct</th>"
+    "<th>wrong_band_pct</th><th>edge_px</th><th>false_shadow_pct</th><th>false_light_pct</th>"
+    "<th>wrong_of_shadow_pct</th><th>reflection_mae</th><th>status</th>"
+    "<th>check</th></tr>";
   for (const Row& r : sr.rows)
   {
     if (r.light != k)
@@ -125,10 +126,12 @@ std::string RowTable(const SceneResult& sr, int k)
     const double wos = RowMetric(r.m, "wrong_of_shadow_pct", known);
     char buf[512];
     snprintf(buf, sizeof buf,
-      "<td>%ld</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%.4g</td><td>%s</td>"
-      "<td>%s</td>",
-      r.m.valid_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px, r.m.false_shadow_pct,
-      r.m.false_light_pct, known && std::isfinite(wos) ? Fmt(wos, "%.4g").c_str() : "",
+      "<td>%ld</td><td>%.4g</td><td>%.4g</td><td>%s</td><td>%.4g</td><td>%.4g</td><td>%.4g</td>"
+      "<td>%s</td><td>%s</td>",
+      r.m.valid_pixels, r.m.vis_mae, r.m.wrong_pct,
+      std::isfinite(r.wrong_band_pct) ? Fmt(r.wrong_band_pct, "%.4g").c_str() : "", r.m.edge_px,
+      r.m.false_shadow_pct, r.m.false_light_pct,
+      known && std::isfinite(wos) ? Fmt(wos, "%.4g").c_str() : "",
       std::isfinite(r.reflection_mae) ? Fmt(r.reflection_mae, "%.4f").c_str() : "");
     const char* cls = r.check.rfind("FAILED", 0) == 0 ? " class=\"err\""
       : r.check.rfind("known failure", 0) == 0        ? " class=\"known\""

@@ -83,6 +83,20 @@ void ComparePenumbra(const Options& opt, const std::string& dir_id, const std::s
       (opt.out + "/" + row.pen_heatmap).c_str(), rgb.data(), w, h, e2, sizeof e2) != 0)
     row.pen_heatmap.clear();
 }
+
+// wrong_pct over the valid pixels outside the one-pixel band along the
+// reference's shadow boundary: a boundary one pixel off is a sampling
+// difference between two exact renderers, not a wrong shadow.
+double WrongOutsideBand(const std::vector<float>& tv, const std::vector<float>& ref,
+  const std::vector<unsigned char>& valid, int w, int h)
+{
+  std::vector<unsigned char> band(valid.size());
+  vsh_metrics banded{};
+  if (vsh_boundary_band(ref.data(), valid.data(), w, h, 1, band.data()) != VSH_METRICS_OK ||
+    vsh_metrics_compute(tv.data(), ref.data(), valid.data(), band.data(), w, h, &banded) < 0)
+    return std::nan("");
+  return banded.wrong_pct;
+}
 } // namespace
 
 double RowMetric(const Row& r, const std::string& name, bool& known)
@@ -91,6 +105,11 @@ double RowMetric(const Row& r, const std::string& name, bool& known)
   {
     known = true;
     return r.reflection_mae;
+  }
+  if (name == "wrong_band_pct")
+  {
+    known = true;
+    return r.wrong_band_pct;
   }
   return RowMetric(r.m, name, known);
 }
@@ -128,6 +147,7 @@ Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const s
   }
   row.width = w;
   row.height = h;
+  row.wrong_band_pct = WrongOutsideBand(tv, ref, valid, w, h);
   row.status = rc == VSH_METRICS_EMPTY ? "empty" : "ok";
   std::vector<unsigned char> rgb(3 * static_cast<size_t>(w) * h);
   vsh_error_heatmap_rgb(tv.data(), ref.data(), valid.data(), w, h, rgb.data());

@@ -552,7 +552,44 @@ def test_check(a, compare):
     th_data["scenes"]["dark"] = {"no_valid_pixels": {"0": "the spot points away from the scene"}}
     write_json(th, th_data)
     expect_check(a, compare, empty_scene, out2, 0, ["0 failure(s)"], techniques="planar")
+    check_exact_bound(a, compare, scene, th, results, out)
     print("PASS check")
+
+
+def check_exact_bound(a, compare, scene, th, results, out):
+    """wrong_band_pct (wrong outside the one-pixel band) is measured on every
+    row, --check reads it, and update_thresholds gives exact techniques
+    (volume) the fixed 0.05 bound of issues 12/13, refusing a row over it."""
+    write_json(th, {"default": {"cycles": {"wrong_pct": 0.1}}, "scenes": {}})
+    expect_check(a, compare, scene, out, 3, ["no limit"], techniques="volume,none")
+    rows = json.load(open(results))["scenes"][0]["results"]
+    band = {r["test"]: r.get("wrong_band_pct") for r in rows}
+    if band.get("vtk/none") is None or not band["vtk/none"] > 0.2:
+        fail("wrong_band_pct of vtk/none should show the missing shadow: %r" % band)
+    if band.get("vtk/volume") is None or not band["vtk/volume"] <= 0.05:
+        fail("wrong_band_pct of vtk/volume should be within the exact bound: %r" % band)
+    update_thresholds(a, results, "--write", th, expect=0)
+    limits = json.load(open(th))["scenes"]["scene"]
+    if limits["vtk/volume"].get("wrong_band_pct") != [0.05] or "wrong_band_pct" in limits["vtk/none"]:
+        fail("update_thresholds: exact bound not written as expected: %r" % limits)
+    expect_check(a, compare, scene, out, 0, ["0 failure(s)"], techniques="volume,none")
+    limits["vtk/none"]["wrong_band_pct"] = [0.01]
+    write_json(th, {"default": {}, "scenes": {"scene": limits}})
+    expect_check(a, compare, scene, out, 3, ["vtk/none: wrong_band_pct"], techniques="volume,none")
+    del limits["vtk/volume"]["wrong_band_pct"]
+    write_json(th, {"default": {}, "scenes": {"scene": limits}})
+    p = update_thresholds(a, "--verify", th, results, expect=1)
+    if "exact technique on a hard light" not in p.stderr:
+        fail("update_thresholds --verify accepted vtk/volume without its exact bound")
+    bad = json.load(open(results))
+    for r in bad["scenes"][0]["results"]:
+        if r["test"] == "vtk/volume":
+            r["wrong_band_pct"] = 0.2
+    bad_results = os.path.join(a.out, "bad-exact.json")
+    write_json(bad_results, bad)
+    p = update_thresholds(a, bad_results, "--write", th, expect=2)
+    if "over the exact bound" not in p.stderr:
+        fail("update_thresholds wrote a limit for an exact row over 0.05")
 
 
 # ------------------------------------------------------------------ faults
