@@ -383,14 +383,14 @@ bool vtkShadowScreenMask::PreReplaceShaderValues(std::string& fragmentShader, vt
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowScreenMask::PostReplaceShaderValues(std::string& fragmentShader, double residual)
+bool vtkShadowScreenMask::PostReplaceShaderValues(std::string& fragmentShader, double residual,
+  const std::string& factor, const std::string& prepare)
 {
   if (fragmentShader.find("vshScreenPrepare") == std::string::npos)
   {
     return true;
   }
-  if (vtkshadow::InjectLightFactors(
-        fragmentShader, "vshScreenLit(%d)", "vshScreenPrepare();", MaxLights, residual))
+  if (vtkshadow::InjectLightFactors(fragmentShader, factor, prepare, MaxLights, residual))
   {
     ++this->HookedShaders;
   }

@@ -111,7 +111,11 @@ public:
   // GetResidualLight() as `residual` (the light left in shadow,
   // vtkShadowPassBase::SetResidualLight).
   bool PreReplaceShaderValues(std::string& fragmentShader, vtkProp* prop);
-  bool PostReplaceShaderValues(std::string& fragmentShader, double residual = 0.0);
+  // `factor` and `prepare` (vtkshadow::InjectLightFactors) let the owner
+  // multiply its own per-light term into the mask's.
+  bool PostReplaceShaderValues(std::string& fragmentShader, double residual = 0.0,
+    const std::string& factor = "vshScreenLit(%d)",
+    const std::string& prepare = "vshScreenPrepare();");
   void SetShaderParameters(vtkShaderProgram* program);
 
   /**

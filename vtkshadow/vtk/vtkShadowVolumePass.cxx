@@ -27,6 +27,7 @@
 #include "vsh_volume.h"
 
 #include "vtkShadowVolumeFS.h"
+#include "vtkShadowVolumeFacingFS.h"
 #include "vtkShadowVolumeVS.h"
 
 #include <algorithm>
@@ -90,6 +91,8 @@ struct vtkShadowVolumePass::Volume
   double Light[4] = { 0, 0, 0, 0 }; // relative to the stored positions
   vtkMTimeType GeometryTime = 0;
   bool Valid = false;
+  bool DarkCaps = false;    // closed caster: its facets facing away are dark
+  long long UsedFrame = -1; // the last frame this volume was counted
   size_t SideTriangles = 0, CapTriangles = 0;
   size_t SilhouetteEdges = 0, Quads = 0;
   vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
@@ -112,6 +115,7 @@ struct vtkShadowVolumePass::Internals
   LightStats Stats[MaxLights];
   FillQuery Queries[MaxLights];
   int LightCount = 0;
+  float LightVC[MaxLights][4] = {}; // each light in view coordinates, this frame
   long long VolumeBuilds = 0;
   long long Instances = 0;
   bool Reported = false;
@@ -178,6 +182,26 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowVolumePass::LightsInViewCoordinates(vtkRenderer* renderer, const Frame& frame)
+{
+  Internals& impl = *this->Impl;
+  // The mapper's view coordinates (its MCVCMatrix): the camera's model-view
+  // transform, in double; a direction (w = 0) loses the translation.
+  double view[16];
+  vtkMatrix4x4::DeepCopy(view, renderer->GetActiveCamera()->GetModelViewTransformMatrix());
+  for (int light = 0; light < impl.LightCount; ++light)
+  {
+    double world[4], vc[4];
+    vtkshadow::LightHomogeneous(frame.Lights[light], world);
+    vsh_mat4_transform_point4(view, world, vc);
+    for (int k = 0; k < 4; ++k)
+    {
+      impl.LightVC[light][k] = static_cast<float>(vc[k]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowVolumePass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
@@ -187,6 +211,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   Frame frame;
   this->SetUpFrame(s, frame);
   impl.LightCount = std::min(static_cast<int>(frame.Lights.size()), MaxLights);
+  this->LightsInViewCoordinates(s->GetRenderer(), frame);
   for (auto& stats : impl.Stats)
   {
     stats = LightStats();
@@ -354,6 +379,7 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
   if (volume.Valid && volume.GeometryTime == geometry.GetBuildTime() &&
     std::equal(lightStored, lightStored + 4, volume.Light))
   {
+    volume.UsedFrame = impl.FrameNumber;
     return &volume;
   }
   vsh_volume built;
@@ -372,6 +398,8 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
   volume.CapTriangles = built.cap_triangles;
   volume.SilhouetteEdges = built.silhouette_edges;
   volume.Quads = built.silhouette_quads;
+  volume.DarkCaps = built.dark_caps != 0;
+  volume.UsedFrame = impl.FrameNumber;
   vsh_volume_free(&built);
   if (!volume.Buffer)
   {
@@ -483,22 +511,61 @@ void vtkShadowVolumePass::DrawCaster(
 bool vtkShadowVolumePass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
-  return this->Impl->Mask.PreReplaceShaderValues(fragmentShader, prop);
+  const bool ok = this->Impl->Mask.PreReplaceShaderValues(fragmentShader, prop);
+  if (fragmentShader.find("vshScreenPrepare") != std::string::npos)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
+      std::string("//VTK::Light::Dec\n") + vtkShadowVolumeFacingFS, false);
+  }
+  return ok;
 }
 
 //------------------------------------------------------------------------------
 bool vtkShadowVolumePass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
+  if (fragmentShader.find("vshFacingPrepare") == std::string::npos)
+  {
+    return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
+  }
+  return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight(),
+    "(vshScreenLit(%d) * vshFacingLit(%d, vertexVC.xyz))",
+    "vshScreenPrepare(); vshFacingPrepare(vertexVC.xyz);");
 }
 
 //------------------------------------------------------------------------------
 bool vtkShadowVolumePass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  this->Impl->Mask.SetShaderParameters(program);
+  Internals& impl = *this->Impl;
+  impl.Mask.SetShaderParameters(program);
+  if (program->IsUniformUsed("vshFacingLights"))
+  {
+    program->SetUniformi("vshFacingLights", this->ClosedCasterLights(prop));
+    program->SetUniform4fv("vshFacingLightVC", MaxLights, impl.LightVC);
+  }
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowVolumePass::ClosedCasterLights(vtkProp* prop) const
+{
+  const Internals& impl = *this->Impl;
+  auto it = impl.Casters.find(vtkActor::SafeDownCast(prop));
+  int bits = 0;
+  if (!this->FacingTest)
+  {
+    return 0;
+  }
+  for (int light = 0; it != impl.Casters.end() && light < impl.LightCount; ++light)
+  {
+    const Volume& volume = it->second->Volumes[light];
+    if (volume.Valid && volume.DarkCaps && volume.UsedFrame == impl.FrameNumber)
+    {
+      bits |= 1 << light;
+    }
+  }
+  return bits;
 }
 
 //------------------------------------------------------------------------------
@@ -563,6 +630,11 @@ bool vtkShadowVolumePass::SetOption(const char* key, double value)
     this->SetForceZFail(value != 0.0);
     return true;
   }
+  if (k == "facing_test" && (value == 0.0 || value == 1.0))
+  {
+    this->SetFacingTest(value != 0.0);
+    return true;
+  }
   return this->Superclass::SetOption(key, value);
 }
 
@@ -602,5 +674,6 @@ void vtkShadowVolumePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthBias: " << this->DepthBias << "\n";
   os << indent << "SlopeBias: " << this->SlopeBias << "\n";
   os << indent << "ForceZFail: " << this->ForceZFail << "\n";
+  os << indent << "FacingTest: " << this->FacingTest << "\n";
   os << indent << "Casters: " << this->Impl->Casters.size() << "\n";
 }

@@ -54,7 +54,17 @@ public:
   vtkGetMacro(ForceZFail, bool);
 
   /**
-   * depth_bias, slope_bias, force_zfail, and the base's cast_headlight.
+   * Darken the facets of closed casters that face away from a light
+   * (default on): the volumes leave them lit, a ray tracer given the same
+   * triangles does not (docs/shadow-volumes.md, "The terminator").
+   */
+  vtkSetMacro(FacingTest, bool);
+  vtkGetMacro(FacingTest, bool);
+  vtkBooleanMacro(FacingTest, bool);
+
+  /**
+   * depth_bias, slope_bias, force_zfail, facing_test, and the base's
+   * cast_headlight.
    */
   bool SetOption(const char* key, double value) override;
 
@@ -92,6 +102,7 @@ protected:
   double DepthBias = 2.0;
   double SlopeBias = 0.001;
   bool ForceZFail = false;
+  bool FacingTest = true;
 
 private:
   vtkShadowVolumePass(const vtkShadowVolumePass&) = delete;
@@ -107,6 +118,9 @@ private:
     vtkOpenGLRenderWindow* window, vtkShaderProgram* program, const Frame& frame, int light);
   void DrawCaster(vtkShaderProgram* program, const Frame& frame, int light, vtkActor* actor);
   Volume* UpdateVolume(vtkActor* actor, int light, const double lightWorld[4]);
+  void LightsInViewCoordinates(vtkRenderer* renderer, const Frame& frame);
+  // Bit I set when `prop` is a closed caster counted for light I this frame.
+  int ClosedCasterLights(vtkProp* prop) const;
 };
 
 #endif

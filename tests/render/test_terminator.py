@@ -1,0 +1,155 @@
+"""Render test: the terminator of a smooth-shaded closed mesh (issues 12, 13).
+
+A coarse closed sphere (a UV sphere of 10 x 6 facets, OBJ with one radial
+normal per vertex) over a floor, lit from the side so that its terminator
+faces the camera. VTK lights a facet by its interpolated normals, so facets
+that face away from the light by up to half a facet angle are still lit in
+the unshadowed image; on the triangles themselves those points are dark: a
+ray from them towards the light enters the solid. The exact answer here is
+ray cast against the same triangles (exact_scene.py, model "all"): such
+pixels get visibility 0. They are compared where VTK's own mask (its
+unshadowed intensity, from the smooth normals) says the light reaches,
+outside a one-pixel band along every triangle edge, object edge, mask edge
+and shadow boundary.
+
+    test_terminator.py --bin BUILD/bin --out DIR --technique volume|raytrace
+        [--set KEY=VALUE]... [--expect-fail]
+
+Passes when wrong_pct <= 0.05 and at least MIN_TERMINATOR_PX compared pixels
+lie on facets facing away from the light (so the case cannot pass without
+testing them). --expect-fail inverts the bound (used with volume's
+facing_test=0: the volumes alone leave the strip lit, which the test must
+see).
+"""
+import argparse
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from exact_scene import edge_band, trace_scene  # noqa: E402
+from png_io import read_png  # noqa: E402
+
+MAX_WRONG_PCT = 0.05
+MIN_TERMINATOR_PX = 200
+
+
+def uv_sphere(center, radius, around=10, rings=6):
+    """Vertices, per-vertex unit normals and outward triangles of a closed
+    UV sphere (poles shared, so every edge has two faces)."""
+    verts = [(0.0, 0.0, 1.0)]
+    for r in range(1, rings):
+        polar = math.pi * r / rings
+        for a in range(around):
+            az = 2 * math.pi * a / around
+            verts.append((math.sin(polar) * math.cos(az), math.sin(polar) * math.sin(az),
+                          math.cos(polar)))
+    verts.append((0.0, 0.0, -1.0))
+    bottom = len(verts) - 1
+
+    def ring(r, a):
+        return 1 + (r - 1) * around + a % around
+    faces = []
+    for a in range(around):
+        faces.append((0, ring(1, a), ring(1, a + 1)))
+        faces.append((bottom, ring(rings - 1, a + 1), ring(rings - 1, a)))
+    for r in range(1, rings - 1):
+        for a in range(around):
+            p, q = ring(r, a), ring(r, a + 1)
+            s, t = ring(r + 1, a), ring(r + 1, a + 1)
+            faces += [(p, s, t), (p, t, q)]
+    unit = np.asarray(verts, float)
+    return unit * radius + np.asarray(center, float), unit, faces
+
+
+def write_obj(path, verts, normals, faces):
+    with open(path, "w") as f:
+        for v in verts:
+            f.write("v %.17g %.17g %.17g\n" % tuple(v))
+        for n in normals:
+            f.write("vn %.17g %.17g %.17g\n" % tuple(n))
+        for t in faces:
+            f.write("f %s\n" % " ".join("%d//%d" % (i + 1, i + 1) for i in t))
+
+
+def scene_of(obj_path):
+    return {
+        "description": "terminator test: a coarse smooth-shaded closed sphere lit from the side",
+        "size": [640, 480],
+        "camera": {"position": [0, -6, 2.5], "focal_point": [0, 0, 1.1], "view_up": [0, 0, 1],
+                   "view_angle": 30},
+        "lights": [{"type": "point", "position": [6, 1.5, 2.2]}],
+        "objects": [
+            {"mesh": obj_path, "name": "coarse sphere"},
+            {"plane": {"origin": [-5, -5, 0], "point1": [5, -5, 0], "point2": [-5, 5, 0]},
+             "receiver": True},
+        ],
+    }
+
+
+def render(args, scene_path, name):
+    vis, mask = (os.path.join(args.out, f"{name}-{k}.png") for k in ("visibility", "mask"))
+    cmd = [os.path.join(args.bin, "vtkshadow-render"), scene_path, "--technique", args.technique,
+           "--image", os.path.join(args.out, name + "-image.png"), "--visibility", vis,
+           "--mask", mask, "--quiet"] + [a for kv in args.set for a in ("--set", kv)]
+    run = subprocess.run(cmd, capture_output=True, text=True)
+    if run.returncode != 0:
+        sys.exit(f"{name}: vtkshadow-render failed ({run.returncode}): {run.stderr}")
+    return read_png(vis) / 65535.0, read_png(mask) > 127
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--bin", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--technique", required=True)
+    ap.add_argument("--set", action="append", default=[])
+    ap.add_argument("--expect-fail", action="store_true")
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    name = "-".join(["terminator", args.technique] + [kv.replace("=", "") for kv in args.set])
+    verts, normals, faces = uv_sphere([0, 0, 1.2], 1.0)
+    obj_path = os.path.abspath(os.path.join(args.out, "coarse-sphere.obj"))
+    write_obj(obj_path, verts, normals, faces)
+    scene = scene_of(obj_path)
+    scene_path = os.path.join(args.out, name + ".json")
+    import json
+    with open(scene_path, "w") as f:
+        json.dump(scene, f, indent=1)
+
+    vis, vtk_mask = render(args, scene_path, name)
+    width, height = scene["size"]
+    exact = trace_scene(scene, 0, width, height, "all")
+    hit = exact["object"] >= 0
+    exclude = (edge_band(exact["object"] * 100000 + exact["face"]) |
+               edge_band(exact["valid"].astype(int)) | edge_band(vtk_mask.astype(int)) |
+               edge_band((exact["visibility"] > 0.5).astype(int)))
+    compared = vtk_mask & hit & ~exclude
+    # Facets facing away from the light that VTK's smooth normals light:
+    # the exact answer is dark there (not "valid" for the flat facet).
+    terminator = compared & ~exact["valid"] & (exact["object"] == 0)
+    wrong = compared & (np.abs(vis - exact["visibility"]) > 0.5)
+    wrong_pct = 100.0 * wrong.sum() / max(compared.sum(), 1)
+    wrong_terminator = int((wrong & terminator).sum())
+    print(f"{name}: wrong_pct {wrong_pct:.4f} ({int(wrong.sum())} of {int(compared.sum())} px), "
+          f"terminator px compared {int(terminator.sum())}, wrong there {wrong_terminator}")
+    failed = False
+    if terminator.sum() < MIN_TERMINATOR_PX:
+        print(f"FAIL: only {int(terminator.sum())} terminator pixels compared "
+              f"(the case needs >= {MIN_TERMINATOR_PX})")
+        failed = True
+    if args.expect_fail:
+        if wrong_pct <= MAX_WRONG_PCT:
+            print(f"FAIL: expected more than {MAX_WRONG_PCT}% wrong with {args.set}")
+            failed = True
+    elif wrong_pct > MAX_WRONG_PCT:
+        print(f"FAIL: wrong_pct {wrong_pct:.4f} > {MAX_WRONG_PCT}")
+        failed = True
+    sys.exit(1 if failed else 0)
+
+
+if __name__ == "__main__":
+    main()
