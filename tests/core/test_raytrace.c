@@ -325,7 +325,7 @@ static void test_cost(void)
   vsh_rt_cost_model m;
   vsh_rt_cost_model_default(&m);
   CHECK(m.rays_per_second_per_thread > 0 && m.pixel_ns > 0 && m.frame_ms >= 0);
-  vsh_rt_cost_input in = { 640.0 * 480, 0.5, 2, 1, 2 };
+  vsh_rt_cost_input in = { 640.0 * 480, 0.5, 2, 1, 2, 0, 0.0 };
   CHECK_NEAR(vsh_rt_cost_rays(&in), 0.5 * 640 * 480 * 3, 1e-6);
   const double base = vsh_rt_cost_ms(&m, &in);
   CHECK(base > m.frame_ms);

@@ -139,6 +139,35 @@ static void test_rest(void)
   }
 }
 
+static void test_near(void)
+{
+  const unsigned char F = VSH_RT_BATCH_FREE, B = VSH_RT_BATCH_BLOCKED, M = VSH_RT_BATCH_MIXED,
+                      N = VSH_RT_BATCH_NONE;
+  CHECK(vsh_rt_adaptive_state(8, 0) == F);
+  CHECK(vsh_rt_adaptive_state(8, 8) == B);
+  CHECK(vsh_rt_adaptive_state(8, 3) == M);
+  CHECK(vsh_rt_adaptive_state(0, 0) == N);
+  CHECK(vsh_rt_adaptive_state(1, 1) == B); /* hard: never mixed */
+  const unsigned char lit[9] = { F, F, F, F, F, F, F, F, F };
+  const unsigned char umbra[9] = { B, B, B, B, B, B, B, B, B };
+  const unsigned char near_mixed[9] = { F, F, F, F, F, F, F, F, M };
+  const unsigned char edge[9] = { F, F, F, F, F, B, B, B, B }; /* agree, but differ */
+  const unsigned char background[9] = { N, N, N, F, F, N, N, N, N };
+  const unsigned char bg_umbra[9] = { N, B, N, B, B, N, N, N, N };
+  CHECK(vsh_rt_adaptive_rest_near(64, 8, lit, 9) == 0);
+  CHECK(vsh_rt_adaptive_rest_near(64, 8, umbra, 9) == 0);
+  CHECK(vsh_rt_adaptive_rest_near(64, 8, near_mixed, 9) == 56);
+  CHECK(vsh_rt_adaptive_rest_near(64, 8, edge, 9) == 56);
+  CHECK(vsh_rt_adaptive_rest_near(64, 8, background, 9) == 0);
+  CHECK(vsh_rt_adaptive_rest_near(64, 8, bg_umbra, 9) == 0);
+  CHECK(vsh_rt_adaptive_rest_near(64, 8, near_mixed, 4) == 0); /* the image's corner: 4 */
+  CHECK(vsh_rt_adaptive_rest_near(64, 64, near_mixed, 9) == 0); /* not adaptive */
+  CHECK(vsh_rt_adaptive_rest_near(8, 8, edge, 9) == 0);         /* samples == batch */
+  CHECK(vsh_rt_adaptive_rest_near(1, 1, edge, 9) == 0);         /* hard light */
+  CHECK(vsh_rt_adaptive_rest_near(64, 8, NULL, 0) == 0);
+  CHECK(vsh_rt_adaptive_rest_near(9, 8, near_mixed, 9) == 1);
+}
+
 static void test_expected(void)
 {
   CHECK_NEAR(vsh_rt_adaptive_expected_rays(64, 8, 0.0), 8, 0);
@@ -157,6 +186,7 @@ int main(void)
   test_first();
   test_order();
   test_rest();
+  test_near();
   test_expected();
   return vsh_check_report("rt_adaptive");
 }

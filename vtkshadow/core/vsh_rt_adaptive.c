@@ -81,6 +81,33 @@ int vsh_rt_adaptive_rest(int samples, int first, int blocked)
   return samples - first;
 }
 
+int vsh_rt_adaptive_state(int traced, int blocked)
+{
+  if (traced <= 0) {
+    return VSH_RT_BATCH_NONE;
+  }
+  if (blocked <= 0) {
+    return VSH_RT_BATCH_FREE;
+  }
+  return blocked >= traced ? VSH_RT_BATCH_BLOCKED : VSH_RT_BATCH_MIXED;
+}
+
+int vsh_rt_adaptive_rest_near(int samples, int first, const unsigned char *states, int n)
+{
+  int free = 0, blocked = 0;
+  if (first >= samples || !states) {
+    return 0;
+  }
+  for (int k = 0; k < n; ++k) {
+    if (states[k] == VSH_RT_BATCH_MIXED) {
+      return samples - first;
+    }
+    free += states[k] == VSH_RT_BATCH_FREE;
+    blocked += states[k] == VSH_RT_BATCH_BLOCKED;
+  }
+  return free && blocked ? samples - first : 0;
+}
+
 double vsh_rt_adaptive_expected_rays(int samples, int first, double penumbra)
 {
   if (samples < 1) {

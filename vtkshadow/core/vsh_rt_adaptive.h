@@ -45,6 +45,25 @@ int vsh_rt_adaptive_order(int samples, int first, int *order);
  * first) or nothing is left (first >= samples), else samples - first. */
 int vsh_rt_adaptive_rest(int samples, int first, int blocked);
 
+/* A pixel's first batch, for its neighbours' decisions. */
+#define VSH_RT_BATCH_NONE 0    /* nothing traced (background, outside a cone) */
+#define VSH_RT_BATCH_FREE 1    /* every ray free */
+#define VSH_RT_BATCH_BLOCKED 2 /* every ray blocked */
+#define VSH_RT_BATCH_MIXED 3   /* some of each */
+
+/* The state of a batch of `traced` rays of which `blocked` were blocked. */
+int vsh_rt_adaptive_state(int traced, int blocked);
+
+/* vsh_rt_adaptive_rest with the neighbourhood: the states of a pixel's
+ * first batch and of its neighbours' (any order, n of them, NONE ignored).
+ * samples - first when any is MIXED or both FREE and BLOCKED occur (an
+ * edge between them), else 0; 0 when first >= samples. A pixel whose own
+ * batch agrees but sits next to a penumbra is refined too: 8 rays that
+ * all pass at true visibility 0.9 happen 43% of the time, 72 rays of a
+ * 3x3 neighbourhood about 0.05% (measured on the exact penumbra: pen_mae
+ * 0.013 with the pixel's own batch alone against 0.008 for 64 rays). */
+int vsh_rt_adaptive_rest_near(int samples, int first, const unsigned char *states, int n);
+
 /* The expected rays per pixel of a light: first + penumbra x (samples -
  * first), `penumbra` the fraction (clamped to [0, 1]) of its traced pixels
  * whose first batch disagrees; samples when first >= samples or first < 1. */
