@@ -325,7 +325,7 @@ static void test_cost(void)
   vsh_rt_cost_model m;
   vsh_rt_cost_model_default(&m);
   CHECK(m.rays_per_second_per_thread > 0 && m.pixel_ns > 0 && m.frame_ms >= 0);
-  vsh_rt_cost_input in = { 640.0 * 480, 0.5, 2, 1, 2 };
+  vsh_rt_cost_input in = { 640.0 * 480, 0.5, 2, 1, 2, 0, 0.0 };
   CHECK_NEAR(vsh_rt_cost_rays(&in), 0.5 * 640 * 480 * 3, 1e-6);
   const double base = vsh_rt_cost_ms(&m, &in);
   CHECK(base > m.frame_ms);
@@ -338,6 +338,18 @@ static void test_cost(void)
   more = in;
   more.samples = 16;
   CHECK(vsh_rt_cost_ms(&m, &more) > 5 * base);
+  /* Adaptive counts: 8 rays everywhere, the other 56 of 64 on the 10% of
+   * pixels in the penumbra: 13.6 rays per pixel and light, not 64. */
+  more = in;
+  more.samples = 64;
+  more.first = 8;
+  more.penumbra = 0.1;
+  CHECK_NEAR(vsh_rt_cost_rays(&more), 0.5 * 640 * 480 * (1 + 2 * 13.6), 1e-6);
+  more.penumbra = 1.0; /* every pixel in the penumbra: the full count */
+  CHECK_NEAR(vsh_rt_cost_rays(&more), 0.5 * 640 * 480 * (1 + 2 * 64), 1e-6);
+  more.first = 0; /* not adaptive */
+  more.penumbra = 0.0;
+  CHECK_NEAR(vsh_rt_cost_rays(&more), 0.5 * 640 * 480 * (1 + 2 * 64), 1e-6);
   more = in;
   more.threads = 4;
   CHECK(vsh_rt_cost_ms(&m, &more) < base);

@@ -77,3 +77,11 @@ add_test(NAME harness.soft_csm
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_csm.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/soft_csm)
 set_tests_properties(harness.soft_csm PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# raytrace's adaptive ray counts against the exact penumbra: adaptive=1 within
+# 0.002 pen_mae of adaptive=0 at samples 64, with at most 40% of its rays per
+# pixel (--stats rays_per_pixel_light).
+add_test(NAME harness.raytrace_adaptive
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_raytrace_adaptive.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/raytrace_adaptive)
+set_tests_properties(harness.raytrace_adaptive PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)

@@ -150,13 +150,20 @@ for mark, detect, label in ((0, True, "opted out"), (None, False, "detection off
     check(choice == "csm" and lights == ["csm"] and reason.endswith("detected []"),
           f"auto without a receiver ({label}): {choice} {lights} ({reason})")
 # raytrace's cost estimate (what auto weighs it by): a hard light traces
-# one ray per pixel, a light with a size Samples; with Samples 1 they agree.
+# one ray per pixel, a light with a size Samples (adaptive off) or 8 plus
+# the rest on the penumbra's share of pixels (adaptive, the default); with
+# Samples 1 they agree.
 if hasattr(vtkshadow, "vtkRayTracedShadowPass"):
     rt = vtkshadow.vtkRayTracedShadowPass()
     hard = rt.EstimateFrameMilliseconds(480000, 1.0, 1, False)
+    adaptive = rt.EstimateFrameMilliseconds(480000, 1.0, 1, True)
+    rt.SetAdaptive(0)
     sized = rt.EstimateFrameMilliseconds(480000, 1.0, 1, True)
     check(0 < hard and sized > 10 * hard,
           f"raytrace estimate: hard {hard} ms, sized ({rt.GetSamples()} rays) {sized} ms")
+    check(4 * hard < adaptive < 0.6 * sized,
+          f"raytrace estimate: adaptive {adaptive} ms, not between 4x hard {hard} and 0.6x {sized}")
+    rt.SetAdaptive(1)
     rt.SetSamples(1)
     check(rt.EstimateFrameMilliseconds(480000, 1.0, 1, True) == hard,
           "raytrace estimate: 1 sample equals the hard light's")

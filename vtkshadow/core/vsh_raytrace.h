@@ -166,6 +166,12 @@ typedef struct vsh_rt_cost_input {
   int lights;      /* lights traced */
   int samples;     /* rays per pixel and light (1 = hard) */
   int threads;     /* worker threads */
+  /* Adaptive ray counts (vsh_rt_adaptive.h): each pixel traces `first`
+   * rays, and the rest of `samples` only where they disagree, a `penumbra`
+   * fraction of pixels. first 0 (or >= samples): every pixel traces
+   * samples. */
+  int first;
+  double penumbra;
 } vsh_rt_cost_input;
 
 /* Conservative defaults (measured on llvmpipe's machine class, one core of
@@ -179,7 +185,8 @@ void vsh_rt_cost_model_observe(vsh_rt_cost_model *model, double rays, double sec
                                int threads);
 
 /* Rays a frame traces: coverage x pixels x (1 primary refinement ray +
- * lights x samples). */
+ * lights x rays per pixel), rays per pixel samples, or with adaptive counts
+ * first + penumbra x (samples - first). */
 double vsh_rt_cost_rays(const vsh_rt_cost_input *input);
 
 /* Estimated milliseconds of shadow work per frame (a moving camera: a still

@@ -1,6 +1,7 @@
 /* vsh_rt_cost.c - the cost of a frame of ray-traced shadows, from rays per
  * second measured on the machine (vsh_raytrace.h). */
 #include "vsh_raytrace.h"
+#include "vsh_rt_adaptive.h"
 
 #include <math.h>
 
@@ -37,7 +38,10 @@ double vsh_rt_cost_rays(const vsh_rt_cost_input *input)
 {
   const double pixels = input->pixels > 0.0 ? input->pixels : 0.0;
   const double lights = input->lights > 0 ? input->lights : 0;
-  const double samples = input->samples > 0 ? input->samples : 0;
+  /* Only a penumbra pixel pays for all samples under adaptive counts. */
+  const double samples =
+    input->samples > 0 ? vsh_rt_adaptive_expected_rays(input->samples, input->first, input->penumbra)
+                       : 0;
   if (lights == 0.0) {
     return 0.0;
   }

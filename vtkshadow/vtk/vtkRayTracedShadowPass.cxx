@@ -16,6 +16,7 @@
 #include "vtkShadowScreenMask.h"
 
 #include "vsh_raytrace.h"
+#include "vsh_rt_adaptive.h"
 
 #include <algorithm>
 #include <chrono>
@@ -45,10 +46,17 @@ struct vtkRayTracedShadowPass::Internals
   int FrameWorldsTraced = 0; // worlds traced since world 0 was last drawn
   vtkShadowEmbreeScene Scene;
   vsh_rt_cost_model Cost;
+  // The fraction of a sized light's traced pixels whose first batch
+  // disagreed (adaptive counts: they trace all Samples), for the cost
+  // estimate: DefaultPenumbra until a frame measures it, then an
+  // exponential average like the ray rate's.
+  double Penumbra = DefaultPenumbra;
+  static constexpr double DefaultPenumbra = 0.25;
   std::vector<float> Depth;
   std::vector<std::vector<float>> Visibility;
   bool Still = false;
   vtkShadowRayTracer::Counters Counters;
+  vtkShadowRayTracer::Counters LastTraced; // the last frame that traced, for its rays per pixel
   int LightsTraced = 0;
   double FrameSeconds = 0;
 
@@ -56,6 +64,25 @@ struct vtkRayTracedShadowPass::Internals
   {
     vsh_rt_cost_model_default(&this->Cost);
     this->Select(0);
+  }
+
+  // Fold the last frame's penumbra fraction of adaptive lights into Penumbra.
+  void ObservePenumbra(const vtkShadowRayTracer::Frame& rays)
+  {
+    const vtkShadowRayTracer::Counters& c = this->Counters;
+    long long pixels = 0, refined = 0;
+    for (size_t l = 0; l < rays.First.size() && l < c.LightPixels.size(); ++l)
+    {
+      if (rays.First[l] < rays.Samples[l]) // adaptive lights only
+      {
+        pixels += c.LightPixels[l];
+        refined += c.LightRefined[l];
+      }
+    }
+    if (pixels > 0)
+    {
+      this->Penumbra = 0.75 * this->Penumbra + 0.25 * double(refined) / double(pixels);
+    }
   }
 
   void Select(int key)
@@ -88,6 +115,7 @@ struct vtkRayTracedShadowPass::FrameState
 //------------------------------------------------------------------------------
 vtkRayTracedShadowPass::vtkRayTracedShadowPass()
   : Samples(64)
+  , Adaptive(1)
   , LightRadius(0.0)
   , LightAngle(0.0)
   , NumberOfThreads(0)
@@ -167,7 +195,7 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
       static_cast<double>(frame.Size[0]) / frame.Size[1], -1, 1));
   std::vector<double>& key = frame.Key;
   key = { double(frame.Size[0]), double(frame.Size[1]), double(origin[0]), double(origin[1]),
-    double(this->Samples), this->LightRadius, this->LightAngle };
+    double(this->Samples), this->LightRadius, this->LightAngle, double(this->Adaptive) };
   key.insert(key.end(), frame.Eye, frame.Eye + 3);
   key.insert(key.end(), frame.View, frame.View + 16);
   key.insert(key.end(), frame.Projection, frame.Projection + 16);
@@ -256,6 +284,14 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
   std::copy_n(frame.Eye, 3, rays.Eye);
   rays.Lights = frame.Lights;
   rays.Samples = frame.Samples;
+  for (int samples : frame.Samples)
+  {
+    const int first = vsh_rt_adaptive_first(samples, this->Adaptive, VSH_RT_ADAPTIVE_BATCH);
+    std::vector<int> order(static_cast<size_t>(samples));
+    vsh_rt_adaptive_order(samples, first, order.data());
+    rays.First.push_back(first);
+    rays.Order.push_back(std::move(order));
+  }
   int threads = this->NumberOfThreads;
   if (threads <= 0)
   {
@@ -266,6 +302,8 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
   const double traced = double(impl.Counters.PrimaryRays + impl.Counters.ShadowRays);
   this->NumberOfRaysTraced = static_cast<vtkIdType>(traced);
   vsh_rt_cost_model_observe(&impl.Cost, traced, impl.Counters.Seconds, impl.Counters.Threads);
+  impl.ObservePenumbra(rays);
+  impl.LastTraced = impl.Counters;
   return true;
 }
 
@@ -309,6 +347,10 @@ double vtkRayTracedShadowPass::EstimateFrameMilliseconds(
   // A hard light traces one ray per pixel, whatever Samples says: counting
   // Samples (64) for it made auto predict 7.8 s for arrow-glyphs' 133 ms.
   input.samples = sized ? this->Samples : 1;
+  // Adaptive counts: every pixel pays the first batch, only the measured
+  // penumbra fraction the rest.
+  input.first = vsh_rt_adaptive_first(input.samples, this->Adaptive, VSH_RT_ADAPTIVE_BATCH);
+  input.penumbra = this->Impl->Penumbra;
   input.threads = this->NumberOfThreads > 0
     ? this->NumberOfThreads
     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -374,6 +416,15 @@ bool vtkRayTracedShadowPass::SetOption(const char* key, double value)
     this->SetSamples(static_cast<int>(value));
     return true;
   }
+  if (k == "adaptive")
+  {
+    if (value != 0.0 && value != 1.0)
+    {
+      return false;
+    }
+    this->SetAdaptive(static_cast<int>(value));
+    return true;
+  }
   if (k == "threads")
   {
     if (!integer || value < 0 || value > 256)
@@ -405,6 +456,34 @@ bool vtkRayTracedShadowPass::SetOption(const char* key, double value)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Shadow rays per traced pixel for each light of the last traced frame (a
+// still frame traces none), their mean
+// over the lights, and the fraction of traced pixels that traced the rest
+// of an adaptive light's samples.
+std::string RaysPerPixelJSON(const vtkShadowRayTracer::Counters& c)
+{
+  std::ostringstream out, per, refined;
+  double sum = 0;
+  int lights = 0;
+  for (size_t l = 0; l < c.LightPixels.size(); ++l)
+  {
+    const double pixels = double(c.LightPixels[l]);
+    const double mean = pixels > 0 ? double(c.LightRays[l]) / pixels : 0.0;
+    per << (l ? ", " : "") << mean;
+    refined << (l ? ", " : "") << (pixels > 0 ? double(c.LightRefined[l]) / pixels : 0.0);
+    sum += mean;
+    lights += pixels > 0 ? 1 : 0;
+  }
+  out << ", \"rays_per_pixel_light\": [" << per.str()
+      << "], \"mean_rays_per_pixel_light\": " << (lights ? sum / lights : 0.0)
+      << ", \"refined_fraction_light\": [" << refined.str() << "]";
+  return out.str();
+}
+}
+
+//------------------------------------------------------------------------------
 std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
 {
   const Internals& impl = *this->Impl;
@@ -416,7 +495,8 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"rays_traced\": " << static_cast<long long>(rays)
       << ", \"primary_rays\": " << c.PrimaryRays << ", \"shadow_rays\": " << c.ShadowRays
       << ", \"lights_traced\": " << impl.LightsTraced << ", \"samples\": " << this->Samples
-      << ", \"pixels\": " << c.Pixels
+      << ", \"adaptive\": " << this->Adaptive << RaysPerPixelJSON(impl.LastTraced)
+      << ", \"penumbra_fraction_model\": " << impl.Penumbra << ", \"pixels\": " << c.Pixels
       << ", \"skipped_still_frame_px\": " << (impl.Still ? c.Pixels : 0)
       << ", \"skipped_background_px\": " << c.Background
       << ", \"traced_facing_away\": " << c.FacingAway
@@ -478,6 +558,7 @@ void vtkRayTracedShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Samples: " << this->Samples << "\n";
+  os << indent << "Adaptive: " << this->Adaptive << "\n";
   os << indent << "LightRadius: " << this->LightRadius << "\n";
   os << indent << "LightAngle: " << this->LightAngle << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";

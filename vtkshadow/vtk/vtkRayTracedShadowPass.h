@@ -18,6 +18,9 @@
  * still scene traces nothing (the mask keeps the last frame's result).
  *
  * Settings (SetOption): samples (rays per pixel and light, 1 = hard),
+ * adaptive (1, the default: a pixel traces a first batch of 8 rays spread
+ * over the light and the rest of `samples` only where they disagree, i.e.
+ * in the penumbra; 0: every pixel traces `samples`),
  * light_radius (world radius of point and spot lights when samples > 1),
  * light_angle (angular diameter in degrees of directional lights when
  * samples > 1), threads (0 = every core), and the base's cast_headlight.
@@ -52,6 +55,17 @@ public:
   vtkGetMacro(Samples, int);
 
   /**
+   * Adaptive ray counts (default 1, on): a pixel under a light with a size
+   * first traces VSH_RT_ADAPTIVE_BATCH (8) of its Samples rays, spread over
+   * the whole light; if they all agree (all blocked or all free) that is its
+   * visibility, else it traces the rest (vsh_rt_adaptive.h). Lit and umbra
+   * pixels then cost 8 rays, penumbra pixels Samples. 0: Samples everywhere.
+   */
+  vtkSetClampMacro(Adaptive, int, 0, 1);
+  vtkGetMacro(Adaptive, int);
+  vtkBooleanMacro(Adaptive, int);
+
+  /**
    * A size for lights that have none of their own (a scene light's `radius`
    * / `angle`, vtkShadowPassBase::GetLightRadius / GetLightAngle, wins):
    * radius (world units) of point and spot lights, angular diameter
@@ -83,7 +97,9 @@ public:
    * `pixels` viewport pixels, `coverage` of them (0..1) showing lit
    * surfaces, `lights` lights at the current threads, from the rays per
    * second this pass measured so far (vsh_rt_cost_ms). Lights with a size
-   * (`sized`) trace Samples rays per pixel, hard lights one.
+   * (`sized`) trace Samples rays per pixel (with Adaptive, 8 plus the rest
+   * on the fraction of pixels measured to be in a penumbra, 0.25 until
+   * measured), hard lights one.
    */
   double EstimateFrameMilliseconds(double pixels, double coverage, int lights, bool sized) const;
 
@@ -112,6 +128,7 @@ protected:
   ~vtkRayTracedShadowPass() override;
 
   int Samples;
+  int Adaptive;
   double LightRadius;
   double LightAngle;
   int NumberOfThreads;

@@ -1,5 +1,6 @@
 #include "vtkShadowRayTracer.h"
 
+#include "vsh_rt_adaptive.h"
 #include "vtkShadowEmbreeScene.h"
 
 #include <algorithm>
@@ -23,6 +24,16 @@ struct Surface
   bool HasNormal;   // false: the refinement missed, no facing test
 };
 
+// One (surface, light) pair whose rays are traced: its rays so far.
+struct Pair
+{
+  Surface S;
+  int Light;
+  int Blocked;
+  int Traced;
+  double Rotation;
+};
+
 // Everything one thread needs, reused from tile to tile.
 struct Worker
 {
@@ -35,7 +46,12 @@ struct Worker
   std::vector<vsh_rt_pixel_ray> Pixels;
   std::vector<Surface> Surfaces;
   std::vector<RTCRay> Rays;
-  std::vector<int> RaySurface, RayLight;
+  std::vector<Pair> Pairs;   // this batch's
+  std::vector<Pair> Pending; // adaptive pairs of every tile, for the second pass
+  std::vector<int> RayPair;
+  // Per light and pixel, the first batch's vsh_rt_adaptive_state (shared,
+  // each pixel written by the thread of its tile).
+  std::vector<std::vector<unsigned char>>* States;
   vtkShadowRayTracer::Counters Count;
 
   void Tile(int begin, int end);
@@ -45,7 +61,11 @@ struct Worker
   bool Exact(int k, double n[3], double& len2, double& side);
   void Miss(int k);
   void Queue(const Surface& s, int surface);
+  void Push(int pair, int begin, int end);
+  void Rest(size_t begin, size_t end);
+  void Finish();
   void Occlude();
+  void Resolve(bool first);
 };
 
 double Worker::Tolerance(int x, int y) const
@@ -283,33 +303,104 @@ void Worker::Queue(const Surface& s, int surface)
       ++this->Count.OutsideCone;
       continue;
     }
-    const int samples = f.Samples[l];
-    for (int k = 0; k < samples; ++k)
+    (void)surface;
+    this->Pairs.push_back({ s, static_cast<int>(l), 0, 0, rotation });
+    const int pair = static_cast<int>(this->Pairs.size()) - 1;
+    this->Push(pair, 0, f.First.empty() ? f.Samples[l] : f.First[l]);
+  }
+}
+
+// Queue the rays of slots [begin, end) of a pair's sample order.
+void Worker::Push(int pair, int begin, int end)
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  const Pair& q = this->Pairs[pair];
+  const Surface& s = q.S;
+  const vsh_rt_light& light = f.Lights[q.Light];
+  const int samples = f.Samples[q.Light];
+  const int* order = f.Order.empty() ? nullptr : f.Order[q.Light].data();
+  double p[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    p[r] = s.Point[r] - EyeToCentre[r];
+  }
+  for (int slot = begin; slot < end; ++slot)
+  {
+    double dir[3], distance;
+    const int k = order ? order[slot] : slot;
+    if (vsh_rt_light_sample(&light, p, k, samples, q.Rotation, dir, &distance) != VSH_RT_OK)
     {
-      double dir[3];
-      if (vsh_rt_light_sample(&light, p, k, samples, rotation, dir, &distance) != VSH_RT_OK)
+      continue;
+    }
+    RTCRay ray;
+    ray.org_x = static_cast<float>(s.Point[0] + s.Offset * s.Normal[0]);
+    ray.org_y = static_cast<float>(s.Point[1] + s.Offset * s.Normal[1]);
+    ray.org_z = static_cast<float>(s.Point[2] + s.Offset * s.Normal[2]);
+    ray.dir_x = static_cast<float>(dir[0]);
+    ray.dir_y = static_cast<float>(dir[1]);
+    ray.dir_z = static_cast<float>(dir[2]);
+    ray.tnear = 0.0f;
+    ray.tfar = std::isfinite(distance) ? static_cast<float>(distance)
+                                       : std::numeric_limits<float>::infinity();
+    ray.mask = 0xffffffffu;
+    ray.time = 0.0f;
+    ray.id = 0;
+    ray.flags = 0;
+    this->Rays.push_back(ray);
+    this->RayPair.push_back(pair);
+  }
+}
+
+// The second pass, over Pending[begin, end): the rest of the samples of
+// every pair whose first batch or a neighbour's disagreed
+// (vsh_rt_adaptive_rest_near: a penumbra narrower than the batch's gaps
+// still shows in some pixel around it).
+void Worker::Rest(size_t begin, size_t end)
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  const int w = f.View.width, h = f.View.height;
+  this->Rays.clear();
+  this->RayPair.clear();
+  this->Pairs.clear();
+  for (size_t k = begin; k < end; ++k)
+  {
+    const Pair& q = this->Pending[k];
+    const std::vector<unsigned char>& state = (*this->States)[q.Light];
+    const int x = q.S.Pixel % w, y = q.S.Pixel / w;
+    unsigned char near[9];
+    int n = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+    {
+      for (int dx = -1; dx <= 1; ++dx)
       {
-        continue;
+        if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h)
+        {
+          near[n++] = state[(y + dy) * w + x + dx];
+        }
       }
-      RTCRay ray;
-      ray.org_x = static_cast<float>(s.Point[0] + s.Offset * s.Normal[0]);
-      ray.org_y = static_cast<float>(s.Point[1] + s.Offset * s.Normal[1]);
-      ray.org_z = static_cast<float>(s.Point[2] + s.Offset * s.Normal[2]);
-      ray.dir_x = static_cast<float>(dir[0]);
-      ray.dir_y = static_cast<float>(dir[1]);
-      ray.dir_z = static_cast<float>(dir[2]);
-      ray.tnear = 0.0f;
-      ray.tfar = std::isfinite(distance) ? static_cast<float>(distance)
-                                         : std::numeric_limits<float>::infinity();
-      ray.mask = 0xffffffffu;
-      ray.time = 0.0f;
-      ray.id = 0;
-      ray.flags = 0;
-      this->Rays.push_back(ray);
-      this->RaySurface.push_back(surface);
-      this->RayLight.push_back(static_cast<int>(l));
+    }
+    const int samples = f.Samples[q.Light], first = f.First[q.Light];
+    const int rest = vsh_rt_adaptive_rest_near(samples, first, near, n);
+    if (rest > 0)
+    {
+      ++this->Count.LightRefined[q.Light];
+      this->Pairs.push_back(q);
+      this->Push(static_cast<int>(this->Pairs.size()) - 1, first, first + rest);
     }
   }
+}
+
+// The second pass over this thread's pending pairs, in runs of a tile's
+// size so the ray streams stay short.
+void Worker::Finish()
+{
+  for (size_t k = 0; k < this->Pending.size(); k += TileSize)
+  {
+    this->Rest(k, std::min(this->Pending.size(), k + TileSize));
+    this->Occlude();
+    this->Resolve(false);
+  }
+  this->Pending.clear();
 }
 
 void Worker::Occlude()
@@ -325,14 +416,42 @@ void Worker::Occlude()
   this->Count.ShadowRays += static_cast<long long>(this->Rays.size());
   for (size_t r = 0; r < this->Rays.size(); ++r)
   {
+    Pair& q = this->Pairs[this->RayPair[r]];
+    ++q.Traced;
+    ++this->Count.LightRays[q.Light];
     // rtcOccluded sets tfar to -inf for a ray that hit something.
-    if (this->Rays[r].tfar < 0.0f)
+    q.Blocked += this->Rays[r].tfar < 0.0f ? 1 : 0;
+  }
+}
+
+// Each pair's visibility: the fraction of its traced rays that were free
+// (1, the initial value, where no ray could be traced). After the first
+// batch (`first`), an adaptive pair also records its batch's state and
+// waits for the second pass.
+void Worker::Resolve(bool first)
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  for (const Pair& q : this->Pairs)
+  {
+    const int pixel = q.S.Pixel;
+    if (q.Traced > 0)
     {
-      const int light = this->RayLight[r];
-      const float weight = 1.0f / static_cast<float>(this->Frame->Samples[light]);
-      const int pixel = this->Surfaces[this->RaySurface[r]].Pixel;
-      float& v = (*this->Out)[light][pixel];
-      v = std::max(0.0f, v - weight);
+      (*this->Out)[q.Light][pixel] =
+        static_cast<float>(1.0 - static_cast<double>(q.Blocked) / q.Traced);
+    }
+    if (!first)
+    {
+      continue;
+    }
+    ++this->Count.LightPixels[q.Light];
+    if (!f.First.empty() && f.First[q.Light] < f.Samples[q.Light])
+    {
+      (*this->States)[q.Light][pixel] =
+        static_cast<unsigned char>(vsh_rt_adaptive_state(q.Traced, q.Blocked));
+      if (q.Traced == f.First[q.Light])
+      {
+        this->Pending.push_back(q);
+      }
     }
   }
 }
@@ -341,14 +460,15 @@ void Worker::Tile(int begin, int end)
 {
   this->Refine(begin, end);
   this->Rays.clear();
-  this->RaySurface.clear();
-  this->RayLight.clear();
+  this->RayPair.clear();
+  this->Pairs.clear();
   for (size_t k = 0; k < this->Surfaces.size(); ++k)
   {
     this->Land(static_cast<int>(k));
     this->Queue(this->Surfaces[k], static_cast<int>(k));
   }
   this->Occlude();
+  this->Resolve(true);
 }
 }
 
@@ -365,12 +485,26 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
   }
   counters = Counters();
   counters.Pixels = pixels;
+  const size_t lights = frame.Lights.size();
+  counters.LightPixels.assign(lights, 0);
+  counters.LightRays.assign(lights, 0);
+  counters.LightRefined.assign(lights, 0);
   const int tiles = (pixels + TileSize - 1) / TileSize;
   threads = std::max(1, std::min(threads, tiles));
   counters.Threads = threads;
   if (scene.IsEmpty() || frame.Lights.empty() || !frame.Depth)
   {
     return;
+  }
+  // First batches everywhere, then (adaptive lights) the rest where a
+  // pixel's 3x3 neighbourhood of batches disagrees.
+  std::vector<std::vector<unsigned char>> states(lights);
+  for (size_t l = 0; l < lights && !frame.First.empty(); ++l)
+  {
+    if (frame.First[l] < frame.Samples[l])
+    {
+      states[l].assign(static_cast<size_t>(pixels), VSH_RT_BATCH_NONE);
+    }
   }
   std::vector<Worker> workers(static_cast<size_t>(threads));
   std::atomic<int> next(0);
@@ -388,6 +522,10 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
     w.Scene = &scene;
     w.Frame = &frame;
     w.Out = &out;
+    w.States = &states;
+    w.Count.LightPixels.assign(lights, 0);
+    w.Count.LightRays.assign(lights, 0);
+    w.Count.LightRefined.assign(lights, 0);
     for (int r = 0; r < 3; ++r)
     {
       w.EyeToCentre[r] = frame.Eye[r] - scene.GetCentre()[r];
@@ -402,6 +540,16 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
   {
     t.join();
   }
+  pool.clear();
+  for (int k = 1; k < threads; ++k)
+  {
+    pool.emplace_back([](Worker* w) { w->Finish(); }, &workers[static_cast<size_t>(k)]);
+  }
+  workers[0].Finish();
+  for (std::thread& t : pool)
+  {
+    t.join();
+  }
   for (const Worker& w : workers)
   {
     counters.Background += w.Count.Background;
@@ -410,6 +558,12 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
     counters.FacingAway += w.Count.FacingAway;
     counters.OutsideCone += w.Count.OutsideCone;
     counters.ShadowRays += w.Count.ShadowRays;
+    for (size_t l = 0; l < lights; ++l)
+    {
+      counters.LightPixels[l] += w.Count.LightPixels[l];
+      counters.LightRays[l] += w.Count.LightRays[l];
+      counters.LightRefined[l] += w.Count.LightRefined[l];
+    }
   }
   counters.Seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -7,7 +7,8 @@
 // triangle and gives its geometric normal (the depth point itself when it
 // misses, e.g. at a silhouette); then, for each light the surface faces and
 // whose cone holds it, `samples` occlusion rays from the point, offset along
-// the normal by vsh_rt_offset_distance, towards points on the light. The
+// the normal by vsh_rt_offset_distance, towards points on the light (with
+// adaptive counts, a first batch and the rest only where it disagrees). The
 // pixels go in tiles of 64 to worker threads; each tile's rays go to Embree
 // as streams (rtcIntersect1M, rtcOccluded1M).
 #ifndef vtkShadowRayTracer_h
@@ -29,6 +30,11 @@ public:
     double Eye[3] = { 0, 0, 0 };  // world position of the camera-relative origin
     std::vector<vsh_rt_light> Lights;
     std::vector<int> Samples; // rays per pixel for each of Lights (1 = hard)
+    // Adaptive counts (vsh_rt_adaptive.h), per light: the first batch's size
+    // (Samples for none) and the order of the spiral's indices, the batch
+    // first. Empty: every pixel traces Samples rays in spiral order.
+    std::vector<int> First;
+    std::vector<std::vector<int>> Order;
     // The depth buffer's error around a pixel's depth: DepthTolerance plus
     // SlopeTolerance times the largest depth step to a drawn neighbour
     // (llvmpipe interpolates depth in float across whole triangles: on large,
@@ -47,6 +53,9 @@ public:
     long long FacingAway = 0;   // (pixel, light) pairs traced whose facet faces away from the light
     long long OutsideCone = 0;  // (pixel, light) pairs outside a spot cone
     long long ShadowRays = 0;
+    // Per light: (pixel, light) pairs traced, their shadow rays, and the
+    // pairs whose first batch disagreed and traced the rest.
+    std::vector<long long> LightPixels, LightRays, LightRefined;
     double Seconds = 0;
     int Threads = 0;
   };
