@@ -258,7 +258,7 @@ public:
    * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
    * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
    * fade, debug_cascades, resolve (0 forward, 1 screen, 2 choose),
-   * tap_texel_px, soft (0 off, 1 PCSS), pcss_blocker_taps, pcss_filter_taps,
+   * tap_texel_px, tile_cull (0/1), soft (0 off, 1 PCSS), pcss_blocker_taps, pcss_filter_taps,
    * pcss_max_texels, and the base's cast_headlight.
    */
   bool SetOption(const char* key, double value) override;
