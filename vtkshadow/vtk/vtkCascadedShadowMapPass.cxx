@@ -94,6 +94,8 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
   , DebugCascades(false)
   , Resolve(FORWARD)
   , TapTexelPixels(4.0)
+  , TileCull(true)
+  , NumberOfTilesCulled(0)
   , Soft(SOFT_PCSS)
   , PCSSBlockerTaps(16)
   , PCSSFilterTaps(24)
@@ -137,6 +139,7 @@ void vtkCascadedShadowMapPass::CopySettings(vtkCascadedShadowMapPass* o)
   this->DebugCascades = o->DebugCascades;
   this->Resolve = o->Resolve;
   this->TapTexelPixels = o->TapTexelPixels;
+  this->TileCull = o->TileCull;
   this->Soft = o->Soft;
   this->PCSSBlockerTaps = o->PCSSBlockerTaps;
   this->PCSSFilterTaps = o->PCSSFilterTaps;
@@ -325,7 +328,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   this->BindRawAtlas(window);
   if (this->Impl->Screen)
   {
-    this->RenderScreenResolved(s, window);
+    this->RenderScreenResolved(s, window, frame);
   }
   else
   {
@@ -641,18 +644,24 @@ void vtkCascadedShadowMapPass::SelectReusable(
   p.casters = &frame.Scene.casters;
   p.stable = this->Stable ? 1 : 0;
   p.resolution = resolution;
-  // How far from a lookup the filter and the bias read, in texels.
-  p.reach_texels = 2.0 + this->BiasScale * 2.0 +
-    (this->Filter == PCF          ? 0.5 * this->PCFSize + 1.0
-        : this->Filter == POISSON ? this->PoissonRadius + 1.0
-                                  : 1.0) +
-    (impl.PCSS ? this->PCSSMaxTexels + 1.0 : 0.0);
+  p.reach_texels = this->LookupReachTexels();
   p.caster_time = frame.CasterTime;
   vsh_csm_selection selection;
   vsh_csm_select_reusable(
     &p, impl.Plan.tiles.tiles, impl.Plan.tiles.tile_count, impl.Held.Rendered.data(), &selection);
   this->NumberOfMapsReused = selection.reused_count;
   bake.assign(selection.bake, selection.bake + selection.bake_count);
+}
+
+//------------------------------------------------------------------------------
+// How far from a lookup the filter and the bias read, in texels.
+double vtkCascadedShadowMapPass::LookupReachTexels() const
+{
+  return 2.0 + this->BiasScale * 2.0 +
+    (this->Filter == PCF          ? 0.5 * this->PCFSize + 1.0
+        : this->Filter == POISSON ? this->PoissonRadius + 1.0
+                                  : 1.0) +
+    (this->Impl->PCSS ? this->PCSSMaxTexels + 1.0 : 0.0);
 }
 
 //------------------------------------------------------------------------------
@@ -1017,6 +1026,8 @@ void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
   if (impl.Mask)
   {
     impl.Mask->ReleaseGraphicsResources(w);
+    impl.Rects[0].ReleaseGraphicsResources();
+    impl.Rects[1].ReleaseGraphicsResources();
   }
   if (impl.Queries[0])
   {
@@ -1054,6 +1065,7 @@ void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DebugCascades: " << this->DebugCascades << "\n";
   os << indent << "Resolve: " << this->Resolve << "\n";
   os << indent << "TapTexelPixels: " << this->TapTexelPixels << "\n";
+  os << indent << "TileCull: " << this->TileCull << "\n";
   os << indent << "Soft: " << this->Soft << "\n";
   os << indent << "PCSSBlockerTaps: " << this->PCSSBlockerTaps << "\n";
   os << indent << "PCSSFilterTaps: " << this->PCSSFilterTaps << "\n";
@@ -1154,6 +1166,10 @@ bool vtkCascadedShadowMapPass::SetOption(const char* key, double v)
   {
     this->SetTapTexelPixels(v);
   }
+  else if (k == "tile_cull" && integral(0, 1))
+  {
+    this->SetTileCull(v != 0);
+  }
   else if (k == "soft" && integral(SOFT_OFF, SOFT_PCSS))
   {
     this->SetSoft(static_cast<int>(v));
@@ -1189,7 +1205,8 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
       << ", \"worlds_held\": " << 1 + this->Impl->Parked.size()
       << ", \"other_worlds_bytes\": " << this->GetWorldsMemoryBytes() << ", \"resolve\": \""
       << (this->UsedScreenResolve ? "screen" : "forward")
-      << "\", \"overdraw\": " << this->Impl->Overdraw << ", \"soft\": \""
+      << "\", \"overdraw\": " << this->Impl->Overdraw
+      << ", \"tiles_culled\": " << this->NumberOfTilesCulled << ", \"soft\": \""
       << (this->UsedPCSS ? "pcss" : "hard")
       << "\", \"pcss_blocker_taps\": " << (this->UsedPCSS ? this->PCSSBlockerTaps : 0)
       << ", \"pcss_filter_taps\": " << (this->UsedPCSS ? this->PCSSFilterTaps : 0)

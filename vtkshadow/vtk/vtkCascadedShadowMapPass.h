@@ -183,6 +183,20 @@ public:
   vtkSetClampMacro(TapTexelPixels, double, 0.0, 1e6);
   vtkGetMacro(TapTexelPixels, double);
 
+  /**
+   * Screen resolve only: decide per 16x16-pixel tile, from the depth
+   * pre-pass, which lookups the tile needs (vsh_csm_screen_tile_needs):
+   * none where it is beyond the shadows or no caster is near it in the
+   * maps, one cascade (no per-pixel choice, no blend) where its depths fall
+   * in one, and draw each kind of tile with a shader compiled for it
+   * (default on). Off: one full-screen draw with the per-pixel code.
+   */
+  vtkSetMacro(TileCull, bool);
+  vtkGetMacro(TileCull, bool);
+  vtkBooleanMacro(TileCull, bool);
+  /** Tiles (of any light) the last screen frame decided without the per-pixel code. */
+  vtkGetMacro(NumberOfTilesCulled, int);
+
   enum SoftModes
   {
     SOFT_OFF = 0,
@@ -244,7 +258,7 @@ public:
    * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
    * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
    * fade, debug_cascades, resolve (0 forward, 1 screen, 2 choose),
-   * tap_texel_px, soft (0 off, 1 PCSS), pcss_blocker_taps, pcss_filter_taps,
+   * tap_texel_px, tile_cull (0/1), soft (0 off, 1 PCSS), pcss_blocker_taps, pcss_filter_taps,
    * pcss_max_texels, and the base's cast_headlight.
    */
   bool SetOption(const char* key, double value) override;
@@ -311,6 +325,8 @@ protected:
   bool DebugCascades;
   int Resolve;
   double TapTexelPixels;
+  bool TileCull;
+  int NumberOfTilesCulled;
   int Soft;
   int PCSSBlockerTaps;
   int PCSSFilterTaps;
@@ -341,6 +357,7 @@ private:
   void UpdateShaderState(const Frame& frame);
   int AllocateAtlas(vtkOpenGLRenderWindow* window);
   void SelectReusable(const Frame& frame, int resolution, std::vector<int>& bake);
+  double LookupReachTexels() const;
   void BakeMaps(vtkOpenGLRenderWindow* window, const Frame& frame, const std::vector<int>& bake,
     int resolution);
   void DrawCasters(vtkShaderProgram* program, const Frame& frame, const vsh_csm_tile& tile);
@@ -349,8 +366,12 @@ private:
   bool ChooseScreenResolve(const Frame& frame) const;
   bool DepthPreciseEnough(const Frame& frame) const;
   void UpdateResolveSources();
-  void RenderScreenResolved(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
-  bool ResolveScreen(const vtkRenderState* s, vtkOpenGLRenderWindow* window);
+  void RenderScreenResolved(
+    const vtkRenderState* s, vtkOpenGLRenderWindow* window, const Frame& frame);
+  bool ResolveScreen(const vtkRenderState* s, vtkOpenGLRenderWindow* window, const Frame& frame);
+  void PlanScreenTiles(const Frame& frame, const double ndcToView[16]);
+  bool DrawResolveTiles(vtkOpenGLRenderWindow* window, int layer, const float ndcToView[16]);
+  void SetResolveUniforms(vtkShaderProgram* program, const float ndcToView[16]);
   void SetLookupUniforms(vtkShaderProgram* program);
   // The #defines of vtkShadowMapLightFS (filter, PCSS), forward and resolve.
   std::string LookupDefines() const;

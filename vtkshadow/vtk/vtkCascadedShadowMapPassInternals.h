@@ -8,6 +8,7 @@
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkShadowCasterGeometry.h"
+#include "vtkShadowClipSpaceRects.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
@@ -75,6 +76,14 @@ struct CascadedHeldMaps
  */
 std::string CascadedLookupCode(const vsh_csm_tile_plan& plan, int first, int count,
   const std::string& target, float margin, const std::string& away);
+
+/**
+ * The resolve's statements for lights first..first+3 over a kind of screen
+ * tile: `codes` holds each light's VSH_CSM_SCREEN_* (vsh_csm_screen.h):
+ * lit without a lookup, one cascade's lookup with its map index compiled
+ * in, or the per-pixel code of CascadedLookupCode.
+ */
+std::string CascadedTileLookupCode(const vsh_csm_tile_plan& plan, int first, const int codes[4]);
 }
 
 // One frame's inputs, gathered from VTK: the plain scene the core plans
@@ -135,6 +144,20 @@ struct vtkCascadedShadowMapPass::Internals
   double Overdraw = -1.0;
   int FramesSinceMeasure = 0;
   bool Measuring = false;
+  // TileCull: the pre-pass depth read back, its per-tile ranges and the
+  // pixels it covers, and per mask texture the kinds of tile to draw (the
+  // resolve source compiled for each, its range of rectangles).
+  struct TileGroup
+  {
+    std::string Source;
+    int First = 0;
+    int Count = 0;
+  };
+  std::vector<float> DepthRead, TileMin, TileMax;
+  long long CoveredPixels = 0;
+  bool TilesPlanned = false;
+  std::vector<TileGroup> Groups[2];
+  vtkShadowClipSpaceRects Rects[2];
   // Ranks sharing the image (vtkShadowRankReduction): bounds and maps
   // reduced over them.
   vtkSmartPointer<vtkMultiProcessController> Controller;

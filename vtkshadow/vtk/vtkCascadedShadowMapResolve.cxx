@@ -202,7 +202,7 @@ void vtkCascadedShadowMapPass::UpdateResolveSources()
 // hooks stay registered through the pre-pass so the mappers build one
 // shader per frame, not two.
 void vtkCascadedShadowMapPass::RenderScreenResolved(
-  const vtkRenderState* s, vtkOpenGLRenderWindow* window)
+  const vtkRenderState* s, vtkOpenGLRenderWindow* window, const Frame& frame)
 {
   Internals& impl = *this->Impl;
   if (!impl.Mask)
@@ -231,12 +231,21 @@ void vtkCascadedShadowMapPass::RenderScreenResolved(
     glEndQuery(impl.FragmentQuery);
   }
   impl.PrePass = false;
-  ok = ok && this->ResolveScreen(s, window);
+  ok = ok && this->ResolveScreen(s, window, frame);
   if (ok && impl.Measuring)
   {
     GLuint fragments = 0, pixels = 0;
     glGetQueryObjectuiv(impl.Queries[0], GL_QUERY_RESULT, &fragments);
-    glGetQueryObjectuiv(impl.Queries[1], GL_QUERY_RESULT, &pixels);
+    if (impl.TilesPlanned)
+    {
+      // The tiled resolve draws only some tiles: the pixels covered come
+      // from the depth it read back.
+      pixels = static_cast<GLuint>(impl.CoveredPixels);
+    }
+    else
+    {
+      glGetQueryObjectuiv(impl.Queries[1], GL_QUERY_RESULT, &pixels);
+    }
     impl.Overdraw = pixels > 0 ? static_cast<double>(fragments) / pixels : 1.0;
     impl.FramesSinceMeasure = 0;
   }
@@ -257,7 +266,8 @@ void vtkCascadedShadowMapPass::RenderScreenResolved(
 // One full-screen draw per mask texture: every visible pixel's position
 // (camera-relative view coordinates) from the depth, its normal from the
 // neighbours, and each light's filtered lookup.
-bool vtkCascadedShadowMapPass::ResolveScreen(const vtkRenderState* s, vtkOpenGLRenderWindow* window)
+bool vtkCascadedShadowMapPass::ResolveScreen(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* window, const Frame& frame)
 {
   Internals& impl = *this->Impl;
   vtkShadowScreenMask& mask = *impl.Mask;
@@ -274,8 +284,11 @@ bool vtkCascadedShadowMapPass::ResolveScreen(const vtkRenderState* s, vtkOpenGLR
   vtkMatrix4x4::Invert(ndcToView, ndcToView);
   float ndcToViewF[16];
   vtkshadow::ToFloatTransposed(ndcToView, ndcToViewF);
-  const float size[2] = { static_cast<float>(mask.GetSize()[0]),
-    static_cast<float>(mask.GetSize()[1]) };
+  impl.TilesPlanned = false;
+  if (this->TileCull)
+  {
+    this->PlanScreenTiles(frame, ndcToView);
+  }
 
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglColorMask colorMask(state);
@@ -295,6 +308,14 @@ bool vtkCascadedShadowMapPass::ResolveScreen(const vtkRenderState* s, vtkOpenGLR
   const int layers = mask.GetLightCount() > 4 ? 2 : 1;
   for (int layer = 0; layer < layers && ok; ++layer)
   {
+    if (impl.TilesPlanned)
+    {
+      mask.BeginDraw(4 * layer, false);
+      ok = this->DrawResolveTiles(window, layer, ndcToViewF);
+      mask.EndDraw();
+      ok = ok && mask.GetError().empty();
+      continue;
+    }
     vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
       vtkShadowScreenQuadVS, impl.ResolveSource[layer].c_str(), "");
     if (!program)
@@ -302,10 +323,7 @@ bool vtkCascadedShadowMapPass::ResolveScreen(const vtkRenderState* s, vtkOpenGLR
       ok = false;
       break;
     }
-    this->SetLookupUniforms(program);
-    program->SetUniformi("vshDepth", depth->GetTextureUnit());
-    program->SetUniformMatrix4x4("vshNDCToView", ndcToViewF);
-    program->SetUniform2f("vshMaskSize", size);
+    this->SetResolveUniforms(program, ndcToViewF);
     mask.BeginDraw(4 * layer, false);
     if (impl.Measuring && layer == 0)
     {
@@ -321,4 +339,19 @@ bool vtkCascadedShadowMapPass::ResolveScreen(const vtkRenderState* s, vtkOpenGLR
   }
   depth->Deactivate();
   return ok;
+}
+
+//------------------------------------------------------------------------------
+// The resolve shader's uniforms: the lookups', the pre-pass depth and the
+// reconstruction's.
+void vtkCascadedShadowMapPass::SetResolveUniforms(
+  vtkShaderProgram* program, const float ndcToView[16])
+{
+  vtkShadowScreenMask& mask = *this->Impl->Mask;
+  const float size[2] = { static_cast<float>(mask.GetSize()[0]),
+    static_cast<float>(mask.GetSize()[1]) };
+  this->SetLookupUniforms(program);
+  program->SetUniformi("vshDepth", mask.GetDepthTexture()->GetTextureUnit());
+  program->SetUniformMatrix4x4("vshNDCToView", const_cast<float*>(ndcToView));
+  program->SetUniform2f("vshMaskSize", size);
 }
