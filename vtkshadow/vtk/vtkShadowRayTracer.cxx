@@ -153,7 +153,6 @@ void Worker::Refine(int begin, int end)
 void Worker::Land(int k)
 {
   const RTCRayHit& rh = this->Hits[k];
-  const vsh_rt_pixel_ray& ray = this->Pixels[k];
   Surface& s = this->Surfaces[k];
   const double dir[3] = { rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z };
   if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID && rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID)
