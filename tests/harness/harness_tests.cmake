@@ -85,3 +85,12 @@ add_test(NAME harness.raytrace_adaptive
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_raytrace_adaptive.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/raytrace_adaptive)
 set_tests_properties(harness.raytrace_adaptive PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# auto's choice for lights with a size by penumbra_target (issue 15 item 5):
+# a loose target picks a cheap candidate (planar or PCSS), a tight one
+# raytrace with the model's N; both measured within the target against the
+# exact penumbra; hard lights unchanged; bad targets exit 2.
+add_test(NAME harness.auto_soft
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_auto_soft.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/auto_soft)
+set_tests_properties(harness.auto_soft PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)

@@ -30,6 +30,7 @@
 
 #include "vsh_auto.h"
 #include "vsh_auto_general.h"
+#include "vsh_auto_soft.h"
 #include "vsh_mat4.h"
 #include "vsh_silhouette.h"
 #include "vsh_volume.h"
@@ -66,6 +67,9 @@ struct vtkAutoShadowPass::Internals
   std::string GeneralJSON;                        // per map light: the candidates auto weighed
   std::vector<std::vector<double>> Lights;        // per switched-on light: homogeneous, world
   std::vector<bool> SoftLights;                   // per switched-on light: has a radius or angle
+  std::string SoftJSON;                           // per light with a size: the soft candidates
+  int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
+  int RaySamples = 0;    // the frame's samples for raytrace's lights with a size (0: none)
 
   // What was chosen: for the frame and per switched-on light.
   vtkshadow::TechniqueSet Choice = vtkshadow::TechniqueSet::None;
@@ -158,6 +162,8 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   impl.LightChoices.clear();
   impl.Lights.clear();
   impl.SoftLights.clear();
+  impl.SoftJSON.clear();
+  impl.PlanarSamples = impl.RaySamples = 0;
   this->LightReasons.clear();
   double stretch = 1.0, edgeLength = 0.0;
   std::vector<double> edgeLengths; // per light: its casters' outline (map lights)
@@ -170,7 +176,12 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
     const vsh_auto_light_choice c =
       vsh_auto_choose_light(impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous,
         light->LightTypeIsHeadlight() ? 1 : 0, concave);
-    if (c.technique == VSH_AUTO_CSM)
+    this->LightReasons.push_back(this->LightReasonText(c.reason, c.a, c.b));
+    // A light with a size: the soft candidates by the penumbra target.
+    const int technique = impl.SoftLights.back()
+      ? this->ChooseSoft(renderer, impl.LightChoices.size(), c.technique)
+      : c.technique;
+    if (technique == VSH_AUTO_CSM)
     {
       // What the map's texels must resolve: the casters' outlines, and how
       // far grazing light stretches them on plane receivers.
@@ -182,12 +193,12 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
         vsh_auto_plane_stretch(
           impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous));
     }
-    impl.LightChoices.push_back(static_cast<vtkshadow::TechniqueSet>(c.technique));
-    this->LightReasons.push_back(this->LightReasonText(c.reason, c.a, c.b));
+    impl.LightChoices.push_back(static_cast<vtkshadow::TechniqueSet>(technique));
   }
   this->ChooseTexelTarget(renderer, edgeLength, stretch);
   edgeLengths.resize(impl.LightChoices.size(), 0.0);
   this->ChooseGeneral(renderer, edgeLengths);
+  this->ApplySoftSamples();
   this->ApplyLightMasks();
   this->DescribeChoice();
 }
@@ -485,6 +496,91 @@ double vtkAutoShadowPass::ThinnestCasterPixels(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+int vtkAutoShadowPass::ChooseSoft(vtkRenderer* renderer, size_t l, int technique)
+{
+  // The hard rules found nothing to shadow: nothing to soften either.
+  if (technique == VSH_AUTO_NONE)
+  {
+    return technique;
+  }
+  Internals& impl = *this->Impl;
+  const int* size = renderer->GetSize();
+  vsh_auto_soft_input in = {};
+  in.target = this->PenumbraTarget;
+  in.pixels = std::max(1.0, static_cast<double>(size[0]) * size[1]);
+  in.planar_available = technique == VSH_AUTO_PLANAR ? 1 : 0;
+  in.csm_available = 1;
+  in.pcss = this->CascadedPass->GetSoft() == vtkCascadedShadowMapPass::SOFT_PCSS ? 1 : 0;
+  in.raytrace_available = 1;
+  in.map_ms = MapLookupMsPerPixel * in.pixels;
+  this->RayTracedPass->GetCostInputs(in.pixels, 1.0, 1, true, &in.rt_model, &in.rt_frame);
+  in.rt_adaptive = this->RayTracedPass->GetAdaptive();
+  vsh_auto_soft_choice choice;
+  const int pick = vsh_auto_soft_choose(&in, &choice);
+  static const char* const names[VSH_AUTO_SOFT_COUNT] = { "planar", "pcss", "raytrace" };
+  std::ostringstream json, why;
+  json.precision(4);
+  why.precision(3);
+  json << (impl.SoftJSON.empty() ? "" : ", ") << "{\"light\": " << l << ", \"candidates\": {";
+  why << "a light with a size, penumbra target " << this->PenumbraTarget << ": ";
+  for (int i = 0; i < VSH_AUTO_SOFT_COUNT; ++i)
+  {
+    const vsh_auto_soft_candidate& c = choice.candidates[i];
+    json << (i ? ", " : "") << "\"" << names[i]
+         << "\": {\"available\": " << (c.available ? "true" : "false")
+         << ", \"samples\": " << c.samples << ", \"pen_mae\": " << JSONNumber(c.pen_mae)
+         << ", \"ms\": " << JSONNumber(c.ms) << "}";
+    if (c.available)
+    {
+      why << (i ? ", " : "") << names[i] << (i == VSH_AUTO_SOFT_PCSS ? "" : " N ")
+          << (i == VSH_AUTO_SOFT_PCSS ? std::string() : std::to_string(c.samples))
+          << " predicted pen_mae " << c.pen_mae << ", " << c.ms << " ms";
+    }
+  }
+  json << "}, \"pick\": \"" << (pick >= 0 ? names[pick] : "none")
+       << "\", \"met\": " << (choice.met ? "true" : "false") << "}";
+  impl.SoftJSON += json.str();
+  if (pick < 0)
+  {
+    return technique;
+  }
+  why << (choice.met ? "; the cheapest that meets it: " : "; none meets it, the lowest error: ")
+      << names[pick];
+  // The hard rules' reason stays when the soft pick keeps their technique.
+  static const int techniques[VSH_AUTO_SOFT_COUNT] = { VSH_AUTO_PLANAR, VSH_AUTO_CSM,
+    VSH_AUTO_RAYTRACE };
+  std::string& reason = this->LightReasons.back();
+  reason = techniques[pick] == technique ? reason + "; " + why.str() : why.str();
+  const int samples = choice.candidates[pick].samples;
+  if (pick == VSH_AUTO_SOFT_PLANAR)
+  {
+    impl.PlanarSamples = std::max(impl.PlanarSamples, samples);
+  }
+  if (pick == VSH_AUTO_SOFT_RAYTRACE)
+  {
+    impl.RaySamples = std::max(impl.RaySamples, samples);
+  }
+  return techniques[pick];
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ApplySoftSamples()
+{
+  // One setting per pass: lights with a size that chose the same pass share
+  // the largest N any of them needs. Frames without such lights leave the
+  // passes' settings alone (hard lights never read them).
+  const Internals& impl = *this->Impl;
+  if (impl.PlanarSamples > 0)
+  {
+    this->PlanarPass->SetSoftSamples(impl.PlanarSamples);
+  }
+  if (impl.RaySamples > 0)
+  {
+    this->RayTracedPass->SetSamples(impl.RaySamples);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths)
 {
   // Each map light: csm predicts the target met by its texel model unless a
@@ -506,10 +602,11 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
     int Pick;
   };
   std::vector<Weighed> weighed;
-  bool anyVolume = false, anyRays = false;
+  // Lights with a size were weighed by the penumbra target (ChooseSoft).
+  bool anyVolume = false, anyRays = impl.RaySamples > 0;
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
-    if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
+    if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded || impl.SoftLights[l])
     {
       continue;
     }
@@ -828,6 +925,7 @@ void vtkAutoShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MaxError: " << this->MaxError << "\n";
   os << indent << "MaxTexelPixels: " << this->MaxTexelPixels << "\n";
+  os << indent << "PenumbraTarget: " << this->PenumbraTarget << "\n";
   os << indent << "UsedTexelTarget: " << this->UsedTexelTarget << "\n";
   os << indent << "UsedStretch: " << this->UsedStretch << "\n";
   os << indent << "UsedEdgeLength: " << this->UsedEdgeLength << "\n";
@@ -853,7 +951,12 @@ bool vtkAutoShadowPass::SetOption(const char* key, double value)
     this->SetMaxTexelPixels(value);
     return true;
   }
-  if (k == "max_error" || k == "max_texel_px")
+  if (k == "penumbra_target" && value > 0.0 && value <= 1.0)
+  {
+    this->SetPenumbraTarget(value);
+    return true;
+  }
+  if (k == "max_error" || k == "max_texel_px" || k == "penumbra_target")
   {
     return false;
   }
@@ -901,6 +1004,8 @@ std::string vtkAutoShadowPass::GetStatsJSON(vtkRenderer* renderer) const
   }
   out << ", \"thinnest_caster_px\": " << JSONNumber(this->UsedThinnestPixels) << ", \"general\": ["
       << this->Impl->GeneralJSON << "]";
+  out << ", \"penumbra_target\": " << this->PenumbraTarget << ", \"soft\": ["
+      << this->Impl->SoftJSON << "]";
   if (vtkshadow::Has(this->Impl->Choice, TechniqueSet::RayTraced))
   {
     out << ", \"raytrace\": {" << this->RayTracedPass->GetStatsJSON(renderer) << "}";

@@ -82,6 +82,17 @@ public:
   vtkGetMacro(MaxError, double);
   vtkSetClampMacro(MaxTexelPixels, double, 0.0, 1e6);
   vtkGetMacro(MaxTexelPixels, double);
+  /**
+   * The target for lights with a size (radius or angle): pen_mae, the mean
+   * absolute visibility error inside the penumbra (docs/metrics.md; default
+   * 0.03; the option `penumbra_target` takes 0 < t <= 1). Such a light gets
+   * the cheapest of planar (soft_samples N, when its shadows fall on plane
+   * receivers only), csm with PCSS and raytrace (samples N) whose predicted
+   * pen_mae meets it, and that technique's N (vsh_auto_soft.h); when none
+   * does, the lowest predicted error. Lights without a size ignore it.
+   */
+  vtkSetClampMacro(PenumbraTarget, double, 0.0, 1.0);
+  vtkGetMacro(PenumbraTarget, double);
 
   /**
    * "none", "planar", "csm", "volume", "raytrace" or a combination such
@@ -178,6 +189,7 @@ protected:
   double UsedStretch;
   double UsedEdgeLength;
   double UsedThinnestPixels = 0.0;
+  double PenumbraTarget = 0.03;
   // The choices (typed: vtkShadowTechniqueSet.h), the frame's objects and
   // the casters' meshes (convexity, silhouettes), kept between frames.
   struct Internals;
@@ -197,6 +209,13 @@ private:
   std::string LightReasonText(int reason, int a, int b) const;
   void ApplyLightMasks();
   void ChooseTexelTarget(vtkRenderer* renderer, double edgeLength, double stretch);
+  // For light number `l` with a size, given `technique` (a VSH_AUTO_*
+  // value) by the hard-light rules: the soft candidate meeting the penumbra
+  // target at the least predicted cost (vsh_auto_soft), its samples kept for
+  // the frame, the weighed candidates in the stats and the reason; returns
+  // the light's technique.
+  int ChooseSoft(vtkRenderer* renderer, size_t l, int technique);
+  void ApplySoftSamples();
   // For the lights given maps: keep the map when its predicted error meets
   // the target and it is the cheapest such candidate, else an exact one.
   void ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths);

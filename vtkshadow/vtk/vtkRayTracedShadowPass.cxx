@@ -340,21 +340,30 @@ vtkIdType vtkRayTracedShadowPass::GetNumberOfCasterTriangles() const
 double vtkRayTracedShadowPass::EstimateFrameMilliseconds(
   double pixels, double coverage, int lights, bool sized) const
 {
+  vsh_rt_cost_model model;
   vsh_rt_cost_input input;
-  input.pixels = pixels;
-  input.coverage = coverage;
-  input.lights = lights;
+  this->GetCostInputs(pixels, coverage, lights, sized, &model, &input);
+  return vsh_rt_cost_ms(&model, &input);
+}
+
+//------------------------------------------------------------------------------
+void vtkRayTracedShadowPass::GetCostInputs(double pixels, double coverage, int lights, bool sized,
+  vsh_rt_cost_model* model, vsh_rt_cost_input* input) const
+{
+  *model = this->Impl->Cost;
+  input->pixels = pixels;
+  input->coverage = coverage;
+  input->lights = lights;
   // A hard light traces one ray per pixel, whatever Samples says: counting
   // Samples (64) for it made auto predict 7.8 s for arrow-glyphs' 133 ms.
-  input.samples = sized ? this->Samples : 1;
+  input->samples = sized ? this->Samples : 1;
   // Adaptive counts: every pixel pays the first batch, only the measured
   // penumbra fraction the rest.
-  input.first = vsh_rt_adaptive_first(input.samples, this->Adaptive, VSH_RT_ADAPTIVE_BATCH);
-  input.penumbra = this->Impl->Penumbra;
-  input.threads = this->NumberOfThreads > 0
+  input->first = vsh_rt_adaptive_first(input->samples, this->Adaptive, VSH_RT_ADAPTIVE_BATCH);
+  input->penumbra = this->Impl->Penumbra;
+  input->threads = this->NumberOfThreads > 0
     ? this->NumberOfThreads
     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return vsh_rt_cost_ms(&this->Impl->Cost, &input);
 }
 
 //------------------------------------------------------------------------------

@@ -39,6 +39,9 @@
 
 #include <memory> // for std::unique_ptr
 
+struct vsh_rt_cost_model;
+struct vsh_rt_cost_input;
+
 class VTKSHADOW_EXPORT vtkRayTracedShadowPass : public vtkShadowPassBase
 {
 public:
@@ -102,6 +105,17 @@ public:
    * measured), hard lights one.
    */
   double EstimateFrameMilliseconds(double pixels, double coverage, int lights, bool sized) const;
+
+#ifndef __VTK_WRAP__
+  /**
+   * The cost model and frame EstimateFrameMilliseconds uses (rays per
+   * second measured so far, threads, the measured penumbra fraction, the
+   * first batch for Samples): auto's choice for a light with a size
+   * (vsh_auto_soft) prices other sample counts with it.
+   */
+  void GetCostInputs(double pixels, double coverage, int lights, bool sized,
+    vsh_rt_cost_model* model, vsh_rt_cost_input* input) const;
+#endif
 
   long long GetMemoryBytes() const override;
   /**

@@ -1,0 +1,158 @@
+"""auto's choice for lights with a size by the penumbra target (issue 15,
+item 5: "auto chooses among the soft techniques by the error target, for the
+penumbra metric") against the exact penumbra.
+
+    test_auto_soft.py --bin BUILD/bin --out DIR
+
+The scene of test_soft.py (a sphere over a plane receiver, disk lights of
+radius 0.5 and 0.35, a sun of 6 degrees), rendered per light by
+vtkshadow-render --technique auto --set penumbra_target=T at 160x120 and
+compared by exact_penumbra (the unoccluded fraction of the light,
+integrated per pixel on the plane, vsh_soft). Per light:
+
+- LOOSE (0.2): --stats' soft entry picks a cheap candidate (planar or
+  pcss; here planar, since every shadow falls on the plane) with the
+  target met, the light's choice is that technique, and the measured
+  pen_mae is within the target;
+- TIGHT (0.014, below planar's predicted floor of 0.0148 at 1024 samples,
+  so rays are the only candidate that meets it whatever the measured ray
+  rate makes them cost): the pick is raytrace with the model's N (the
+  fewest with 0.106 / sqrt(N) <= 0.014: 58), the ray-traced pass traced
+  that N, and the measured pen_mae is within the target.
+
+Also: the same scene with sizes 0 renders the same bytes under both
+targets, with no soft entry (hard lights keep their choice), and
+penumbra_target 0, -1, 1.5 exit with status 2.
+
+Prints every figure; exits 1 when any bound fails.
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import soft_penumbra_common as common  # noqa: E402
+from soft_penumbra_common import SCENE, SIZE, failures, run, scene_with  # noqa: E402
+
+LOOSE = 0.2
+TIGHT = 0.014
+CHEAP = ("planar", "pcss")
+# The model's raytrace constant (vsh_auto_soft.c): pen_mae = 0.106 / sqrt(N).
+RAY_A = 0.106
+
+
+def render(args, scene, target, k, stem):
+    """auto at penumbra_target `target`, light k: (exact figures, stats)."""
+    stem = os.path.join(args.out, stem)
+    vis, mask, image, stats = stem + "_vis.png", stem + "_mask.png", stem + ".png", stem + ".json"
+    run([os.path.join(args.bin, "vtkshadow-render"), scene, "--technique", "auto",
+         "--set", "penumbra_target=%g" % target, "--light", str(k), "--size", SIZE,
+         "--visibility", vis, "--mask", mask, "--image", image, "--stats", stats,
+         "--frames", "1", "--rounds", "1", "--warmup", "0", "--quiet"])
+    try:
+        with open(stats) as f:
+            technique_stats = json.load(f)["technique_stats"]
+    except (OSError, ValueError, KeyError) as e:
+        failures.append("%s: no technique_stats in --stats (%s)" % (stem, e))
+        technique_stats = None
+    return vis, mask, image, technique_stats
+
+
+def soft_entry(stats, k):
+    for entry in (stats or {}).get("soft", []):
+        if entry.get("light") == k:
+            return entry
+    return None
+
+
+def check(args, scene, target, k, allowed):
+    """Renders light k at `target`; the pick must be in `allowed` and the
+    measured pen_mae within the target. Returns (pick, samples, pen_mae)."""
+    vis, mask, _, stats = render(args, scene, target, k, "t%g_light%d" % (target, k))
+    m = common.exact(args.bin, scene, k, vis, mask)
+    entry = soft_entry(stats, k)
+    if not stats or not entry:
+        failures.append("target %g light %d: no soft entry in --stats" % (target, k))
+        return None
+    pick = entry["pick"]
+    cand = entry["candidates"].get(pick, {})
+    print("penumbra_target %g light %d: pick %s samples %s predicted pen_mae %s ms %s met %s; "
+          "light choice %s; exact: %s" % (target, k, pick, cand.get("samples"), cand.get("pen_mae"),
+                                          cand.get("ms"), entry["met"], stats["light_choices"][k], m),
+          flush=True)
+    print("  candidates: %s" % json.dumps(entry["candidates"]), flush=True)
+    if pick not in allowed:
+        failures.append("target %g light %d: picked %s, expected one of %s" % (target, k, pick, allowed))
+    if not entry["met"]:
+        failures.append("target %g light %d: predicted not met" % (target, k))
+    choice = {"planar": "planar", "pcss": "csm", "raytrace": "raytrace"}.get(pick)
+    if stats["light_choices"][k] != choice:
+        failures.append("target %g light %d: light choice %s, pick %s"
+                        % (target, k, stats["light_choices"][k], pick))
+    if not m or m["pen_pixels"] < 100:
+        failures.append("target %g light %d: no penumbra measured" % (target, k))
+    elif not m["pen_mae"] <= target:
+        failures.append("target %g light %d: measured pen_mae %g > target" % (target, k, m["pen_mae"]))
+    return stats, cand
+
+
+def check_tight_samples(stats, cand, k):
+    want = math.ceil((RAY_A / TIGHT) ** 2 - 1e-9)
+    if cand.get("samples") != want:
+        failures.append("light %d: raytrace samples %s, the model gives %d" % (k, cand.get("samples"), want))
+    traced = (stats.get("raytrace") or {}).get("samples")
+    if traced != want:
+        failures.append("light %d: the ray-traced pass traced samples=%s, not %d" % (k, traced, want))
+
+
+def check_hard(args):
+    """Sizes 0: the same bytes under both targets, no soft entry."""
+    scene = scene_with(args.out, "hard", 0)
+    images = []
+    for target in (LOOSE, TIGHT):
+        _, _, image, stats = render(args, scene, target, 0, "hard_t%g" % target)
+        images.append(image)
+        if stats is not None and stats.get("soft"):
+            failures.append("hard lights got a soft entry at target %g" % target)
+        print("sizes 0, target %g: choice %s" % (target, (stats or {}).get("choice")), flush=True)
+    if not common.same_bytes(images[0], images[1]):
+        failures.append("hard lights: the penumbra target changed the image")
+
+
+def check_bad_values(args, scene):
+    for value in ("0", "-1", "1.5"):
+        cmd = [os.path.join(args.bin, "vtkshadow-render"), scene, "--technique", "auto", "--set",
+               "penumbra_target=" + value, "--size", SIZE,
+               "--image", os.path.join(args.out, "bad.png"), "--quiet"]
+        r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        if r.returncode != 2 or "penumbra_target" not in r.stderr:
+            failures.append("penumbra_target=%s: status %d, expected 2 with a message"
+                            % (value, r.returncode))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bin", required=True)
+    ap.add_argument("--out", required=True)
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    scene = scene_with(args.out, "soft", None)
+    for k in range(len(SCENE["lights"])):
+        check(args, scene, LOOSE, k, CHEAP)
+        result = check(args, scene, TIGHT, k, ("raytrace",))
+        if result:
+            check_tight_samples(result[0], result[1], k)
+    check_hard(args)
+    check_bad_values(args, scene)
+    if failures:
+        print("FAILED:\n  " + "\n  ".join(failures))
+        return 1
+    print("harness.auto_soft: all bounds met")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

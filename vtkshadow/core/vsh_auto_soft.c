@@ -1,0 +1,161 @@
+/* vsh_auto_soft.c - the soft-light choice of auto (vsh_auto_soft.h). */
+#include "vsh_auto_soft.h"
+
+#include "vsh_auto_general.h"
+#include "vsh_rt_adaptive.h"
+
+#include <math.h>
+#include <stddef.h>
+
+/* pen_mae(N) = a / sqrt(N) + b, against POV-Ray's area light (grid 17),
+ * light 0 of scenes/soft/sphere-disk at 640x480 (docs/results.md, "Soft
+ * shadows"):
+ * - planar: through N = 16 (0.0409) and 64 (0.0264): a = 0.12, b = 0.011.
+ *   The bias is what planar never draws: the caster's own penumbra on its
+ *   terminator (planar shadows receivers only) and the disk facing the
+ *   caster's centre; against the exact penumbra on the plane alone planar
+ *   has none (0.008 at N = 64, docs/soft-shadows.md).
+ * - raytrace: unbiased (measured bias under 0.001), a fitted through the
+ *   origin to N = 16 (0.0276) and 64 (0.0111): a = 0.106 (it predicts
+ *   0.0265 and 0.0133). Rays rotated per pixel fall faster than 1/sqrt(N)
+ *   from N = 1 (0.19) to 16, so the model is pessimistic above 64 and
+ *   optimistic below 16 (0.053 predicted at N = 4, 0.085 measured).
+ *   glyphs-soft measured 0.024 at N = 64 (its reference is noisier).
+ * - PCSS (csm, soft=1): no N; the worse of the two scenes, glyphs-soft
+ *   0.0904 (sphere-disk 0.0550): overlapping blockers at different depths
+ *   get one width, which the glyphs are full of.
+ * - csm with PCSS off: the hard shadow, 0.30 (glyphs-soft 0.3006,
+ *   sphere-disk 0.1868). */
+#define PLANAR_A 0.12
+#define PLANAR_B 0.011
+#define RAYTRACE_A 0.106
+#define RAYTRACE_B 0.0
+#define PCSS_PEN_MAE 0.090
+#define HARD_PEN_MAE 0.30
+
+/* Costs (ms per pixel of the viewport), from the same table (glyphs-soft,
+ * 640x480 = 307,200 px, 2 soft pairs, interleaved against none on a
+ * loaded 2-core VM under llvmpipe: the order of magnitude, not more):
+ * - planar: each sample (452.6 - 30.7) / 63 / 2 = 3.35 ms a pair: 1.09e-5
+ *   per pixel (a stencil clear, the casters, a viewport quad); N = 1 costs
+ *   13.0 ms over none, 6.5 ms a pair, so the pair's fixed part is 3.15 ms:
+ *   1.03e-5 per pixel. The dearer of the two scenes (sphere-disk: 1.15 ms
+ *   a sample and pair).
+ * - PCSS: 16 blocker and 24 filter taps against one hard lookup measured
+ *   212.8 / 21.1 = 10.1 times the hard map's shadow work on glyphs-soft
+ *   (84.1 / 11.6 = 7.3 on sphere-disk): 10. */
+#define PLANAR_BASE_MS_PER_PX 1.03e-5
+#define PLANAR_SAMPLE_MS_PER_PX 1.09e-5
+#define PCSS_COST_FACTOR 10.0
+
+double vsh_auto_soft_pen_mae(int technique, int samples)
+{
+  const double n = samples > 1 ? (double)samples : 1.0;
+  switch (technique) {
+  case VSH_AUTO_SOFT_PLANAR:
+    return PLANAR_A / sqrt(n) + PLANAR_B;
+  case VSH_AUTO_SOFT_RAYTRACE:
+    return RAYTRACE_A / sqrt(n) + RAYTRACE_B;
+  case VSH_AUTO_SOFT_PCSS:
+    return PCSS_PEN_MAE;
+  default:
+    return NAN;
+  }
+}
+
+int vsh_auto_soft_samples_for(int technique, double target, int min_samples, int max_samples)
+{
+  if (technique == VSH_AUTO_SOFT_PCSS || max_samples <= min_samples) {
+    return min_samples;
+  }
+  if (!(vsh_auto_soft_pen_mae(technique, max_samples) <= target)) {
+    return max_samples; /* also a NaN target */
+  }
+  /* The error falls monotonically with N: bisect for the first N that
+   * meets the target (at most 11 steps over 1..1024). */
+  int lo = min_samples, hi = max_samples;
+  while (lo < hi) {
+    const int mid = lo + (hi - lo) / 2;
+    if (vsh_auto_soft_pen_mae(technique, mid) <= target) {
+      hi = mid;
+    } else {
+      lo = mid + 1;
+    }
+  }
+  return lo;
+}
+
+double vsh_auto_soft_planar_ms(double pixels, int samples)
+{
+  const double px = pixels > 0.0 && isfinite(pixels) ? pixels : 0.0;
+  const double n = samples > 1 ? (double)samples : 1.0;
+  return px * (PLANAR_BASE_MS_PER_PX + n * PLANAR_SAMPLE_MS_PER_PX);
+}
+
+double vsh_auto_soft_pcss_ms(double map_ms)
+{
+  return map_ms > 0.0 && isfinite(map_ms) ? PCSS_COST_FACTOR * map_ms : 0.0;
+}
+
+static int clamp_samples(int n, int fallback)
+{
+  if (n <= 0) {
+    return fallback;
+  }
+  return n < VSH_AUTO_SOFT_MIN_SAMPLES
+           ? VSH_AUTO_SOFT_MIN_SAMPLES
+           : (n > VSH_AUTO_SOFT_MAX_SAMPLES ? VSH_AUTO_SOFT_MAX_SAMPLES : n);
+}
+
+static double raytrace_ms(const vsh_auto_soft_input *in, int samples)
+{
+  vsh_rt_cost_input frame = in->rt_frame;
+  frame.pixels = in->pixels;
+  frame.samples = samples;
+  frame.first = vsh_rt_adaptive_first(samples, in->rt_adaptive, VSH_RT_ADAPTIVE_BATCH);
+  return vsh_rt_cost_ms(&in->rt_model, &frame);
+}
+
+int vsh_auto_soft_choose(const vsh_auto_soft_input *in, vsh_auto_soft_choice *choice)
+{
+  if (!in || !choice) {
+    return -1;
+  }
+  const int lo = clamp_samples(in->min_samples, VSH_AUTO_SOFT_MIN_SAMPLES);
+  const int hi = clamp_samples(in->max_samples, VSH_AUTO_SOFT_MAX_SAMPLES);
+  /* A target that is not a number meets nothing (then the lowest error). */
+  const double target = isfinite(in->target) ? in->target : -1.0;
+  vsh_auto_soft_candidate *c = choice->candidates;
+
+  const int planar_n = vsh_auto_soft_samples_for(VSH_AUTO_SOFT_PLANAR, target, lo, hi);
+  c[VSH_AUTO_SOFT_PLANAR].available = in->planar_available != 0;
+  c[VSH_AUTO_SOFT_PLANAR].samples = planar_n;
+  c[VSH_AUTO_SOFT_PLANAR].pen_mae = vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_PLANAR, planar_n);
+  c[VSH_AUTO_SOFT_PLANAR].ms = vsh_auto_soft_planar_ms(in->pixels, planar_n);
+
+  c[VSH_AUTO_SOFT_PCSS].available = in->csm_available != 0;
+  c[VSH_AUTO_SOFT_PCSS].samples = 1;
+  c[VSH_AUTO_SOFT_PCSS].pen_mae =
+    in->pcss ? vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_PCSS, 1) : HARD_PEN_MAE;
+  c[VSH_AUTO_SOFT_PCSS].ms =
+    in->pcss ? vsh_auto_soft_pcss_ms(in->map_ms) : (in->map_ms > 0.0 ? in->map_ms : 0.0);
+
+  const int ray_n = vsh_auto_soft_samples_for(VSH_AUTO_SOFT_RAYTRACE, target, lo, hi);
+  c[VSH_AUTO_SOFT_RAYTRACE].available = in->raytrace_available != 0;
+  c[VSH_AUTO_SOFT_RAYTRACE].samples = ray_n;
+  c[VSH_AUTO_SOFT_RAYTRACE].pen_mae = vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_RAYTRACE, ray_n);
+  c[VSH_AUTO_SOFT_RAYTRACE].ms = raytrace_ms(in, ray_n);
+
+  /* The same rule as the general choice: cheapest meeting the target, else
+   * the lowest error (ties: cheaper). */
+  vsh_auto_candidate weighed[VSH_AUTO_SOFT_COUNT];
+  for (int i = 0; i < VSH_AUTO_SOFT_COUNT; ++i) {
+    weighed[i].available = c[i].available;
+    weighed[i].predicted_error_pct = c[i].pen_mae;
+    weighed[i].cost = c[i].ms;
+  }
+  int met = 0;
+  choice->pick = vsh_auto_pick_cheapest(weighed, VSH_AUTO_SOFT_COUNT, target, &met);
+  choice->met = choice->pick >= 0 ? met : 0;
+  return choice->pick;
+}
