@@ -10,11 +10,12 @@
 
 static void test_model(void)
 {
-  /* The fits' own points (docs/results.md, sphere-disk light 0). */
+  /* The fits' own points (docs/results.md: planar sphere-disk light 0,
+   * raytrace glyphs-soft light 0, the worse scene). */
   CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_PLANAR, 16), 0.041, 0.001);
   CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_PLANAR, 64), 0.026, 0.001);
-  CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_RAYTRACE, 16), 0.0276, 0.0015);
-  CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_RAYTRACE, 64), 0.0111, 0.0025);
+  CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_RAYTRACE, 16), 0.058, 0.004);
+  CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_RAYTRACE, 64), 0.024, 0.004);
   CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_PCSS, 1), 0.09, 1e-12);
   CHECK(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_PCSS, 1024) == vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_PCSS, 1));
   /* Falls with N, never below the bias. */
@@ -54,10 +55,10 @@ static void test_samples_for(void)
       }
     }
   }
-  /* Closed forms: raytrace 0.106 / sqrt(N) <= 0.015 from N = 50 on;
+  /* Closed forms: raytrace 0.22 / sqrt(N) <= 0.015 from N = 216 on;
    * planar 0.12 / sqrt(N) + 0.011 <= 0.015 from N = 900 on; planar cannot
    * reach 0.011 at all. */
-  CHECK(vsh_auto_soft_samples_for(VSH_AUTO_SOFT_RAYTRACE, 0.015, 4, 1024) == 50);
+  CHECK(vsh_auto_soft_samples_for(VSH_AUTO_SOFT_RAYTRACE, 0.015, 4, 1024) == 216);
   CHECK(vsh_auto_soft_samples_for(VSH_AUTO_SOFT_PLANAR, 0.015, 4, 1024) == 900);
   CHECK(vsh_auto_soft_samples_for(VSH_AUTO_SOFT_PLANAR, 0.011, 4, 1024) == 1024);
   CHECK(vsh_auto_soft_samples_for(VSH_AUTO_SOFT_PCSS, 0.0, 4, 1024) == 4);
@@ -137,15 +138,15 @@ static void test_choose(void)
   CHECK(c.candidates[VSH_AUTO_SOFT_PLANAR].pen_mae <= 0.03);
   CHECK(c.candidates[VSH_AUTO_SOFT_PLANAR].samples == 40);
 
-  /* Tight target 0.015: planar needs 900 samples, rays 50 and are cheaper. */
+  /* Tight target 0.015: planar needs 900 samples, rays 216 and are cheaper. */
   in = frame(0.015);
   CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_RAYTRACE && c.met == 1);
-  CHECK(c.candidates[VSH_AUTO_SOFT_RAYTRACE].samples == 50);
+  CHECK(c.candidates[VSH_AUTO_SOFT_RAYTRACE].samples == 216);
   CHECK(c.candidates[VSH_AUTO_SOFT_PLANAR].samples == 900);
   CHECK(c.candidates[VSH_AUTO_SOFT_RAYTRACE].ms < c.candidates[VSH_AUTO_SOFT_PLANAR].ms);
-  /* The ray cost is vsh_rt_cost_ms at N = 50, adaptive: 8 + 0.25 x 42 rays. */
+  /* The ray cost is vsh_rt_cost_ms at N = 216, adaptive: 8 + 0.25 x 208 rays. */
   vsh_rt_cost_input rt = in.rt_frame;
-  rt.samples = 50;
+  rt.samples = 216;
   rt.first = 8;
   CHECK_NEAR(c.candidates[VSH_AUTO_SOFT_RAYTRACE].ms, vsh_rt_cost_ms(&in.rt_model, &rt), 1e-9);
 
@@ -180,7 +181,9 @@ static void test_choose(void)
   CHECK(c.candidates[VSH_AUTO_SOFT_PLANAR].samples == VSH_AUTO_SOFT_MIN_SAMPLES);
   in = frame(0.015);
   in.max_samples = 32;
-  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_RAYTRACE && c.met == 0);
+  /* neither meets it at 32: the lower predicted error, planar's 0.032
+   * against the rays' 0.039 */
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_PLANAR && c.met == 0);
   CHECK(c.candidates[VSH_AUTO_SOFT_RAYTRACE].samples == 32);
   CHECK(c.candidates[VSH_AUTO_SOFT_PLANAR].samples == 32);
   /* No pixels: every cost 0 or the per-frame constant; still a pick. */
