@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 static void test_pick(void)
 {
@@ -152,11 +153,159 @@ static void test_masks_and_thin_error(void)
   CHECK(vsh_auto_thin_caster_error(5.0, NAN, 100.0, 1e4) > 0.0);
 }
 
+/* p turned by the unit quaternion q. */
+static void rotate(const double q[4], const double p[3], double out[3])
+{
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
+  const double r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                          {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                          {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+  for (int k = 0; k < 3; ++k)
+    out[k] = r[k][0] * p[0] + r[k][1] * p[1] + r[k][2] * p[2];
+}
+
+/* A capped cone like vtkConeSource's: `res` base vertices on a circle of
+ * radius r at x = 0, the apex at x = h, turned by the unit quaternion q and
+ * moved by `at`. Base first, apex last: res + 1 vertices, 2 res - 2
+ * triangles (res sides, a fan of res - 2 for the cap). */
+static void cone(int res, double r, double h, const double q[4], const double at[3],
+                 double *pos, unsigned int *tri, unsigned int first)
+{
+  for (int i = 0; i <= res; ++i) {
+    const double a = 2.0 * 3.14159265358979323846 * i / res;
+    const double p[3] = {i == res ? h : 0.0, i == res ? 0.0 : r * cos(a),
+                         i == res ? 0.0 : r * sin(a)};
+    rotate(q, p, pos + 3 * i);
+    for (int k = 0; k < 3; ++k)
+      pos[3 * i + k] += at[k];
+  }
+  int t = 0;
+  for (int i = 0; i < res; ++i, ++t) {
+    tri[3 * t] = first + (unsigned)res;
+    tri[3 * t + 1] = first + (unsigned)i;
+    tri[3 * t + 2] = first + (unsigned)((i + 1) % res);
+  }
+  for (int i = 1; i + 1 < res; ++i, ++t) {
+    tri[3 * t] = first;
+    tri[3 * t + 1] = first + (unsigned)(i + 1);
+    tri[3 * t + 2] = first + (unsigned)i;
+  }
+}
+
+static void test_taper(void)
+{
+  enum { S = VSH_MESH_TAPER_SLICES, RES = 24, V = RES + 1, T = 2 * RES - 2 };
+  const double identity[4] = {1, 0, 0, 0}, origin[3] = {0, 0, 0};
+  double pos[3 * V * 2], widths[2 * S], lengths[2 * S];
+  unsigned int tri[3 * T * 2], comp[2 * V];
+  /* A cone glyph as in cone-glyphs (height 0.5, base radius 0.125): the
+   * width falls linearly to 0 at the apex, although no vertex lies between
+   * base and apex. Slice k's centre is at (k + 0.5) / S of the height. */
+  cone(RES, 0.125, 0.5, identity, origin, pos, tri, 0);
+  for (int i = 0; i < V; ++i)
+    comp[i] = 0;
+  CHECK(vsh_mesh_taper_profile(pos, V, tri, T, comp, 1, widths, lengths) == S);
+  /* The widest cross-section of a 24-gon along the middle axis lies between
+   * its width across flats and across corners. */
+  const double flats = 0.25 * cos(3.14159265358979323846 / RES);
+  const int base_first = widths[0] > widths[S - 1]; /* the axis may point either way */
+  for (int k = 0; k < S; ++k) {
+    const double fraction = 1.0 - (k + 0.5) / S;
+    const double w = base_first ? widths[k] : widths[S - 1 - k];
+    CHECK(w >= flats * fraction - 1e-9 && w <= 0.25 * fraction + 1e-9);
+    CHECK_NEAR(lengths[k], 0.5 / S, 1e-12);
+  }
+  /* Its tip loses its shadow under coarse texels. At 50 px per unit the cone
+   * is 25 px long and 12.5 px wide; 2 texels of 2 px lose the slices
+   * narrower than 4 px: the last 8 px of the tip, about half of 8 x 4 px.
+   * Analytically 0.5 * 8 * 4 = 16 px; the slices give within a slice. */
+  const double tip = vsh_auto_taper_error(widths, lengths, S, 50.0, 2.0, 2.0, 1.0, 1e4);
+  CHECK(tip > 100.0 * 12.0 / 1e4 && tip < 100.0 * 20.0 / 1e4);
+  /* The stretch of the receivers lengthens the lost shadow. */
+  CHECK_NEAR(vsh_auto_taper_error(widths, lengths, S, 50.0, 2.0, 2.0, 2.0, 1e4), 2.0 * tip,
+             1e-12);
+  /* Finer texels lose less, fine enough nothing; coarse enough, everything
+   * (about half of 25 x 12.5 px). */
+  CHECK(vsh_auto_taper_error(widths, lengths, S, 50.0, 1.0, 2.0, 1.0, 1e4) < tip / 3.0);
+  CHECK(vsh_auto_taper_error(widths, lengths, S, 50.0, 0.01, 2.0, 1.0, 1e4) == 0.0);
+  const double all = vsh_auto_taper_error(widths, lengths, S, 50.0, 100.0, 2.0, 1.0, 1e4);
+  CHECK(all > 100.0 * 140.0 / 1e4 && all < 100.0 * 160.0 / 1e4);
+  /* A cylinder does not taper: at the same scale and texels nothing of it
+   * is lost (this is what the thinnest-width rule already judged). */
+  double cyl[3 * 16];
+  unsigned int ctri[3 * 28], ccomp[16];
+  for (int i = 0; i < 16; ++i) {
+    const double a = 2.0 * 3.14159265358979323846 * (i % 8) / 8;
+    cyl[3 * i] = i < 8 ? 0.0 : 2.0;
+    cyl[3 * i + 1] = 0.1 * cos(a);
+    cyl[3 * i + 2] = 0.1 * sin(a);
+    ccomp[i] = 0;
+  }
+  int t = 0;
+  for (int i = 0; i < 8; ++i) {
+    const unsigned a = (unsigned)i, b = (unsigned)((i + 1) % 8);
+    const unsigned quad[6] = {a, b, b + 8, a, b + 8, a + 8};
+    memcpy(ctri + 3 * t, quad, sizeof quad);
+    t += 2;
+  }
+  for (int i = 1; i + 1 < 8; ++i, t += 2) {
+    const unsigned caps[6] = {0, (unsigned)i + 1, (unsigned)i, 8, (unsigned)i + 8, (unsigned)i + 9};
+    memcpy(ctri + 3 * t, caps, sizeof caps);
+  }
+  CHECK(vsh_mesh_taper_profile(cyl, 16, ctri, 28, ccomp, 1, widths, lengths) == S);
+  CHECK(vsh_auto_taper_error(widths, lengths, S, 50.0, 2.0, 2.0, 1.0, 1e4) == 0.0);
+  /* 49 cones, turned at random and 1e6 from the origin, as one mesh of 49
+   * components (cone-glyphs): 49 times one cone's loss, whatever the turn. */
+  enum { N = 49 };
+  static double many[3 * V * N];
+  static unsigned int mtri[3 * T * N], mcomp[V * N];
+  static double mw[N * S], ml[N * S];
+  vsh_test_seed(777);
+  for (int g = 0; g < N; ++g) {
+    double q[4], n = 0.0;
+    do {
+      n = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        q[k] = vsh_test_rnd(-1.0, 1.0);
+        n += q[k] * q[k];
+      }
+    } while (n < 1e-3);
+    for (int k = 0; k < 4; ++k)
+      q[k] /= sqrt(n);
+    const double at[3] = {1e6 + 0.5 * (g % 7), -1e6 + 0.5 * (g / 7), 0.35};
+    cone(RES, 0.125, 0.5, q, at, many + 3 * V * g, mtri + 3 * T * g, (unsigned)(V * g));
+    for (int i = 0; i < V; ++i)
+      mcomp[V * g + i] = (unsigned)g;
+  }
+  CHECK(vsh_mesh_taper_profile(many, V * N, mtri, T * N, mcomp, N, mw, ml) == (size_t)N * S);
+  CHECK_NEAR(vsh_auto_taper_error(mw, ml, (size_t)N * S, 50.0, 2.0, 2.0, 1.0, 1e4), N * tip,
+             0.02 * N * tip);
+  /* Bad input: nothing written, or not trusted. */
+  CHECK(vsh_mesh_taper_profile(NULL, V, tri, T, comp, 1, widths, lengths) == 0);
+  CHECK(vsh_mesh_taper_profile(pos, V, NULL, T, comp, 1, widths, lengths) == 0);
+  CHECK(vsh_mesh_taper_profile(pos, V, tri, T, comp, 0, widths, lengths) == 0);
+  tri[4] = V; /* out of range */
+  CHECK(vsh_mesh_taper_profile(pos, V, tri, T, comp, 1, widths, lengths) == 0);
+  CHECK(isinf(vsh_auto_taper_error(widths, lengths, S, 50.0, NAN, 2.0, 1.0, 1e4)));
+  CHECK(isinf(vsh_auto_taper_error(widths, lengths, S, 50.0, 2.0, 2.0, 1.0, 0.0)));
+  CHECK(isinf(vsh_auto_taper_error(widths, lengths, S, -1.0, 2.0, 2.0, 1.0, 1e4)));
+  CHECK(isinf(vsh_auto_taper_error(widths, lengths, S, 50.0, 2.0, 2.0, 0.5, 1e4)));
+  CHECK(vsh_auto_taper_error(NULL, NULL, 0, 50.0, 2.0, 2.0, 1.0, 1e4) == 0.0);
+  /* A single vertex and a degenerate (collinear) component give width 0:
+   * nothing lost, never NaN. */
+  const double line[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2};
+  const unsigned int ltri[3] = {0, 1, 2}, lc[3] = {0, 0, 0};
+  CHECK(vsh_mesh_taper_profile(line, 3, ltri, 1, lc, 1, widths, lengths) == S);
+  const double flat = vsh_auto_taper_error(widths, lengths, S, 50.0, 2.0, 2.0, 1.0, 1e4);
+  CHECK(flat >= 0.0 && flat < 1e-9);
+}
+
 int main(void)
 {
   test_masks_and_thin_error();
   test_pick();
   test_map_resolves();
   test_thinnest();
+  test_taper();
   return vsh_check_report("core.auto_general");
 }

@@ -199,3 +199,167 @@ done:
   free(hi);
   return thinnest;
 }
+
+/* ---- tapered parts ------------------------------------------------------- */
+
+/* Per component: the axis to slice along (largest extent) and the axis to
+ * measure widths along (middle extent), with the slicing axis's start and
+ * slice length. */
+typedef struct taper_frame {
+  double along[3], across[3];
+  double start, step;
+  int valid;
+} taper_frame;
+
+static void taper_frames(const double *positions, size_t vertex_count,
+                         const unsigned int *component, size_t component_count,
+                         const component_sums *sums, taper_frame *frames)
+{
+  double (*axes)[3][3] = calloc(component_count, sizeof *axes);
+  double (*lo)[3] = malloc(component_count * sizeof *lo);
+  double (*hi)[3] = malloc(component_count * sizeof *hi);
+  if (!axes || !lo || !hi)
+    goto done;
+  for (size_t c = 0; c < component_count; ++c) {
+    const component_sums *s = &sums[c];
+    const double n = s->n > 0 ? (double)s->n : 1.0, *m = s->sum;
+    const double cov[6] = {s->cov[0] - m[0] * m[0] / n, s->cov[1] - m[0] * m[1] / n,
+                           s->cov[2] - m[0] * m[2] / n, s->cov[3] - m[1] * m[1] / n,
+                           s->cov[4] - m[1] * m[2] / n, s->cov[5] - m[2] * m[2] / n};
+    symmetric_eigenvectors(cov, axes[c]);
+    for (int k = 0; k < 3; ++k) {
+      lo[c][k] = INFINITY;
+      hi[c][k] = -INFINITY;
+    }
+  }
+  for (size_t v = 0; v < vertex_count; ++v) {
+    const unsigned int c = component[v];
+    if (c >= component_count)
+      continue;
+    const double *p = positions + 3 * v, *o = sums[c].origin;
+    for (int k = 0; k < 3; ++k) {
+      const double x = axes[c][k][0] * (p[0] - o[0]) + axes[c][k][1] * (p[1] - o[1]) +
+                       axes[c][k][2] * (p[2] - o[2]);
+      lo[c][k] = fmin(lo[c][k], x);
+      hi[c][k] = fmax(hi[c][k], x);
+    }
+  }
+  for (size_t c = 0; c < component_count; ++c) {
+    int order[3] = {0, 1, 2}; /* axes by extent, largest first */
+    double e[3];
+    for (int k = 0; k < 3; ++k)
+      e[k] = hi[c][k] - lo[c][k];
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2 - i; ++j)
+        if (e[order[j]] < e[order[j + 1]]) {
+          const int t = order[j];
+          order[j] = order[j + 1];
+          order[j + 1] = t;
+        }
+    taper_frame *f = &frames[c];
+    f->valid = sums[c].n >= 2 && e[order[0]] > 0.0 && isfinite(e[order[0]]);
+    memcpy(f->along, axes[c][order[0]], sizeof f->along);
+    memcpy(f->across, axes[c][order[1]], sizeof f->across);
+    f->start = lo[c][order[0]];
+    f->step = e[order[0]] / VSH_MESH_TAPER_SLICES;
+  }
+done:
+  free(axes);
+  free(lo);
+  free(hi);
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* Where edge a-b crosses the centre planes of component c's slices: widen
+ * those slices' [lo, hi] across. */
+static void taper_edge(const double *pa, const double *pb, const double *origin,
+                       const taper_frame *f, double *lo, double *hi)
+{
+  const double da[3] = {pa[0] - origin[0], pa[1] - origin[1], pa[2] - origin[2]};
+  const double db[3] = {pb[0] - origin[0], pb[1] - origin[1], pb[2] - origin[2]};
+  const double xa = dot3(f->along, da) - f->start, xb = dot3(f->along, db) - f->start;
+  const double ma = dot3(f->across, da), mb = dot3(f->across, db);
+  const double x0 = fmin(xa, xb) / f->step - 0.5, x1 = fmax(xa, xb) / f->step - 0.5;
+  const int k0 = (int)fmax(ceil(x0), 0.0), k1 = (int)fmin(floor(x1), VSH_MESH_TAPER_SLICES - 1);
+  for (int k = k0; k <= k1; ++k) {
+    const double xc = (k + 0.5) * f->step;
+    const double t = xb != xa ? (xc - xa) / (xb - xa) : 0.0;
+    const double m = ma + t * (mb - ma);
+    lo[k] = fmin(lo[k], m);
+    hi[k] = fmax(hi[k], m);
+    if (xb == xa) { /* the edge lies in the plane: both ends */
+      lo[k] = fmin(lo[k], mb);
+      hi[k] = fmax(hi[k], mb);
+    }
+  }
+}
+
+size_t vsh_mesh_taper_profile(const double *positions, size_t vertex_count,
+                              const unsigned int *triangles, size_t triangle_count,
+                              const unsigned int *component, size_t component_count,
+                              double *widths, double *lengths)
+{
+  enum { S = VSH_MESH_TAPER_SLICES };
+  if (!positions || !component || !widths || !lengths || component_count == 0 ||
+      (triangle_count > 0 && !triangles))
+    return 0;
+  for (size_t i = 0; i < 3 * triangle_count; ++i)
+    if (triangles[i] >= vertex_count)
+      return 0;
+  const size_t count = component_count * S;
+  component_sums *sums = calloc(component_count, sizeof *sums);
+  taper_frame *frames = calloc(component_count, sizeof *frames);
+  double *lo = malloc(count * sizeof *lo), *hi = malloc(count * sizeof *hi);
+  size_t written = 0;
+  if (!sums || !frames || !lo || !hi)
+    goto done;
+  accumulate(sums, positions, vertex_count, component, component_count);
+  taper_frames(positions, vertex_count, component, component_count, sums, frames);
+  for (size_t i = 0; i < count; ++i) {
+    lo[i] = INFINITY;
+    hi[i] = -INFINITY;
+  }
+  for (size_t t = 0; t < triangle_count; ++t) {
+    const unsigned int *tri = triangles + 3 * t, c = component[tri[0]];
+    if (c >= component_count || !frames[c].valid)
+      continue;
+    for (int e = 0; e < 3; ++e)
+      taper_edge(positions + 3 * tri[e], positions + 3 * tri[(e + 1) % 3], sums[c].origin,
+                 &frames[c], lo + c * S, hi + c * S);
+  }
+  for (size_t i = 0; i < count; ++i) {
+    const taper_frame *f = &frames[i / S];
+    widths[i] = f->valid && hi[i] >= lo[i] ? hi[i] - lo[i] : 0.0;
+    lengths[i] = f->valid ? f->step : 0.0;
+  }
+  written = count;
+done:
+  free(sums);
+  free(frames);
+  free(lo);
+  free(hi);
+  return written;
+}
+
+double vsh_auto_taper_error(const double *widths, const double *lengths, size_t count,
+                            double px_per_unit, double texel_px, double min_texels,
+                            double stretch, double pixels)
+{
+  if (!(pixels > 0.0) || !(texel_px > 0.0) || !(px_per_unit > 0.0) || !(stretch >= 1.0) ||
+      !isfinite(px_per_unit) || !(min_texels >= 0.0))
+    return INFINITY;
+  if (!widths || !lengths || count == 0)
+    return 0.0;
+  const double lost = min_texels * texel_px;
+  double area = 0.0;
+  for (size_t i = 0; i < count; ++i) {
+    const double w = widths[i] * px_per_unit;
+    if (w > 0.0 && w < lost && isfinite(lengths[i]))
+      area += w * lengths[i] * px_per_unit;
+  }
+  return 100.0 * area * stretch / pixels;
+}

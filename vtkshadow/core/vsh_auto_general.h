@@ -76,6 +76,40 @@ int vsh_auto_map_resolves(double thickness_px, double texel_px, double min_texel
 double vsh_mesh_thinnest_width(const double *positions, size_t vertex_count,
                                const unsigned int *component, size_t component_count);
 
+/* Tapered caster parts (cone and arrow tips, a sphere's poles): a part's
+ * width varies along it, so the thinnest-width rule above, one width per
+ * component, says "resolved" while the narrow end still loses its shadow.
+ * The profile cuts every component into VSH_MESH_TAPER_SLICES slices along
+ * its longest principal extent; a slice's width is the extent, along the
+ * component's middle principal axis, of the surface where the slice's
+ * centre plane cuts the triangles' edges (the cross-section, so a cone's
+ * width falls linearly to 0 at its apex although no vertex lies between
+ * its base and apex). */
+#define VSH_MESH_TAPER_SLICES 32
+
+/* Writes component_count * VSH_MESH_TAPER_SLICES widths and slice lengths
+ * (data units; width 0 where the plane cuts no edge, e.g. components with
+ * fewer than 2 vertices). `triangles` are 3 vertex indices each; a triangle
+ * belongs to its first vertex's component. Returns the entries written, 0
+ * for bad input (NULL, an index out of range: nothing is written then). */
+size_t vsh_mesh_taper_profile(const double *positions, size_t vertex_count,
+                              const unsigned int *triangles, size_t triangle_count,
+                              const unsigned int *component, size_t component_count,
+                              double *widths, double *lengths);
+
+/* The wrong_pct a map predicts from tapered parts: every slice narrower on
+ * screen (width * px_per_unit) than `min_texels` map texels of `texel_px`
+ * loses its whole shadow (sampled at texel centres and moved off the
+ * surface by the normal offset, a part narrower than that has no texel
+ * whose centre it covers), an area of width x length on screen, times the
+ * receivers' `stretch` (a plane at incidence theta lengthens a shadow by
+ * 1 / cos theta), over `pixels`. Slices as wide as that are the texel
+ * model's (their edges). 0 for no slices; +inf (not trusted) for a NaN or
+ * non-positive texel_px, pixels or px_per_unit, or stretch < 1. */
+double vsh_auto_taper_error(const double *widths, const double *lengths, size_t count,
+                            double px_per_unit, double texel_px, double min_texels,
+                            double stretch, double pixels);
+
 #ifdef __cplusplus
 }
 #endif

@@ -459,6 +459,24 @@ double vtkAutoShadowPass::PixelWorldSize(vtkRenderer* renderer, const double cen
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The actor matrix's linear scale (cube root of its volume change).
+double ActorScale(vtkActor* actor)
+{
+  double linear[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      linear[r][c] = actor->GetMatrix()->GetElement(r, c);
+    }
+  }
+  return std::cbrt(std::abs(vtkMath::Determinant3x3(linear)));
+}
+}
+
+//------------------------------------------------------------------------------
 double vtkAutoShadowPass::ThinnestCasterPixels(vtkRenderer* renderer)
 {
   // The narrowest caster part in view, on screen: its width (data units,
@@ -481,16 +499,7 @@ double vtkAutoShadowPass::ThinnestCasterPixels(vtkRenderer* renderer)
     {
       continue;
     }
-    double linear[3][3];
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        linear[r][c] = actor->GetMatrix()->GetElement(r, c);
-      }
-    }
-    const double scale = std::cbrt(std::abs(vtkMath::Determinant3x3(linear)));
-    thinnest = std::min(thinnest, width * scale / pixel);
+    thinnest = std::min(thinnest, width * ActorScale(actor) / pixel);
   }
   return thinnest;
 }
@@ -581,6 +590,37 @@ void vtkAutoShadowPass::ApplySoftSamples()
 }
 
 //------------------------------------------------------------------------------
+double vtkAutoShadowPass::TaperErrorPct(vtkRenderer* renderer, double pixels)
+{
+  // Each caster's cross-section profile (data units, once per mesh) to
+  // pixels at its bounds centre, as for the thinnest part; the receivers'
+  // stretch lengthens what a lost slice would have shadowed.
+  Internals& impl = *this->Impl;
+  double total = 0.0;
+  for (size_t i = 0; i < impl.Objects.size(); ++i)
+  {
+    const vsh_auto_object& o = impl.Objects[i];
+    if (!o.casts || o.receiver || !o.in_view)
+    {
+      continue;
+    }
+    vtkActor* actor = impl.Actors[i];
+    vtkShadowCasterGeometry& geometry = impl.For(actor).Geometry;
+    const std::vector<double>& widths = geometry.GetTaperWidths();
+    const std::vector<double>& lengths = geometry.GetTaperLengths();
+    const double pixel = this->PixelWorldSize(renderer, o.center);
+    if (widths.empty() || !(pixel > 0.0))
+    {
+      continue;
+    }
+    const double lost = vsh_auto_taper_error(widths.data(), lengths.data(), widths.size(),
+      ActorScale(actor) / pixel, this->UsedTexelTarget, 2.0, this->UsedStretch, pixels);
+    total += std::isfinite(lost) ? lost : 0.0;
+  }
+  return total;
+}
+
+//------------------------------------------------------------------------------
 void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths)
 {
   // Each map light: csm predicts the target met by its texel model unless a
@@ -592,6 +632,7 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
   const int* size = renderer->GetSize();
   const double pixels = std::max(1.0, static_cast<double>(size[0]) * size[1]);
   this->UsedThinnestPixels = std::numeric_limits<double>::infinity();
+  this->UsedTaperErrorPct = 0.0;
   bool measured = false;
   struct Weighed
   {
@@ -613,12 +654,16 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
     if (!measured)
     {
       this->UsedThinnestPixels = this->ThinnestCasterPixels(renderer);
+      this->UsedTaperErrorPct = this->TaperErrorPct(renderer, pixels);
       measured = true;
     }
     Weighed w = {};
     w.Light = l;
-    const double thin = vsh_auto_thin_caster_error(
-      this->UsedThinnestPixels, this->UsedTexelTarget, edgeLengths[l], pixels);
+    // Two estimates of what thin parts lose, whole parts narrower than two
+    // texels and tapered ends narrower than that: the larger counts.
+    const double thin = std::max(vsh_auto_thin_caster_error(this->UsedThinnestPixels,
+                                   this->UsedTexelTarget, edgeLengths[l], pixels),
+      this->UsedTaperErrorPct);
     w.Candidates[VSH_AUTO_GENERAL_CSM] = { 1, thin > 0.0 ? thin : 0.0,
       MapLookupMsPerPixel * pixels };
     w.Unsupported =
@@ -680,9 +725,17 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
   why.precision(3);
   if (map.predicted_error_pct > this->MaxError)
   {
-    why << "a caster part " << this->UsedThinnestPixels
-        << " px wide is narrower than two map texels of " << this->UsedTexelTarget
-        << " px: maps may lose its shadow (predicted " << map.predicted_error_pct << "% wrong), ";
+    if (this->UsedTaperErrorPct >= map.predicted_error_pct)
+    {
+      why << "tapered caster parts (tips) narrower than two map texels of " << this->UsedTexelTarget
+          << " px";
+    }
+    else
+    {
+      why << "a caster part " << this->UsedThinnestPixels
+          << " px wide is narrower than two map texels of " << this->UsedTexelTarget << " px";
+    }
+    why << ": maps may lose their shadow (predicted " << map.predicted_error_pct << "% wrong), ";
   }
   else
   {
@@ -1002,7 +1055,8 @@ std::string vtkAutoShadowPass::GetStatsJSON(vtkRenderer* renderer) const
   {
     out << ", " << details->GetStatsJSON(renderer);
   }
-  out << ", \"thinnest_caster_px\": " << JSONNumber(this->UsedThinnestPixels) << ", \"general\": ["
+  out << ", \"thinnest_caster_px\": " << JSONNumber(this->UsedThinnestPixels)
+      << ", \"taper_error_pct\": " << JSONNumber(this->UsedTaperErrorPct) << ", \"general\": ["
       << this->Impl->GeneralJSON << "]";
   out << ", \"penumbra_target\": " << this->PenumbraTarget << ", \"soft\": ["
       << this->Impl->SoftJSON << "]";

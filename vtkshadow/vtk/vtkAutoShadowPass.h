@@ -130,6 +130,14 @@ public:
   vtkGetMacro(UsedThinnestPixels, double);
 
   /**
+   * The wrong_pct the last frame's maps were predicted to lose on tapered
+   * caster parts (cone and arrow tips narrower than two texels of the texel
+   * target: vsh_auto_taper_error summed over the casters in view), 0 when
+   * no light needed a map.
+   */
+  vtkGetMacro(UsedTaperErrorPct, double);
+
+  /**
    * The plane receivers detected in the last frame (its planar pass's
    * detection: flat surface actors when none is marked).
    */
@@ -190,6 +198,7 @@ protected:
   double UsedEdgeLength;
   double UsedThinnestPixels = 0.0;
   double PenumbraTarget = 0.03;
+  double UsedTaperErrorPct = 0.0;
   // The choices (typed: vtkShadowTechniqueSet.h), the frame's objects and
   // the casters' meshes (convexity, silhouettes), kept between frames.
   struct Internals;
@@ -220,6 +229,9 @@ private:
   // the target and it is the cheapest such candidate, else an exact one.
   void ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths);
   double ThinnestCasterPixels(vtkRenderer* renderer);
+  // What the casters in view lose on tapered parts under the frame's texel
+  // target (wrong_pct over `pixels`).
+  double TaperErrorPct(vtkRenderer* renderer, double pixels);
   // Shadow volumes for light number `index` (`light` homogeneous, world):
   // the cost model's inputs (silhouette edges, scissored fill) and how many
   // casters volumes cannot draw (no triangles, translucent).

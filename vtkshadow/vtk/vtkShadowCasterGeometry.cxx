@@ -55,6 +55,7 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
   this->Closed = -1;
   this->Convex = -1;
   this->Thinnest = -1.0;
+  this->TaperValid = false;
   this->FanValid = false;
   this->PendingVertices.swap(vertices);
   this->PendingIndices.swap(indices);
@@ -168,6 +169,52 @@ double vtkShadowCasterGeometry::GetThinnestWidth()
         reinterpret_cast<const unsigned int*>(topology->component), topology->component_count)
     : std::numeric_limits<double>::infinity();
   return this->Thinnest;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowCasterGeometry::ComputeTaper()
+{
+  this->TaperValid = true;
+  this->TaperWidths.clear();
+  this->TaperLengths.clear();
+  this->IsClosed(); // analyses the topology
+  const vsh_mesh_topology* topology = this->Topology.get();
+  if (!topology || !topology->positions || !topology->component || !topology->triangles ||
+    topology->component_count == 0)
+  {
+    return;
+  }
+  const size_t count = topology->component_count * VSH_MESH_TAPER_SLICES;
+  this->TaperWidths.resize(count);
+  this->TaperLengths.resize(count);
+  if (vsh_mesh_taper_profile(topology->positions, topology->vertex_count,
+        reinterpret_cast<const unsigned int*>(topology->triangles), topology->triangle_count,
+        reinterpret_cast<const unsigned int*>(topology->component), topology->component_count,
+        this->TaperWidths.data(), this->TaperLengths.data()) != count)
+  {
+    this->TaperWidths.clear();
+    this->TaperLengths.clear();
+  }
+}
+
+//------------------------------------------------------------------------------
+const std::vector<double>& vtkShadowCasterGeometry::GetTaperWidths()
+{
+  if (!this->TaperValid)
+  {
+    this->ComputeTaper();
+  }
+  return this->TaperWidths;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<double>& vtkShadowCasterGeometry::GetTaperLengths()
+{
+  if (!this->TaperValid)
+  {
+    this->ComputeTaper();
+  }
+  return this->TaperLengths;
 }
 
 //------------------------------------------------------------------------------

@@ -97,6 +97,16 @@ public:
   double GetThinnestWidth();
 
   /**
+   * The cross-section widths of every connected component along its longest
+   * extent, VSH_MESH_TAPER_SLICES slices each, and the slices' lengths, in
+   * data units (vsh_mesh_taper_profile): where tapered parts (cone tips)
+   * become narrower than a map resolves. Empty without triangles. Computed
+   * once per mesh.
+   */
+  const std::vector<double>& GetTaperWidths();
+  const std::vector<double>& GetTaperLengths();
+
+  /**
    * The mesh topology of the stored triangles (positions relative to
    * GetShift(), vertices welded by exact position), analysed on first use;
    * nullptr when the mesh cannot be analysed. Shadow volumes build their
@@ -145,6 +155,10 @@ private:
   int Closed = -1;
   int Convex = -1;
   double Thinnest = -1.0;
+  bool TaperValid = false;
+  std::vector<double> TaperWidths;
+  std::vector<double> TaperLengths;
+  void ComputeTaper();
   double FanLight[4] = { 0, 0, 0, 0 };
   bool FanValid = false;
   vtkIdType FanTriangles = 0;
