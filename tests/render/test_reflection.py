@@ -104,6 +104,17 @@ def hit_rect(o, d, origin, p1, p2):
     return np.where(ok, t, np.inf), n, dn < 0
 
 
+def hit_box(o, d, lo, hi):
+    """Nearest positive hit of rays with an axis-aligned box (slab method)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t1 = (np.asarray(lo, float) - o) / d
+        t2 = (np.asarray(hi, float) - o) / d
+    tn = np.nanmax(np.minimum(t1, t2), axis=-1)
+    tf = np.nanmin(np.maximum(t1, t2), axis=-1)
+    t = np.where(tn > 1e-9, tn, tf)
+    return np.where((tf >= tn) & (t > 1e-9), t, np.inf)
+
+
 def render(scene, tag, technique, extra=()):
     path = os.path.join(args.out, tag + ".json")
     with open(path, "w") as fh:
@@ -191,22 +202,43 @@ def reflection_mae(ref_png, test_png, mask, tag):
     return m["reflection_mae"]
 
 
-def pov_compare(light, technique, wall=False):
+# Below the mirror: a slab wholly under it and a box half under it (the
+# pov-below and below-lit cases). The mirrored draw clips them away, and so
+# must the depth pre-pass of the techniques' screen masks (csm's screen
+# resolve, volume, raytrace): before that fix the mirrored slab's depth, on
+# the eye's side of the mirror, decided the shadows of every reflected
+# pixel (before the fix, volume and raytrace: below-lit 0 of 727 lit pixels
+# of the sphere's reflection lit, csm resolve=1 264; pov-below 0.0436
+# over the pixels reflecting the sphere or the box, 0.0050 over the mirror).
+SLAB = ([-4.5, -4.5, -1.5], [4.5, 4.5, -0.3])
+HALF = ([1.5, 0.5, -0.6], [2.5, 1.5, 0.7])
+BELOW_LIGHT = {"type": "point", "position": [3, -2, 6]}
+
+
+def below_objects():
+    return [{"box": {"min": SLAB[0], "max": SLAB[1]}, "color": [0.2, 0.8, 0.3]},
+            {"box": {"min": HALF[0], "max": HALF[1]}, "color": [0.2, 0.5, 0.9]}]
+
+
+def pov_compare(light, technique, wall=False, below=False, size=(320, 240), extra=()):
     """reflection_mae of VTK (the technique's shadows, matte) against POV-Ray.
     With `wall`, a grey wall stands behind the sphere and takes its shadow,
     which the mirror shows: the shadows of the mirrored world itself, not
     only the sphere's shading."""
     shadows = profile(technique).casts
     R, col = 0.5, [0.9, 0.3, 0.2]
-    w, h = 320, 240
+    w, h = size
     scene = {"size": [w, h], "camera": CAM, "lights": [light],
              "objects": [{"sphere": {"center": [0, 0, 1.2], "radius": 0.8, "resolution": 256},
                           "color": col},
                          {"plane": FLOOR, "mirror": R, "receiver": True, "color": [0.7, 0.7, 0.7]}]}
     if wall:
         scene["objects"].append({"plane": BACK, "receiver": True, "color": [0.7, 0.7, 0.7]})
-    tag = "pov-%s%s-%s" % ("wall-" if wall else "", light["type"], technique)
-    vtk_png = render(scene, tag, technique, ["--matte"])
+    if below:
+        scene["objects"] += below_objects()
+    kind = "wall-" if wall else "below-" if below else ""
+    tag = "pov-%s%s-%s%s" % (kind, light["type"], technique, "".join(extra).replace("=", ""))
+    vtk_png = render(scene, tag, technique, ["--matte"] + list(extra))
     a = w / h
     t = math.tan(math.radians(30) / 2)
     angle = math.degrees(2 * math.atan(a * t))
@@ -236,8 +268,11 @@ def pov_compare(light, technique, wall=False):
     ] + (["mesh { triangle { %s, %s, %s } triangle { %s, %s, %s } pigment { rgb 0.7 } "
           "finish { ambient 0 diffuse 1 specular 0 phong 0 }%s }"
           % (v(BACK["origin"]), v(BACK["point1"]), v(BACK_FAR), v(BACK["origin"]), v(BACK_FAR),
-             v(BACK["point2"]), ns)] if wall else []))
-    stem = "pov-%s%s-shadows%d" % ("wall-" if wall else "", light["type"], shadows)
+             v(BACK["point2"]), ns)] if wall else [])
+        + (["box { %s, %s pigment { rgb %s } finish { ambient 0 diffuse 1 specular 0 phong 0 }%s }"
+            % (v(o["box"]["min"]), v(o["box"]["max"]), v(o["color"]), ns)
+            for o in below_objects()] if below else []))
+    stem = "pov-%s%s-%dx%d-shadows%d" % (kind, light["type"], w, h, shadows)
     pov_path = os.path.join(args.out, stem + ".pov")
     with open(pov_path, "w") as fh:
         fh.write(pov)
@@ -255,10 +290,76 @@ def pov_compare(light, technique, wall=False):
     if wall:
         tw, _, _ = hit_rect(o, d, *(np.array(BACK[k], float) for k in ("origin", "point1", "point2")))
         mask &= tf < tw
+    ok = True
+    if below:
+        mask &= tf < hit_box(o, d, *HALF)
+        # Also over the mirror pixels that reflect the sphere or the box
+        # (where the shadows of the mirrored world show), not diluted by the
+        # mirror's empty pixels.
+        p = o + np.where(np.isfinite(tf), tf, 0)[..., None] * d
+        rd = d * np.array([1, 1, -1])
+        seen = mask & (np.isfinite(hit_sphere(p, rd, np.array([0, 0, 1.2]), 0.8))
+                       | np.isfinite(hit_box(p, rd, *HALF)))
+        mae_seen = reflection_mae(os.path.join(args.out, out_png), vtk_png, seen, tag + "-seen")
+        print(f"{tag}: reflection_mae {mae_seen:.4f} over the {int(seen.sum())} mirror pixels "
+              "reflecting the sphere or the box")
+        ok = mae_seen <= 0.02 and seen.sum() > 500
     mae = reflection_mae(os.path.join(args.out, out_png), vtk_png, mask, tag)
     refl = ref[mask].max() > 0
     print(f"{tag}: reflection_mae {mae:.4f} over {int(mask.sum())} mirror pixels")
-    return mae <= 0.02 and refl and mask.sum() > 1000
+    return ok and mae <= 0.02 and refl and mask.sum() > 1000
+
+
+def below_lit(technique, extra=()):
+    """The lighting of the reflection with objects below the mirror, against
+    the test's own ray casting: a black mirror (R 1) under a white sphere, a
+    point light, SLAB and HALF below. Each mirror pixel's expected state:
+    the reflected ray hits the sphere at a point lit by the light (N.L >=
+    0.15, not behind HALF: bright), one it does not light (N.L < 0 or
+    behind HALF: dark), or nothing (dark: nothing below the mirror shows
+    through). Pixels with 0 <= N.L < 0.15, reflections of HALF and a
+    one-pixel band along every boundary are not counted."""
+    w, h = 384, 216
+    c, rad = np.array([0.0, 0.0, 1.2]), 0.8
+    scene = {"size": [w, h], "camera": CAM, "lights": [BELOW_LIGHT],
+             "objects": [{"sphere": {"center": list(c), "radius": rad, "resolution": 256},
+                          "color": [1, 1, 1]},
+                         {"plane": FLOOR, "mirror": 1.0, "receiver": True, "color": [0, 0, 0]}]
+             + below_objects()}
+    tag = "below-lit-%s%s" % (technique, "".join(extra).replace("=", ""))
+    image = read_rgb(render(scene, tag, technique, ["--matte"] + list(extra)))
+    e, d = rays(CAM, w, h, 0.0)
+    o = np.broadcast_to(e, d.shape)
+    tf, _, _ = hit_rect(o, d, *(np.array(FLOOR[k], float) for k in ("origin", "point1", "point2")))
+    mirror = np.isfinite(tf) & (tf < hit_sphere(o, d, c, rad)) & (tf < hit_box(o, d, *HALF))
+    p = o + np.where(np.isfinite(tf), tf, 0)[..., None] * d
+    rd = d * np.array([1, 1, -1])
+    ts, tb = hit_sphere(p, rd, c, rad), hit_box(p, rd, *HALF)
+    on_sphere = np.isfinite(ts) & (ts < tb)
+    q = p + np.where(on_sphere, ts, 0)[..., None] * rd
+    to_light = np.array(BELOW_LIGHT["position"], float) - q
+    dist = np.linalg.norm(to_light, axis=-1)
+    ldir = to_light / dist[..., None]
+    ndl = np.sum((q - c) / rad * ldir, axis=-1)
+    blocked = hit_box(q, ldir, *HALF) < dist
+    # 0 outside the mirror, 1 nothing reflected, 2 lit sphere, 3 dark
+    # sphere, 4 not counted (HALF's reflection, the terminator).
+    label = np.zeros((h, w), int)
+    label[mirror & ~np.isfinite(ts) & ~np.isfinite(tb)] = 1
+    label[mirror & on_sphere & (ndl >= 0.15) & ~blocked] = 2
+    label[mirror & on_sphere & ((ndl < 0) | blocked)] = 3
+    label[mirror & (label == 0)] = 4
+    considered = (label >= 1) & (label <= 3)
+    for v in range(5):
+        considered &= ~band(label == v)
+    bright = image.max(axis=2)
+    wrong = considered & np.where(label == 2, bright < 0.05, bright > 6 / 255)
+    lit = (label == 2) & considered
+    pct = 100.0 * wrong.sum() / max(considered.sum(), 1)
+    print(f"{tag}: {wrong.sum()} wrong of {considered.sum()} mirror pixels ({pct:.4f} %); "
+          f"{int(((bright >= 0.05) & lit).sum())} of {int(lit.sum())} lit reflected-sphere "
+          "pixels lit")
+    return pct <= 0.05 and lit.sum() > 300 and ((label == 3) & considered).sum() > 300
 
 
 cases = {
@@ -282,6 +383,12 @@ cases = {
                                                    "direction": [1.2, 2, -0.3]}, t, wall=True),
     "pov-wall-point": lambda t: pov_compare({"type": "point", "position": [-2, -3, 2]}, t,
                                             wall=True),
+    # Objects below the mirror at 16:9; csm also with its screen resolve
+    # (resolve=1), which reads the screen mask.
+    "below-lit": lambda t: below_lit(t) and (t != "csm" or below_lit(t, ["--set", "resolve=1"])),
+    "pov-below": lambda t: (pov_compare(BELOW_LIGHT, t, below=True, size=(384, 216)) and
+                            (t != "csm" or pov_compare(BELOW_LIGHT, t, below=True, size=(384, 216),
+                                                       extra=["--set", "resolve=1"]))),
 }
 # Known failures: (technique, case) -> why. Such a case must still fail
 # (printed "xfail"); once it passes, this test fails until the entry goes.

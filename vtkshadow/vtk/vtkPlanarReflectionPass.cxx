@@ -62,9 +62,14 @@ struct vtkPlanarReflectionPass::Internals
   int Size[2] = { 0, 0 };
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   vtkSmartPointer<vtkRenderStepsPass> Plain;
-  // The clip plane while the mirrored scene is drawn into FBO.
+  // The clip plane while the mirrored scene is drawn: into FBO, and into
+  // any other target drawn with the camera's view (a technique's screen
+  // mask depth pre-pass), recognised by Camera and the viewport's Size.
   bool ClipActive = false;
   int FBOIndex = -1;
+  vtkCamera* Camera = nullptr;
+  vtkRenderer* Renderer = nullptr;
+  vtkOpenGLState* State = nullptr;
   float DCVC[16];
   float PlaneVC[4];
   float Viewport[4];
@@ -466,6 +471,9 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
   impl.Viewport[2] = static_cast<float>(size[0]);
   impl.Viewport[3] = static_cast<float>(size[1]);
   impl.FBOIndex = static_cast<int>(impl.FBO->GetFBOIndex());
+  impl.Camera = camera;
+  impl.Renderer = ren;
+  impl.State = state;
   impl.ClipActive = true;
 
   vtkRenderState mirrored(ren);
@@ -496,6 +504,9 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
   glFrontFace(GL_CCW);
 
   impl.ClipActive = false;
+  impl.Camera = nullptr;
+  impl.Renderer = nullptr;
+  impl.State = nullptr;
   world.Restore();
   state->PopFramebufferBindings();
   return true;
@@ -586,14 +597,7 @@ bool vtkPlanarReflectionPass::SetShaderParameters(
   {
     return true;
   }
-  // Only the camera's view of the mirrored scene is clipped, not the maps
-  // or masks a technique draws on the way (they have their own targets).
-  GLint bound = -1;
-  if (impl.ClipActive)
-  {
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
-  }
-  const bool on = impl.ClipActive && bound == impl.FBOIndex;
+  const bool on = impl.ClipActive && this->IsCameraViewDraw();
   program->SetUniformi("vshMirrorClipOn", on ? 1 : 0);
   if (on)
   {
@@ -602,6 +606,37 @@ bool vtkPlanarReflectionPass::SetShaderParameters(
     program->SetUniform4f("vshMirrorPlaneVC", impl.PlaneVC);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Every draw of the camera's view of the mirrored scene is clipped, whatever
+// its target: the reflection's own framebuffer, and a technique's depth
+// pre-pass (vtkShadowScreenMask, used by csm's screen resolve, volume and
+// raytrace), whose depth must be the clipped scene's or something behind the
+// mirror decides the shadows of the reflected pixels. The maps a technique
+// draws from a light through the mappers (VTK's vtkShadowMapBakerPass swaps
+// in a light camera, at the map's size) are not clipped: the clip plane is
+// given in the camera's view and viewport, and the mirrored world's lighting
+// keeps every object. A draw is the camera's view when the renderer's active
+// camera is the scene's and the viewport is the reflection's (origin 0, its
+// size): exactly the draws for which the clip's window-to-view mapping holds.
+bool vtkPlanarReflectionPass::IsCameraViewDraw() const
+{
+  const Internals& impl = *this->Impl;
+  GLint bound = -1;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  if (bound == impl.FBOIndex)
+  {
+    return true;
+  }
+  if (!impl.Renderer || impl.Renderer->GetActiveCamera() != impl.Camera || !impl.State)
+  {
+    return false;
+  }
+  GLint viewport[4] = { -1, -1, -1, -1 };
+  impl.State->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  return viewport[0] == 0 && viewport[1] == 0 && viewport[2] == impl.Size[0] &&
+    viewport[3] == impl.Size[1];
 }
 
 //------------------------------------------------------------------------------

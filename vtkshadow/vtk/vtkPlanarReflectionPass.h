@@ -116,6 +116,7 @@ private:
   bool RenderMirrored(const vtkRenderState* s, const Mirror& mirror);
   void Composite(const vtkRenderState* s, const Mirror& mirror);
   void ReleaseUnusedWorlds(const vtkRenderState* s);
+  bool IsCameraViewDraw() const;
 };
 
 #endif
