@@ -125,7 +125,7 @@ foreach(case basic grazing wide offset-1e6 below two-mirrors below-lit)
             --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/reflection --case ${case})
   set_tests_properties(render.reflection_${case} PROPERTIES LABELS "render")
 endforeach()
-foreach(case pov-directional pov-point pov-spot pov-wall-directional pov-wall-point pov-below pov-wall-mirror)
+foreach(case pov-directional pov-point pov-spot pov-wall-directional pov-wall-point pov-below pov-wall-mirror pov-two-mirrors)
   add_test(NAME harness.reflection_${case}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection.py
             --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/reflection --case ${case})

@@ -57,6 +57,12 @@ struct vtkPlanarReflectionPass::Internals
   int Found = 0;
   int Drawn = 0;
   bool Stencil = true;
+  // The mirrors seen are drawn at (1 - R) of their shading and get R x the
+  // reflection added (Composite): true while that holds for the frame.
+  bool ScaleSeen = false;
+  // Inside the mirrored draw: every mirror drawn there shows (1 - R) of its
+  // shading (its reflection is the bounce not drawn).
+  bool ScaleAll = false;
   double Eye[3] = { 0, 0, 0 };
   vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
   int Size[2] = { 0, 0 };
@@ -294,6 +300,7 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
   {
     technique->SetWorldKey(0);
   }
+  impl.ScaleSeen = impl.ScaleAll = false;
   if (!this->Reflections)
   {
     impl.Mirrors.clear();
@@ -303,6 +310,15 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
     return;
   }
   this->FindMirrors(s);
+  // Whether the reflections can be composited (the target has a stencil),
+  // known before the main draw, which shades the mirrors seen at (1 - R).
+  {
+    TargetStencil probe;
+    probe.Find();
+    impl.Stencil = probe.Usable;
+    probe.Release();
+  }
+  impl.ScaleSeen = impl.Stencil && !impl.Mirrors.empty();
   // The clip hook is registered for the whole frame, so every mapper keeps
   // one shader for the scene and its reflection (it is off outside the
   // mirrored draw).
@@ -475,6 +491,7 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
   impl.Renderer = ren;
   impl.State = state;
   impl.ClipActive = true;
+  impl.ScaleAll = true;
 
   vtkRenderState mirrored(ren);
   mirrored.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
@@ -504,6 +521,7 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
   glFrontFace(GL_CCW);
 
   impl.ClipActive = false;
+  impl.ScaleAll = false;
   impl.Camera = nullptr;
   impl.Renderer = nullptr;
   impl.State = nullptr;
@@ -567,7 +585,9 @@ void vtkPlanarReflectionPass::Composite(const vtkRenderState* s, const Mirror& m
   state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   state->vtkglEnable(GL_BLEND);
   glBlendColor(0.0f, 0.0f, 0.0f, static_cast<float>(mirror.R));
-  state->vtkglBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_ZERO, GL_ONE);
+  // The mirror is already (1 - R) x its shading (SetShaderParameters), so
+  // the reflection is added: the sum is clamped once, as a ray tracer's.
+  state->vtkglBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE, GL_ZERO, GL_ONE);
   vtkTextureObject* colour = impl.FBO->GetColorAttachmentAsTextureObject(0);
   colour->Activate();
   impl.Quad->Program->SetUniformi("reflectionColor", colour->GetTextureUnit());
@@ -579,10 +599,17 @@ void vtkPlanarReflectionPass::Composite(const vtkRenderState* s, const Mirror& m
 bool vtkPlanarReflectionPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Clip::Dec",
+  const bool declared = vtkShaderProgram::Substitute(fragmentShader, "//VTK::Clip::Dec",
     "uniform int vshMirrorClipOn;\nuniform vec4 vshMirrorViewport;\n"
-    "uniform mat4 vshMirrorDCVC;\nuniform vec4 vshMirrorPlaneVC;\n//VTK::Clip::Dec",
+    "uniform mat4 vshMirrorDCVC;\nuniform vec4 vshMirrorPlaneVC;\n"
+    "uniform float vshMirrorShade;\n//VTK::Clip::Dec",
     false);
+  // A mirror's own shading scaled by 1 - R (1 for every other surface).
+  if (declared)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+      "//VTK::Light::Impl\n  gl_FragData[0].rgb *= vshMirrorShade;\n", false);
+  }
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::Clip::Impl",
     std::string(vtkPlanarReflectionClipFS) + "\n  //VTK::Clip::Impl", false);
   return true;
@@ -590,9 +617,13 @@ bool vtkPlanarReflectionPass::PreReplaceShaderValues(
 
 //------------------------------------------------------------------------------
 bool vtkPlanarReflectionPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   Internals& impl = *this->Impl;
+  if (program->IsUniformUsed("vshMirrorShade"))
+  {
+    program->SetUniformf("vshMirrorShade", static_cast<float>(this->MirrorShade(prop)));
+  }
   if (!program->IsUniformUsed("vshMirrorClipOn"))
   {
     return true;
@@ -606,6 +637,45 @@ bool vtkPlanarReflectionPass::SetShaderParameters(
     program->SetUniform4f("vshMirrorPlaneVC", impl.PlaneVC);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// The factor on a prop's shading: 1 - R for a mirror whose reflection is
+// added in Composite (seen, stencil usable) so that the blend is
+// (1 - R) mirror + R reflection clamped once, not the clamped mirror mixed;
+// 1 - R also for every mirror inside a reflection, whose own reflection is
+// the bounce not drawn (a ray tracer stopping at that depth, POV-Ray's
+// max_trace_level 2, shows the same); 1 otherwise.
+double vtkPlanarReflectionPass::MirrorShade(vtkProp* prop) const
+{
+  const Internals& impl = *this->Impl;
+  auto* actor = vtkActor::SafeDownCast(prop);
+  vtkInformation* keys = actor ? actor->GetPropertyKeys() : nullptr;
+  if (!keys || !keys->Has(MIRROR()))
+  {
+    return 1.0;
+  }
+  const double r = keys->Get(MIRROR());
+  if (!(r > 0 && r <= 1))
+  {
+    return 1.0;
+  }
+  if (impl.ScaleAll)
+  {
+    return 1.0 - r;
+  }
+  if (!impl.ScaleSeen)
+  {
+    return 1.0;
+  }
+  for (const Mirror& mirror : impl.Mirrors)
+  {
+    if (mirror.Actor == actor)
+    {
+      return 1.0 - r;
+    }
+  }
+  return 1.0;
 }
 
 //------------------------------------------------------------------------------
