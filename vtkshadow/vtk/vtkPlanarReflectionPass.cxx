@@ -76,6 +76,7 @@ struct vtkPlanarReflectionPass::Internals
   vtkCamera* Camera = nullptr;
   vtkRenderer* Renderer = nullptr;
   vtkOpenGLState* State = nullptr;
+  int ViewSize[2] = { 0, 0 };
   float DCVC[16];
   float PlaneVC[4];
   float Viewport[4];
@@ -301,6 +302,14 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
     technique->SetWorldKey(0);
   }
   impl.ScaleSeen = impl.ScaleAll = false;
+  // The frame's camera view (IsCameraViewDraw): the renderer, its camera and
+  // the viewport's size.
+  impl.Renderer = s->GetRenderer();
+  impl.Camera = impl.Renderer->GetActiveCamera();
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(impl.Renderer->GetRenderWindow());
+  impl.State = window ? window->GetState() : nullptr;
+  int origin[2];
+  vtkShadowPassBase::GetViewport(s, impl.ViewSize, origin);
   if (!this->Reflections)
   {
     impl.Mirrors.clear();
@@ -487,9 +496,6 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
   impl.Viewport[2] = static_cast<float>(size[0]);
   impl.Viewport[3] = static_cast<float>(size[1]);
   impl.FBOIndex = static_cast<int>(impl.FBO->GetFBOIndex());
-  impl.Camera = camera;
-  impl.Renderer = ren;
-  impl.State = state;
   impl.ClipActive = true;
   impl.ScaleAll = true;
 
@@ -522,9 +528,6 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
 
   impl.ClipActive = false;
   impl.ScaleAll = false;
-  impl.Camera = nullptr;
-  impl.Renderer = nullptr;
-  impl.State = nullptr;
   world.Restore();
   state->PopFramebufferBindings();
   return true;
@@ -628,7 +631,12 @@ bool vtkPlanarReflectionPass::SetShaderParameters(
   {
     return true;
   }
-  const bool on = impl.ClipActive && this->IsCameraViewDraw();
+  GLint bound = -1;
+  if (impl.ClipActive)
+  {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  }
+  const bool on = impl.ClipActive && (bound == impl.FBOIndex || this->IsCameraViewDraw(true));
   program->SetUniformi("vshMirrorClipOn", on ? 1 : 0);
   if (on)
   {
@@ -656,7 +664,10 @@ double vtkPlanarReflectionPass::MirrorShade(vtkProp* prop) const
     return 1.0;
   }
   const double r = keys->Get(MIRROR());
-  if (!(r > 0 && r <= 1))
+  // Not in a light's view (VTK's own pass bakes its maps through the
+  // mappers with a light camera: the factor would scale the depth it
+  // writes into the colour).
+  if (!(r > 0 && r <= 1) || !this->IsCameraViewDraw(false))
   {
     return 1.0;
   }
@@ -688,25 +699,20 @@ double vtkPlanarReflectionPass::MirrorShade(vtkProp* prop) const
 // in a light camera, at the map's size) are not clipped: the clip plane is
 // given in the camera's view and viewport, and the mirrored world's lighting
 // keeps every object. A draw is the camera's view when the renderer's active
-// camera is the scene's and the viewport is the reflection's (origin 0, its
-// size): exactly the draws for which the clip's window-to-view mapping holds.
-bool vtkPlanarReflectionPass::IsCameraViewDraw() const
+// camera is the scene's and the viewport has the frame's size (for the
+// clip also origin 0, the reflection's: exactly the draws for which its
+// window-to-view mapping holds).
+bool vtkPlanarReflectionPass::IsCameraViewDraw(bool atOrigin) const
 {
   const Internals& impl = *this->Impl;
-  GLint bound = -1;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
-  if (bound == impl.FBOIndex)
-  {
-    return true;
-  }
   if (!impl.Renderer || impl.Renderer->GetActiveCamera() != impl.Camera || !impl.State)
   {
     return false;
   }
   GLint viewport[4] = { -1, -1, -1, -1 };
   impl.State->vtkglGetIntegerv(GL_VIEWPORT, viewport);
-  return viewport[0] == 0 && viewport[1] == 0 && viewport[2] == impl.Size[0] &&
-    viewport[3] == impl.Size[1];
+  return (!atOrigin || (viewport[0] == 0 && viewport[1] == 0)) && viewport[2] == impl.ViewSize[0] &&
+    viewport[3] == impl.ViewSize[1];
 }
 
 //------------------------------------------------------------------------------

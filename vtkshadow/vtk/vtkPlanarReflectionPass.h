@@ -119,7 +119,7 @@ private:
   bool RenderMirrored(const vtkRenderState* s, const Mirror& mirror);
   void Composite(const vtkRenderState* s, const Mirror& mirror);
   void ReleaseUnusedWorlds(const vtkRenderState* s);
-  bool IsCameraViewDraw() const;
+  bool IsCameraViewDraw(bool atOrigin) const;
   double MirrorShade(vtkProp* prop) const;
 };
 
