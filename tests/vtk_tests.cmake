@@ -119,13 +119,14 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/paraview/paraview_tests.cmake)
 # Planar mirrors (vtkPlanarReflectionPass): mirrored silhouettes against ray
 # casting in the test, and colour against POV-Ray per light type
 # (tests/render/test_reflection.py).
-foreach(case basic grazing wide offset-1e6 below two-mirrors)
+foreach(case basic grazing wide offset-1e6 below two-mirrors below-lit self-directional self-point
+             self-spot)
   add_test(NAME render.reflection_${case}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection.py
             --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/reflection --case ${case})
   set_tests_properties(render.reflection_${case} PROPERTIES LABELS "render")
 endforeach()
-foreach(case pov-directional pov-point pov-spot pov-wall-directional pov-wall-point)
+foreach(case pov-directional pov-point pov-spot pov-wall-directional pov-wall-point pov-below pov-wall-mirror pov-two-mirrors)
   add_test(NAME harness.reflection_${case}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_reflection.py
             --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/reflection --case ${case})

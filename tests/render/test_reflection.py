@@ -104,6 +104,17 @@ def hit_rect(o, d, origin, p1, p2):
     return np.where(ok, t, np.inf), n, dn < 0
 
 
+def hit_box(o, d, lo, hi):
+    """Nearest positive hit of rays with an axis-aligned box (slab method)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t1 = (np.asarray(lo, float) - o) / d
+        t2 = (np.asarray(hi, float) - o) / d
+    tn = np.nanmax(np.minimum(t1, t2), axis=-1)
+    tf = np.nanmin(np.maximum(t1, t2), axis=-1)
+    t = np.where(tn > 1e-9, tn, tf)
+    return np.where((tf >= tn) & (t > 1e-9), t, np.inf)
+
+
 def render(scene, tag, technique, extra=()):
     path = os.path.join(args.out, tag + ".json")
     with open(path, "w") as fh:
@@ -191,22 +202,43 @@ def reflection_mae(ref_png, test_png, mask, tag):
     return m["reflection_mae"]
 
 
-def pov_compare(light, technique, wall=False):
+# Below the mirror: a slab wholly under it and a box half under it (the
+# pov-below and below-lit cases). The mirrored draw clips them away, and so
+# must the depth pre-pass of the techniques' screen masks (csm's screen
+# resolve, volume, raytrace): before that fix the mirrored slab's depth, on
+# the eye's side of the mirror, decided the shadows of every reflected
+# pixel (before the fix, volume and raytrace: below-lit 0 of 727 lit pixels
+# of the sphere's reflection lit, csm resolve=1 264; pov-below 0.0436
+# over the pixels reflecting the sphere or the box, 0.0050 over the mirror).
+SLAB = ([-4.5, -4.5, -1.5], [4.5, 4.5, -0.3])
+HALF = ([1.5, 0.5, -0.6], [2.5, 1.5, 0.7])
+BELOW_LIGHT = {"type": "point", "position": [3, -2, 6]}
+
+
+def below_objects():
+    return [{"box": {"min": SLAB[0], "max": SLAB[1]}, "color": [0.2, 0.8, 0.3]},
+            {"box": {"min": HALF[0], "max": HALF[1]}, "color": [0.2, 0.5, 0.9]}]
+
+
+def pov_compare(light, technique, wall=False, below=False, size=(320, 240), extra=()):
     """reflection_mae of VTK (the technique's shadows, matte) against POV-Ray.
     With `wall`, a grey wall stands behind the sphere and takes its shadow,
     which the mirror shows: the shadows of the mirrored world itself, not
     only the sphere's shading."""
     shadows = profile(technique).casts
     R, col = 0.5, [0.9, 0.3, 0.2]
-    w, h = 320, 240
+    w, h = size
     scene = {"size": [w, h], "camera": CAM, "lights": [light],
              "objects": [{"sphere": {"center": [0, 0, 1.2], "radius": 0.8, "resolution": 256},
                           "color": col},
                          {"plane": FLOOR, "mirror": R, "receiver": True, "color": [0.7, 0.7, 0.7]}]}
     if wall:
         scene["objects"].append({"plane": BACK, "receiver": True, "color": [0.7, 0.7, 0.7]})
-    tag = "pov-%s%s-%s" % ("wall-" if wall else "", light["type"], technique)
-    vtk_png = render(scene, tag, technique, ["--matte"])
+    if below:
+        scene["objects"] += below_objects()
+    kind = "wall-" if wall else "below-" if below else ""
+    tag = "pov-%s%s-%s%s" % (kind, light["type"], technique, "".join(extra).replace("=", ""))
+    vtk_png = render(scene, tag, technique, ["--matte"] + list(extra))
     a = w / h
     t = math.tan(math.radians(30) / 2)
     angle = math.degrees(2 * math.atan(a * t))
@@ -236,8 +268,11 @@ def pov_compare(light, technique, wall=False):
     ] + (["mesh { triangle { %s, %s, %s } triangle { %s, %s, %s } pigment { rgb 0.7 } "
           "finish { ambient 0 diffuse 1 specular 0 phong 0 }%s }"
           % (v(BACK["origin"]), v(BACK["point1"]), v(BACK_FAR), v(BACK["origin"]), v(BACK_FAR),
-             v(BACK["point2"]), ns)] if wall else []))
-    stem = "pov-%s%s-shadows%d" % ("wall-" if wall else "", light["type"], shadows)
+             v(BACK["point2"]), ns)] if wall else [])
+        + (["box { %s, %s pigment { rgb %s } finish { ambient 0 diffuse 1 specular 0 phong 0 }%s }"
+            % (v(o["box"]["min"]), v(o["box"]["max"]), v(o["color"]), ns)
+            for o in below_objects()] if below else []))
+    stem = "pov-%s%s-%dx%d-shadows%d" % (kind, light["type"], w, h, shadows)
     pov_path = os.path.join(args.out, stem + ".pov")
     with open(pov_path, "w") as fh:
         fh.write(pov)
@@ -255,10 +290,196 @@ def pov_compare(light, technique, wall=False):
     if wall:
         tw, _, _ = hit_rect(o, d, *(np.array(BACK[k], float) for k in ("origin", "point1", "point2")))
         mask &= tf < tw
+    ok = True
+    if below:
+        mask &= tf < hit_box(o, d, *HALF)
+        # Also over the mirror pixels that reflect the sphere or the box
+        # (where the shadows of the mirrored world show), not diluted by the
+        # mirror's empty pixels.
+        p = o + np.where(np.isfinite(tf), tf, 0)[..., None] * d
+        rd = d * np.array([1, 1, -1])
+        seen = mask & (np.isfinite(hit_sphere(p, rd, np.array([0, 0, 1.2]), 0.8))
+                       | np.isfinite(hit_box(p, rd, *HALF)))
+        mae_seen = reflection_mae(os.path.join(args.out, out_png), vtk_png, seen, tag + "-seen")
+        print(f"{tag}: reflection_mae {mae_seen:.4f} over the {int(seen.sum())} mirror pixels "
+              "reflecting the sphere or the box")
+        ok = mae_seen <= 0.02 and seen.sum() > 500
     mae = reflection_mae(os.path.join(args.out, out_png), vtk_png, mask, tag)
     refl = ref[mask].max() > 0
     print(f"{tag}: reflection_mae {mae:.4f} over {int(mask.sum())} mirror pixels")
-    return mae <= 0.02 and refl and mask.sum() > 1000
+    return ok and mae <= 0.02 and refl and mask.sum() > 1000
+
+
+def below_lit(technique, extra=()):
+    """The lighting of the reflection with objects below the mirror, against
+    the test's own ray casting: a black mirror (R 1) under a white sphere, a
+    point light, SLAB and HALF below. Each mirror pixel's expected state:
+    the reflected ray hits the sphere at a point lit by the light (N.L >=
+    0.15, not behind HALF: bright), one it does not light (N.L < 0 or
+    behind HALF: dark), or nothing (dark: nothing below the mirror shows
+    through). Pixels with 0 <= N.L < 0.15, reflections of HALF and a
+    one-pixel band along every boundary are not counted."""
+    w, h = 384, 216
+    c, rad = np.array([0.0, 0.0, 1.2]), 0.8
+    scene = {"size": [w, h], "camera": CAM, "lights": [BELOW_LIGHT],
+             "objects": [{"sphere": {"center": list(c), "radius": rad, "resolution": 256},
+                          "color": [1, 1, 1]},
+                         {"plane": FLOOR, "mirror": 1.0, "receiver": True, "color": [0, 0, 0]}]
+             + below_objects()}
+    tag = "below-lit-%s%s" % (technique, "".join(extra).replace("=", ""))
+    image = read_rgb(render(scene, tag, technique, ["--matte"] + list(extra)))
+    e, d = rays(CAM, w, h, 0.0)
+    o = np.broadcast_to(e, d.shape)
+    tf, _, _ = hit_rect(o, d, *(np.array(FLOOR[k], float) for k in ("origin", "point1", "point2")))
+    mirror = np.isfinite(tf) & (tf < hit_sphere(o, d, c, rad)) & (tf < hit_box(o, d, *HALF))
+    p = o + np.where(np.isfinite(tf), tf, 0)[..., None] * d
+    rd = d * np.array([1, 1, -1])
+    ts, tb = hit_sphere(p, rd, c, rad), hit_box(p, rd, *HALF)
+    on_sphere = np.isfinite(ts) & (ts < tb)
+    q = p + np.where(on_sphere, ts, 0)[..., None] * rd
+    to_light = np.array(BELOW_LIGHT["position"], float) - q
+    dist = np.linalg.norm(to_light, axis=-1)
+    ldir = to_light / dist[..., None]
+    ndl = np.sum((q - c) / rad * ldir, axis=-1)
+    blocked = hit_box(q, ldir, *HALF) < dist
+    # 0 outside the mirror, 1 nothing reflected, 2 lit sphere, 3 dark
+    # sphere, 4 not counted (HALF's reflection, the terminator).
+    label = np.zeros((h, w), int)
+    label[mirror & ~np.isfinite(ts) & ~np.isfinite(tb)] = 1
+    label[mirror & on_sphere & (ndl >= 0.15) & ~blocked] = 2
+    label[mirror & on_sphere & ((ndl < 0) | blocked)] = 3
+    label[mirror & (label == 0)] = 4
+    considered = (label >= 1) & (label <= 3)
+    for v in range(5):
+        considered &= ~band(label == v)
+    bright = image.max(axis=2)
+    wrong = considered & np.where(label == 2, bright < 0.05, bright > 6 / 255)
+    lit = (label == 2) & considered
+    pct = 100.0 * wrong.sum() / max(considered.sum(), 1)
+    print(f"{tag}: {wrong.sum()} wrong of {considered.sum()} mirror pixels ({pct:.4f} %); "
+          f"{int(((bright >= 0.05) & lit).sum())} of {int(lit.sum())} lit reflected-sphere "
+          "pixels lit")
+    return pct <= 0.05 and lit.sum() > 300 and ((label == 3) & considered).sum() > 300
+
+
+def harness_mae(name, scene, technique):
+    """reflection_mae of `technique` against POV-Ray through the harness
+    (vtkshadow-compare: POV-Ray's colour image, shadows on, and mirror
+    mask)."""
+    folder = os.path.join(args.out, name + "-" + technique)
+    os.makedirs(os.path.join(folder, "scenes"), exist_ok=True)
+    with open(os.path.join(folder, "scenes", name + ".json"), "w") as fh:
+        json.dump(scene, fh)
+    subprocess.run([os.path.join(args.bin, "vtkshadow-compare"), os.path.join(folder, "scenes"),
+                    "--out", os.path.join(folder, "out"), "--renderers", "vtk,povray",
+                    "--techniques", technique, "--povray-binary", args.povray, "--no-report",
+                    "--no-cache"], check=True, timeout=900, stdout=subprocess.DEVNULL)
+    with open(os.path.join(folder, "out", "results.json")) as fh:
+        rows = [r for sc in json.load(fh)["scenes"] for r in sc["results"]]
+    maes = [float(r["reflection_mae"]) for r in rows
+            if r.get("test") == "vtk/" + technique and r.get("reflection_mae") not in (None, "")]
+    if not maes:
+        raise SystemExit(f"{name}-{technique}: no reflection_mae in the harness results")
+    print(f"{name}-{technique}: reflection_mae {maes[0]:.4f} (harness, against POV-Ray)")
+    return maes[0]
+
+
+SIDE_SCENE_OBJECTS = [
+    {"sphere": {"center": [0, 0, 0.9], "radius": 0.6, "resolution": 128}, "color": [0.9, 0.3, 0.2]},
+    {"sphere": {"center": [1.4, -2, 0.5], "radius": 0.4, "resolution": 96},
+     "color": [0.2, 0.4, 0.9]},
+    {"box": {"min": [-2, 1, 0], "max": [-1.2, 1.8, 1.4]}, "color": [0.8, 0.8, 0.3]},
+    {"plane": {"origin": [-6, -8, 0], "point1": [3, -8, 0], "point2": [-6, 6, 0]},
+     "receiver": True, "color": [0.7, 0.7, 0.7]},
+    {"plane": {"origin": [3, -8, 0], "point1": [3, -8, 3], "point2": [3, 6, 0]},
+     "receiver": True, "mirror": 0.6, "color": [0.6, 0.6, 0.6]}]
+
+
+def pov_wall_mirror(technique):
+    """A wall mirror (x = 3, facing -x) beside a sphere and a box on a matte
+    floor, the sun behind the wall: the wall shadows the floor in front of
+    it, and that shadow shows in the mirror. In the mirrored world the
+    mirror still casts (it is its own reflection) but is not drawn; volume
+    counted it z-pass, which draws no caps, so its shadow came out inverted
+    (0.161 here before the fix). reflection_mae <= 0.02; a technique
+    without shadows must show the wall's missing shadow (none: 0.099)."""
+    scene = {"size": [256, 144],
+             "camera": {"position": [1, -14, 3], "focal_point": [0, 0, 0.6],
+                        "view_up": [0, 0, 1], "view_angle": 28},
+             "lights": [{"type": "directional", "direction": [-1, 2, -3]}],
+             "objects": SIDE_SCENE_OBJECTS}
+    mae = harness_mae("wall-mirror", scene, technique)
+    return mae <= 0.02 if profile(technique).casts else mae > 0.02
+
+
+def pov_two_mirrors(technique):
+    """Two mirrors, the floor (R 0.5) seen at a grazing angle and the wall,
+    under a sun and a point light whose N.L on the floor sum to more than
+    1 / its colour. A mirror is drawn at (1 - R) of its shading with R x
+    the reflection added, clamped once (it was the clamped shading mixed:
+    too dark), and a mirror seen in another one shows (1 - R) of its
+    shading, the bounce not drawn left out as POV-Ray's max_trace_level 2
+    does (it was drawn plain: too bright). Before: planar 0.0339 (volume
+    0.0518 before its z-pass fix); now 0.0015-0.0023. <= 0.01; a
+    technique without shadows must exceed it (none: 0.0226)."""
+    scene = {"size": [264, 120],
+             "camera": {"position": [1, -14, 0.45], "focal_point": [0, 0, 0.6],
+                        "view_up": [0, 0, 1], "view_angle": 28},
+             "lights": [{"type": "directional", "direction": [-1, 2, -3]},
+                        {"type": "point", "position": [-2, -4, 4]}],
+             "objects": [dict(o) for o in SIDE_SCENE_OBJECTS]}
+    scene["objects"][3]["mirror"] = 0.5
+    mae = harness_mae("two-mirrors", scene, technique)
+    return mae <= 0.01 if profile(technique).casts else mae > 0.01
+
+
+def self_consistency(light, technique):
+    """The reflection against the technique's own render of the mirrored
+    world, so that a technique whose shadows differ from POV-Ray's (vtk)
+    is still checked for composing with the mirror: scene A, a red sphere
+    and a blue box over a black R = 1 mirror floor (the box lifted by 0.05: a face lying in the mirror's
+    plane is half clipped), under `light`; scene B,
+    no mirror, the sphere, the box and the light reflected through the
+    floor's plane (z -> -z) and seen from the same camera, plus four tiny
+    non-casting spheres at the floor's corners so that the scene's bounds,
+    from which VTK's own pass fits its light cameras, are A's. Over A's
+    mirror pixels (ray cast here) the two images must agree: mean absolute
+    difference <= 0.002 and <= 0.1 % of the pixels off by more than 0.1."""
+    w, h = 320, 240
+    flip = lambda p: [p[0], p[1], -p[2]]
+    objects_a = [{"sphere": {"center": [0, 0, 1.2], "radius": 0.8, "resolution": 256},
+                  "color": [0.9, 0.3, 0.2]},
+                 {"box": {"min": [1.5, 0.5, 0.05], "max": [2.5, 1.5, 1]},
+                  "color": [0.2, 0.5, 0.9]}]
+    objects_b = [{"sphere": {"center": [0, 0, -1.2], "radius": 0.8, "resolution": 256},
+                  "color": [0.9, 0.3, 0.2]},
+                 {"box": {"min": [1.5, 0.5, -1], "max": [2.5, 1.5, -0.05]},
+                  "color": [0.2, 0.5, 0.9]}]
+    objects_b += [{"sphere": {"center": [x, y, 0], "radius": 1e-3, "resolution": 8},
+                   "casts": False, "color": [0, 0, 0]} for x in (-5, 5) for y in (-5, 5)]
+    mirrored = dict(light)
+    for key in ("direction", "position", "focal_point"):
+        if key in light:
+            mirrored[key] = flip(light[key])
+    scene_a = {"size": [w, h], "camera": CAM, "lights": [light],
+               "objects": objects_a + [{"plane": FLOOR, "mirror": 1.0, "receiver": True,
+                                        "color": [0, 0, 0]}]}
+    scene_b = {"size": [w, h], "camera": CAM, "lights": [mirrored], "objects": objects_b}
+    tag = "self-%s-%s" % (light["type"], technique)
+    a = read_rgb(render(scene_a, tag + "-mirror", technique, ["--matte"]))
+    b = read_rgb(render(scene_b, tag + "-mirrored-world", technique, ["--matte"]))
+    e, d = rays(CAM, w, h, 0.0)
+    o = np.broadcast_to(e, d.shape)
+    tf, _, _ = hit_rect(o, d, *(np.array(FLOOR[k], float) for k in ("origin", "point1", "point2")))
+    mask = (np.isfinite(tf) & (tf < hit_sphere(o, d, np.array([0, 0, 1.2]), 0.8))
+            & (tf < hit_box(o, d, [1.5, 0.5, 0.05], [2.5, 1.5, 1])))
+    diff = np.abs(a - b).max(axis=2)[mask]
+    mae = float(np.abs(a - b).mean(axis=2)[mask].mean())
+    off = 100.0 * float((diff > 0.1).mean())
+    lit = int((b.max(axis=2)[mask] > 0.05).sum())
+    print(f"{tag}: reflection against the mirrored world's render: mean {mae:.5f}, "
+          f"{off:.4f} % of {int(mask.sum())} mirror pixels off by > 0.1 ({lit} lit)")
+    return mae <= 0.002 and off <= 0.1 and lit > 300
 
 
 cases = {
@@ -282,6 +503,21 @@ cases = {
                                                    "direction": [1.2, 2, -0.3]}, t, wall=True),
     "pov-wall-point": lambda t: pov_compare({"type": "point", "position": [-2, -3, 2]}, t,
                                             wall=True),
+    # Objects below the mirror at 16:9; csm also with its screen resolve
+    # (resolve=1), which reads the screen mask.
+    "below-lit": lambda t: below_lit(t) and (t != "csm" or below_lit(t, ["--set", "resolve=1"])),
+    "pov-wall-mirror": pov_wall_mirror,
+    # The reflection against the technique's own render of the mirrored
+    # world (what "mirrors work with every technique" can rely on for vtk).
+    "self-directional": lambda t: self_consistency({"type": "directional",
+                                                    "direction": [0.5, 2, -1]}, t),
+    "self-point": lambda t: self_consistency({"type": "point", "position": [3, -2, 6]}, t),
+    "self-spot": lambda t: self_consistency({"type": "spot", "position": [3, -2, 6],
+                                             "focal_point": [0, 0, 0], "cone_angle": 40}, t),
+    "pov-two-mirrors": pov_two_mirrors,
+    "pov-below": lambda t: (pov_compare(BELOW_LIGHT, t, below=True, size=(384, 216)) and
+                            (t != "csm" or pov_compare(BELOW_LIGHT, t, below=True, size=(384, 216),
+                                                       extra=["--set", "resolve=1"]))),
 }
 # Known failures: (technique, case) -> why. Such a case must still fail
 # (printed "xfail"); once it passes, this test fails until the entry goes.
@@ -292,8 +528,11 @@ KNOWN = {
             "skips point lights (no shadow at all in the point cases); the reflection itself "
             "differs by <= 0.0005 (the reflected sphere's lit rim, lost in the mirrored world's "
             "shadow map); see docs/reflections.md"
-    for t in ("vtk",) for c in ("pov-directional", "pov-point", "pov-spot", "pov-wall-directional",
-                                "pov-wall-point")
+    # (vtk, pov-point) is not listed: since the reflection is added to the
+    # mirror's (1 - R) shading instead of mixed in 8 bits, vtk's missing
+    # point-light shadow alone scores 0.0197 there, under the 0.02 limit.
+    for t in ("vtk",) for c in ("pov-directional", "pov-spot", "pov-wall-directional",
+                                "pov-wall-point", "pov-wall-mirror", "pov-two-mirrors")
 }
 failed = []
 for t in techniques():

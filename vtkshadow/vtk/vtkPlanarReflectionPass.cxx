@@ -57,14 +57,26 @@ struct vtkPlanarReflectionPass::Internals
   int Found = 0;
   int Drawn = 0;
   bool Stencil = true;
+  // The mirrors seen are drawn at (1 - R) of their shading and get R x the
+  // reflection added (Composite): true while that holds for the frame.
+  bool ScaleSeen = false;
+  // Inside the mirrored draw: every mirror drawn there shows (1 - R) of its
+  // shading (its reflection is the bounce not drawn).
+  bool ScaleAll = false;
   double Eye[3] = { 0, 0, 0 };
   vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
   int Size[2] = { 0, 0 };
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   vtkSmartPointer<vtkRenderStepsPass> Plain;
-  // The clip plane while the mirrored scene is drawn into FBO.
+  // The clip plane while the mirrored scene is drawn: into FBO, and into
+  // any other target drawn with the camera's view (a technique's screen
+  // mask depth pre-pass), recognised by Camera and the viewport's Size.
   bool ClipActive = false;
   int FBOIndex = -1;
+  vtkCamera* Camera = nullptr;
+  vtkRenderer* Renderer = nullptr;
+  vtkOpenGLState* State = nullptr;
+  int ViewSize[2] = { 0, 0 };
   float DCVC[16];
   float PlaneVC[4];
   float Viewport[4];
@@ -289,6 +301,15 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
   {
     technique->SetWorldKey(0);
   }
+  impl.ScaleSeen = impl.ScaleAll = false;
+  // The frame's camera view (IsCameraViewDraw): the renderer, its camera and
+  // the viewport's size.
+  impl.Renderer = s->GetRenderer();
+  impl.Camera = impl.Renderer->GetActiveCamera();
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(impl.Renderer->GetRenderWindow());
+  impl.State = window ? window->GetState() : nullptr;
+  int origin[2];
+  vtkShadowPassBase::GetViewport(s, impl.ViewSize, origin);
   if (!this->Reflections)
   {
     impl.Mirrors.clear();
@@ -298,6 +319,15 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
     return;
   }
   this->FindMirrors(s);
+  // Whether the reflections can be composited (the target has a stencil),
+  // known before the main draw, which shades the mirrors seen at (1 - R).
+  {
+    TargetStencil probe;
+    probe.Find();
+    impl.Stencil = probe.Usable;
+    probe.Release();
+  }
+  impl.ScaleSeen = impl.Stencil && !impl.Mirrors.empty();
   // The clip hook is registered for the whole frame, so every mapper keeps
   // one shader for the scene and its reflection (it is off outside the
   // mirrored draw).
@@ -467,6 +497,7 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
   impl.Viewport[3] = static_cast<float>(size[1]);
   impl.FBOIndex = static_cast<int>(impl.FBO->GetFBOIndex());
   impl.ClipActive = true;
+  impl.ScaleAll = true;
 
   vtkRenderState mirrored(ren);
   mirrored.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
@@ -496,6 +527,7 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
   glFrontFace(GL_CCW);
 
   impl.ClipActive = false;
+  impl.ScaleAll = false;
   world.Restore();
   state->PopFramebufferBindings();
   return true;
@@ -556,7 +588,9 @@ void vtkPlanarReflectionPass::Composite(const vtkRenderState* s, const Mirror& m
   state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   state->vtkglEnable(GL_BLEND);
   glBlendColor(0.0f, 0.0f, 0.0f, static_cast<float>(mirror.R));
-  state->vtkglBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_ZERO, GL_ONE);
+  // The mirror is already (1 - R) x its shading (SetShaderParameters), so
+  // the reflection is added: the sum is clamped once, as a ray tracer's.
+  state->vtkglBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE, GL_ZERO, GL_ONE);
   vtkTextureObject* colour = impl.FBO->GetColorAttachmentAsTextureObject(0);
   colour->Activate();
   impl.Quad->Program->SetUniformi("reflectionColor", colour->GetTextureUnit());
@@ -568,10 +602,17 @@ void vtkPlanarReflectionPass::Composite(const vtkRenderState* s, const Mirror& m
 bool vtkPlanarReflectionPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Clip::Dec",
+  const bool declared = vtkShaderProgram::Substitute(fragmentShader, "//VTK::Clip::Dec",
     "uniform int vshMirrorClipOn;\nuniform vec4 vshMirrorViewport;\n"
-    "uniform mat4 vshMirrorDCVC;\nuniform vec4 vshMirrorPlaneVC;\n//VTK::Clip::Dec",
+    "uniform mat4 vshMirrorDCVC;\nuniform vec4 vshMirrorPlaneVC;\n"
+    "uniform float vshMirrorShade;\n//VTK::Clip::Dec",
     false);
+  // A mirror's own shading scaled by 1 - R (1 for every other surface).
+  if (declared)
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+      "//VTK::Light::Impl\n  gl_FragData[0].rgb *= vshMirrorShade;\n", false);
+  }
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::Clip::Impl",
     std::string(vtkPlanarReflectionClipFS) + "\n  //VTK::Clip::Impl", false);
   return true;
@@ -579,21 +620,23 @@ bool vtkPlanarReflectionPass::PreReplaceShaderValues(
 
 //------------------------------------------------------------------------------
 bool vtkPlanarReflectionPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   Internals& impl = *this->Impl;
+  if (program->IsUniformUsed("vshMirrorShade"))
+  {
+    program->SetUniformf("vshMirrorShade", static_cast<float>(this->MirrorShade(prop)));
+  }
   if (!program->IsUniformUsed("vshMirrorClipOn"))
   {
     return true;
   }
-  // Only the camera's view of the mirrored scene is clipped, not the maps
-  // or masks a technique draws on the way (they have their own targets).
   GLint bound = -1;
   if (impl.ClipActive)
   {
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
   }
-  const bool on = impl.ClipActive && bound == impl.FBOIndex;
+  const bool on = impl.ClipActive && (bound == impl.FBOIndex || this->IsCameraViewDraw(true));
   program->SetUniformi("vshMirrorClipOn", on ? 1 : 0);
   if (on)
   {
@@ -602,6 +645,74 @@ bool vtkPlanarReflectionPass::SetShaderParameters(
     program->SetUniform4f("vshMirrorPlaneVC", impl.PlaneVC);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// The factor on a prop's shading: 1 - R for a mirror whose reflection is
+// added in Composite (seen, stencil usable) so that the blend is
+// (1 - R) mirror + R reflection clamped once, not the clamped mirror mixed;
+// 1 - R also for every mirror inside a reflection, whose own reflection is
+// the bounce not drawn (a ray tracer stopping at that depth, POV-Ray's
+// max_trace_level 2, shows the same); 1 otherwise.
+double vtkPlanarReflectionPass::MirrorShade(vtkProp* prop) const
+{
+  const Internals& impl = *this->Impl;
+  auto* actor = vtkActor::SafeDownCast(prop);
+  vtkInformation* keys = actor ? actor->GetPropertyKeys() : nullptr;
+  if (!keys || !keys->Has(MIRROR()))
+  {
+    return 1.0;
+  }
+  const double r = keys->Get(MIRROR());
+  // Not in a light's view (VTK's own pass bakes its maps through the
+  // mappers with a light camera: the factor would scale the depth it
+  // writes into the colour).
+  if (!(r > 0 && r <= 1) || !this->IsCameraViewDraw(false))
+  {
+    return 1.0;
+  }
+  if (impl.ScaleAll)
+  {
+    return 1.0 - r;
+  }
+  if (!impl.ScaleSeen)
+  {
+    return 1.0;
+  }
+  for (const Mirror& mirror : impl.Mirrors)
+  {
+    if (mirror.Actor == actor)
+    {
+      return 1.0 - r;
+    }
+  }
+  return 1.0;
+}
+
+//------------------------------------------------------------------------------
+// Every draw of the camera's view of the mirrored scene is clipped, whatever
+// its target: the reflection's own framebuffer, and a technique's depth
+// pre-pass (vtkShadowScreenMask, used by csm's screen resolve, volume and
+// raytrace), whose depth must be the clipped scene's or something behind the
+// mirror decides the shadows of the reflected pixels. The maps a technique
+// draws from a light through the mappers (VTK's vtkShadowMapBakerPass swaps
+// in a light camera, at the map's size) are not clipped: the clip plane is
+// given in the camera's view and viewport, and the mirrored world's lighting
+// keeps every object. A draw is the camera's view when the renderer's active
+// camera is the scene's and the viewport has the frame's size (for the
+// clip also origin 0, the reflection's: exactly the draws for which its
+// window-to-view mapping holds).
+bool vtkPlanarReflectionPass::IsCameraViewDraw(bool atOrigin) const
+{
+  const Internals& impl = *this->Impl;
+  if (!impl.Renderer || impl.Renderer->GetActiveCamera() != impl.Camera || !impl.State)
+  {
+    return false;
+  }
+  GLint viewport[4] = { -1, -1, -1, -1 };
+  impl.State->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  return (!atOrigin || (viewport[0] == 0 && viewport[1] == 0)) && viewport[2] == impl.ViewSize[0] &&
+    viewport[3] == impl.ViewSize[1];
 }
 
 //------------------------------------------------------------------------------

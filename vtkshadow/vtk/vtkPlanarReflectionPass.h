@@ -24,11 +24,14 @@
  *    its shadows for this mirrored world, so the reflection has shadows;
  *    with ReflectShadows off a plain vtkRenderStepsPass draws it instead;
  * 3. the mirror is drawn again into the stencil, depth-tested against the
- *    scene (its visible pixels only), and the reflection is blended into
- *    those pixels by R: colour = (1 - R) mirror + R reflection.
+ *    scene (its visible pixels only), and R x the reflection is added to
+ *    those pixels: the mirrors seen are shaded at (1 - R) in step 1 (a
+ *    factor in the fragment shader), so colour = (1 - R) mirror + R
+ *    reflection, clamped once.
  *
- * One bounce: other mirrors appear in a reflection as their plain
- * surfaces. Camera and headlights are not mirrored. The render target must
+ * One bounce: other mirrors appear in a reflection at (1 - R) of their
+ * shading (their own reflection is the bounce not drawn, as in a ray
+ * tracer stopped at that depth). Camera and headlights are not mirrored. The render target must
  * have a stencil buffer (vtkRenderWindow::StencilCapableOn() before the
  * first render); without one the mirrors are drawn without reflections and
  * GetStatsJSON says so.
@@ -116,6 +119,8 @@ private:
   bool RenderMirrored(const vtkRenderState* s, const Mirror& mirror);
   void Composite(const vtkRenderState* s, const Mirror& mirror);
   void ReleaseUnusedWorlds(const vtkRenderState* s);
+  bool IsCameraViewDraw(bool atOrigin) const;
+  double MirrorShade(vtkProp* prop) const;
 };
 
 #endif

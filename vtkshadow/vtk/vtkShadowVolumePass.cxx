@@ -132,6 +132,9 @@ struct vtkShadowVolumePass::Frame
   double NearCorners[12];    // near-plane rectangle, relative to the eye
   std::vector<vtkLight*> Lights;
   std::vector<vtkActor*> Casters;
+  // The props this render state draws, sorted: z-pass counting needs the
+  // caster's own surface in the depth buffer (see DrawCaster).
+  std::vector<vtkProp*> Drawn;
 };
 
 //------------------------------------------------------------------------------
@@ -179,6 +182,8 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
   vtkshadow::UpdateLights(renderer);
   frame.Lights = vtkshadow::SwitchedOnLights(renderer);
   frame.Casters = CastingActors(renderer);
+  frame.Drawn.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
+  std::sort(frame.Drawn.begin(), frame.Drawn.end());
 }
 
 //------------------------------------------------------------------------------
@@ -455,7 +460,15 @@ void vtkShadowVolumePass::DrawCaster(
     size = std::max(size, bounds[2 * k + 1] - bounds[2 * k]);
   }
   const double eye[3] = { 0, 0, 0 };
-  const bool zpass = !this->ForceZFail &&
+  // Z-pass counts no caps: a ray from the eye enters a volume through its
+  // sides or through the caster itself, which then hides what lies behind.
+  // A caster the state does not draw (the mirror in the mirrored world of
+  // vtkPlanarReflectionPass: it casts there, as it does in the real world,
+  // but is not drawn) lets the ray in through its cap uncounted, so its
+  // volume is counted z-fail (a wall mirror's shadow on the reflected floor
+  // was inverted: reflection_mae 0.16 against POV-Ray).
+  const bool drawn = std::binary_search(frame.Drawn.begin(), frame.Drawn.end(), actor);
+  const bool zpass = !this->ForceZFail && drawn &&
     vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
   // Model (shifted) -> world -> relative to the eye -> clip, in double.
   double modelRelative[16], mcdc[16], transposed[16];
