@@ -15,7 +15,8 @@ from vtkmodules.vtkFiltersCore import (vtkContourFilter, vtkTriangleFilter, vtkG
                                        vtkCleanPolyData, vtkAppendPolyData, vtkPolyDataNormals)
 from vtkmodules.vtkFiltersFlowPaths import vtkStreamTracer
 from vtkmodules.vtkFiltersGeneral import vtkWarpScalar
-from vtkmodules.vtkFiltersSources import vtkArrowSource, vtkPlaneSource, vtkPointSource, vtkLineSource
+from vtkmodules.vtkFiltersSources import (vtkArrowSource, vtkConeSource, vtkPlaneSource, vtkPointSource,
+                                          vtkLineSource)
 from vtkmodules.vtkFiltersCore import vtkTubeFilter
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkIOPLY import vtkPLYWriter
@@ -141,3 +142,55 @@ for i in range(sp.GetNumberOfPoints()):
          + 0.15 * math.sin(2.0 * x) * math.cos(1.5 * y))
     sp.SetPoint(i, x, y, z)
 write("elevation.ply", surf)
+
+# 5. 7x7 cone glyphs tilted in a swirl, standing on the floor (bases at z ~ 0.15).
+lattice = vtkPolyData()
+lp = vtkPoints()
+dirs = vtkFloatArray()
+dirs.SetNumberOfComponents(3)
+dirs.SetName("dir")
+for j in range(7):
+    for i in range(7):
+        x, y = -1.5 + 0.5 * i, -1.5 + 0.5 * j
+        lp.InsertNextPoint(x, y, 0.35)
+        dirs.InsertNextTuple3(-0.5 * y, 0.5 * x, 1.0)
+lattice.SetPoints(lp)
+lattice.GetPointData().SetVectors(dirs)
+# Tapered closed casters: the cone tips are thinner than a shadow-map texel
+# over part of their length (auto's taper term, docs/auto.md).
+cone = vtkConeSource()
+cone.SetResolution(24)
+cone.SetHeight(1.0)
+cone.SetRadius(0.25)
+cone.CappingOn()
+glyph = vtkGlyph3D()
+glyph.SetInputData(lattice)
+glyph.SetSourceConnection(cone.GetOutputPort())
+glyph.SetVectorModeToUseVector()
+glyph.SetScaleModeToDataScalingOff()
+glyph.SetScaleFactor(0.5)
+glyph.OrientOn()
+glyph.Update()
+write("cone-glyphs.ply", glyph.GetOutput())
+
+# 6. Tube around a helix (3 turns, radius 1, pitch 0.6), 20 sides, capped.
+# A coarse (20-sided) closed tube: its terminator strip of facets facing away
+# from a light is several pixels wide (docs/shadow-volumes.md, The terminator).
+hp = vtkPoints()
+lines = vtkCellArray()
+m = 360
+lines.InsertNextCell(m + 1)
+for i in range(m + 1):
+    t = 3 * 2 * math.pi * i / m
+    hp.InsertNextPoint(math.cos(t), math.sin(t), 0.35 + 0.6 * t / (2 * math.pi))
+    lines.InsertCellPoint(i)
+hel = vtkPolyData()
+hel.SetPoints(hp)
+hel.SetLines(lines)
+tube = vtkTubeFilter()
+tube.SetInputData(hel)
+tube.SetRadius(0.12)
+tube.SetNumberOfSides(20)
+tube.CappingOn()
+tube.Update()
+write("helix-tube.ply", tube.GetOutput())
