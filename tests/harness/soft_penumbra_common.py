@@ -60,3 +60,12 @@ def exact(bindir, scene, k, vis, mask):
 def same_bytes(a, b):
     with open(a, "rb") as fa, open(b, "rb") as fb:
         return fa.read() == fb.read()
+
+
+def verdict(test_name):
+    """Print every failure (or that all bounds were met); the exit status."""
+    if failures:
+        print("FAILED:\n  " + "\n  ".join(failures))
+        return 1
+    print("%s: all bounds met" % test_name)
+    return 0

@@ -35,6 +35,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soft_penumbra_common as common  # noqa: E402
+from soft_penumbra_common import verdict  # noqa: E402
 from soft_penumbra_common import SCENE, SIZE, failures, run, scene_with  # noqa: E402
 
 LOOSE = 0.2
@@ -147,11 +148,7 @@ def main():
             check_tight_samples(result[0], result[1], k)
     check_hard(args)
     check_bad_values(args, scene)
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("harness.auto_soft: all bounds met")
-    return 0
+    return verdict("harness.auto_soft")
 
 
 if __name__ == "__main__":

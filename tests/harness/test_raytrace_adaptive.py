@@ -27,6 +27,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soft_penumbra_common as common  # noqa: E402
+from soft_penumbra_common import verdict  # noqa: E402
 from soft_penumbra_common import SCENE, SIZE, failures, run, scene_with  # noqa: E402
 
 SAMPLES = 64
@@ -81,11 +82,7 @@ def main():
     scene = scene_with(args.out, "soft", None)
     for k in range(len(SCENE["lights"])):
         check_light(args, scene, k)
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("harness.raytrace_adaptive: all bounds met")
-    return 0
+    return verdict("harness.raytrace_adaptive")
 
 
 if __name__ == "__main__":

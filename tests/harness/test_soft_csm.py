@@ -28,6 +28,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soft_penumbra_common as common  # noqa: E402
+from soft_penumbra_common import verdict  # noqa: E402
 from soft_penumbra_common import (SCENE, SIZE, failures, run,  # noqa: E402,F401
                                   same_bytes, scene_with)
 
@@ -90,11 +91,7 @@ def main():
     scene = scene_with(args.out, "exact", None)
     check_hard(args, scene)
     check_soft(args, scene)
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("harness.soft_csm: all bounds met")
-    return 0
+    return verdict("harness.soft_csm")
 
 
 if __name__ == "__main__":

@@ -26,6 +26,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soft_penumbra_common as common  # noqa: E402
+from soft_penumbra_common import verdict  # noqa: E402
 from soft_penumbra_common import (SCENE, SIZE, failures, run,  # noqa: E402,F401
                                   same_bytes, scene_with)
 
@@ -91,11 +92,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     check_hard(args)
     check_soft(args, scene_with(args.out, "exact", None))
-    if failures:
-        print("FAILED:\n  " + "\n  ".join(failures))
-        return 1
-    print("harness.soft_planar: all bounds met")
-    return 0
+    return verdict("harness.soft_planar")
 
 
 if __name__ == "__main__":
