@@ -1,20 +1,17 @@
 // vtkShadowClipSpaceQuad.h - two triangles covering clip space, for the
 // passes' full-viewport draws (planar's mask bit over the whole viewport,
-// the screen mask's resolves).
+// the screen mask's resolves): one vtkShadowClipSpaceRects rectangle.
 #ifndef vtkShadowClipSpaceQuad_h
 #define vtkShadowClipSpaceQuad_h
 
-#include "vtkSmartPointer.h"
+#include "vtkShadowClipSpaceRects.h"
 
-class vtkOpenGLBufferObject;
-class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
 
 class vtkShadowClipSpaceQuad
 {
 public:
-  vtkShadowClipSpaceQuad();
-  ~vtkShadowClipSpaceQuad();
+  vtkShadowClipSpaceQuad() = default;
 
   // Draw the quad (x, y in [-1, 1], z 0) with `program`, whose vertex input
   // is `vertexMC`; the caller binds the program and sets uniforms and state.
@@ -25,9 +22,8 @@ private:
   vtkShadowClipSpaceQuad(const vtkShadowClipSpaceQuad&) = delete;
   void operator=(const vtkShadowClipSpaceQuad&) = delete;
 
-  vtkSmartPointer<vtkOpenGLBufferObject> Corners;
-  vtkSmartPointer<vtkOpenGLVertexArrayObject> VAO;
-  vtkShaderProgram* Program = nullptr; // the program the VAO's attribute is bound for
+  vtkShadowClipSpaceRects Rect;
+  bool Uploaded = false; // the rectangle is on the GPU (until released)
 };
 
 #endif
