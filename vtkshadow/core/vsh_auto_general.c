@@ -109,6 +109,22 @@ static void symmetric_eigenvectors(const double m[6], double v[3][3])
   }
 }
 
+/* A component's principal axes (eigenvectors of its vertices' covariance)
+ * and empty extents along them, to be grown by its vertices. */
+static void principal_frame(const component_sums *s, double axes[3][3], double lo[3],
+                            double hi[3])
+{
+  const double n = s->n > 0 ? (double)s->n : 1.0, *m = s->sum;
+  const double cov[6] = {s->cov[0] - m[0] * m[0] / n, s->cov[1] - m[0] * m[1] / n,
+                         s->cov[2] - m[0] * m[2] / n, s->cov[3] - m[1] * m[1] / n,
+                         s->cov[4] - m[1] * m[2] / n, s->cov[5] - m[2] * m[2] / n};
+  symmetric_eigenvectors(cov, axes);
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = INFINITY;
+    hi[k] = -INFINITY;
+  }
+}
+
 static void sort3(double e[3])
 {
   for (int i = 0; i < 2; ++i)
@@ -158,18 +174,9 @@ double vsh_mesh_thinnest_width(const double *positions, size_t vertex_count,
     goto done;
   accumulate(sums, positions, vertex_count, component, component_count);
   for (size_t c = 0; c < component_count; ++c) {
-    const component_sums *s = &sums[c];
-    if (s->n < 2)
+    if (sums[c].n < 2)
       continue;
-    const double n = (double)s->n, *m = s->sum;
-    const double cov[6] = {s->cov[0] - m[0] * m[0] / n, s->cov[1] - m[0] * m[1] / n,
-                           s->cov[2] - m[0] * m[2] / n, s->cov[3] - m[1] * m[1] / n,
-                           s->cov[4] - m[1] * m[2] / n, s->cov[5] - m[2] * m[2] / n};
-    symmetric_eigenvectors(cov, axes[c]);
-    for (int k = 0; k < 3; ++k) {
-      lo[c][k] = INFINITY;
-      hi[c][k] = -INFINITY;
-    }
+    principal_frame(&sums[c], axes[c], lo[c], hi[c]);
   }
   /* Extents along the axes, relative to each component's first vertex. */
   for (size_t v = 0; v < vertex_count; ++v) {
@@ -221,16 +228,7 @@ static void taper_frames(const double *positions, size_t vertex_count,
   if (!axes || !lo || !hi)
     goto done;
   for (size_t c = 0; c < component_count; ++c) {
-    const component_sums *s = &sums[c];
-    const double n = s->n > 0 ? (double)s->n : 1.0, *m = s->sum;
-    const double cov[6] = {s->cov[0] - m[0] * m[0] / n, s->cov[1] - m[0] * m[1] / n,
-                           s->cov[2] - m[0] * m[2] / n, s->cov[3] - m[1] * m[1] / n,
-                           s->cov[4] - m[1] * m[2] / n, s->cov[5] - m[2] * m[2] / n};
-    symmetric_eigenvectors(cov, axes[c]);
-    for (int k = 0; k < 3; ++k) {
-      lo[c][k] = INFINITY;
-      hi[c][k] = -INFINITY;
-    }
+    principal_frame(&sums[c], axes[c], lo[c], hi[c]);
   }
   for (size_t v = 0; v < vertex_count; ++v) {
     const unsigned int c = component[v];
