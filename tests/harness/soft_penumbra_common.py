@@ -69,3 +69,14 @@ def verdict(test_name):
         return 1
     print("%s: all bounds met" % test_name)
     return 0
+
+
+def parse_args():
+    """--bin BUILD/bin --out DIR (created) of every soft harness test."""
+    import argparse
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bin", required=True)
+    ap.add_argument("--out", required=True)
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    return args

@@ -26,7 +26,6 @@ penumbra_target 0, -1, 1.5 exit with status 2.
 
 Prints every figure; exits 1 when any bound fails.
 """
-import argparse
 import json
 import math
 import os
@@ -35,7 +34,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soft_penumbra_common as common  # noqa: E402
-from soft_penumbra_common import verdict  # noqa: E402
+from soft_penumbra_common import parse_args, verdict  # noqa: E402
 from soft_penumbra_common import SCENE, SIZE, failures, run, scene_with  # noqa: E402
 
 LOOSE = 0.2
@@ -135,11 +134,7 @@ def check_bad_values(args, scene):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--bin", required=True)
-    ap.add_argument("--out", required=True)
-    args = ap.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    args = parse_args()
     scene = scene_with(args.out, "soft", None)
     for k in range(len(SCENE["lights"])):
         check(args, scene, LOOSE, k, CHEAP)

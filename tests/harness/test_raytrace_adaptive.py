@@ -20,14 +20,13 @@ light, integrated per pixel, vsh_soft). Per light:
 
 Prints every figure; exits 1 when any bound fails.
 """
-import argparse
 import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soft_penumbra_common as common  # noqa: E402
-from soft_penumbra_common import verdict  # noqa: E402
+from soft_penumbra_common import parse_args, verdict  # noqa: E402
 from soft_penumbra_common import SCENE, SIZE, failures, run, scene_with  # noqa: E402
 
 SAMPLES = 64
@@ -74,11 +73,7 @@ def check_light(args, scene, k):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--bin", required=True)
-    ap.add_argument("--out", required=True)
-    args = ap.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    args = parse_args()
     scene = scene_with(args.out, "soft", None)
     for k in range(len(SCENE["lights"])):
         check_light(args, scene, k)

@@ -22,13 +22,12 @@ shadow of the light's centre):
 
 Prints every figure; exits 1 when any bound fails.
 """
-import argparse
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soft_penumbra_common as common  # noqa: E402
-from soft_penumbra_common import verdict  # noqa: E402
+from soft_penumbra_common import parse_args, verdict  # noqa: E402
 from soft_penumbra_common import (SCENE, SIZE, failures, run,  # noqa: E402,F401
                                   same_bytes, scene_with)
 
@@ -83,11 +82,7 @@ def check_hard(args, soft_scene):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--bin", required=True)
-    ap.add_argument("--out", required=True)
-    args = ap.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    args = parse_args()
     scene = scene_with(args.out, "exact", None)
     check_hard(args, scene)
     check_soft(args, scene)

@@ -20,13 +20,12 @@ light, integrated per pixel, vsh_soft):
 
 Prints every figure; exits 1 when any bound fails.
 """
-import argparse
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soft_penumbra_common as common  # noqa: E402
-from soft_penumbra_common import verdict  # noqa: E402
+from soft_penumbra_common import parse_args, verdict  # noqa: E402
 from soft_penumbra_common import (SCENE, SIZE, failures, run,  # noqa: E402,F401
                                   same_bytes, scene_with)
 
@@ -85,11 +84,7 @@ def check_hard(args):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--bin", required=True)
-    ap.add_argument("--out", required=True)
-    args = ap.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    args = parse_args()
     check_hard(args)
     check_soft(args, scene_with(args.out, "exact", None))
     return verdict("harness.soft_planar")
