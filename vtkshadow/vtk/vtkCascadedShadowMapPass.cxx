@@ -1,4 +1,5 @@
 #include "vtkCascadedShadowMapPass.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -295,6 +296,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   this->NumberOfMapsRendered = 0;
+  vtkshadow::MarkStage("setup");
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   if (!window)
   {
@@ -314,6 +316,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   const int resolution = this->AllocateAtlas(window);
   std::vector<int> bake;
   this->SelectReusable(frame, resolution, bake);
+  vtkshadow::MarkStage("csm.plan");
   this->BakeMaps(window, frame, bake, resolution);
   if (this->WorldKey == 0)
   {
@@ -321,6 +324,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     // which casters are gone.
     this->ReleaseRemovedCasters(window, frame);
   }
+  vtkshadow::MarkStage("csm.maps");
 
   // The scene, with every receiver's lighting reading the maps (forward) or
   // the mask the resolve wrote from them (screen).

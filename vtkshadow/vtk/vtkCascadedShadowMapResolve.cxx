@@ -4,6 +4,7 @@
 // fragment in every mapper (docs/cascaded-shadow-maps.md, "Resolve").
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkCascadedShadowMapPassInternals.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
@@ -231,7 +232,9 @@ void vtkCascadedShadowMapPass::RenderScreenResolved(
     glEndQuery(impl.FragmentQuery);
   }
   impl.PrePass = false;
+  vtkshadow::MarkStage("csm.prepass");
   ok = ok && this->ResolveScreen(s, window, frame);
+  vtkshadow::MarkStage("csm.resolve");
   if (ok && impl.Measuring)
   {
     GLuint fragments = 0, pixels = 0;

@@ -1,4 +1,5 @@
 #include "vtkShadowVolumePass.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -212,6 +213,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   Internals& impl = *this->Impl;
   ++impl.FrameNumber;
+  vtkshadow::MarkStage("setup");
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   Frame frame;
   this->SetUpFrame(s, frame);
@@ -231,6 +233,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
     depthOk = impl.Mask.RenderDepth(s, impl.LightCount);
     this->PostRender(s);
   }
+  vtkshadow::MarkStage("volume.prepass");
   if (!depthOk)
   {
     if (!impl.Reported)
@@ -266,6 +269,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
       ++it;
     }
   }
+  vtkshadow::MarkStage("volume.stencil");
   impl.Mask.Activate();
   this->RenderDelegateWithShaderHooks(s);
   impl.Mask.Deactivate();
