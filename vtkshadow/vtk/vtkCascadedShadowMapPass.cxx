@@ -559,7 +559,9 @@ void vtkCascadedShadowMapPass::UpdateShaderState(const Frame& frame)
   std::string signature = this->LookupDefines() + (impl.Screen ? "/screen:" : "/forward:");
   for (int l = 0; l < plan.tiles.light_count; ++l)
   {
-    signature += std::to_string(plan.tiles.kind[l]);
+    // The tiles are literals in the lookup code (CascadedLookupCode).
+    signature += std::to_string(plan.tiles.kind[l]) + "," + std::to_string(plan.tiles.first[l]) +
+      "," + std::to_string(plan.tiles.count[l]) + ";";
   }
   if (signature != impl.ShaderSignature)
   {
@@ -874,8 +876,6 @@ void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
   program->SetUniform2f("vshAtlasTexel", texel);
   program->SetUniformi("vshShadowLightCount", std::min(plan.light_count, MaxLights));
   program->SetUniform1iv("vshShadowKind", MaxLights, plan.kind);
-  program->SetUniform1iv("vshShadowFirst", MaxLights, plan.first);
-  program->SetUniform1iv("vshShadowCount", MaxLights, plan.count);
   program->SetUniform3fv("vshShadowLightVC", MaxLights, impl.LightVC);
   program->SetUniform4fv("vshShadowToLightVC", MaxLights, impl.ToLightVC);
   program->SetUniform2f("vshPixelSize", impl.PixelSize);
