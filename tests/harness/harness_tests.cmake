@@ -27,6 +27,9 @@ foreach(group basic scivis cad hard mirror soft)
   set_tests_properties(harness.library.${group} PROPERTIES TIMEOUT 900 LABELS "harness"
     FIXTURES_REQUIRED xvfb)
 endforeach()
+# The soft scenes' Cycles references take 1024 samples per pixel centre
+# (--soft-samples' default, docs/harness.md "Lights with a size").
+set_tests_properties(harness.library.soft PROPERTIES TIMEOUT 1800)
 
 foreach(unit cache missing timeout crash hostile renderers html killed full readonly corruptcache)
   add_test(NAME harness.${unit}
