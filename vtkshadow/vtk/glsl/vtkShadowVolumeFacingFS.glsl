@@ -8,6 +8,9 @@
 // turned towards the camera, against the direction to light I.
 uniform int vshFacingLights;       // bit I: the actor drawn is a closed caster of light I
 uniform vec4 vshFacingLightVC[8];  // light I in view coordinates: (position, 1) or (towards it, 0)
+// Light I sampled (soft_samples > 1): its radius, or tan(angle / 2) of a
+// directional light; 0 for a light counted hard.
+uniform float vshFacingLightSize[8];
 vec3 vshFacetNormalVC = vec3(0.0);
 void vshFacingPrepare(vec3 positionVC)
 {
@@ -27,6 +30,28 @@ float vshFacingLit(int light, vec3 positionVC)
   }
   vec4 l = vshFacingLightVC[light];
   vec3 toLight = l.w != 0.0 ? l.xyz - positionVC : l.xyz;
+  float size = vshFacingLightSize[light];
+  if (size > 0.0)
+  {
+    // A light with a size: the fraction of it in front of the facet's
+    // plane, exactly, for the light the scene defines (a disk of radius
+    // `size` facing this point, or directions l + size q, q in the unit disk
+    // perpendicular to l). Its points' heights over the plane are
+    // h + rho x, h the centre's, rho = size |n x axis|, and x of a uniform
+    // disk has the semicircle density: the fraction above 0 is
+    // 1/2 + (t sqrt(1 - t^2) + asin t) / pi, t = h / rho clamped to [-1, 1].
+    // No hard terminator: it fades over the facets that see part of the
+    // light, as the averaged samples of the volumes do elsewhere.
+    vec3 n = normalize(vshFacetNormalVC);
+    vec3 axis = normalize(toLight);
+    float h = dot(n, l.w != 0.0 ? toLight : axis);
+    float rho = size * length(cross(n, axis));
+    if (rho > 1e-6 * max(abs(h), 1e-30))
+    {
+      float t = clamp(h / rho, -1.0, 1.0);
+      return 0.5 + (t * sqrt(1.0 - t * t) + asin(t)) / 3.14159265358979;
+    }
+  }
   // A facet within 1e-3 (0.06 degrees) of edge-on keeps the volume's
   // answer: the plane from float derivatives is not better than that.
   float tolerance = 1e-3 * length(vshFacetNormalVC) * length(toLight);
