@@ -663,7 +663,7 @@ bool vtkShadowVolumePass::PostReplaceShaderValues(
     return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
   }
   return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight(),
-    "(vshScreenLit(%d) * vshFacingLit(%d, vertexVC.xyz))",
+    "vshFacingCombine(%d, vertexVC.xyz, vshScreenLit(%d))",
     "vshScreenPrepare(); vshFacingPrepare(vertexVC.xyz);");
 }
 
