@@ -47,7 +47,8 @@ const char* RenderUsage()
   return "usage: vtkshadow-render SCENE --technique T --image OUT.png\n"
          "       vtkshadow-render --list-techniques\n"
          "         [--visibility V.png] [--mask M.png] [--light K] [--stats S.json]\n"
-         "         [--frames N] [--rounds R] [--warmup W] [--time-also SPEC]...\n"
+         "         [--frames N] [--rounds R] [--warmup W] [--profile-frames P]\n"
+         "         [--time-also SPEC]...\n"
          "         [--noise-tolerance T] [--fail-if-noisy]\n"
          "         [--map-resolution R] [--size WxH] [--set KEY=VALUE]...\n"
          "         [--max-error E | --max-error Npx] [--reflections auto|on|off|no-shadows]\n"
@@ -67,6 +68,9 @@ const char* RenderUsage()
          "  --rounds R           rounds (default 4)\n"
          "  --warmup W           untimed frames per technique before the rounds\n"
          "                       (default 5)\n"
+         "  --profile-frames P   after the timing, P frames per technique with the\n"
+         "                       stage profile on (glFinish after each stage: where\n"
+         "                       the time goes, stage medians in the stats; default 0)\n"
          "  --time-also SPEC     also time SPEC = TECH[:KEY=VALUE[,KEY=VALUE]...],\n"
          "                       e.g. vtk:map_resolution=1024 or csm:cascades=2\n"
          "  --noise-tolerance T  the run is too noisy when none#2 / none is outside\n"
@@ -181,6 +185,7 @@ const IntegerOption IntegerOptions[] = {
   { "--frames", &RenderOptions::Frames, 1, 100000, false }, // accepted alone, as before
   { "--rounds", &RenderOptions::Rounds, 1, 1000, true },
   { "--warmup", &RenderOptions::Warmup, 0, 10000, true },
+  { "--profile-frames", &RenderOptions::ProfileFrames, 0, 10000, true },
   { "--map-resolution", &RenderOptions::MapResolution, 16, 16384, false },
 };
 
@@ -346,8 +351,9 @@ int ParseValueOption(const std::string& arg, const char* v, RenderOptions& optio
 bool TakesValue(const std::string& arg)
 {
   static const char* const withValue[] = { "--technique", "--image", "--visibility", "--mask",
-    "--stats", "--light", "--frames", "--rounds", "--warmup", "--map-resolution", "--size", "--set",
-    "--max-error", "--time-also", "--noise-tolerance", "--reflections", "--image-light" };
+    "--stats", "--light", "--frames", "--rounds", "--warmup", "--profile-frames",
+    "--map-resolution", "--size", "--set", "--max-error", "--time-also", "--noise-tolerance",
+    "--reflections", "--image-light" };
   for (const char* name : withValue)
   {
     if (arg == name)

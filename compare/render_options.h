@@ -30,6 +30,9 @@ struct RenderOptions
   int Frames = 15;
   int Rounds = 4;
   int Warmup = 5;
+  // After the timing, this many frames per technique with the stage profile
+  // on (vtkShadowStageProfile.h): each stage's median in the stats.
+  int ProfileFrames = 0;
   double NoiseTolerance = 0.03;
   bool FailIfNoisy = false;
   std::vector<TimedSpec> TimeAlso;

@@ -57,6 +57,16 @@ const char* BalanceName(int balance)
                       : "unbalanced: an odd number of rounds shorter than a cycle";
 }
 
+std::string StagesJson(const std::vector<std::pair<std::string, double>>& stages)
+{
+  std::string out = "{";
+  for (size_t i = 0; i < stages.size(); ++i)
+  {
+    out += (i ? ", " : "") + Quoted(stages[i].first) + ": " + Number(stages[i].second);
+  }
+  return out + "}";
+}
+
 std::string EntryJson(const TimedEntry& entry)
 {
   std::ostringstream out;
@@ -78,7 +88,16 @@ std::string EntryJson(const TimedEntry& entry)
   }
   out << "],\n       \"shadow_map_bytes\": " << entry.MemoryBytes
       << ", \"pixels_changed_after_timing\": " << entry.ChangedPixels
-      << ",\n       \"technique_stats\": " << entry.Details << "}";
+      << ",\n       \"technique_stats\": " << entry.Details;
+  if (!entry.Stages.empty())
+  {
+    // Medians of the profiled frames (vtkShadowStageProfile.h): proportions,
+    // not the timed frame (each stage ends with a glFinish).
+    out << ",\n       \"profiled_frame_ms\": " << Number(entry.ProfiledFrameMs)
+        << ", \"stages_ms\": " << StagesJson(entry.Stages)
+        << ",\n       \"stages_cpu_ms\": " << StagesJson(entry.CPUStages);
+  }
+  out << "}";
   return out.str();
 }
 
@@ -169,6 +188,26 @@ std::string TimingSummary(const StatsHeader& header, const TimingRun& run)
     std::snprintf(line, sizeof line, "  %-*s %10.2f %10.2f-%-10.2f %8.3f %8.3f-%-8.3f\n", width,
       entry.Label.c_str(), s.median, s.min, s.max, s.ratio, s.ratio_min, s.ratio_max);
     out << line;
+  }
+  if (run.ProfileFrames > 0)
+  {
+    out << "stage profile (" << run.ProfileFrames
+        << " frames each, glFinish after every stage; medians, wall/CPU ms):\n";
+    for (const auto& entry : run.Entries)
+    {
+      std::snprintf(
+        line, sizeof line, "  %-*s %8.2f =", width, entry.Label.c_str(), entry.ProfiledFrameMs);
+      out << line;
+      for (size_t i = 0; i < entry.Stages.size(); ++i)
+      {
+        // wall / CPU ms (CPU: every thread of the process)
+        const double cpu = i < entry.CPUStages.size() ? entry.CPUStages[i].second : 0.0;
+        std::snprintf(line, sizeof line, " %s %.2f/%.2f", entry.Stages[i].first.c_str(),
+          entry.Stages[i].second, cpu);
+        out << line;
+      }
+      out << "\n";
+    }
   }
   const TimedEntry& floor = run.Entries[run.NoiseFloor];
   std::snprintf(line, sizeof line,

@@ -6,6 +6,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkShadowPassBase.h"
 #include "vtkShadowScene.h"
+#include "vtkShadowStageProfile.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -112,6 +113,80 @@ void CheckAfter(vtkRenderWindow* window, vtkOpenGLRenderer* renderer, const vtkS
     entry.Details = "{" + entry.Pass->GetStatsJSON(renderer) + "}";
   }
 }
+
+using StageList = std::vector<std::pair<std::string, double>>;
+
+// Each stage's median over the frames, in the order first marked; a stage
+// missing from a frame counts 0 there.
+StageList StageMedians(const std::vector<StageList>& frames)
+{
+  StageList out;
+  for (const auto& frame : frames)
+  {
+    for (const auto& stage : frame)
+    {
+      const bool known = std::any_of(out.begin(), out.end(),
+        [&](const std::pair<std::string, double>& s) { return s.first == stage.first; });
+      if (!known)
+      {
+        out.emplace_back(stage.first, 0.0);
+      }
+    }
+  }
+  for (auto& stage : out)
+  {
+    std::vector<double> values;
+    for (const auto& frame : frames)
+    {
+      double v = 0.0;
+      for (const auto& s : frame)
+      {
+        v += s.first == stage.first ? s.second : 0.0;
+      }
+      values.push_back(v);
+    }
+    stage.second = vsh_timing_median(values.data(), static_cast<int>(values.size()));
+  }
+  return out;
+}
+
+// After the rounds, ProfileFrames frames per entry with the stage profile on
+// (a separate phase: its glFinish calls would distort the timed frames).
+// "finish" is what follows the last pass (buffer swap, completion).
+void ProfileStages(
+  vtkRenderWindow* window, vtkOpenGLRenderer* renderer, const vtkShadowScene* scene, TimingRun& run)
+{
+  if (run.ProfileFrames <= 0)
+  {
+    return;
+  }
+  vtkshadow::SetStageProfiling(true);
+  for (auto& entry : run.Entries)
+  {
+    renderer->SetPass(entry.Pass);
+    std::vector<StageList> wall, cpu;
+    std::vector<double> totals;
+    for (int f = 0; f < run.ProfileFrames; ++f)
+    {
+      PlaceCamera(renderer, scene, f, run.ProfileFrames);
+      window->MakeCurrent();
+      vtkshadow::BeginStageFrame();
+      const auto start = std::chrono::steady_clock::now();
+      window->Render();
+      window->WaitForCompletion();
+      vtkshadow::MarkStage("finish");
+      totals.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+          .count());
+      wall.push_back(vtkshadow::GetStageTimes());
+      cpu.push_back(vtkshadow::GetStageCPUTimes());
+    }
+    entry.Stages = StageMedians(wall);
+    entry.CPUStages = StageMedians(cpu);
+    entry.ProfiledFrameMs = vsh_timing_median(totals.data(), static_cast<int>(totals.size()));
+  }
+  vtkshadow::SetStageProfiling(false);
+}
 }
 
 bool RunInterleavedTiming(vtkRenderWindow* window, vtkOpenGLRenderer* renderer,
@@ -141,6 +216,7 @@ bool RunInterleavedTiming(vtkRenderWindow* window, vtkOpenGLRenderer* renderer,
     }
   }
   CheckAfter(window, renderer, scene, run, before);
+  ProfileStages(window, renderer, scene, run);
   renderer->SetPass(run.Entries.front().Pass);
   SceneCamera(renderer, scene);
   // The statistics: entry-major times, as vsh_timing_summarize takes them.

@@ -30,7 +30,12 @@ struct TimedEntry
   std::vector<double> RoundMedians; // per round, ms
   vsh_timing_stats Stats = {};
   long long MemoryBytes = 0;
-  std::string Details;         // the pass's GetStatsJSON after the run
+  std::string Details; // the pass's GetStatsJSON after the run
+  // With TimingRun::ProfileFrames > 0: each stage's median over the profiled
+  // frames (ms, in the order first marked) and the profiled frames' median.
+  std::vector<std::pair<std::string, double>> Stages;
+  std::vector<std::pair<std::string, double>> CPUStages; // process CPU ms (all threads)
+  double ProfiledFrameMs = 0.0;
   long long ChangedPixels = 0; // scene-camera image after the run vs before
 };
 
@@ -39,6 +44,7 @@ struct TimingRun
   int Rounds = 4;
   int Frames = 15;
   int Warmup = 5;
+  int ProfileFrames = 0; // frames per entry with the stage profile, after the rounds
   double NoiseTolerance = 0.03;
   int Reference = 0;  // the index of "none"
   int NoiseFloor = 1; // the index of "none#2"

@@ -154,6 +154,7 @@ void SetUpTiming(const Run& run, vtkOpenGLRenderer* renderer, TimingRun& timing,
   timing.Rounds = options.Rounds;
   timing.Frames = options.Frames;
   timing.Warmup = options.Warmup;
+  timing.ProfileFrames = options.ProfileFrames;
   timing.NoiseTolerance = options.NoiseTolerance;
   auto add = [&](const std::string& label, const std::string& technique,
                const std::vector<std::pair<std::string, double>>& settings, vtkShadowPassBase* pass)

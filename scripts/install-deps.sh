@@ -5,7 +5,7 @@ set -eu
 packages="cmake make gcc g++ pkg-config libvtk9-dev python3-vtk9 python3-numpy
   libcjson-dev libpng-dev xvfb xauth povray blender gnuplot-nox
   universal-ctags clang-format
-  libx11-dev libembree-dev
+  libx11-dev libembree-dev python3-pil
   openmpi-bin"
 missing=""
 for p in $packages; do

@@ -29,8 +29,8 @@
 # DATAFILE layout (little-endian):
 #   8 bytes   magic b"VSHCYC03"
 #   int32 x7  width, height, samples (Cycles only), seed (Cycles only),
-#             pixel_centre (1: BOX filter 0.01, every sample at the pixel centre;
-#             0: BOX filter 1.0 over the pixel), light_count, object_count
+#             pixel_centre (1: Gaussian filter 0.01, every sample at the pixel
+#             centre; 0: BOX filter 1.0 over the pixel), light_count, object_count
 #   float64 x10 camera: eye[3], focal[3], up[3], vertical view angle (deg)
 #   float64 x2  clip_start, clip_end
 #   per light:  float64 x9  type (0 dir, 1 point, 2 spot), position[3],
@@ -166,7 +166,12 @@ def setup_cycles(scene, sampling):
     # samples, so their ratio is the unoccluded fraction of the same points.
     cyc.seed = seed
     cyc.use_animated_seed = False
-    cyc.pixel_filter_type = "BOX"
+    # Every sample at the pixel centre: a Gaussian of width 0.01 (samples
+    # within +-0.005 px). Not BOX: Blender's sync gives a BOX filter width
+    # 1.0 whatever filter_width says, which spread the soft-light samples
+    # over the whole pixel (a hard sun's edge came out grey, a 1-px penumbra
+    # blurred; docs/harness.md, "Lights with a size"). Over the pixel: BOX.
+    cyc.pixel_filter_type = "GAUSSIAN" if centre else "BOX"
     cyc.filter_width = 0.01 if centre else 1.0
 
 

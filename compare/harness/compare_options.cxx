@@ -64,7 +64,7 @@ const char* Usage()
          "  --no-cache            always render POV-Ray, Cycles and EEVEE fresh (no cache read)\n"
          "  --cycles-samples N    Cycles samples per pixel (default 1, pixel centre)\n"
          "  --soft-samples N      Cycles samples per pixel centre for scenes with a light\n"
-         "                        with a size (default 256)\n"
+         "                        with a size (default 1024)\n"
          "  --povray-grid N       POV-Ray area-light grid N x N, N = 2^k+1 in 3..129 (default 17)\n"
          "  --seed N              seed of the soft-light samples, 0..2147483647 (default 0)\n"
          "  --povray-binary P     (default povray)\n"

@@ -238,7 +238,7 @@ std::string PovColourScene(const ExportScene& s, int grid, int seed)
 std::string CyclesData(const ExportScene& s, int samples, int soft_samples, int seed)
 {
   std::string o;
-  // Pixel centre (BOX filter 0.01) unless more samples were asked for over
+  // Pixel centre (Gaussian filter 0.01) unless more samples were asked for over
   // the pixel area; soft lights then get their own sample count there.
   const int centre = samples == 1 ? 1 : 0;
   if (centre && HasSoftLight(s))

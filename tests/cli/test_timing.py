@@ -144,6 +144,48 @@ for e in (doc or {}).get("timing", {}).get("entries", []):
           f"mirror: entry {e.get('label')} drew no mirror: {refl}")
 check(doc and len(doc["timing"]["entries"]) == 3, "mirror: none, none#2 and csm timed")
 
+# 2c. The stage profile (--profile-frames): every entry gets its stages,
+# each pass its own, in the order they run; stages are non-negative and add
+# up to about the profiled frame; none has no shadow stage. (Proportions,
+# never a speed.)
+p, doc = run("profile", ["--technique", "csm", "--set", "resolve=1", "--time-also", "planar",
+                         "--time-also", "vtk", "--time-also", "volume", "--profile-frames", "3",
+                         "--rounds", "1"])
+check(p.returncode == 0, f"profile: status {p.returncode}: {p.stderr[-2000:]}")
+check("stage profile (3 frames each" in p.stderr, "profile: the stage lines on stderr")
+expected = {"csm:resolve=1": ["setup", "csm.plan", "csm.maps", "csm.prepass", "csm.resolve",
+                              "scene", "finish"],
+            "none": ["setup", "scene", "finish"],
+            "planar": ["setup", "planar.plan", "planar.mask", "scene", "finish"],
+            "vtk": ["setup", "vtk.maps", "scene", "finish"],
+            "volume": ["setup", "volume.prepass", "volume.stencil", "scene", "finish"]}
+for e in (doc or {}).get("timing", {}).get("entries", []):
+    label = e.get("label")
+    stages = e.get("stages_ms") or {}
+    cpu = e.get("stages_cpu_ms") or {}
+    if label in expected:
+        check(list(stages) == expected[label],
+              f"profile: {label} stages {list(stages)}, expected {expected[label]}")
+    check(list(cpu) == list(stages), f"profile: {label} CPU stages match the wall stages")
+    check(all(isinstance(v, (int, float)) and math.isfinite(v) and v >= 0
+              for v in list(stages.values()) + list(cpu.values())),
+          f"profile: {label} stage times finite and >= 0: {stages} {cpu}")
+    total = e.get("profiled_frame_ms", 0)
+    check(finite_positive(total) and 0.5 * total <= sum(stages.values()) <= 1.5 * total + 1,
+          f"profile: {label} stages {sum(stages.values()):.2f} ms against the frame {total}")
+check(doc and all("stages_ms" in e for e in doc["timing"]["entries"]),
+      "profile: every entry profiled")
+# Without --profile-frames nothing is profiled (the timed frames stay clean).
+p0, doc0 = run("noprofile", ["--technique", "planar", "--rounds", "1", "--quiet"])
+check(doc0 and not any("stages_ms" in e for e in doc0["timing"]["entries"]),
+      "profile: no stages without --profile-frames")
+p1 = subprocess.run([render, scene, "--technique", "none", "--image",
+                     os.path.join(args.out, "bad.png"), "--stats",
+                     os.path.join(args.out, "bad.json"), "--profile-frames", "-1"],
+                    capture_output=True, text=True, timeout=120)
+check(p1.returncode == 2 and "--profile-frames" in p1.stderr,
+      f"profile: --profile-frames -1 is refused with status 2: {p1.returncode} {p1.stderr}")
+
 # 3. The bench, timing only: one row per configuration plus none#2. The
 # bench is a Python script that imports the vtkshadow module; under the
 # sanitizers (tests/sanitize/run.sh product) that module is instrumented and

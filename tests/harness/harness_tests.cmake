@@ -27,6 +27,9 @@ foreach(group basic scivis cad hard mirror soft)
   set_tests_properties(harness.library.${group} PROPERTIES TIMEOUT 900 LABELS "harness"
     FIXTURES_REQUIRED xvfb)
 endforeach()
+# The soft scenes' Cycles references take 1024 samples per pixel centre
+# (--soft-samples' default, docs/harness.md "Lights with a size").
+set_tests_properties(harness.library.soft PROPERTIES TIMEOUT 1800)
 
 foreach(unit cache missing timeout crash hostile renderers html killed full readonly corruptcache)
   add_test(NAME harness.${unit}
@@ -94,6 +97,21 @@ add_test(NAME harness.auto_soft
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_auto_soft.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/auto_soft)
 set_tests_properties(harness.auto_soft PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# raytrace weights each shadow ray by max(0, N.L) (vsh_rt_weight.h: v =
+# I_on / I_off, as Cycles renders a light with a size): on the sphere's own
+# terminator, where the light straddles the horizon, its visibility must
+# match the weighted exact integral (1: only the sphere shadows itself) and
+# not the plain fraction above the horizon (exact_terminator.c,
+# test_rt_terminator.py; docs/soft-shadows.md, "Against both references").
+add_executable(exact_terminator ${_harness_src}/exact_terminator.c)
+target_link_libraries(exact_terminator PRIVATE vtkshadow_scene vtkshadow_core vtkshadow_metrics)
+set_target_properties(exact_terminator PROPERTIES C_STANDARD 11 C_EXTENSIONS OFF
+  RUNTIME_OUTPUT_DIRECTORY ${VTKSHADOW_BIN})
+add_test(NAME harness.rt_terminator
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_rt_terminator.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/rt_terminator)
+set_tests_properties(harness.rt_terminator PROPERTIES TIMEOUT 600 LABELS "harness" FIXTURES_REQUIRED xvfb)
 
 # volume's sampled area light (soft_samples) against the exact penumbra; the
 # hard case unchanged (docs/soft-shadows.md).

@@ -1,4 +1,5 @@
 #include "vtkAutoShadowPass.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkCamera.h"
 
@@ -336,7 +337,9 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   using vtkshadow::TechniqueSet;
   const TechniqueSet previous = this->Impl->Choice;
+  vtkshadow::MarkStage("setup");
   this->Decide(s);
+  vtkshadow::MarkStage("auto.decide");
   const bool planar = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Planar);
   const bool csm = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Cascaded);
   const bool volume = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Volume);

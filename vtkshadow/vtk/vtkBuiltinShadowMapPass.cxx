@@ -1,4 +1,5 @@
 #include "vtkBuiltinShadowMapPass.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
 #include "vtkCameraPass.h"
@@ -112,6 +113,26 @@ private:
   void operator=(const vtkShadowMapPassGuarded&) = delete;
 };
 vtkStandardNewMacro(vtkShadowMapPassGuarded);
+
+// Marks the end of VTK's map baking in the stage profile
+// (vtkShadowStageProfile.h): the baker and the lit draw are two passes of
+// the sequence, and only this one sits between them.
+class vtkShadowMapsBakedMark : public vtkRenderPass
+{
+public:
+  static vtkShadowMapsBakedMark* New();
+  vtkTypeMacro(vtkShadowMapsBakedMark, vtkRenderPass);
+  void Render(const vtkRenderState*) override { vtkshadow::MarkStage("vtk.maps"); }
+
+protected:
+  vtkShadowMapsBakedMark() = default;
+  ~vtkShadowMapsBakedMark() override = default;
+
+private:
+  vtkShadowMapsBakedMark(const vtkShadowMapsBakedMark&) = delete;
+  void operator=(const vtkShadowMapsBakedMark&) = delete;
+};
+vtkStandardNewMacro(vtkShadowMapsBakedMark);
 }
 
 //------------------------------------------------------------------------------
@@ -123,6 +144,8 @@ vtkBuiltinShadowMapPass::vtkBuiltinShadowMapPass()
   this->Shadows->GetShadowMapBakerPass()->SetResolution(this->MapResolution);
   vtkNew<vtkRenderPassCollection> passes;
   passes->AddItem(this->Shadows->GetShadowMapBakerPass());
+  vtkNew<vtkShadowMapsBakedMark> baked;
+  passes->AddItem(baked);
   passes->AddItem(this->Shadows);
   // VTK's assembly (TestShadowMapPass) draws opaque geometry only; volumes
   // and 2D overlays (scalar bars, text) follow as in vtkRenderStepsPass, so
@@ -172,6 +195,7 @@ bool vtkBuiltinShadowMapPass::SetOption(const char* key, double value)
 void vtkBuiltinShadowMapPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
+  vtkshadow::MarkStage("setup");
   // The attenuation is a uniform in VTK's code: no shader rebuild needed.
   static_cast<vtkShadowMapPassGuarded*>(this->Shadows)->Residual = this->ResidualLight;
   // The lights VTK's baker gives a map: switched on, not the headlight, and

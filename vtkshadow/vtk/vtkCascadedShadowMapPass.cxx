@@ -1,4 +1,5 @@
 #include "vtkCascadedShadowMapPass.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -295,6 +296,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   this->NumberOfMapsRendered = 0;
+  vtkshadow::MarkStage("setup");
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   if (!window)
   {
@@ -314,6 +316,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   const int resolution = this->AllocateAtlas(window);
   std::vector<int> bake;
   this->SelectReusable(frame, resolution, bake);
+  vtkshadow::MarkStage("csm.plan");
   this->BakeMaps(window, frame, bake, resolution);
   if (this->WorldKey == 0)
   {
@@ -321,6 +324,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     // which casters are gone.
     this->ReleaseRemovedCasters(window, frame);
   }
+  vtkshadow::MarkStage("csm.maps");
 
   // The scene, with every receiver's lighting reading the maps (forward) or
   // the mask the resolve wrote from them (screen).
@@ -555,7 +559,9 @@ void vtkCascadedShadowMapPass::UpdateShaderState(const Frame& frame)
   std::string signature = this->LookupDefines() + (impl.Screen ? "/screen:" : "/forward:");
   for (int l = 0; l < plan.tiles.light_count; ++l)
   {
-    signature += std::to_string(plan.tiles.kind[l]);
+    // The tiles are literals in the lookup code (CascadedLookupCode).
+    signature += std::to_string(plan.tiles.kind[l]) + "," + std::to_string(plan.tiles.first[l]) +
+      "," + std::to_string(plan.tiles.count[l]) + ";";
   }
   if (signature != impl.ShaderSignature)
   {
@@ -870,8 +876,6 @@ void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
   program->SetUniform2f("vshAtlasTexel", texel);
   program->SetUniformi("vshShadowLightCount", std::min(plan.light_count, MaxLights));
   program->SetUniform1iv("vshShadowKind", MaxLights, plan.kind);
-  program->SetUniform1iv("vshShadowFirst", MaxLights, plan.first);
-  program->SetUniform1iv("vshShadowCount", MaxLights, plan.count);
   program->SetUniform3fv("vshShadowLightVC", MaxLights, impl.LightVC);
   program->SetUniform4fv("vshShadowToLightVC", MaxLights, impl.ToLightVC);
   program->SetUniform2f("vshPixelSize", impl.PixelSize);

@@ -4,6 +4,7 @@
 // fragment in every mapper (docs/cascaded-shadow-maps.md, "Resolve").
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkCascadedShadowMapPassInternals.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
@@ -40,18 +41,23 @@ std::string CascadedLookupCode(const vsh_csm_tile_plan& plan, int first, int cou
       t.replace(at, 2, std::to_string(l - first));
     }
     const int kind = l < plan.light_count ? plan.kind[l] : VSH_CSM_NO_SHADOW;
+    // The light's tiles are literals in the code: every uniform array index
+    // of a lookup is then a constant, which a software rasterizer reads once
+    // per draw instead of gathering per pixel.
+    const std::string tile = l < plan.light_count ? std::to_string(plan.first[l]) : "0";
     std::string lookup;
     if (kind == VSH_CSM_CASCADES)
     {
-      lookup = "vshShadowCascades(" + n + ", depth, posVC, normalVC)";
+      lookup = "vshShadowCascades(" + tile + ", " + std::to_string(plan.count[l]) +
+        ", depth, posVC, normalVC)";
     }
     else if (kind == VSH_CSM_SPOT)
     {
-      lookup = "vshShadowSpot(" + n + ", posVC, normalVC)";
+      lookup = "vshShadowSpot(" + tile + ", posVC, normalVC)";
     }
     else if (kind == VSH_CSM_POINT)
     {
-      lookup = "vshShadowPoint(" + n + ", posVC, normalVC)";
+      lookup = "vshShadowPoint(" + n + ", " + tile + ", posVC, normalVC)";
     }
     if (lookup.empty())
     {
@@ -231,7 +237,9 @@ void vtkCascadedShadowMapPass::RenderScreenResolved(
     glEndQuery(impl.FragmentQuery);
   }
   impl.PrePass = false;
+  vtkshadow::MarkStage("csm.prepass");
   ok = ok && this->ResolveScreen(s, window, frame);
+  vtkshadow::MarkStage("csm.resolve");
   if (ok && impl.Measuring)
   {
     GLuint fragments = 0, pixels = 0;

@@ -1,6 +1,7 @@
 #include "vtkNoShadowPass.h"
 
 #include "vtkObjectFactory.h"
+#include "vtkShadowStageProfile.h"
 
 vtkStandardNewMacro(vtkNoShadowPass);
 
@@ -8,6 +9,7 @@ vtkStandardNewMacro(vtkNoShadowPass);
 void vtkNoShadowPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
+  vtkshadow::MarkStage("setup");
   this->RenderDelegate(s);
 }
 

@@ -1,4 +1,5 @@
 #include "vtkPlanarReflectionPass.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkShadowClippingRange.h"
 
@@ -352,6 +353,7 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
       ++impl.Drawn;
     }
     stencil.Release();
+    vtkshadow::MarkStage("reflection.composite");
   }
 }
 

@@ -1,4 +1,5 @@
 #include "vtkPlanarShadowPass.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -339,6 +340,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   this->NumberOfShadowPairs = 0;
   this->NumberOfMaskTriangles = 0;
+  vtkshadow::MarkStage("setup");
   vtkRenderer* renderer = s->GetRenderer();
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   if (!window)
@@ -374,8 +376,10 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   pairs.resize(std::max(count, 0));
   // Pairs whose light has a size are sampled (SoftSamples hard shadows).
   const std::vector<vsh_planar_pair> softPairs = this->SplitSoftPairs(frame, pairs);
+  vtkshadow::MarkStage("planar.plan");
   this->DrawMask(window, frame, pairs, softPairs);
   this->ForgetRemovedCasters(window);
+  vtkshadow::MarkStage("planar.mask");
 
   // The scene, with the receivers' lighting reading the mask.
   impl.Mask->Activate();

@@ -1,4 +1,5 @@
 #include "vtkRayTracedShadowPass.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -139,6 +140,7 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
     return;
   }
   Internals& impl = *this->Impl;
+  vtkshadow::MarkStage("setup");
   const auto start = std::chrono::steady_clock::now();
   impl.Select(this->WorldKey);
   // World 0 starts each frame (a mirror's world is drawn after it).
@@ -158,10 +160,12 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
   else
   {
     impl.W->HaveMask = this->Trace(s, frame);
+    vtkshadow::MarkStage("raytrace.trace");
     impl.W->LastKey = impl.W->HaveMask ? frame.Key : std::vector<double>();
     if (impl.W->HaveMask)
     {
       this->Upload(frame);
+      vtkshadow::MarkStage("raytrace.upload");
       ++this->NumberOfTracedFrames;
       ++impl.FrameWorldsTraced;
     }
@@ -264,6 +268,7 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
     vtkErrorMacro("ray-traced shadows: " << impl.W->Mask.GetError());
     return false;
   }
+  vtkshadow::MarkStage("raytrace.prepass");
   if (!impl.Scene.Update(frame.Actors, frame.Eye, frame.Near))
   {
     vtkErrorMacro("ray-traced shadows: " << impl.Scene.GetError());

@@ -1,4 +1,5 @@
 #include "vtkShadowPassBase.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -162,6 +163,7 @@ void vtkShadowPassBase::RenderDelegate(const vtkRenderState* s)
 {
   vtkRenderPass* delegate = this->EnsureDelegatePass();
   delegate->Render(s);
+  vtkshadow::MarkStage("scene");
   this->NumberOfRenderedProps += delegate->GetNumberOfRenderedProps();
 }
 

@@ -1,6 +1,7 @@
 #include "vtkShadowRayTracer.h"
 
 #include "vsh_rt_adaptive.h"
+#include "vsh_rt_weight.h"
 #include "vtkShadowEmbreeScene.h"
 
 #include <algorithm>
@@ -29,9 +30,10 @@ struct Pair
 {
   Surface S;
   int Light;
-  int Blocked;
-  int Traced;
   double Rotation;
+  // Its rays so far, each weighted by max(0, N.L) with the surface's
+  // geometric normal (vsh_rt_weight.h: v = I_on / I_off of the light).
+  vsh_rt_visibility Vis;
 };
 
 // Everything one thread needs, reused from tile to tile.
@@ -303,7 +305,7 @@ void Worker::Queue(const Surface& s, int surface)
       continue;
     }
     (void)surface;
-    this->Pairs.push_back({ s, static_cast<int>(l), 0, 0, rotation });
+    this->Pairs.push_back({ s, static_cast<int>(l), rotation, { 0.0, 0.0, 0, 0 } });
     const int pair = static_cast<int>(this->Pairs.size()) - 1;
     this->Push(pair, 0, f.First.empty() ? f.Samples[l] : f.First[l]);
   }
@@ -416,15 +418,19 @@ void Worker::Occlude()
   for (size_t r = 0; r < this->Rays.size(); ++r)
   {
     Pair& q = this->Pairs[this->RayPair[r]];
-    ++q.Traced;
+    const RTCRay& ray = this->Rays[r];
+    const double dir[3] = { ray.dir_x, ray.dir_y, ray.dir_z };
     ++this->Count.LightRays[q.Light];
-    // rtcOccluded sets tfar to -inf for a ray that hit something.
-    q.Blocked += this->Rays[r].tfar < 0.0f ? 1 : 0;
+    // rtcOccluded sets tfar to -inf for a ray that hit something. Without
+    // a normal (the refinement missed) every ray weighs the same.
+    vsh_rt_visibility_add(
+      &q.Vis, vsh_rt_sample_weight(q.S.HasNormal ? q.S.Normal : nullptr, dir), ray.tfar < 0.0f);
   }
 }
 
-// Each pair's visibility: the fraction of its traced rays that were free
-// (1, the initial value, where no ray could be traced). After the first
+// Each pair's visibility: the N.L-weighted fraction of its traced rays that
+// were free (vsh_rt_visibility_value; 1, the initial value, where no ray
+// could be traced). After the first
 // batch (`first`), an adaptive pair also records its batch's state and
 // waits for the second pass.
 void Worker::Resolve(bool first)
@@ -433,10 +439,9 @@ void Worker::Resolve(bool first)
   for (const Pair& q : this->Pairs)
   {
     const int pixel = q.S.Pixel;
-    if (q.Traced > 0)
+    if (q.Vis.traced > 0)
     {
-      (*this->Out)[q.Light][pixel] =
-        static_cast<float>(1.0 - static_cast<double>(q.Blocked) / q.Traced);
+      (*this->Out)[q.Light][pixel] = static_cast<float>(vsh_rt_visibility_value(&q.Vis));
     }
     if (!first)
     {
@@ -446,8 +451,8 @@ void Worker::Resolve(bool first)
     if (!f.First.empty() && f.First[q.Light] < f.Samples[q.Light])
     {
       (*this->States)[q.Light][pixel] =
-        static_cast<unsigned char>(vsh_rt_adaptive_state(q.Traced, q.Blocked));
-      if (q.Traced == f.First[q.Light])
+        static_cast<unsigned char>(vsh_rt_adaptive_state(q.Vis.traced, q.Vis.blocked));
+      if (q.Vis.traced == f.First[q.Light])
       {
         this->Pending.push_back(q);
       }

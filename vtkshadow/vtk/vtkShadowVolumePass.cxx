@@ -1,4 +1,5 @@
 #include "vtkShadowVolumePass.h"
+#include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -245,6 +246,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   Internals& impl = *this->Impl;
   ++impl.FrameNumber;
+  vtkshadow::MarkStage("setup");
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   Frame frame;
   this->SetUpFrame(s, frame);
@@ -264,6 +266,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
     depthOk = impl.Mask.RenderDepth(s, impl.LightCount);
     this->PostRender(s);
   }
+  vtkshadow::MarkStage("volume.prepass");
   if (!depthOk)
   {
     if (!impl.Reported)
@@ -288,6 +291,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
     }
   }
   this->ReleaseUnusedVolumes(window);
+  vtkshadow::MarkStage("volume.stencil");
   impl.Mask.Activate();
   this->RenderDelegateWithShaderHooks(s);
   impl.Mask.Deactivate();

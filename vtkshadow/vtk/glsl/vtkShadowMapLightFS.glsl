@@ -4,15 +4,14 @@
 // with VSH_PCSS_BLOCKER_TAPS, VSH_PCSS_FILTER_TAPS, VSH_PCSS_MAX_TEXELS in
 // frames where a casting light has a size) and
 // followed by a generated vshShadowPrepare() that calls vshShadowCascades,
-// vshShadowSpot or vshShadowPoint for each light that casts. The filter and
+// vshShadowSpot or vshShadowPoint for each light that casts, with the
+// light's atlas tiles as literals. The filter and
 // the lights' kinds are compiled in, not branched on: a software rasterizer
 // runs both sides of a branch, so uniform switches cost every path.
 uniform sampler2DShadow vshShadowAtlas;
 uniform vec2 vshAtlasTexel;          // one atlas texel in texture coordinates
 uniform int vshShadowLightCount;     // lights in the mapper's numbering
 uniform int vshShadowKind[8];        // 0 none, 1 cascades, 2 spot, 3 point (cube)
-uniform int vshShadowFirst[8];       // first map of the light
-uniform int vshShadowCount[8];       // number of cascades (kind 1)
 uniform vec3 vshShadowLightVC[8];    // light position in view coordinates (kind 3)
 uniform mat4 vshTileMatrix[24];      // view coordinates -> map clip space
 uniform vec4 vshTileRect[24];        // atlas rectangle: offset.xy, size.zw
@@ -239,12 +238,15 @@ float vshShadowSample(int tile, vec3 posVC, vec3 normalVC, bool perspective)
 #endif
 }
 
-// Directional light `l`: its cascade for this depth, blended into the next
-// one across the blend band.
-float vshShadowCascades(int l, float depth, vec3 posVC, vec3 normalVC)
+// Directional light: its cascade for this depth, blended into the next one
+// across the blend band. `first` and `count` are literals in the generated
+// call (CascadedLookupCode): a light with one cascade then indexes every
+// uniform array with a constant, which a software rasterizer reads once per
+// draw; the cascade of a light with several is chosen per pixel (an index
+// per pixel, a gather: still cheaper than branches, which llvmpipe runs on
+// every path).
+float vshShadowCascades(int first, int count, float depth, vec3 posVC, vec3 normalVC)
 {
-  int first = vshShadowFirst[l];
-  int count = vshShadowCount[l];
   if (depth > vshTileFar[first + count - 1])
   {
     return 1.0;
@@ -272,20 +274,21 @@ float vshShadowCascades(int l, float depth, vec3 posVC, vec3 normalVC)
   return lit;
 }
 
-float vshShadowSpot(int l, vec3 posVC, vec3 normalVC)
+float vshShadowSpot(int first, vec3 posVC, vec3 normalVC)
 {
-  return vshShadowSample(vshShadowFirst[l], posVC, normalVC, true);
+  return vshShadowSample(first, posVC, normalVC, true);
 }
 
-// Point light `l`: the cube face of the direction's major axis.
-float vshShadowPoint(int l, vec3 posVC, vec3 normalVC)
+// Point light `l` (its six maps from atlas tile `first`, a literal in the
+// generated call): the cube face of the direction's major axis.
+float vshShadowPoint(int l, int first, vec3 posVC, vec3 normalVC)
 {
   vec3 d = vshViewToWorld * (posVC - vshShadowLightVC[l]);
   vec3 a = abs(d);
   int face = (a.x >= a.y && a.x >= a.z) ? (d.x >= 0.0 ? 0 : 1)
     : (a.y >= a.z)                      ? (d.y >= 0.0 ? 2 : 3)
                                         : (d.z >= 0.0 ? 4 : 5);
-  return vshShadowSample(vshShadowFirst[l] + face, posVC, normalVC, true);
+  return vshShadowSample(first + face, posVC, normalVC, true);
 }
 
 float vshShadowFade(float depth)
