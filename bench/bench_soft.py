@@ -45,12 +45,15 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # traces `samples` rays per pixel towards the light's disk; csm filters by
 # PCSS (its default for lights with a size: 16 blocker and 24 filter taps;
 # soft=0 is the hard shadow of the light's centre, and a 32 / 64-tap
-# variant); volume (hard) and auto as they are by default.
+# variant); volume averages soft_samples counts of shadow volumes from
+# points on the light (1: the hard shadow of the light's centre); auto as it
+# is by default.
 CONFIGS = ([("planar", [("soft_samples", n)]) for n in (1, 4, 16, 64)] +
            [("raytrace", [("samples", n)]) for n in (1, 4, 16, 64)] +
            [("csm", [("soft", 0)]), ("csm", []),
-            ("csm", [("pcss_blocker_taps", 32), ("pcss_filter_taps", 64)]),
-            ("volume", []), ("auto", [])])
+            ("csm", [("pcss_blocker_taps", 32), ("pcss_filter_taps", 64)])] +
+           [("volume", [("soft_samples", n)]) for n in (1, 4, 16, 64)] +
+           [("auto", [])])
 PEERS = ("cycles", "eevee", "eevee-best")
 
 

@@ -61,7 +61,7 @@ for label, r in rows.items():
           f"{label}: time {r.get('ms')} ratio {r.get('ratio')}")
     check(finite(r.get("pen_mae")) and 0 <= r["pen_mae"] <= 1 and finite(r.get("pen_bias"))
           and (r.get("pen_pixels") or 0) > 0, f"{label}: penumbra figures {r}")
-for tech, key in (("planar", "soft_samples"), ("raytrace", "samples")):
+for tech, key in (("planar", "soft_samples"), ("raytrace", "samples"), ("volume", "soft_samples")):
     lo, hi = rows.get(f"{tech}:{key}=1"), rows.get(f"{tech}:{key}=64")
     if tech in registered:
         check(lo and hi and hi["pen_mae"] < 0.5 * lo["pen_mae"],

@@ -112,3 +112,10 @@ add_test(NAME harness.rt_terminator
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_rt_terminator.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/rt_terminator)
 set_tests_properties(harness.rt_terminator PROPERTIES TIMEOUT 600 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# volume's sampled area light (soft_samples) against the exact penumbra; the
+# hard case unchanged (docs/soft-shadows.md).
+add_test(NAME harness.soft_volume
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_volume.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/soft_volume)
+set_tests_properties(harness.soft_volume PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)

@@ -270,6 +270,38 @@ vtkTextureObject* vtkShadowScreenMask::GetDepthTexture() const
 //------------------------------------------------------------------------------
 void vtkShadowScreenMask::ResolveStencil(int light)
 {
+  this->DrawChannel(light, 0.0f, Where::StencilSet, false);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::FillLight(int light, float value)
+{
+  this->DrawChannel(light, value, Where::Everywhere, false);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::AccumulateStencil(int light, int levels)
+{
+  // levels / 255 converts back to exactly `levels` steps of the 8-bit
+  // channel, so the blend adds integers.
+  this->DrawChannel(light, static_cast<float>(levels) / 255.0f, Where::StencilZero, true);
+}
+
+//------------------------------------------------------------------------------
+int vtkShadowScreenMask::AccumulationLevels(int sample, int samples)
+{
+  if (samples < 1 || sample < 0 || sample >= samples)
+  {
+    return 0;
+  }
+  // floor(255 (i + 1) / N) - floor(255 i / N): each floor(255/N) or one
+  // more, summing to 255 over i = 0..N-1.
+  return (255 * (sample + 1)) / samples - (255 * sample) / samples;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool add)
+{
   Internals& impl = *this->Impl;
   if (!impl.Drawing || light < 0 || light >= this->LightCount)
   {
@@ -282,19 +314,36 @@ void vtkShadowScreenMask::ResolveStencil(int light)
   vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
   const int channel = light % 4;
   state->vtkglColorMask(channel == 0, channel == 1, channel == 2, channel == 3);
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_CULL_FACE);
-  state->vtkglEnable(GL_STENCIL_TEST);
-  // Through vtkOpenGLState: VTK caches the stencil state, and a raw call
-  // here leaves the cache believing the counting pass's func and ops are
-  // still set, so the next frame's counting (set through the cache) would
-  // be skipped and count nothing.
-  state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
-  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  if (add)
+  {
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendEquation(GL_FUNC_ADD);
+    state->vtkglBlendFunc(GL_ONE, GL_ONE);
+  }
+  else
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  if (where == Where::Everywhere)
+  {
+    state->vtkglDisable(GL_STENCIL_TEST);
+  }
+  else
+  {
+    state->vtkglEnable(GL_STENCIL_TEST);
+    // Through vtkOpenGLState: VTK caches the stencil state, and a raw call
+    // here leaves the cache believing the counting pass's func and ops are
+    // still set, so the next frame's counting (set through the cache) would
+    // be skipped and count nothing.
+    state->vtkglStencilFunc(where == Where::StencilSet ? GL_NOTEQUAL : GL_EQUAL, 0, 0xff);
+    state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  }
   vtkShaderProgram* program = impl.Window->GetShaderCache()->ReadyShaderProgram(
     vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
   if (!program)
@@ -302,8 +351,8 @@ void vtkShadowScreenMask::ResolveStencil(int light)
     this->Error = "the screen-space mask's quad shader did not compile";
     return;
   }
-  const float blocked[4] = { 0, 0, 0, 0 };
-  program->SetUniform4f("value", blocked);
+  const float values[4] = { value, value, value, value };
+  program->SetUniform4f("value", values);
   this->DrawFullScreen(program);
 }
 

@@ -81,6 +81,22 @@ public:
   void ResolveStencil(int light);
 
   /**
+   * Inside BeginDraw(light), for a light sampled N times (a light with a
+   * size; vtkShadowVolumePass's soft_samples): FillLight(light, 0) once,
+   * then per sample, after its stencil count, AccumulateStencil(light,
+   * AccumulationLevels(sample, N)) adds that many 1/255 steps to the
+   * light's channel where the stencil is 0 (lit), by additive blending.
+   * Integer steps summing to 255 over the N samples keep the 8-bit sum
+   * exact: all samples lit is exactly 1, none 0, and k of N lit is within
+   * 1/255 of k/N (a weight of 1/N would round per sample: N = 24 gives
+   * 11/255 a sample, and 23 lit samples 0.99 instead of 0.96).
+   * N is at most 255 (every sample at least one step).
+   */
+  void FillLight(int light, float value);
+  void AccumulateStencil(int light, int levels);
+  static int AccumulationLevels(int sample, int samples);
+
+  /**
    * Copy the depth of the last RenderDepth() to `depth` (window depth in
    * [0,1], row 0 at the bottom, width * height values).
    */
@@ -136,6 +152,15 @@ public:
 
 private:
   bool Allocate(vtkOpenGLRenderWindow* window);
+  // One value into the light's channel: over the pixels whose stencil is
+  // not 0 (ResolveStencil), is 0 (AccumulateStencil, added) or everywhere.
+  enum class Where
+  {
+    StencilSet,
+    StencilZero,
+    Everywhere
+  };
+  void DrawChannel(int light, float value, Where where, bool add);
 
   struct Internals;
   Internals* Impl;

@@ -25,6 +25,7 @@
 #include "vtk_glew.h"
 
 #include "vsh_mat4.h"
+#include "vsh_soft.h"
 #include "vsh_volume.h"
 
 #include "vtkShadowVolumeFS.h"
@@ -100,6 +101,15 @@ struct vtkShadowVolumePass::Volume
   vtkSmartPointer<vtkOpenGLVertexArrayObject> VAO;
   vtkShaderProgram* Program = nullptr;
   size_t Bytes = 0;
+
+  void Release()
+  {
+    if (this->Buffer)
+    {
+      this->VAO->ReleaseGraphicsResources();
+      this->Buffer->ReleaseGraphicsResources();
+    }
+  }
 };
 
 struct vtkShadowVolumePass::Internals
@@ -109,6 +119,12 @@ struct vtkShadowVolumePass::Internals
   {
     vtkShadowCasterGeometry Geometry;
     Volume Volumes[MaxLights];
+    // A light with a size: one volume per sample point, so the samples
+    // neither rebuild nor overwrite the hard volume of Volumes[light].
+    std::vector<Volume> SoftVolumes[MaxLights];
+    // The last frame in which a volume of light I had dark caps (the
+    // caster is closed for that light: the facing test applies).
+    long long ClosedFrame[MaxLights] = { -1, -1, -1, -1, -1, -1, -1, -1 };
     long long SeenFrame = -1;
   };
   std::map<vtkActor*, std::unique_ptr<Caster>> Casters;
@@ -117,10 +133,15 @@ struct vtkShadowVolumePass::Internals
   FillQuery Queries[MaxLights];
   int LightCount = 0;
   float LightVC[MaxLights][4] = {}; // each light in view coordinates, this frame
+  // Each light's size for the facing test: radius (view units, the view
+  // transform is rigid) or tan(angle / 2); 0 for a light counted hard.
+  float LightSizeVC[MaxLights] = {};
+  int Samples[MaxLights] = {}; // samples counted this frame per light (0: not counted)
   long long VolumeBuilds = 0;
   long long Instances = 0;
   bool Reported = false;
-  vtkOpenGLState* State = nullptr; // while counting a light
+  vtkOpenGLState* State = nullptr;         // while counting a light
+  vtkOpenGLRenderWindow* Window = nullptr; // while counting a light
 };
 
 // The frame in plain data: camera (relative to the eye, in double), lights
@@ -132,6 +153,9 @@ struct vtkShadowVolumePass::Frame
   double CameraRelative[16]; // projection x view rotation
   double NearCorners[12];    // near-plane rectangle, relative to the eye
   std::vector<vtkLight*> Lights;
+  // Per light: radius (positional) or angular diameter in degrees
+  // (directional) when it is sampled (SoftSamples > 1), else 0.
+  std::vector<double> LightSize;
   std::vector<vtkActor*> Casters;
   // The props this render state draws, sorted: z-pass counting needs the
   // caster's own surface in the depth buffer (see DrawCaster).
@@ -182,6 +206,12 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
   }
   vtkshadow::UpdateLights(renderer);
   frame.Lights = vtkshadow::SwitchedOnLights(renderer);
+  for (vtkLight* light : frame.Lights)
+  {
+    frame.LightSize.push_back(this->SoftSamples <= 1 ? 0.0
+        : light->GetPositional()                     ? GetLightRadius(light)
+                                                     : GetLightAngle(light));
+  }
   frame.Casters = CastingActors(renderer);
   frame.Drawn.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
   std::sort(frame.Drawn.begin(), frame.Drawn.end());
@@ -204,6 +234,9 @@ void vtkShadowVolumePass::LightsInViewCoordinates(vtkRenderer* renderer, const F
     {
       impl.LightVC[light][k] = static_cast<float>(vc[k]);
     }
+    const double size = frame.LightSize[light];
+    impl.LightSizeVC[light] = static_cast<float>(
+      world[3] != 0.0 ? size : std::tan(0.5 * size * 3.14159265358979323846 / 180.0));
   }
 }
 
@@ -248,6 +281,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(vtkShadowVolumeVS, vtkShadowVolumeFS, "");
   impl.Instances = 0;
+  std::fill(impl.Samples, impl.Samples + MaxLights, 0);
   for (int light = 0; light < impl.LightCount && program; ++light)
   {
     if (this->LightCasts(frame.Lights[light], light))
@@ -256,19 +290,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
       this->CountLight(window, program, frame, light);
     }
   }
-  // Forget casters that left the scene.
-  for (auto it = impl.Casters.begin(); it != impl.Casters.end();)
-  {
-    if (it->second->SeenFrame != impl.FrameNumber)
-    {
-      it->second->Geometry.ReleaseGraphicsResources(window);
-      it = impl.Casters.erase(it);
-    }
-    else
-    {
-      ++it;
-    }
-  }
+  this->ReleaseUnusedVolumes(window);
   vtkshadow::MarkStage("volume.stencil");
   impl.Mask.Activate();
   this->RenderDelegateWithShaderHooks(s);
@@ -282,6 +304,11 @@ void vtkShadowVolumePass::CountLight(
   Internals& impl = *this->Impl;
   vtkOpenGLState* state = window->GetState();
   impl.State = state;
+  impl.Window = window;
+  // A light with a size is sampled: N counts, each adding its share of lit
+  // (vtkShadowScreenMask::AccumulateStencil); otherwise one count resolved.
+  const int samples = frame.LightSize[light] > 0.0 ? this->SoftSamples : 1;
+  impl.Samples[light] = samples;
   // The caller's winding (GL_CW while vtkPlanarReflectionPass draws a
   // mirrored world): DrawCaster sets its own per caster, and the delegate's
   // draw afterwards must see the caller's again, or the mappers' two-sided
@@ -299,6 +326,10 @@ void vtkShadowVolumePass::CountLight(
     vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
     vtkOpenGLState::ScopedglColorMask colorMask(state);
     state->vtkglDisable(GL_SCISSOR_TEST);
+    if (samples > 1)
+    {
+      impl.Mask.FillLight(light, 0.0f);
+    }
     state->vtkglStencilMask(0xff);
     glClearStencil(0);
     state->vtkglClear(GL_STENCIL_BUFFER_BIT);
@@ -309,15 +340,9 @@ void vtkShadowVolumePass::CountLight(
     state->vtkglDisable(GL_CULL_FACE);
     state->vtkglDisable(GL_BLEND);
     state->vtkglEnable(GL_STENCIL_TEST);
-    state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
-    state->vtkglEnable(GL_SCISSOR_TEST);
     // The far cap lies at infinity (w = 0): clamp its depth to the far
     // plane instead of clipping it. Not in VTK's state cache: restored below.
     glEnable(GL_DEPTH_CLAMP);
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    program->SetUniformf("depthBias", static_cast<float>(this->DepthBias * std::ldexp(1.0, -24)));
-    program->SetUniformf("slopeBias", static_cast<float>(this->SlopeBias));
-    program->SetUniformf("maxSlopeBias", static_cast<float>(std::ldexp(1.0, -12)));
     FillQuery& query = impl.Queries[light];
     if (query.Pending)
     {
@@ -325,9 +350,9 @@ void vtkShadowVolumePass::CountLight(
       glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT_AVAILABLE, &available);
       if (available)
       {
-        GLuint samples = 0;
-        glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT, &samples);
-        query.Last = static_cast<long long>(samples);
+        GLuint samplesPassed = 0;
+        glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT, &samplesPassed);
+        query.Last = static_cast<long long>(samplesPassed);
         query.Pending = false;
       }
     }
@@ -335,32 +360,100 @@ void vtkShadowVolumePass::CountLight(
     {
       glGenQueries(1, &query.Id);
     }
+    // The fill of the first (or only) count: a query cannot pause around
+    // the accumulation quads of the samples.
     const bool measure = query.Id && !query.Pending;
-    if (measure)
+    for (int sample = 0; sample < samples; ++sample)
     {
-      glBeginQuery(GL_SAMPLES_PASSED, query.Id);
-    }
-    for (vtkActor* actor : frame.Casters)
-    {
-      this->DrawCaster(program, frame, light, actor);
-    }
-    if (measure)
-    {
-      glEndQuery(GL_SAMPLES_PASSED);
-      query.Pending = true;
+      if (sample > 0)
+      {
+        state->vtkglDisable(GL_SCISSOR_TEST);
+        state->vtkglStencilMask(0xff);
+        state->vtkglClear(GL_STENCIL_BUFFER_BIT);
+      }
+      if (measure && sample == 0)
+      {
+        glBeginQuery(GL_SAMPLES_PASSED, query.Id);
+      }
+      this->CountVolumes(program, frame, light, samples > 1 ? sample : -1);
+      if (measure && sample == 0)
+      {
+        glEndQuery(GL_SAMPLES_PASSED);
+        query.Pending = true;
+      }
+      state->vtkglDisable(GL_SCISSOR_TEST);
+      if (samples > 1)
+      {
+        impl.Mask.AccumulateStencil(
+          light, vtkShadowScreenMask::AccumulationLevels(sample, samples));
+      }
     }
     impl.Stats[light].SamplesPassed = query.Last;
     glDisable(GL_DEPTH_CLAMP);
     glFrontFace(static_cast<GLenum>(frontFace));
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    impl.Mask.ResolveStencil(light);
+    if (samples == 1)
+    {
+      impl.Mask.ResolveStencil(light);
+    }
   }
   impl.Mask.EndDraw();
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowVolumePass::CountVolumes(
+  vtkShaderProgram* program, const Frame& frame, int light, int sample)
+{
+  // The state of CountLight; the mask's accumulation between two samples
+  // changed the stencil function and the bound program.
+  vtkOpenGLState* state = this->Impl->State;
+  state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  this->Impl->Window->GetShaderCache()->ReadyShaderProgram(program);
+  program->SetUniformf("depthBias", static_cast<float>(this->DepthBias * std::ldexp(1.0, -24)));
+  program->SetUniformf("slopeBias", static_cast<float>(this->SlopeBias));
+  program->SetUniformf("maxSlopeBias", static_cast<float>(std::ldexp(1.0, -12)));
+  for (vtkActor* actor : frame.Casters)
+  {
+    this->DrawCaster(program, frame, light, sample, actor);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::ReleaseUnusedVolumes(vtkOpenGLRenderWindow* window)
+{
+  Internals& impl = *this->Impl;
+  for (auto it = impl.Casters.begin(); it != impl.Casters.end();)
+  {
+    Internals::Caster& caster = *it->second;
+    // The samples of a light counted hard (or not at all) this frame: a
+    // sized light that turns hard or stops casting frees its N volumes.
+    for (int light = 0; light < MaxLights; ++light)
+    {
+      if (impl.Samples[light] <= 1 || caster.SeenFrame != impl.FrameNumber)
+      {
+        for (Volume& volume : caster.SoftVolumes[light])
+        {
+          volume.Release();
+        }
+        caster.SoftVolumes[light].clear();
+      }
+    }
+    // Forget casters that left the scene.
+    if (caster.SeenFrame != impl.FrameNumber)
+    {
+      caster.Geometry.ReleaseGraphicsResources(window);
+      it = impl.Casters.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
-  vtkActor* actor, int light, const double lightWorld[4])
+  vtkActor* actor, int light, int sample, const double lightWorld[4])
 {
   Internals& impl = *this->Impl;
   auto& caster = impl.Casters[actor];
@@ -384,11 +477,21 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
   }
   vsh_mat4_transform_point4(inverse, lightWorld, lightData);
   geometry.ShiftLight(lightData, lightStored);
-  Volume& volume = caster->Volumes[light];
+  std::vector<Volume>& soft = caster->SoftVolumes[light];
+  if (sample >= 0 && soft.size() != static_cast<size_t>(this->SoftSamples))
+  {
+    for (size_t i = static_cast<size_t>(this->SoftSamples); i < soft.size(); ++i)
+    {
+      soft[i].Release();
+    }
+    soft.resize(static_cast<size_t>(this->SoftSamples));
+  }
+  Volume& volume = sample >= 0 ? soft[static_cast<size_t>(sample)] : caster->Volumes[light];
   if (volume.Valid && volume.GeometryTime == geometry.GetBuildTime() &&
     std::equal(lightStored, lightStored + 4, volume.Light))
   {
     volume.UsedFrame = impl.FrameNumber;
+    caster->ClosedFrame[light] = volume.DarkCaps ? impl.FrameNumber : caster->ClosedFrame[light];
     return &volume;
   }
   vsh_volume built;
@@ -409,6 +512,7 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
   volume.Quads = built.silhouette_quads;
   volume.DarkCaps = built.dark_caps != 0;
   volume.UsedFrame = impl.FrameNumber;
+  caster->ClosedFrame[light] = volume.DarkCaps ? impl.FrameNumber : caster->ClosedFrame[light];
   vsh_volume_free(&built);
   if (!volume.Buffer)
   {
@@ -430,13 +534,30 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
 
 //------------------------------------------------------------------------------
 void vtkShadowVolumePass::DrawCaster(
-  vtkShaderProgram* program, const Frame& frame, int light, vtkActor* actor)
+  vtkShaderProgram* program, const Frame& frame, int light, int sample, vtkActor* actor)
 {
   Internals& impl = *this->Impl;
   LightStats& stats = impl.Stats[light];
   double lightWorld[4];
   vtkshadow::LightHomogeneous(frame.Lights[light], lightWorld);
-  Volume* volume = this->UpdateVolume(actor, light, lightWorld);
+  if (sample >= 0)
+  {
+    // Sample `sample` of the light's disk turned to face the caster's
+    // centre, as planar's samples (docs/soft-shadows.md): a caster centred
+    // on the light keeps the centre.
+    double b[6], centre[3], point[4];
+    actor->GetBounds(b);
+    for (int i = 0; i < 3; ++i)
+    {
+      centre[i] = 0.5 * (b[2 * i] + b[2 * i + 1]);
+    }
+    if (vsh_soft_sample_light(
+          lightWorld, frame.LightSize[light], centre, sample, this->SoftSamples, 0.0, point) == 0)
+    {
+      std::copy_n(point, 4, lightWorld);
+    }
+  }
+  Volume* volume = this->UpdateVolume(actor, light, sample, lightWorld);
   if (!volume || volume->SideTriangles + volume->CapTriangles == 0)
   {
     return;
@@ -546,7 +667,7 @@ bool vtkShadowVolumePass::PostReplaceShaderValues(
     return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
   }
   return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight(),
-    "(vshScreenLit(%d) * vshFacingLit(%d, vertexVC.xyz))",
+    "vshFacingCombine(%d, vertexVC.xyz, vshScreenLit(%d))",
     "vshScreenPrepare(); vshFacingPrepare(vertexVC.xyz);");
 }
 
@@ -560,6 +681,7 @@ bool vtkShadowVolumePass::SetShaderParameters(
   {
     program->SetUniformi("vshFacingLights", this->ClosedCasterLights(prop));
     program->SetUniform4fv("vshFacingLightVC", MaxLights, impl.LightVC);
+    program->SetUniform1fv("vshFacingLightSize", MaxLights, impl.LightSizeVC);
   }
   return true;
 }
@@ -576,8 +698,7 @@ int vtkShadowVolumePass::ClosedCasterLights(vtkProp* prop) const
   }
   for (int light = 0; it != impl.Casters.end() && light < impl.LightCount; ++light)
   {
-    const Volume& volume = it->second->Volumes[light];
-    if (volume.Valid && volume.DarkCaps && volume.UsedFrame == impl.FrameNumber)
+    if (it->second->ClosedFrame[light] == impl.FrameNumber)
     {
       bits |= 1 << light;
     }
@@ -602,6 +723,13 @@ long long vtkShadowVolumePass::GetMemoryBytes() const
     {
       bytes += static_cast<long long>(volume.Bytes);
     }
+    for (const std::vector<Volume>& soft : entry.second->SoftVolumes)
+    {
+      for (const Volume& volume : soft)
+      {
+        bytes += static_cast<long long>(volume.Bytes);
+      }
+    }
   }
   return bytes;
 }
@@ -622,7 +750,8 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
         << ", \"cap_triangles\": " << s.CapTriangles
         << ", \"fill_px\": " << static_cast<long long>(s.FillPx)
         << ", \"fill_samples_passed\": " << s.SamplesPassed
-        << ", \"cost\": " << static_cast<long long>(s.Cost) << "}";
+        << ", \"cost\": " << static_cast<long long>(s.Cost)
+        << ", \"soft_samples\": " << impl.Samples[light] << "}";
   }
   out << "]";
   return out.str();
@@ -652,6 +781,11 @@ bool vtkShadowVolumePass::SetOption(const char* key, double value)
     this->SetFacingTest(value != 0.0);
     return true;
   }
+  if (k == "soft_samples" && value >= 1.0 && value <= 255.0 && value == std::floor(value))
+  {
+    this->SetSoftSamples(static_cast<int>(value));
+    return true;
+  }
   return this->Superclass::SetOption(key, value);
 }
 
@@ -673,10 +807,13 @@ void vtkShadowVolumePass::ReleaseGraphicsResources(vtkWindow* w)
     entry.second->Geometry.ReleaseGraphicsResources(w);
     for (Volume& volume : entry.second->Volumes)
     {
-      if (volume.Buffer)
+      volume.Release();
+    }
+    for (std::vector<Volume>& soft : entry.second->SoftVolumes)
+    {
+      for (Volume& volume : soft)
       {
-        volume.VAO->ReleaseGraphicsResources();
-        volume.Buffer->ReleaseGraphicsResources();
+        volume.Release();
       }
     }
   }
@@ -692,5 +829,6 @@ void vtkShadowVolumePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SlopeBias: " << this->SlopeBias << "\n";
   os << indent << "ForceZFail: " << this->ForceZFail << "\n";
   os << indent << "FacingTest: " << this->FacingTest << "\n";
+  os << indent << "SoftSamples: " << this->SoftSamples << "\n";
   os << indent << "Casters: " << this->Impl->Casters.size() << "\n";
 }

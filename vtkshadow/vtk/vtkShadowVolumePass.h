@@ -63,8 +63,19 @@ public:
   vtkBooleanMacro(FacingTest, bool);
 
   /**
-   * depth_bias, slope_bias, force_zfail, facing_test, and the base's
-   * cast_headlight.
+   * The sampled area light (docs/soft-shadows.md): a light with a size
+   * (radius or angle) is counted from SoftSamples points (directions) on it,
+   * each adding its share of lit into the light's channel of the screen
+   * mask. 1 renders the hard shadow of the light's centre, as does a light
+   * without a size. 1..255 (the mask's 8-bit channel has 255 steps), default
+   * 16.
+   */
+  vtkSetClampMacro(SoftSamples, int, 1, 255);
+  vtkGetMacro(SoftSamples, int);
+
+  /**
+   * depth_bias, slope_bias, force_zfail, facing_test, soft_samples, and the
+   * base's cast_headlight.
    */
   bool SetOption(const char* key, double value) override;
 
@@ -103,6 +114,7 @@ protected:
   double SlopeBias = 0.001;
   bool ForceZFail = false;
   bool FacingTest = true;
+  int SoftSamples = 16;
 
 private:
   vtkShadowVolumePass(const vtkShadowVolumePass&) = delete;
@@ -116,8 +128,13 @@ private:
   void SetUpFrame(const vtkRenderState* s, Frame& frame);
   void CountLight(
     vtkOpenGLRenderWindow* window, vtkShaderProgram* program, const Frame& frame, int light);
-  void DrawCaster(vtkShaderProgram* program, const Frame& frame, int light, vtkActor* actor);
-  Volume* UpdateVolume(vtkActor* actor, int light, const double lightWorld[4]);
+  // Counts one light (sample < 0) or one of its SoftSamples samples.
+  void CountVolumes(vtkShaderProgram* program, const Frame& frame, int light, int sample);
+  void DrawCaster(
+    vtkShaderProgram* program, const Frame& frame, int light, int sample, vtkActor* actor);
+  Volume* UpdateVolume(vtkActor* actor, int light, int sample, const double lightWorld[4]);
+  // Soft volumes of lights counted hard this frame, and of casters gone.
+  void ReleaseUnusedVolumes(vtkOpenGLRenderWindow* window);
   void LightsInViewCoordinates(vtkRenderer* renderer, const Frame& frame);
   // Bit I set when `prop` is a closed caster counted for light I this frame.
   int ClosedCasterLights(vtkProp* prop) const;

@@ -8,6 +8,9 @@
 // turned towards the camera, against the direction to light I.
 uniform int vshFacingLights;       // bit I: the actor drawn is a closed caster of light I
 uniform vec4 vshFacingLightVC[8];  // light I in view coordinates: (position, 1) or (towards it, 0)
+// Light I sampled (soft_samples > 1): its radius, or tan(angle / 2) of a
+// directional light; 0 for a light counted hard.
+uniform float vshFacingLightSize[8];
 vec3 vshFacetNormalVC = vec3(0.0);
 void vshFacingPrepare(vec3 positionVC)
 {
@@ -27,8 +30,43 @@ float vshFacingLit(int light, vec3 positionVC)
   }
   vec4 l = vshFacingLightVC[light];
   vec3 toLight = l.w != 0.0 ? l.xyz - positionVC : l.xyz;
+  float size = vshFacingLightSize[light];
+  if (size > 0.0)
+  {
+    // A light with a size: the fraction of it in front of the facet's
+    // plane, exactly, for the light the scene defines (a disk of radius
+    // `size` facing this point, or directions l + size q, q in the unit disk
+    // perpendicular to l). Its points' heights over the plane are
+    // h + rho x, h the centre's, rho = size |n x axis|, and x of a uniform
+    // disk has the semicircle density: the fraction above 0 is
+    // 1/2 + (t sqrt(1 - t^2) + asin t) / pi, t = h / rho clamped to [-1, 1].
+    // No hard terminator: it fades over the facets that see part of the
+    // light. vshFacingCombine takes the smaller of this and the mask.
+    vec3 n = normalize(vshFacetNormalVC);
+    vec3 axis = normalize(toLight);
+    float h = dot(n, l.w != 0.0 ? toLight : axis);
+    float rho = size * length(cross(n, axis));
+    if (rho > 1e-6 * max(abs(h), 1e-30))
+    {
+      float t = clamp(h / rho, -1.0, 1.0);
+      return 0.5 + (t * sqrt(1.0 - t * t) + asin(t)) / 3.14159265358979;
+    }
+  }
   // A facet within 1e-3 (0.06 degrees) of edge-on keeps the volume's
   // answer: the plane from float derivatives is not better than that.
   float tolerance = 1e-3 * length(vshFacetNormalVC) * length(toLight);
   return dot(vshFacetNormalVC, toLight) < -tolerance ? 0.0 : 1.0;
+}
+
+// Light I's factor from the mask's value: times the facing test for a light
+// counted hard (0 or 1); for a sampled light the smaller of the two. The
+// samples' volumes already darken the caster's terminator by the share of
+// samples behind it (measured: sphere-disk against POV-Ray, the mask alone
+// 0.53 where POV-Ray has 0.53), so a product would count it twice (0.27);
+// the visible fraction of the light is at most either, and the facing
+// fraction still caps a facet whose own volumes leave it lit.
+float vshFacingCombine(int light, vec3 positionVC, float screen)
+{
+  float facing = vshFacingLit(light, positionVC);
+  return vshFacingLightSize[light] > 0.0 ? min(screen, facing) : screen * facing;
 }
