@@ -62,6 +62,32 @@ def same_bytes(a, b):
         return fa.read() == fb.read()
 
 
+def check_hard(bindir, out, technique, hard_mae_max):
+    """The hard case of a sampled technique (setting soft_samples): radius /
+    angle 0 (with soft_samples 16) renders the same bytes as the sized scene
+    with soft_samples=1 (both the hard path), and a size of 1e-6 with N = 16
+    equals the exact hard shadow (mean error within hard_mae_max over the
+    plane). Failures go to `failures`."""
+    hard = scene_with(out, "hard", 0)
+    soft = scene_with(out, "soft", None)
+    tiny = scene_with(out, "tiny", 1e-6)
+    for k in range(len(SCENE["lights"])):
+        _, _, a = render(bindir, hard, technique, "soft_samples=16", k,
+                         os.path.join(out, "hard_light%d" % k))
+        _, _, b = render(bindir, soft, technique, "soft_samples=1", k,
+                         os.path.join(out, "n1_light%d" % k))
+        same = os.path.exists(a) and os.path.exists(b) and same_bytes(a, b)
+        print("light %d: radius 0 and soft_samples=1 render the same bytes: %s" % (k, same))
+        if not same:
+            failures.append("light %d: soft_samples=1 is not the hard path" % k)
+        vis, mask, _ = render(bindir, tiny, technique, "soft_samples=16", k,
+                              os.path.join(out, "tiny_light%d" % k))
+        m = exact(bindir, hard, k, vis, mask)
+        print("size 1e-6, N=16, light %d against the exact hard shadow: %s" % (k, m))
+        if not m or not m["mae"] <= hard_mae_max:
+            failures.append("size 1e-6 light %d: not the hard shadow (%s)" % (k, m))
+
+
 def verdict(test_name):
     """Print every failure (or that all bounds were met); the exit status."""
     if failures:

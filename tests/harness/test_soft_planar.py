@@ -64,28 +64,9 @@ def check_soft(args, scene):
             failures.append("light %d: pen_mae does not fall with N: %s" % (k, errors))
 
 
-def check_hard(args):
-    hard = scene_with(args.out, "hard", 0)
-    soft = scene_with(args.out, "soft", None)
-    tiny = scene_with(args.out, "tiny", 1e-6)
-    for k in range(len(SCENE["lights"])):
-        _, _, a = render(args, hard, 16, k, os.path.join(args.out, "hard_light%d" % k))
-        _, _, b = render(args, soft, 1, k, os.path.join(args.out, "n1_light%d" % k))
-        with open(a, "rb") as fa, open(b, "rb") as fb:
-            same = fa.read() == fb.read()
-        print("light %d: radius 0 and soft_samples=1 render the same bytes: %s" % (k, same))
-        if not same:
-            failures.append("light %d: soft_samples=1 is not the hard path" % k)
-        vis, mask, _ = render(args, tiny, 16, k, os.path.join(args.out, "tiny_light%d" % k))
-        m = exact(args, hard, k, vis, mask)
-        print("size 1e-6, N=16, light %d against the exact hard shadow: %s" % (k, m))
-        if not m or not m["mae"] <= HARD_MAE_MAX:
-            failures.append("size 1e-6 light %d: not the hard shadow (%s)" % (k, m))
-
-
 def main():
     args = parse_args()
-    check_hard(args)
+    common.check_hard(args.bin, args.out, "planar", HARD_MAE_MAX)
     check_soft(args, scene_with(args.out, "exact", None))
     return verdict("harness.soft_planar")
 
