@@ -59,14 +59,21 @@ float vshFacingLit(int light, vec3 positionVC)
 }
 
 // Light I's factor from the mask's value: times the facing test for a light
-// counted hard (0 or 1); for a sampled light the smaller of the two. The
-// samples' volumes already darken the caster's terminator by the share of
-// samples behind it (measured: sphere-disk against POV-Ray, the mask alone
-// 0.53 where POV-Ray has 0.53), so a product would count it twice (0.27);
-// the visible fraction of the light is at most either, and the facing
-// fraction still caps a facet whose own volumes leave it lit.
+// counted hard (0 or 1). For a sampled light, the visibility is that of the
+// part of the light the facet can see: samples behind the facet's plane send
+// it no light, lit or not (Cycles weights each sample by its N.L, and
+// raytrace does too), while the samples' volumes count them as blocked (the
+// caster shadows its own back: measured on sphere-disk, the mask alone 0.53
+// on the terminator where the facing fraction is about as much). So the
+// mask is divided by the facing fraction: about 1 on a convex caster's
+// terminator, unchanged where the whole light is in front (fraction 1,
+// every receiver). A facet that sees none of the light gets none of it.
 float vshFacingCombine(int light, vec3 positionVC, float screen)
 {
   float facing = vshFacingLit(light, positionVC);
-  return vshFacingLightSize[light] > 0.0 ? min(screen, facing) : screen * facing;
+  if (vshFacingLightSize[light] > 0.0)
+  {
+    return facing > 0.0 ? min(screen / facing, 1.0) : 0.0;
+  }
+  return screen * facing;
 }
