@@ -2,6 +2,7 @@
 #include "compare_options.h"
 
 #include "harness_util.h"
+#include "technique_variant.h"
 
 #include "vtkShadowTechnique.h"
 
@@ -50,7 +51,11 @@ const char* Usage()
   return "usage: vtkshadow-compare SCENE|DIR... --out DIR [options]\n"
          "  --renderers LIST      any of vtk,povray,cycles,eevee,eevee-best\n"
          "                        (default vtk,povray,cycles)\n"
-         "  --techniques LIST     VTK techniques (default: all that vtkshadow knows)\n"
+         "  --techniques LIST     VTK techniques (default: all that vtkshadow knows); an\n"
+         "                        entry NAME:KEY=VALUE[:KEY=VALUE...] is a variant, run with\n"
+         "                        vtkshadow-render --set KEY=VALUE and named so in the rows\n"
+         "                        (e.g. volume:soft_samples=64,raytrace:samples=256:adaptive=1);\n"
+         "                        'all' stands for every technique at its defaults\n"
          "  --scale F             image size = scene size * F (default 1)\n"
          "  --check               compare with thresholds.json; exit 3 on a regression\n"
          "  --thresholds FILE     thresholds file (default: thresholds.json in the\n"
@@ -143,6 +148,21 @@ bool SetSoftValue(Options& opt, const std::string& a, const std::string& v, std:
   return true;
 }
 
+// --techniques LIST, with 'all' replaced by every registered technique.
+std::vector<std::string> TechniqueList(const std::string& v)
+{
+  std::vector<std::string> r;
+  for (const std::string& t : SplitList(v))
+  {
+    if (t != "all")
+      r.push_back(t);
+    else
+      for (const std::string& k : RegisteredTechniques())
+        r.push_back(k);
+  }
+  return r;
+}
+
 // An option with a value `v`; false with `error` set when it is bad or unknown.
 bool SetValue(Options& opt, const std::string& a, const std::string& v, std::string& error)
 {
@@ -161,7 +181,7 @@ bool SetValue(Options& opt, const std::string& a, const std::string& v, std::str
   else if (a == "--renderers")
     opt.renderers = SplitList(v);
   else if (a == "--techniques")
-    opt.techniques = SplitList(v);
+    opt.techniques = TechniqueList(v);
   else if (a == "--scale" || a == "--timeout")
   {
     double d = strtod(v.c_str(), &end);
@@ -195,11 +215,14 @@ bool ValidateLists(const Options& opt, std::string& error)
       std::find(KnownRenderers().begin(), KnownRenderers().end(), r) == KnownRenderers().end())
       error =
         "--renderers: unknown renderer '" + r + "' (known: vtk, povray, cycles, eevee, eevee-best)";
-  const std::vector<std::string> known = RegisteredTechniques();
-  for (const auto& t : opt.techniques)
-    if (error.empty() && std::find(known.begin(), known.end(), t) == known.end())
-      error = "--techniques: unknown technique '" + t +
-        "' (known: " + vtkShadowTechnique::GetKnownTechniques() + ")";
+  for (auto t = opt.techniques.begin(); error.empty() && t != opt.techniques.end(); ++t)
+  {
+    TechniqueVariant v;
+    if (!ParseTechniqueVariant(*t, v, error))
+      break;
+    if (std::find(opt.techniques.begin(), t, *t) != t)
+      error = "--techniques: '" + *t + "' is given twice";
+  }
   return error.empty();
 }
 

@@ -4,6 +4,7 @@
 #include "reflection_run.h"
 
 #include "harness_util.h"
+#include "technique_variant.h"
 
 #include "vsh_metrics.h"
 #include "vsh_png.h"
@@ -138,9 +139,11 @@ bool VtkColour(const Options& opt, const SceneEntry& e, const ExportScene& ex, c
   const std::string dir = opt.out + "/" + e.dir_id + "/vtk/" + t;
   const std::string image = AbsPath(dir + "/color.png");
   std::remove(image.c_str());
-  std::vector<std::string> argv{ opt.render_bin, AbsPath(e.path), "--technique", t, "--image",
-    image, "--matte", "--reflections", "on", "--size",
-    std::to_string(ex.width) + "x" + std::to_string(ex.height), "--quiet" };
+  std::vector<std::string> argv{ opt.render_bin, AbsPath(e.path), "--image", image, "--matte",
+    "--reflections", "on", "--size", std::to_string(ex.width) + "x" + std::to_string(ex.height),
+    "--quiet" };
+  const std::vector<std::string> tech = RenderArguments(t); // a variant's --set too
+  argv.insert(argv.begin() + 2, tech.begin(), tech.end());
   RunResult r = RunProcess(argv, "", AbsPath(dir + "/render-colour.log"), opt.timeout);
   Progress(e.id + ": vtk/" + t + " colour" + (r.ok() ? "" : " FAILED") + " (" +
     Fmt(r.seconds, "%.1f") + " s)");

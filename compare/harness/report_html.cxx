@@ -38,7 +38,8 @@ bool WritePlot(
   std::string err;
   if (!WriteFileAtomic(opt.out + "/plot.dat", dat, err))
     return false;
-  // Fixed script text; names reach gnuplot only as data (column headers).
+  // Fixed script text; names reach gnuplot only as data (column headers),
+  // printed as given (noenhanced: the '_' of soft_samples is no subscript).
   std::string gp =
     "set terminal pngcairo size 1400,600 font 'sans,9'\n"
     "set output 'wrong_pct.png.tmp'\n"
@@ -48,7 +49,8 @@ bool WritePlot(
     "set ylabel 'wrong pixels (%)'\nset xtics rotate by -45 scale 0\nset key outside right top\n"
     "set grid ytics\nset datafile missing 'NaN'\n"
     "plot for [i=2:" +
-    std::to_string(tests.size() + 1) + "] 'plot.dat' using i:xtic(1) title columnheader(i)\n";
+    std::to_string(tests.size() + 1) +
+    "] 'plot.dat' using i:xtic(1) title columnheader(i) noenhanced\n";
   if (!WriteFileAtomic(opt.out + "/wrong_pct.gp", gp, err))
     return false;
   RunResult r = RunProcess({ "gnuplot", "wrong_pct.gp" }, opt.out, opt.out + "/gnuplot.log", 120);

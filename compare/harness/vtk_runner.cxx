@@ -2,6 +2,7 @@
 #include "vtk_runner.h"
 
 #include "harness_util.h"
+#include "technique_variant.h"
 #include "visibility_io.h"
 
 #include <unistd.h>
@@ -29,10 +30,13 @@ bool RenderTechnique(const Options& opt, const SceneEntry& e, const std::string&
   for (int k = 0; k < lights; ++k)
   {
     const std::vector<std::string> names = LightFileNames(k);
-    std::vector<std::string> argv{ opt.render_bin, AbsPath(e.path), "--technique", t, "--image",
+    std::vector<std::string> argv{ opt.render_bin, AbsPath(e.path), "--image",
       AbsPath(outdir + "/image.png"), "--light", std::to_string(k), "--visibility",
       AbsPath(outdir + "/" + names[0]), "--mask", AbsPath(outdir + "/" + names[1]), "--size",
       std::to_string(w) + "x" + std::to_string(h), "--quiet" };
+    // --technique NAME and a variant's --set KEY=VALUE (technique_variant.h).
+    const std::vector<std::string> tech = RenderArguments(t);
+    argv.insert(argv.begin() + 2, tech.begin(), tech.end());
     RunResult r = RunProcess(argv, "", log, opt.timeout);
     total += r.seconds;
     Progress(e.id + ": vtk/" + t + " light " + std::to_string(k) + (r.ok() ? "" : " FAILED") +
