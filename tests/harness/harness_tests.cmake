@@ -119,3 +119,17 @@ add_test(NAME harness.soft_volume
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_volume.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/soft_volume)
 set_tests_properties(harness.soft_volume PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# Technique variants in --techniques (NAME:KEY=VALUE, docs/harness.md):
+# bad entries exit 2 naming the entry before anything is written; a variant's
+# settings reach vtkshadow-render (volume soft_samples 1 vs 16 against
+# POV-Ray's penumbra) and its rows round trip through update_thresholds.py,
+# --check and known-failures.json (test_variants.py).
+add_test(NAME harness.variants_usage
+  COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_variants.py usage --bin ${VTKSHADOW_BIN}
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/variants_usage)
+set_tests_properties(harness.variants_usage PROPERTIES TIMEOUT 300 LABELS "harness")
+add_test(NAME harness.variants
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_variants.py render --bin ${VTKSHADOW_BIN}
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/variants)
+set_tests_properties(harness.variants PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
