@@ -5,6 +5,13 @@ is a regression):
 
     tests/gl-run.sh build/bin/vtkshadow-compare scenes --out /tmp/t --scale 0.4 --no-cache
     python3 scenes/update_thresholds.py /tmp/t/results.json --write scenes/thresholds.json
+    tests/gl-run.sh build/bin/vtkshadow-compare scenes/soft --out /tmp/t-soft --scale 0.4 \
+        --cache /tmp/t/cache --techniques all,volume:soft_samples=64,planar:soft_samples=64
+    python3 scenes/update_thresholds.py /tmp/t-soft/results.json --write scenes/thresholds.json
+
+(the second run: the soft scenes with the technique variants that
+harness.library.soft also runs; a scene's limits are replaced whole by the
+rows of the results given, so that run has every technique too).
 
 Several results files may be given (e.g. one per library group); scenes not
 in them keep their limits from the current file (--base, default: the file
