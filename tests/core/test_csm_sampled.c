@@ -216,6 +216,52 @@ static void check_positional(double offset, double cone) {
   }
 }
 
+/* Widening keeps x, y and w and moves the depth range by the radius. */
+static void test_widen(void) {
+  const vsh_csm_light light = {{1, 6, 1}, {0, 0, 0}, 1, 30, 1};
+  const vsh_csm_scene s = make_scene(&light, 0.0);
+  const vsh_csm_plan p = plan_of(&s);
+  const double centre[3] = {0, 1, 0};
+  vsh_csm_sample_frame f;
+  vsh_csm_tile t = p.tiles.tiles[0];
+  const double *nf = p.tiles.tiles[0].view.near_far;
+  CHECK(vsh_csm_sample_frame_for(&light, 0.4, centre, 4, &f) == VSH_CSM_OK && f.sampled);
+  CHECK(vsh_csm_sample_widen(&t, &f) == VSH_CSM_OK);
+  CHECK_NEAR(t.view.near_far[0], fmax(nf[0] - 0.4, 0.25 * nf[0]), 1e-12);
+  CHECK_NEAR(t.view.near_far[1], nf[1] + 0.4, 1e-12);
+  for (int c = 0; c < 4; ++c) {
+    CHECK(t.view.world_to_clip[c] == p.tiles.tiles[0].view.world_to_clip[c]);
+    CHECK(t.view.world_to_clip[12 + c] == p.tiles.tiles[0].view.world_to_clip[12 + c]);
+  }
+  /* A point at the new near / far distance along the axis maps to ndc z -1 / 1. */
+  {
+    double terms[2];
+    vsh_csm_perspective_depth_terms(&t.view, terms);
+    CHECK_NEAR(-terms[0] + terms[1] / t.view.near_far[0], -1.0, 1e-12);
+    CHECK_NEAR(-terms[0] + terms[1] / t.view.near_far[1], 1.0, 1e-12);
+    const double in[4] = {0.0, 0.0, 0.0, 1.0};
+    double c0[4], c1[4];
+    /* the light itself (camera-relative): w 0, z the same multiple of -b */
+    const double rel[4] = {light.position[0] - s.camera.position[0],
+                           light.position[1] - s.camera.position[1],
+                           light.position[2] - s.camera.position[2], 1.0};
+    (void)in;
+    vsh_mat4_transform_point4(t.view.world_to_clip, rel, c0);
+    vsh_mat4_transform_point4(p.tiles.tiles[0].view.world_to_clip, rel, c1);
+    CHECK_NEAR(c0[3], 0.0, 1e-9);
+    CHECK_NEAR(c0[2], terms[1], 1e-9);
+  }
+  /* A directional map and a hard frame are left alone. */
+  {
+    vsh_csm_sample_frame g = f;
+    vsh_csm_tile u = p.tiles.tiles[0];
+    g.sampled = 0;
+    CHECK(vsh_csm_sample_widen(&u, &g) == VSH_CSM_OK);
+    CHECK(memcmp(&u, &p.tiles.tiles[0], sizeof u) == 0);
+    CHECK(vsh_csm_sample_widen(NULL, &f) == VSH_CSM_BAD_INPUT);
+  }
+}
+
 static void test_resolution(void) {
   CHECK(vsh_csm_sampled_resolution(2048, 1, 256LL << 20) == 2048);
   CHECK(vsh_csm_sampled_resolution(2048, 16, 256LL << 20) == 2048); /* 4 x 4 x 2048^2 x 4 */
@@ -234,6 +280,7 @@ int main(void) {
   check_positional(0.0, 30.0);
   check_positional(0.0, 180.0);
   check_positional(1e6, 30.0);
+  test_widen();
   test_resolution();
   return vsh_check_report("csm_sampled");
 }

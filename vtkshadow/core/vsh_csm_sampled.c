@@ -112,6 +112,33 @@ vsh_csm_status vsh_csm_sample_tile(const vsh_csm_tile *base, const vsh_csm_sampl
   return VSH_CSM_OK;
 }
 
+/* Row 2 of a perspective world -> clip matrix for depth range (n, f): a
+ * times the view's z row plus b, where the w row is minus the view's z row. */
+static void depth_row(double m[16], double a, double b) {
+  int c;
+  for (c = 0; c < 4; ++c) m[2 * 4 + c] = -a * m[3 * 4 + c] + (c == 3 ? b : 0.0);
+}
+
+vsh_csm_status vsh_csm_sample_widen(vsh_csm_tile *tile, const vsh_csm_sample_frame *f) {
+  double r, n, fa, a, b;
+  if (!tile || !f) return VSH_CSM_BAD_INPUT;
+  if (!f->sampled || !f->positional || !tile->view.perspective || tile->view.texel_world <= 0.0)
+    return VSH_CSM_OK;
+  r = sqrt(f->u[0] * f->u[0] + f->u[1] * f->u[1] + f->u[2] * f->u[2]);
+  n = tile->view.near_far[0] - r;
+  if (n < 0.25 * tile->view.near_far[0]) n = 0.25 * tile->view.near_far[0];
+  fa = tile->view.near_far[1] + r;
+  if (!(fa > n) || !(n > 0.0) || !isfinite(fa)) return VSH_CSM_OK;
+  a = -(fa + n) / (fa - n);
+  b = -2.0 * fa * n / (fa - n);
+  depth_row(tile->view.world_to_clip, a, b);
+  depth_row(tile->absolute, a, b);
+  tile->view.near_far[0] = n;
+  tile->view.near_far[1] = fa;
+  tile->view.depth_extent = fa - n;
+  return VSH_CSM_OK;
+}
+
 int vsh_csm_sampled_resolution(int requested, int tiles, long long budget) {
   double fit;
   int r;

@@ -63,6 +63,17 @@ vsh_csm_status vsh_csm_sample_shear(const vsh_shadow_view *view, const vsh_csm_s
 vsh_csm_status vsh_csm_sample_tile(const vsh_csm_tile *base, const vsh_csm_sample_frame *f,
                                    int i, vsh_csm_tile *out);
 
+/* A perspective map of a sampled positional light widened in depth by the
+ * light's radius r (near n -> max(n - r, n / 4), far f -> f + r; the
+ * projection's depth rows, depth terms and near_far rewritten): a sample's
+ * eye is up to r from the centre's, and a map fitted from the centre would
+ * clip casters nearer than its near plane and receivers past its far plane
+ * (read as lit). Applied to the planned map before its samples are derived
+ * (the lookup reads the planned map's depth terms). No-op for an
+ * orthographic or empty map or a frame that is not sampled; BAD_INPUT for
+ * NULLs. */
+vsh_csm_status vsh_csm_sample_widen(vsh_csm_tile *tile, const vsh_csm_sample_frame *f);
+
 /* The map resolution for an atlas of `tiles` maps within `budget` bytes (4
  * a texel): min(requested, floor(sqrt(budget / (4 tiles)))) rounded down
  * to a multiple of 16, at least 16. N maps per light otherwise need N times
