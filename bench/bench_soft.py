@@ -45,7 +45,8 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # traces `samples` rays per pixel towards the light's disk; csm filters by
 # PCSS (its default for lights with a size: 16 blocker and 24 filter taps;
 # soft=0 is the hard shadow of the light's centre, and a 32 / 64-tap
-# variant); volume averages soft_samples counts of shadow volumes from
+# variant; soft=2 averages soft_samples hard maps from points on the
+# light); volume averages soft_samples counts of shadow volumes from
 # points on the light (1: the hard shadow of the light's centre); auto as it
 # is by default.
 CONFIGS = ([("planar", [("soft_samples", n)]) for n in (1, 4, 16, 64)] +
@@ -53,6 +54,7 @@ CONFIGS = ([("planar", [("soft_samples", n)]) for n in (1, 4, 16, 64)] +
            [("csm", [("soft", 0)]), ("csm", []),
             ("csm", [("pcss_blocker_taps", 32), ("pcss_filter_taps", 64)])] +
            [("volume", [("soft_samples", n)]) for n in (1, 4, 16, 64)] +
+           [("csm", [("soft", 2), ("soft_samples", n)]) for n in (4, 16, 64)] +
            [("auto", [])])
 PEERS = ("cycles", "eevee", "eevee-best")
 

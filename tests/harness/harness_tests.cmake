@@ -136,3 +136,8 @@ add_test(NAME harness.variants
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_variants.py render --bin ${VTKSHADOW_BIN}
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/variants)
 set_tests_properties(harness.variants PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+add_test(NAME harness.soft_csm_sampled
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_csm_sampled.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/soft_csm_sampled)
+set_tests_properties(harness.soft_csm_sampled PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)

@@ -38,11 +38,15 @@ def scene_with(out, name, size):
 
 
 def render(bindir, scene, technique, setting, k, stem):
-    """vtkshadow-render of light k with --set SETTING: (visibility, mask,
-    image) paths STEM_vis.png, STEM_mask.png, STEM.png."""
+    """vtkshadow-render of light k with --set SETTING (a string, or a list of
+    them): (visibility, mask, image) paths STEM_vis.png, STEM_mask.png,
+    STEM.png."""
     vis, mask, image = stem + "_vis.png", stem + "_mask.png", stem + ".png"
-    run([os.path.join(bindir, "vtkshadow-render"), scene, "--technique", technique, "--set",
-         setting, "--light", str(k), "--size", SIZE, "--visibility", vis, "--mask", mask,
+    sets = []
+    for one in ([setting] if isinstance(setting, str) else setting):
+        sets += ["--set", one]
+    run([os.path.join(bindir, "vtkshadow-render"), scene, "--technique", technique] + sets +
+        ["--light", str(k), "--size", SIZE, "--visibility", vis, "--mask", mask,
          "--image", image, "--quiet"])
     return vis, mask, image
 
@@ -62,25 +66,26 @@ def same_bytes(a, b):
         return fa.read() == fb.read()
 
 
-def check_hard(bindir, out, technique, hard_mae_max):
+def check_hard(bindir, out, technique, hard_mae_max, extra=()):
     """The hard case of a sampled technique (setting soft_samples): radius /
     angle 0 (with soft_samples 16) renders the same bytes as the sized scene
     with soft_samples=1 (both the hard path), and a size of 1e-6 with N = 16
     equals the exact hard shadow (mean error within hard_mae_max over the
-    plane). Failures go to `failures`."""
+    plane). `extra`: more settings for every render (csm: soft=2).
+    Failures go to `failures`."""
     hard = scene_with(out, "hard", 0)
     soft = scene_with(out, "soft", None)
     tiny = scene_with(out, "tiny", 1e-6)
     for k in range(len(SCENE["lights"])):
-        _, _, a = render(bindir, hard, technique, "soft_samples=16", k,
+        _, _, a = render(bindir, hard, technique, ["soft_samples=16"] + list(extra), k,
                          os.path.join(out, "hard_light%d" % k))
-        _, _, b = render(bindir, soft, technique, "soft_samples=1", k,
+        _, _, b = render(bindir, soft, technique, ["soft_samples=1"] + list(extra), k,
                          os.path.join(out, "n1_light%d" % k))
         same = os.path.exists(a) and os.path.exists(b) and same_bytes(a, b)
         print("light %d: radius 0 and soft_samples=1 render the same bytes: %s" % (k, same))
         if not same:
             failures.append("light %d: soft_samples=1 is not the hard path" % k)
-        vis, mask, _ = render(bindir, tiny, technique, "soft_samples=16", k,
+        vis, mask, _ = render(bindir, tiny, technique, ["soft_samples=16"] + list(extra), k,
                               os.path.join(out, "tiny_light%d" % k))
         m = exact(bindir, hard, k, vis, mask)
         print("size 1e-6, N=16, light %d against the exact hard shadow: %s" % (k, m))

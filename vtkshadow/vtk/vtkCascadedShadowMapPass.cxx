@@ -102,6 +102,8 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
   , PCSSFilterTaps(24)
   , PCSSMaxTexels(48.0)
   , UsedPCSS(false)
+  , SoftSamples(16)
+  , UsedSampled(false)
   , UsedScreenResolve(false)
   , UsedResolution(0)
   , NumberOfMapsRendered(0)
@@ -145,6 +147,7 @@ void vtkCascadedShadowMapPass::CopySettings(vtkCascadedShadowMapPass* o)
   this->PCSSBlockerTaps = o->PCSSBlockerTaps;
   this->PCSSFilterTaps = o->PCSSFilterTaps;
   this->PCSSMaxTexels = o->PCSSMaxTexels;
+  this->SoftSamples = o->SoftSamples;
   this->CastHeadlightShadows = o->CastHeadlightShadows;
   this->SkippedLights = o->SkippedLights;
   this->Modified();
@@ -309,6 +312,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   Frame frame;
   this->GatherScene(s, frame);
   this->PlanMaps(frame);
+  this->PlanSamples(frame);
   this->Impl->Screen = this->ChooseScreenResolve(frame);
   ++this->Impl->FramesSinceMeasure;
   this->UsedScreenResolve = this->Impl->Screen;
@@ -316,6 +320,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   const int resolution = this->AllocateAtlas(window);
   std::vector<int> bake;
   this->SelectReusable(frame, resolution, bake);
+  this->BuildSampleTiles(bake);
   vtkshadow::MarkStage("csm.plan");
   this->BakeMaps(window, frame, bake, resolution);
   if (this->WorldKey == 0)
@@ -465,6 +470,9 @@ void vtkCascadedShadowMapPass::GatherLights(vtkRenderer* renderer, Frame& frame)
         vsh_pcss_light_term(plain.positional, GetLightRadius(light), GetLightAngle(light));
       impl.SoftTerm[l] = (this->Soft == SOFT_PCSS && plain.casts) ? static_cast<float>(term) : 0.0f;
       impl.PCSS = impl.PCSS || impl.SoftTerm[l] > 0.0f;
+      impl.SampleSize[l] = (this->Soft == SOFT_SAMPLED && term > 0.0)
+        ? static_cast<float>(plain.positional ? GetLightRadius(light) : GetLightAngle(light))
+        : 0.0f;
     }
     ++l;
     frame.Lights.push_back(plain);
@@ -472,6 +480,7 @@ void vtkCascadedShadowMapPass::GatherLights(vtkRenderer* renderer, Frame& frame)
   for (; l < MaxLights; ++l)
   {
     impl.SoftTerm[l] = 0.0f;
+    impl.SampleSize[l] = 0.0f;
   }
   this->UsedPCSS = impl.PCSS;
   frame.Scene.lights = frame.Lights.data();
@@ -561,7 +570,8 @@ void vtkCascadedShadowMapPass::UpdateShaderState(const Frame& frame)
   {
     // The tiles are literals in the lookup code (CascadedLookupCode).
     signature += std::to_string(plan.tiles.kind[l]) + "," + std::to_string(plan.tiles.first[l]) +
-      "," + std::to_string(plan.tiles.count[l]) + ";";
+      "," + std::to_string(plan.tiles.count[l]) +
+      (impl.Sampled ? "," + std::to_string(impl.SampleFirst[l]) : std::string()) + ";";
   }
   if (signature != impl.ShaderSignature)
   {
@@ -581,7 +591,8 @@ int vtkCascadedShadowMapPass::AllocateAtlas(vtkOpenGLRenderWindow* window)
   GLint maxSize = 4096;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
   vsh_csm_atlas_layout layout;
-  vsh_csm_atlas_layout_for(tiles, impl.Plan.resolution.resolution, maxSize, &layout);
+  vsh_csm_atlas_layout_for(
+    tiles + impl.SampleSlots, impl.Plan.resolution.resolution, maxSize, &layout);
   if (layout.clamped)
   {
     vtkWarningMacro("shadow map resolution "
@@ -667,7 +678,8 @@ double vtkCascadedShadowMapPass::LookupReachTexels() const
     (this->Filter == PCF          ? 0.5 * this->PCFSize + 1.0
         : this->Filter == POISSON ? this->PoissonRadius + 1.0
                                   : 1.0) +
-    (this->Impl->PCSS ? this->PCSSMaxTexels + 1.0 : 0.0);
+    (this->Impl->PCSS ? this->PCSSMaxTexels + 1.0 : 0.0) +
+    (this->Impl->Sampled ? this->Impl->ShearTexels + 1.0 : 0.0);
 }
 
 //------------------------------------------------------------------------------
@@ -724,7 +736,7 @@ void vtkCascadedShadowMapPass::BakeMaps(
       state->vtkglClearDepth(1.0);
       state->vtkglClear(GL_DEPTH_BUFFER_BIT);
       ++this->NumberOfMapsRendered;
-      this->DrawCasters(program, frame, impl.Plan.tiles.tiles[t]);
+      this->DrawCasters(program, frame, this->BakeTile(t));
       // Each rank drew its own casters: the nearest depth of all is the map.
       vtkshadow::AllReduceDepthRegion(
         impl.Controller, impl.Held.Atlas, x, y, resolution, resolution, impl.ReduceScratch);
@@ -806,8 +818,8 @@ bool vtkCascadedShadowMapPass::PreReplaceShaderValues(
   const std::string code = this->LookupDefines() + vtkShadowMapLightFS +
     "void vshShadowPrepare(vec3 posVC, vec3 normalVC)\n{\n"
     "  float depth = -posVC.z;\n  float fade = vshShadowFade(depth);\n" +
-    vtkshadow::CascadedLookupCode(
-      impl.Plan.tiles, 0, MaxLights, "vshShadowFactor[%d]", 0.0f, "1.0") +
+    vtkshadow::CascadedLookupCode(impl.Plan.tiles, 0, MaxLights, "vshShadowFactor[%d]", 0.0f, "1.0",
+      impl.Sampled ? impl.SampleFirst : nullptr) +
     "}\n";
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::Light::Dec", std::string("//VTK::Light::Dec\n") + code, false);
@@ -951,6 +963,7 @@ void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
     program->SetUniformi("vshShadowAtlasRaw", impl.RawUnit);
     program->SetUniform2fv("vshTileSoft", tiles, soft.data());
   }
+  this->SetSampledUniforms(program);
 }
 
 //------------------------------------------------------------------------------
@@ -965,6 +978,10 @@ std::string vtkCascadedShadowMapPass::LookupDefines() const
       std::to_string(this->PCSSBlockerTaps) + "\n#define VSH_PCSS_FILTER_TAPS " +
       std::to_string(this->PCSSFilterTaps) + "\n#define VSH_PCSS_MAX_TEXELS " +
       std::to_string(this->PCSSMaxTexels) + "\n";
+  }
+  if (this->Impl->Sampled)
+  {
+    out += "#define VSH_SAMPLED 1\n#define VSH_SAMPLES " + std::to_string(this->SoftSamples) + "\n";
   }
   return out;
 }
@@ -1075,6 +1092,8 @@ void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PCSSFilterTaps: " << this->PCSSFilterTaps << "\n";
   os << indent << "PCSSMaxTexels: " << this->PCSSMaxTexels << "\n";
   os << indent << "UsedPCSS: " << this->UsedPCSS << "\n";
+  os << indent << "SoftSamples: " << this->SoftSamples << "\n";
+  os << indent << "UsedSampled: " << this->UsedSampled << "\n";
   os << indent << "UsedScreenResolve: " << this->UsedScreenResolve << "\n";
   os << indent << "UsedResolution: " << this->UsedResolution << "\n";
   os << indent << "NumberOfMapsRendered: " << this->NumberOfMapsRendered << "\n";
@@ -1174,9 +1193,13 @@ bool vtkCascadedShadowMapPass::SetOption(const char* key, double v)
   {
     this->SetTileCull(v != 0);
   }
-  else if (k == "soft" && integral(SOFT_OFF, SOFT_PCSS))
+  else if (k == "soft" && integral(SOFT_OFF, SOFT_SAMPLED))
   {
     this->SetSoft(static_cast<int>(v));
+  }
+  else if (k == "soft_samples" && integral(1, 64))
+  {
+    this->SetSoftSamples(static_cast<int>(v));
   }
   else if (k == "pcss_blocker_taps" && integral(1, 64))
   {
@@ -1211,8 +1234,12 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
       << (this->UsedScreenResolve ? "screen" : "forward")
       << "\", \"overdraw\": " << this->Impl->Overdraw
       << ", \"tiles_culled\": " << this->NumberOfTilesCulled << ", \"soft\": \""
-      << (this->UsedPCSS ? "pcss" : "hard")
-      << "\", \"pcss_blocker_taps\": " << (this->UsedPCSS ? this->PCSSBlockerTaps : 0)
+      << (this->UsedPCSS         ? "pcss"
+             : this->UsedSampled ? "sampled"
+                                 : "hard")
+      << "\", \"soft_samples\": " << (this->UsedSampled ? this->SoftSamples : 0)
+      << ", \"sample_maps\": " << this->Impl->SampleSlots
+      << ", \"pcss_blocker_taps\": " << (this->UsedPCSS ? this->PCSSBlockerTaps : 0)
       << ", \"pcss_filter_taps\": " << (this->UsedPCSS ? this->PCSSFilterTaps : 0)
       << ", \"pcss_max_texels\": " << this->PCSSMaxTexels << ", \"lights\": [";
   const int lights = renderer ? renderer->GetLights()->GetNumberOfItems() : 0;

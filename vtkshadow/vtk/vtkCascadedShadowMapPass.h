@@ -200,7 +200,8 @@ public:
   enum SoftModes
   {
     SOFT_OFF = 0,
-    SOFT_PCSS = 1
+    SOFT_PCSS = 1,
+    SOFT_SAMPLED = 2
   };
 
   /**
@@ -213,10 +214,15 @@ public:
    * disk, the kernel at most PCSSMaxTexels texels in radius and inside the
    * map's tile. Lights without a size keep the hard lookup, and a frame
    * without any light with a size compiles the same shader as SOFT_OFF.
+   * SOFT_SAMPLED: the lecture's sampled area light: SoftSamples hard maps
+   * per map of each casting light with a size, one from each of SoftSamples
+   * stratified points on the light (vsh_csm_sampled.h), and the lookup
+   * averages their hard comparisons. SoftSamples 1 or a light without a
+   * size is the hard path, byte for byte.
    * SOFT_OFF: the hard shadow of every light's centre.
    * (docs/soft-shadows.md)
    */
-  vtkSetClampMacro(Soft, int, SOFT_OFF, SOFT_PCSS);
+  vtkSetClampMacro(Soft, int, SOFT_OFF, SOFT_SAMPLED);
   vtkGetMacro(Soft, int);
   vtkSetClampMacro(PCSSBlockerTaps, int, 1, 64);
   vtkGetMacro(PCSSBlockerTaps, int);
@@ -226,6 +232,11 @@ public:
   vtkGetMacro(PCSSMaxTexels, double);
   /** Whether the last frame compiled PCSS in (a casting light had a size). */
   vtkGetMacro(UsedPCSS, bool);
+  /** SOFT_SAMPLED: maps (points on the light) per map of a light with a size, 1..64. */
+  vtkSetClampMacro(SoftSamples, int, 1, 64);
+  vtkGetMacro(SoftSamples, int);
+  /** Whether the last frame sampled a light (SOFT_SAMPLED with a sized light, N > 1). */
+  vtkGetMacro(UsedSampled, bool);
 
   /**
    * Tint each cascade with its own colour (debug view).
@@ -258,8 +269,8 @@ public:
    * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
    * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
    * fade, debug_cascades, resolve (0 forward, 1 screen, 2 choose),
-   * tap_texel_px, tile_cull (0/1), soft (0 off, 1 PCSS), pcss_blocker_taps, pcss_filter_taps,
-   * pcss_max_texels, and the base's cast_headlight.
+   * tap_texel_px, tile_cull (0/1), soft (0 off, 1 PCSS, 2 sampled), soft_samples,
+   * pcss_blocker_taps, pcss_filter_taps, pcss_max_texels, and the base's cast_headlight.
    */
   bool SetOption(const char* key, double value) override;
 
@@ -332,6 +343,8 @@ protected:
   int PCSSFilterTaps;
   double PCSSMaxTexels;
   bool UsedPCSS;
+  int SoftSamples;
+  bool UsedSampled;
   bool UsedScreenResolve;
   int UsedResolution;
   int NumberOfMapsRendered;
@@ -373,6 +386,14 @@ private:
   bool DrawResolveTiles(vtkOpenGLRenderWindow* window, int layer, const float ndcToView[16]);
   void SetResolveUniforms(vtkShaderProgram* program, const float ndcToView[16]);
   void SetLookupUniforms(vtkShaderProgram* program);
+  // SOFT_SAMPLED (vtkCascadedShadowMapSampled.cxx): each sized light's
+  // sample frame and atlas slots (capping the resolution to the memory
+  // budget), the sample maps derived from this frame's maps and the bake
+  // list that renders them, the uniforms the sampled lookups read.
+  void PlanSamples(const Frame& frame);
+  void BuildSampleTiles(std::vector<int>& bake);
+  void SetSampledUniforms(vtkShaderProgram* program);
+  const vsh_csm_tile& BakeTile(int t) const;
   // The #defines of vtkShadowMapLightFS (filter, PCSS), forward and resolve.
   std::string LookupDefines() const;
   // PCSS's blocker search reads raw depths: the atlas bound a second time

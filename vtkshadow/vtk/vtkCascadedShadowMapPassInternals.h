@@ -16,6 +16,7 @@
 
 #include "vsh_csm.h"
 #include "vsh_csm_plan.h"
+#include "vsh_csm_sampled.h"
 
 #include <map>
 #include <memory>
@@ -61,6 +62,9 @@ struct CascadedHeldMaps
   // after its mirrored draw, which moves the matrices' MTime) keeps the maps.
   unsigned long long CasterKey = 0;
   vtkTimeStamp CasterStamp;
+  // SOFT_SAMPLED: what the sample slots hold (the lights' sample frames and
+  // slots); when it changes every slot is baked again.
+  unsigned long long SampleKey = 0;
 
   long long Bytes() const { return 4LL * this->AtlasSize[0] * this->AtlasSize[1]; }
 };
@@ -75,7 +79,8 @@ struct CascadedHeldMaps
  * is not lit by it).
  */
 std::string CascadedLookupCode(const vsh_csm_tile_plan& plan, int first, int count,
-  const std::string& target, float margin, const std::string& away);
+  const std::string& target, float margin, const std::string& away,
+  const int* sampleFirst = nullptr);
 
 /**
  * The resolve's statements for lights first..first+3 over a kind of screen
@@ -83,7 +88,8 @@ std::string CascadedLookupCode(const vsh_csm_tile_plan& plan, int first, int cou
  * lit without a lookup, one cascade's lookup with its map index compiled
  * in, or the per-pixel code of CascadedLookupCode.
  */
-std::string CascadedTileLookupCode(const vsh_csm_tile_plan& plan, int first, const int codes[4]);
+std::string CascadedTileLookupCode(
+  const vsh_csm_tile_plan& plan, int first, const int codes[4], const int* sampleFirst = nullptr);
 }
 
 // One frame's inputs, gathered from VTK: the plain scene the core plans
@@ -121,6 +127,22 @@ struct vtkCascadedShadowMapPass::Internals
   // in, and the raw-depth binding of the atlas (sampler object, unit).
   float SoftTerm[VSH_CSM_MAX_LIGHTS] = { 0 };
   bool PCSS = false;
+  // SOFT_SAMPLED: per light its size (radius or angular diameter, 0 hard),
+  // sample frame, first atlas slot of its sample maps (-1: hard; sample k
+  // of its map j is slot SampleFirst + k count + j), the derived sample
+  // maps (slots from Plan.tiles.tile_count on), the disk samples, and the
+  // per-sample terms the shader rebuilds each sample's matrix from.
+  float SampleSize[VSH_CSM_MAX_LIGHTS] = { 0 };
+  vsh_csm_sample_frame SampleFrame[VSH_CSM_MAX_LIGHTS];
+  int SampleFirst[VSH_CSM_MAX_LIGHTS];
+  int SampleSlots = 0;
+  bool Sampled = false;
+  std::vector<vsh_csm_tile> SampleTiles;
+  float SampleDisk[VSH_CSM_MAX_SAMPLES][2];
+  float SampleU[VSH_CSM_MAX_LIGHTS][3];
+  float SampleV[VSH_CSM_MAX_LIGHTS][3];
+  float TileShear[VSH_CSM_MAX_TILES][4];
+  double ShearTexels = 0.0; // how far a sample map's lookups move from the base map's
   unsigned int RawSampler = 0;
   int RawUnit = -1;
   float FadeStart = 0.0f;

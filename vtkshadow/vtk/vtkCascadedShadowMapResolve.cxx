@@ -28,7 +28,7 @@
 namespace vtkshadow
 {
 std::string CascadedLookupCode(const vsh_csm_tile_plan& plan, int first, int count,
-  const std::string& target, float margin, const std::string& away)
+  const std::string& target, float margin, const std::string& away, const int* sampleFirst)
 {
   std::string code;
   for (int l = first; l < first + count; ++l)
@@ -46,7 +46,23 @@ std::string CascadedLookupCode(const vsh_csm_tile_plan& plan, int first, int cou
     // per draw instead of gathering per pixel.
     const std::string tile = l < plan.light_count ? std::to_string(plan.first[l]) : "0";
     std::string lookup;
-    if (kind == VSH_CSM_CASCADES)
+    // SOFT_SAMPLED: the light's sample maps from atlas slot `slot` on.
+    const int slot = sampleFirst && l < VSH_CSM_MAX_LIGHTS ? sampleFirst[l] : -1;
+    const std::string slots = std::to_string(slot);
+    if (slot >= 0 && kind == VSH_CSM_CASCADES)
+    {
+      lookup = "vshShadowCascadesSampled(" + n + ", " + tile + ", " +
+        std::to_string(plan.count[l]) + ", " + slots + ", depth, posVC, normalVC)";
+    }
+    else if (slot >= 0 && kind == VSH_CSM_SPOT)
+    {
+      lookup = "vshShadowSampled(" + n + ", " + tile + ", " + slots + ", 1, posVC, normalVC, true)";
+    }
+    else if (slot >= 0 && kind == VSH_CSM_POINT)
+    {
+      lookup = "vshShadowPointSampled(" + n + ", " + tile + ", " + slots + ", posVC, normalVC)";
+    }
+    else if (kind == VSH_CSM_CASCADES)
     {
       lookup = "vshShadowCascades(" + tile + ", " + std::to_string(plan.count[l]) +
         ", depth, posVC, normalVC)";
@@ -198,7 +214,8 @@ void vtkCascadedShadowMapPass::UpdateResolveSources()
     impl.ResolveSource[layer] = head +
       "vec4 vshResolveLights(vec3 posVC, vec3 normalVC, float depth)\n{\n"
       "  float fade = vshShadowFade(depth);\n  vec4 vis = vec4(1.0);\n" +
-      vtkshadow::CascadedLookupCode(impl.Plan.tiles, 4 * layer, 4, "vis[%d]", -2.0f, "1.0") +
+      vtkshadow::CascadedLookupCode(impl.Plan.tiles, 4 * layer, 4, "vis[%d]", -2.0f, "1.0",
+        impl.Sampled ? impl.SampleFirst : nullptr) +
       "  return vis;\n}\n" + vtkShadowMapResolveFS;
   }
 }

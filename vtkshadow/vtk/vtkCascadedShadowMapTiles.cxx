@@ -39,7 +39,8 @@ constexpr size_t MaxGroups = 12;
 
 namespace vtkshadow
 {
-std::string CascadedTileLookupCode(const vsh_csm_tile_plan& plan, int first, const int codes[4])
+std::string CascadedTileLookupCode(
+  const vsh_csm_tile_plan& plan, int first, const int codes[4], const int* sampleFirst)
 {
   std::string code;
   for (int i = 0; i < 4; ++i)
@@ -51,9 +52,11 @@ std::string CascadedTileLookupCode(const vsh_csm_tile_plan& plan, int first, con
     {
       code += "  " + target + " = 1.0;\n";
     }
-    else if (codes[i] == VSH_CSM_SCREEN_ANY || kind != VSH_CSM_CASCADES)
+    else if (codes[i] == VSH_CSM_SCREEN_ANY || kind != VSH_CSM_CASCADES ||
+      (sampleFirst && l < VSH_CSM_MAX_LIGHTS && sampleFirst[l] >= 0))
     {
-      code += CascadedLookupCode(plan, l, 1, target, -2.0f, "1.0");
+      // A sampled light always takes the per-pixel code (its samples).
+      code += CascadedLookupCode(plan, l, 1, target, -2.0f, "1.0", sampleFirst);
     }
     else
     {
@@ -105,7 +108,7 @@ void vtkCascadedShadowMapPass::PlanScreenTiles(const Frame& frame, const double 
   p.resolution = std::max(this->UsedResolution, 1);
   // PCSS's blocker search reaches up to its maximum kernel and compares
   // with a receiver-plane slope: only the depth decisions then.
-  p.cull_casters = impl.PCSS ? 0 : 1;
+  p.cull_casters = impl.PCSS || impl.Sampled ? 0 : 1;
   const int lights = std::min(impl.Plan.tiles.light_count, VSH_CSM_MAX_LIGHTS);
   std::vector<std::map<std::string, std::vector<int>>> groups(2);
   std::vector<int> codes(static_cast<size_t>(cols) * rows * VSH_CSM_MAX_LIGHTS, 0);
@@ -171,8 +174,9 @@ void vtkCascadedShadowMapPass::PlanScreenTiles(const Frame& frame, const double 
       group.Source = head +
         "vec4 vshResolveLights(vec3 posVC, vec3 normalVC, float depth)\n{\n"
         "  float fade = vshShadowFade(depth);\n  vec4 vis = vec4(1.0);\n" +
-        vtkshadow::CascadedTileLookupCode(impl.Plan.tiles, 4 * layer, out) + "  return vis;\n}\n" +
-        vtkShadowMapResolveFS;
+        vtkshadow::CascadedTileLookupCode(
+          impl.Plan.tiles, 4 * layer, out, impl.Sampled ? impl.SampleFirst : nullptr) +
+        "  return vis;\n}\n" + vtkShadowMapResolveFS;
       for (int t : entry.second)
       {
         const float x0 = static_cast<float>((t % cols) * TilePixels) / w * 2.0f - 1.0f;

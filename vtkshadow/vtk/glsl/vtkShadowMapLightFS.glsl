@@ -34,6 +34,14 @@ uniform vec2 vshTileSoft[24];        // (size term, depth scale) per map: x tan(
                                      // (directional) or radius (positional), 0 hard; y the
                                      // depth range (orthographic, world) or near distance
 #endif
+#ifdef VSH_SAMPLED
+uniform vec2 vshSampleDisk[VSH_SAMPLES]; // the stratified points on the unit disk
+uniform vec3 vshSampleU[8];          // positional: radius x the disk's axes, view coordinates
+uniform vec3 vshSampleV[8];
+uniform vec4 vshTileShear[24];       // directional: clip shear per unit of disk sample
+uniform int vshAtlasColumns;         // the atlas grid (sample slots have no uniforms)
+uniform vec2 vshAtlasTile;           // one tile's size in texture coordinates
+#endif
 float vshShadowFactor[8];
 int vshShadowCascadeShown = -1;
 
@@ -290,6 +298,115 @@ float vshShadowPoint(int l, int first, vec3 posVC, vec3 normalVC)
                                         : (d.z >= 0.0 ? 4 : 5);
   return vshShadowSample(first + face, posVC, normalVC, true);
 }
+
+#ifdef VSH_SAMPLED
+// SOFT_SAMPLED: the hard comparison of one sample map, from the uniforms of
+// its base map `tile` (a literal where the caller has one) and the sample's
+// eye offset `offsetVC` (spot, point: the map moved to the point on the
+// light) or clip shear (directional: x, y -= shear clip z), in atlas slot
+// `slot`. The same bias as the hard lookup.
+float vshSampleMap(int tile, int slot, vec3 offsetVC, vec2 shear, vec3 posVC, vec3 normalVC,
+  bool perspective)
+{
+  vec2 bias = vshTileBias[tile];
+  vec3 q = posVC - offsetVC;
+  float reach = perspective ? max((vshTileMatrix[tile] * vec4(q, 1.0)).w, 0.0) : 1.0;
+  vec4 clip = vshTileMatrix[tile] * vec4(q + normalVC * (bias.y * reach), 1.0);
+  clip.xy -= shear * clip.z;
+  if (clip.w <= 0.0)
+  {
+    return 1.0;
+  }
+  vec3 ndc = clip.xyz / clip.w;
+  if (abs(ndc.x) > 1.0 || abs(ndc.y) > 1.0 || ndc.z > 1.0)
+  {
+    return 1.0;
+  }
+  int row = slot / vshAtlasColumns;
+  vec2 origin = vec2(float(slot - row * vshAtlasColumns), float(row)) * vshAtlasTile;
+  vec2 uv = origin + (ndc.xy * 0.5 + 0.5) * vshAtlasTile;
+  vec2 lo = origin + 0.5 * vshAtlasTexel;
+  vec2 hi = origin + vshAtlasTile - 0.5 * vshAtlasTexel;
+  float ref;
+  if (perspective)
+  {
+    vec2 pz = vshTileDepth[tile];
+    ref = clamp((-pz.x + pz.y / (clip.w * (1.0 - bias.x))) * 0.5 + 0.5, 0.0, 1.0);
+  }
+  else
+  {
+    ref = clamp(ndc.z * 0.5 + 0.5 - bias.x, 0.0, 1.0);
+  }
+  return texture(vshShadowAtlas, vec3(clamp(uv, lo, hi), ref));
+}
+
+// The mean of light l's VSH_SAMPLES sample maps of map `tile`: sample k in
+// slot slot0 + k stride.
+float vshShadowSampled(int l, int tile, int slot0, int stride, vec3 posVC, vec3 normalVC,
+  bool perspective)
+{
+  vec4 s = vshTileShear[tile];
+  float sum = 0.0;
+  for (int k = 0; k < VSH_SAMPLES; ++k)
+  {
+    vec2 q = vshSampleDisk[k];
+    sum += vshSampleMap(tile, slot0 + k * stride, q.x * vshSampleU[l] + q.y * vshSampleV[l],
+      q.x * s.xy + q.y * s.zw, posVC, normalVC, perspective);
+  }
+  return sum / float(VSH_SAMPLES);
+}
+
+// vshShadowCascades with each cascade's samples (cascade c of sample k in
+// slot slot0 + k count + c).
+float vshShadowCascadesSampled(
+  int l, int first, int count, int slot0, float depth, vec3 posVC, vec3 normalVC)
+{
+  if (depth > vshTileFar[first + count - 1])
+  {
+    return 1.0;
+  }
+  int c = 0;
+  while (c < count - 1 && depth > vshTileFar[first + c])
+  {
+    ++c;
+  }
+  if (vshShadowCascadeShown < 0)
+  {
+    vshShadowCascadeShown = c;
+  }
+  float lit = vshShadowSampled(l, first + c, slot0 + c, count, posVC, normalVC, false);
+  if (c < count - 1 && vshBlendBand > 0.0)
+  {
+    float nearD = c == 0 ? 0.0 : vshTileFar[first + c - 1];
+    float farD = vshTileFar[first + c];
+    float w = smoothstep(farD - vshBlendBand * (farD - nearD), farD, depth);
+    if (w > 0.0)
+    {
+      lit = mix(lit,
+        vshShadowSampled(l, first + c + 1, slot0 + c + 1, count, posVC, normalVC, false), w);
+    }
+  }
+  return lit;
+}
+
+// A point light's samples: each sample point picks its own cube face.
+float vshShadowPointSampled(int l, int first, int slot0, vec3 posVC, vec3 normalVC)
+{
+  float sum = 0.0;
+  for (int k = 0; k < VSH_SAMPLES; ++k)
+  {
+    vec2 q = vshSampleDisk[k];
+    vec3 o = q.x * vshSampleU[l] + q.y * vshSampleV[l];
+    vec3 d = vshViewToWorld * (posVC - vshShadowLightVC[l] - o);
+    vec3 a = abs(d);
+    int face = (a.x >= a.y && a.x >= a.z) ? (d.x >= 0.0 ? 0 : 1)
+      : (a.y >= a.z)                      ? (d.y >= 0.0 ? 2 : 3)
+                                          : (d.z >= 0.0 ? 4 : 5);
+    sum += vshSampleMap(first + face, slot0 + k * 6 + face, o, vec2(0.0), posVC, normalVC, true);
+  }
+  return sum / float(VSH_SAMPLES);
+}
+#endif
 
 float vshShadowFade(float depth)
 {
