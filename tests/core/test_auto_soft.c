@@ -103,6 +103,12 @@ static vsh_auto_soft_input frame(double target)
   in.rt_frame.first = 0;
   in.rt_frame.penumbra = 0.25;
   in.rt_adaptive = 1;
+  /* volume off unless a test turns it on; its inputs a small scene's. */
+  in.volume_available = 0;
+  in.volume.pixels = in.pixels;
+  in.volume.scene_triangles = 1000.0;
+  in.volume.silhouette_edges = 100.0;
+  in.volume.fill_px = 0.2 * in.pixels;
   return in;
 }
 
@@ -192,11 +198,136 @@ static void test_choose(void)
   CHECK(vsh_auto_soft_choose(&in, &c) >= 0);
 }
 
+static void test_volume_model(void)
+{
+  /* The fit's points (glyphs-soft light 0 against Cycles): 16, 32, 64. */
+  CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, 16), 0.0566, 0.0005);
+  CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, 32), 0.0348, 0.0010);
+  CHECK_NEAR(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, 64), 0.0224, 0.0005);
+  /* Closed form: 0.4235 / N^0.75 + 0.0037 <= 0.03 from N = 41 on, <= 0.02
+   * from N = 77 on. */
+  CHECK(vsh_auto_soft_samples_for(VSH_AUTO_SOFT_VOLUME, 0.03, 4, 255) == 41);
+  CHECK(vsh_auto_soft_samples_for(VSH_AUTO_SOFT_VOLUME, 0.02, 4, 255) == 77);
+  for (int n = 1; n < 255; ++n) {
+    CHECK(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, n + 1) <
+          vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, n));
+  }
+  CHECK(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, 0) ==
+        vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, 1));
+  CHECK(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, 1 << 30) > 0.0);
+  /* The fewest N meeting a target: N meets it, N - 1 does not. */
+  const double targets[] = {0.05, 0.03, 0.02, 0.015};
+  for (int i = 0; i < 4; ++i) {
+    const int n = vsh_auto_soft_samples_for(VSH_AUTO_SOFT_VOLUME, targets[i], 4, 255);
+    if (vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, 255) <= targets[i]) {
+      CHECK(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, n) <= targets[i]);
+      CHECK(n == 4 || vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, n - 1) > targets[i]);
+    } else {
+      CHECK(n == 255);
+    }
+  }
+}
+
+static void test_volume_cost(void)
+{
+  vsh_volume_ms_input v = {160.0 * 120.0, 1000.0, 100.0, 4000.0};
+  /* N = 1 (and N < 1) is the hard model. */
+  CHECK_NEAR(vsh_auto_soft_volume_ms(&v, 1), vsh_volume_cost_ms(&v), 1e-12);
+  CHECK(vsh_auto_soft_volume_ms(&v, 0) == vsh_auto_soft_volume_ms(&v, 1));
+  CHECK(vsh_auto_soft_volume_ms(&v, -7) == vsh_auto_soft_volume_ms(&v, 1));
+  /* Linear in N: each further count pays edges, fill and the screen, not
+   * the depth pre-pass. */
+  const double per = VSH_VOLUME_MS_PER_EDGE * 100.0 + VSH_VOLUME_MS_PER_FILL_PX * 4000.0 +
+                     VSH_VOLUME_MS_PER_PIXEL * v.pixels;
+  CHECK_NEAR(vsh_auto_soft_volume_ms(&v, 16) - vsh_auto_soft_volume_ms(&v, 1), 15.0 * per, 1e-9);
+  vsh_volume_ms_input more = v;
+  more.scene_triangles *= 10.0;
+  CHECK_NEAR(vsh_auto_soft_volume_ms(&more, 64) - vsh_auto_soft_volume_ms(&v, 64),
+             VSH_VOLUME_MS_PER_TRIANGLE * 9000.0, 1e-9);
+  /* Degenerate inputs: never cheaper than anything finite. */
+  CHECK(isinf(vsh_auto_soft_volume_ms(NULL, 16)));
+  vsh_volume_ms_input bad = v;
+  bad.fill_px = NAN;
+  CHECK(isinf(vsh_auto_soft_volume_ms(&bad, 16)));
+  bad = v;
+  bad.silhouette_edges = -1.0;
+  CHECK(isinf(vsh_auto_soft_volume_ms(&bad, 16)));
+  bad = v;
+  bad.silhouette_edges = 1e308;
+  CHECK(isinf(vsh_auto_soft_volume_ms(&bad, 255)));
+  /* No edges, no fill: the screen and pre-pass terms alone, still linear. */
+  vsh_volume_ms_input empty = {1000.0, 0.0, 0.0, 0.0};
+  CHECK_NEAR(vsh_auto_soft_volume_ms(&empty, 10), 10.0 * VSH_VOLUME_MS_PER_PIXEL * 1000.0, 1e-12);
+}
+
+static void test_choose_volume(void)
+{
+  vsh_auto_soft_choice c;
+  /* Not available: weighed for the report, never picked. */
+  vsh_auto_soft_input in = frame(0.03);
+  in.planar_available = 0;
+  CHECK(vsh_auto_soft_choose(&in, &c) != VSH_AUTO_SOFT_VOLUME);
+  CHECK(c.candidates[VSH_AUTO_SOFT_VOLUME].available == 0);
+  CHECK(c.candidates[VSH_AUTO_SOFT_VOLUME].samples >= VSH_AUTO_SOFT_MIN_SAMPLES);
+  CHECK(isfinite(c.candidates[VSH_AUTO_SOFT_VOLUME].ms));
+  /* A small scene (10 silhouette edges) without plane receivers: volume
+   * with the fewest samples meeting the target, cheaper than the rays. */
+  in.volume_available = 1;
+  in.volume.silhouette_edges = 10.0;
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_VOLUME && c.met == 1);
+  const int n = c.candidates[VSH_AUTO_SOFT_VOLUME].samples;
+  CHECK(n == vsh_auto_soft_samples_for(VSH_AUTO_SOFT_VOLUME, 0.03, 4, 255));
+  CHECK(c.candidates[VSH_AUTO_SOFT_VOLUME].pen_mae <= 0.03);
+  CHECK_NEAR(c.candidates[VSH_AUTO_SOFT_VOLUME].ms, vsh_auto_soft_volume_ms(&in.volume, n), 1e-12);
+  /* A heavy one (glyphs: 200,000 side quads a count): the rays. */
+  in.volume.silhouette_edges = 2e5;
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_RAYTRACE && c.met == 1);
+  /* Volume alone: picked whatever it costs; target 0 not met, at its most
+   * samples (255, its own clamp, not 1024). */
+  in = frame(0.0);
+  in.planar_available = in.csm_available = in.raytrace_available = 0;
+  in.volume_available = 1;
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_VOLUME && c.met == 0);
+  CHECK(c.candidates[VSH_AUTO_SOFT_VOLUME].samples == VSH_AUTO_SOFT_VOLUME_MAX_SAMPLES);
+  /* ... with raytrace: the rays at 1024 are the lowest error. */
+  in.raytrace_available = 1;
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_RAYTRACE && c.met == 0);
+  /* Bounds reversed (min 64, max 16): min for every sampled candidate. */
+  in = frame(0.0);
+  in.volume_available = 1;
+  in.min_samples = 64;
+  in.max_samples = 16;
+  vsh_auto_soft_choose(&in, &c);
+  CHECK(c.candidates[VSH_AUTO_SOFT_VOLUME].samples == 64);
+  CHECK(c.candidates[VSH_AUTO_SOFT_RAYTRACE].samples == 64);
+  CHECK(c.candidates[VSH_AUTO_SOFT_PLANAR].samples == 64);
+  /* A minimum above volume's clamp: volume at 255, the others at min. */
+  in.min_samples = 512;
+  in.max_samples = 1024;
+  vsh_auto_soft_choose(&in, &c);
+  CHECK(c.candidates[VSH_AUTO_SOFT_VOLUME].samples == VSH_AUTO_SOFT_VOLUME_MAX_SAMPLES);
+  CHECK(c.candidates[VSH_AUTO_SOFT_RAYTRACE].samples == 1024);
+  /* Volume inputs the cost model refuses: +inf ms, never the cheapest. */
+  in = frame(0.2);
+  in.planar_available = 0;
+  in.volume_available = 1;
+  in.volume.fill_px = NAN;
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_PCSS);
+  CHECK(isinf(c.candidates[VSH_AUTO_SOFT_VOLUME].ms));
+  /* Nothing available at all, volume included. */
+  in = frame(0.03);
+  in.planar_available = in.csm_available = in.raytrace_available = in.volume_available = 0;
+  CHECK(vsh_auto_soft_choose(&in, &c) == -1 && c.met == 0);
+}
+
 int main(void)
 {
   test_model();
   test_samples_for();
   test_costs();
   test_choose();
+  test_volume_model();
+  test_volume_cost();
+  test_choose_volume();
   return vsh_check_report("core.auto_soft");
 }

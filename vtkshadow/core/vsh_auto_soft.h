@@ -18,6 +18,7 @@
 #define VSH_AUTO_SOFT_H
 
 #include "vsh_raytrace.h"
+#include "vsh_volume_cost.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -28,7 +29,8 @@ typedef enum vsh_auto_soft_technique {
   VSH_AUTO_SOFT_PLANAR = 0,   /* planar's sampled area light, soft_samples N */
   VSH_AUTO_SOFT_PCSS = 1,     /* csm with PCSS (soft=1) */
   VSH_AUTO_SOFT_RAYTRACE = 2, /* raytrace, samples N (adaptive or not) */
-  VSH_AUTO_SOFT_COUNT = 3
+  VSH_AUTO_SOFT_VOLUME = 3,   /* volume's sampled area light, soft_samples N */
+  VSH_AUTO_SOFT_COUNT = 4
 } vsh_auto_soft_technique;
 
 /* Sample counts auto may give planar and raytrace. Below 4 a sampled light
@@ -37,6 +39,9 @@ typedef enum vsh_auto_soft_technique {
  * both passes' own upper clamp. */
 #define VSH_AUTO_SOFT_MIN_SAMPLES 4
 #define VSH_AUTO_SOFT_MAX_SAMPLES 1024
+/* volume counts each sample's share of the 8-bit mask in whole steps, so
+ * its pass clamps soft_samples to 255 (docs/soft-shadows.md). */
+#define VSH_AUTO_SOFT_VOLUME_MAX_SAMPLES 255
 
 /* What the choice needs to know about one light and the frame. */
 typedef struct vsh_auto_soft_input {
@@ -46,14 +51,18 @@ typedef struct vsh_auto_soft_input {
   int csm_available;      /* cascaded maps can draw the light */
   int pcss;               /* csm's soft setting is PCSS (else csm draws it hard) */
   int raytrace_available; /* the ray-traced pass can draw the light */
-  int min_samples;        /* N bounds for planar and raytrace (clamped to the */
-  int max_samples;        /* VSH_AUTO_SOFT_* bounds; 0: those bounds) */
+  int volume_available;   /* shadow volumes draw every caster of the light */
+  int min_samples;        /* N bounds for planar, raytrace and volume (clamped */
+  int max_samples;        /* to the VSH_AUTO_SOFT_* bounds; 0: those bounds) */
   double map_ms;          /* a hard map lookup's cost for the frame (auto's csm_ms) */
   /* The ray-traced pass's cost model and its frame (pixels, coverage,
    * lights, threads, penumbra fraction); samples and first are set per N. */
   vsh_rt_cost_model rt_model;
   vsh_rt_cost_input rt_frame;
   int rt_adaptive; /* the pass's adaptive setting (vsh_rt_adaptive_first) */
+  /* The volume pass's hard inputs for the light (its centre): pixels,
+   * scene triangles, silhouette edges, fill (vsh_volume_cost.h). */
+  vsh_volume_ms_input volume;
 } vsh_auto_soft_input;
 
 /* One candidate as weighed: its samples (1 for PCSS), predicted pen_mae
@@ -72,7 +81,9 @@ typedef struct vsh_auto_soft_choice {
 } vsh_auto_soft_choice;
 
 /* The model's predicted pen_mae for a technique at N samples (N < 1 counts
- * as 1; PCSS ignores N). NaN for an unknown technique. */
+ * as 1; PCSS ignores N). NaN for an unknown technique. volume's sampling
+ * term falls as a / N^p with its own fitted p (vsh_auto_soft.c): its N
+ * fixed, stratified sample positions are a quadrature, not random rays. */
 double vsh_auto_soft_pen_mae(int technique, int samples);
 
 /* The fewest samples in [min_samples, max_samples] whose predicted pen_mae
@@ -84,6 +95,13 @@ int vsh_auto_soft_samples_for(int technique, double target, int min_samples, int
 /* Planar's predicted milliseconds for one (receiver, light) pair at N
  * samples over `pixels` viewport pixels. */
 double vsh_auto_soft_planar_ms(double pixels, int samples);
+
+/* volume at N samples: the hard model (vsh_volume_cost_ms, one count)
+ * plus N - 1 further counts, each paying the per-sample terms again (side
+ * quads, fill, and the per-pixel stencil clear and accumulation); the depth
+ * pre-pass (the triangle term) is paid once. +inf for NULL or inputs the
+ * hard model refuses. N < 1 counts as 1. */
+double vsh_auto_soft_volume_ms(const vsh_volume_ms_input *volume, int samples);
 
 /* csm with PCSS: map_ms (one hard lookup per pixel) times the measured
  * factor of PCSS's taps over a hard lookup. */

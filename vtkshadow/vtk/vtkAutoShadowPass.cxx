@@ -71,6 +71,10 @@ struct vtkAutoShadowPass::Internals
   std::string SoftJSON;                           // per light with a size: the soft candidates
   int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
   int RaySamples = 0;    // the frame's samples for raytrace's lights with a size (0: none)
+  int VolumeSamples = 0; // the frame's soft_samples for volume's lights with a size (0: none)
+  // Per switched-on light: the soft candidates weighed (pick -1: hard, or
+  // nothing to shadow) and the inputs of the volume candidate.
+  std::vector<vsh_auto_soft_choice> SoftChoices;
 
   // What was chosen: for the frame and per switched-on light.
   vtkshadow::TechniqueSet Choice = vtkshadow::TechniqueSet::None;
@@ -163,11 +167,10 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   impl.LightChoices.clear();
   impl.Lights.clear();
   impl.SoftLights.clear();
+  impl.SoftChoices.clear();
   impl.SoftJSON.clear();
-  impl.PlanarSamples = impl.RaySamples = 0;
+  impl.PlanarSamples = impl.RaySamples = impl.VolumeSamples = 0;
   this->LightReasons.clear();
-  double stretch = 1.0, edgeLength = 0.0;
-  std::vector<double> edgeLengths; // per light: its casters' outline (map lights)
   for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
   {
     double homogeneous[4];
@@ -178,26 +181,34 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
       vsh_auto_choose_light(impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous,
         light->LightTypeIsHeadlight() ? 1 : 0, concave);
     this->LightReasons.push_back(this->LightReasonText(c.reason, c.a, c.b));
+    impl.LightChoices.push_back(static_cast<vtkshadow::TechniqueSet>(c.technique));
     // A light with a size: the soft candidates by the penumbra target.
-    const int technique = impl.SoftLights.back()
-      ? this->ChooseSoft(renderer, impl.LightChoices.size(), c.technique)
-      : c.technique;
-    if (technique == VSH_AUTO_CSM)
+    impl.SoftChoices.emplace_back();
+    impl.SoftChoices.back().pick = -1;
+    if (impl.SoftLights.back() && c.technique != VSH_AUTO_NONE)
     {
-      // What the map's texels must resolve: the casters' outlines, and how
-      // far grazing light stretches them on plane receivers.
-      const int index = static_cast<int>(impl.LightChoices.size());
-      edgeLengths.resize(index + 1, 0.0);
-      edgeLengths[index] = this->MapOutlinePixels(homogeneous, index, renderer);
-      edgeLength = std::max(edgeLength, edgeLengths[index]);
-      stretch = std::max(stretch,
-        vsh_auto_plane_stretch(
-          impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous));
+      this->WeighSoft(renderer, impl.LightChoices.size() - 1, c.technique);
     }
-    impl.LightChoices.push_back(static_cast<vtkshadow::TechniqueSet>(technique));
+  }
+  this->ChooseSoft();
+  // What the maps' texels must resolve: the casters' outlines, and how far
+  // grazing light stretches them on plane receivers.
+  double stretch = 1.0, edgeLength = 0.0;
+  std::vector<double> edgeLengths(impl.LightChoices.size(), 0.0); // per map light
+  for (size_t l = 0; l < impl.LightChoices.size(); ++l)
+  {
+    if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
+    {
+      continue;
+    }
+    const int index = static_cast<int>(l);
+    edgeLengths[l] = this->MapOutlinePixels(impl.Lights[l].data(), index, renderer);
+    edgeLength = std::max(edgeLength, edgeLengths[l]);
+    stretch = std::max(stretch,
+      vsh_auto_plane_stretch(
+        impl.Objects.data(), static_cast<int>(impl.Objects.size()), impl.Lights[l].data()));
   }
   this->ChooseTexelTarget(renderer, edgeLength, stretch);
-  edgeLengths.resize(impl.LightChoices.size(), 0.0);
   this->ChooseGeneral(renderer, edgeLengths);
   this->ApplySoftSamples();
   this->ApplyLightMasks();
@@ -508,13 +519,8 @@ double vtkAutoShadowPass::ThinnestCasterPixels(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-int vtkAutoShadowPass::ChooseSoft(vtkRenderer* renderer, size_t l, int technique)
+void vtkAutoShadowPass::WeighSoft(vtkRenderer* renderer, size_t l, int technique)
 {
-  // The hard rules found nothing to shadow: nothing to soften either.
-  if (technique == VSH_AUTO_NONE)
-  {
-    return technique;
-  }
   Internals& impl = *this->Impl;
   const int* size = renderer->GetSize();
   vsh_auto_soft_input in = {};
@@ -527,14 +533,62 @@ int vtkAutoShadowPass::ChooseSoft(vtkRenderer* renderer, size_t l, int technique
   in.map_ms = MapLookupMsPerPixel * in.pixels;
   this->RayTracedPass->GetCostInputs(in.pixels, 1.0, 1, true, &in.rt_model, &in.rt_frame);
   in.rt_adaptive = this->RayTracedPass->GetAdaptive();
-  vsh_auto_soft_choice choice;
-  const int pick = vsh_auto_soft_choose(&in, &choice);
-  static const char* const names[VSH_AUTO_SOFT_COUNT] = { "planar", "pcss", "raytrace" };
+  // Volumes are exact per sample on any receiver, but draw only casters
+  // with triangles and opaque ones (the hard rule, vsh_volume_predicted_error).
+  const int unsupported =
+    this->VolumeInputs(renderer, impl.Lights[l].data(), static_cast<int>(l), in.volume);
+  in.volume_available = unsupported == 0 ? 1 : 0;
+  vsh_auto_soft_choose(&in, &impl.SoftChoices[l]);
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ChooseSoft()
+{
+  // The volume and ray-traced passes each own a screen mask whose lighting
+  // hook declares the same names: they cannot both hook one frame. When
+  // lights with a size pick both, the volume ones choose again without
+  // volumes (raytrace stays: it is the lowest error at any N).
+  Internals& impl = *this->Impl;
+  bool volume = false, rays = false;
+  for (const vsh_auto_soft_choice& c : impl.SoftChoices)
+  {
+    volume = volume || c.pick == VSH_AUTO_SOFT_VOLUME;
+    rays = rays || c.pick == VSH_AUTO_SOFT_RAYTRACE;
+  }
+  for (size_t l = 0; l < impl.SoftChoices.size(); ++l)
+  {
+    vsh_auto_soft_choice& c = impl.SoftChoices[l];
+    if (volume && rays && c.pick == VSH_AUTO_SOFT_VOLUME)
+    {
+      c.candidates[VSH_AUTO_SOFT_VOLUME].available = 0;
+      vsh_auto_candidate weighed[VSH_AUTO_SOFT_COUNT];
+      for (int i = 0; i < VSH_AUTO_SOFT_COUNT; ++i)
+      {
+        weighed[i] = { c.candidates[i].available, c.candidates[i].pen_mae, c.candidates[i].ms };
+      }
+      c.pick = vsh_auto_pick_cheapest(weighed, VSH_AUTO_SOFT_COUNT, this->PenumbraTarget, &c.met);
+    }
+    if (impl.SoftLights[l] && impl.LightChoices[l] != vtkshadow::TechniqueSet::None)
+    {
+      impl.LightChoices[l] = static_cast<vtkshadow::TechniqueSet>(
+        this->ApplySoftPick(l, static_cast<int>(impl.LightChoices[l])));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkAutoShadowPass::ApplySoftPick(size_t l, int technique)
+{
+  Internals& impl = *this->Impl;
+  const vsh_auto_soft_choice& choice = impl.SoftChoices[l];
+  const int pick = choice.pick;
+  static const char* const names[VSH_AUTO_SOFT_COUNT] = { "planar", "pcss", "raytrace", "volume" };
   std::ostringstream json, why;
   json.precision(4);
   why.precision(3);
   json << (impl.SoftJSON.empty() ? "" : ", ") << "{\"light\": " << l << ", \"candidates\": {";
   why << "a light with a size, penumbra target " << this->PenumbraTarget << ": ";
+  bool first = true;
   for (int i = 0; i < VSH_AUTO_SOFT_COUNT; ++i)
   {
     const vsh_auto_soft_candidate& c = choice.candidates[i];
@@ -544,9 +598,10 @@ int vtkAutoShadowPass::ChooseSoft(vtkRenderer* renderer, size_t l, int technique
          << ", \"ms\": " << JSONNumber(c.ms) << "}";
     if (c.available)
     {
-      why << (i ? ", " : "") << names[i] << (i == VSH_AUTO_SOFT_PCSS ? "" : " N ")
+      why << (first ? "" : ", ") << names[i] << (i == VSH_AUTO_SOFT_PCSS ? "" : " N ")
           << (i == VSH_AUTO_SOFT_PCSS ? std::string() : std::to_string(c.samples))
           << " predicted pen_mae " << c.pen_mae << ", " << c.ms << " ms";
+      first = false;
     }
   }
   json << "}, \"pick\": \"" << (pick >= 0 ? names[pick] : "none")
@@ -560,17 +615,17 @@ int vtkAutoShadowPass::ChooseSoft(vtkRenderer* renderer, size_t l, int technique
       << names[pick];
   // The hard rules' reason stays when the soft pick keeps their technique.
   static const int techniques[VSH_AUTO_SOFT_COUNT] = { VSH_AUTO_PLANAR, VSH_AUTO_CSM,
-    VSH_AUTO_RAYTRACE };
-  std::string& reason = this->LightReasons.back();
+    VSH_AUTO_RAYTRACE, VSH_AUTO_VOLUME };
+  std::string& reason = this->LightReasons[l];
   reason = techniques[pick] == technique ? reason + "; " + why.str() : why.str();
+  // One N per pass (the passes take one setting): the largest any of the
+  // lights that chose it needs.
   const int samples = choice.candidates[pick].samples;
-  if (pick == VSH_AUTO_SOFT_PLANAR)
+  int* const perPass[VSH_AUTO_SOFT_COUNT] = { &impl.PlanarSamples, nullptr, &impl.RaySamples,
+    &impl.VolumeSamples };
+  if (perPass[pick])
   {
-    impl.PlanarSamples = std::max(impl.PlanarSamples, samples);
-  }
-  if (pick == VSH_AUTO_SOFT_RAYTRACE)
-  {
-    impl.RaySamples = std::max(impl.RaySamples, samples);
+    *perPass[pick] = std::max(*perPass[pick], samples);
   }
   return techniques[pick];
 }
@@ -589,6 +644,10 @@ void vtkAutoShadowPass::ApplySoftSamples()
   if (impl.RaySamples > 0)
   {
     this->RayTracedPass->SetSamples(impl.RaySamples);
+  }
+  if (impl.VolumeSamples > 0)
+  {
+    this->VolumePass->SetSoftSamples(impl.VolumeSamples);
   }
 }
 
@@ -646,8 +705,9 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
     int Pick;
   };
   std::vector<Weighed> weighed;
-  // Lights with a size were weighed by the penumbra target (ChooseSoft).
-  bool anyVolume = false, anyRays = impl.RaySamples > 0;
+  // Lights with a size were weighed by the penumbra target (ChooseSoft);
+  // when they took volumes, raytrace cannot share the frame (below).
+  bool anyVolume = impl.VolumeSamples > 0, anyRays = impl.RaySamples > 0;
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
     if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded || impl.SoftLights[l])
@@ -674,7 +734,7 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
     w.Candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
       vsh_volume_predicted_error(w.Unsupported, impl.SoftLights[l] ? 1 : 0),
       vsh_volume_cost_ms(&w.Volume) };
-    w.Candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, 0.0,
+    w.Candidates[VSH_AUTO_GENERAL_RAYTRACE] = { impl.VolumeSamples > 0 ? 0 : 1, 0.0,
       this->RayTracedPass->EstimateFrameMilliseconds(pixels, 1.0, 1, impl.SoftLights[l]) };
     int met = 0;
     w.Pick = vsh_auto_pick_cheapest(w.Candidates, VSH_AUTO_GENERAL_COUNT, this->MaxError, &met);

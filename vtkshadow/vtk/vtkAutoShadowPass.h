@@ -219,11 +219,17 @@ private:
   void ApplyLightMasks();
   void ChooseTexelTarget(vtkRenderer* renderer, double edgeLength, double stretch);
   // For light number `l` with a size, given `technique` (a VSH_AUTO_*
-  // value) by the hard-light rules: the soft candidate meeting the penumbra
-  // target at the least predicted cost (vsh_auto_soft), its samples kept for
-  // the frame, the weighed candidates in the stats and the reason; returns
-  // the light's technique.
-  int ChooseSoft(vtkRenderer* renderer, size_t l, int technique);
+  // value) by the hard-light rules: weighs the soft candidates against the
+  // penumbra target (vsh_auto_soft), kept per light for ChooseSoft.
+  void WeighSoft(vtkRenderer* renderer, size_t l, int technique);
+  // Settles the weighed lights: volume lights choose again without volumes
+  // when other lights with a size took raytrace (one screen mask per
+  // frame), then each light's pick is applied (ApplySoftPick).
+  void ChooseSoft();
+  // Light `l`'s soft pick: its samples kept for the frame, the weighed
+  // candidates in the stats and the reason; returns the light's technique
+  // (`technique`, the hard rules', when nothing was picked).
+  int ApplySoftPick(size_t l, int technique);
   void ApplySoftSamples();
   // For the lights given maps: keep the map when its predicted error meets
   // the target and it is the cheapest such candidate, else an exact one.

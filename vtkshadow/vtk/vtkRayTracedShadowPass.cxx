@@ -115,7 +115,7 @@ struct vtkRayTracedShadowPass::FrameState
 
 //------------------------------------------------------------------------------
 vtkRayTracedShadowPass::vtkRayTracedShadowPass()
-  : Samples(64)
+  : Samples(128)
   , Adaptive(1)
   , LightRadius(0.0)
   , LightAngle(0.0)

@@ -50,7 +50,7 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Rays per pixel for a light with a size (1..1024, default 16): towards
+   * Rays per pixel for a light with a size (1..1024, default 128): towards
    * stratified points on the light, turned per pixel. A light without a size
    * always gets one ray (hard shadows).
    */
