@@ -140,7 +140,7 @@ struct vtkShadowVolumePass::Internals
   FillQuery RefineQueries[MaxLights]; // pixels marked for refinement
   // vsh_soft_batch_order for (SoftSamples, batch), computed when N changes.
   std::vector<int> Order;
-  int OrderSamples = 0;
+  int OrderSamples = 0, OrderBatch = 0;
   int LightCount = 0;
   float LightVC[MaxLights][4] = {}; // each light in view coordinates, this frame
   // Each light's size for the facing test: radius (view units, the view
@@ -374,16 +374,7 @@ void vtkShadowVolumePass::CountLight(
     // the spiral's order, the samples of before.
     const int batch =
       vsh_rt_adaptive_first(samples, this->Adaptive ? 1 : 0, VSH_SOFT_ADAPTIVE_BATCH);
-    std::vector<int> identity;
-    const std::vector<int>& order = batch < samples ? this->SampleOrder(samples) : identity;
-    if (batch >= samples)
-    {
-      identity.resize(static_cast<size_t>(samples));
-      for (int k = 0; k < samples; ++k)
-      {
-        identity[static_cast<size_t>(k)] = k;
-      }
-    }
+    const std::vector<int>& order = this->SampleOrder(samples, batch);
     impl.Stats[light].Batch = batch < samples ? batch : 0;
     // The fill of the first (or only) count: a query cannot pause around
     // the accumulation quads of the samples.
@@ -461,14 +452,17 @@ void vtkShadowVolumePass::CountVolumes(
 }
 
 //------------------------------------------------------------------------------
-const std::vector<int>& vtkShadowVolumePass::SampleOrder(int samples)
+const std::vector<int>& vtkShadowVolumePass::SampleOrder(int samples, int batch)
 {
   Internals& impl = *this->Impl;
-  if (impl.OrderSamples != samples)
+  if (impl.OrderSamples != samples || impl.OrderBatch != batch)
   {
+    // batch >= samples: the identity (vsh_soft_batch_order's), the spiral's
+    // order of the non-adaptive path.
     impl.Order.assign(static_cast<size_t>(samples), 0);
-    vsh_soft_batch_order(samples, VSH_SOFT_ADAPTIVE_BATCH, impl.Order.data());
+    vsh_soft_batch_order(samples, batch, impl.Order.data());
     impl.OrderSamples = samples;
+    impl.OrderBatch = batch;
   }
   return impl.Order;
 }

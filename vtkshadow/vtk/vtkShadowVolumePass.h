@@ -148,8 +148,9 @@ private:
   // After an adaptive light's first batch: the batch's all-lit pixels to 1,
   // and stencil bit 7 at the pixels to refine.
   void MarkRefined(int light, int batchLevels);
-  // vsh_soft_batch_order(samples, VSH_SOFT_ADAPTIVE_BATCH), cached.
-  const std::vector<int>& SampleOrder(int samples);
+  // vsh_soft_batch_order(samples, batch), cached: the identity when
+  // batch >= samples.
+  const std::vector<int>& SampleOrder(int samples, int batch);
   void DrawCaster(
     vtkShaderProgram* program, const Frame& frame, int light, int sample, vtkActor* actor);
   Volume* UpdateVolume(vtkActor* actor, int light, int sample, const double lightWorld[4]);
