@@ -141,3 +141,10 @@ add_test(NAME harness.soft_csm_sampled
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_csm_sampled.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/soft_csm_sampled)
 set_tests_properties(harness.soft_csm_sampled PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# volume's adaptive sample counts against the exact penumbra, and the
+# small-occluder failure mode (docs/soft-shadows.md).
+add_test(NAME harness.soft_adaptive
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_adaptive.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/soft_adaptive)
+set_tests_properties(harness.soft_adaptive PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)

@@ -22,6 +22,9 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include "vsh_soft_adaptive.h"
+
+#include "vtkShadowScreenBatchFS.h"
 #include "vtkShadowScreenLightFS.h"
 #include "vtkShadowScreenQuadFS.h"
 #include "vtkShadowScreenQuadVS.h"
@@ -280,11 +283,60 @@ void vtkShadowScreenMask::FillLight(int light, float value)
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenMask::AccumulateStencil(int light, int levels)
+void vtkShadowScreenMask::AccumulateStencil(int light, int levels, int ref)
 {
   // levels / 255 converts back to exactly `levels` steps of the 8-bit
   // channel, so the blend adds integers.
-  this->DrawChannel(light, static_cast<float>(levels) / 255.0f, Where::StencilZero, true);
+  this->DrawChannel(light, static_cast<float>(levels) / 255.0f, Where::StencilZero, true, ref);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::MarkBatch(int light, int batchLevels, bool refine, int ref)
+{
+  Internals& impl = *this->Impl;
+  if (!impl.Drawing || light < 0 || light >= this->LightCount)
+  {
+    return;
+  }
+  vtkOpenGLState* state = impl.Window->GetState();
+  vtkShaderProgram* program = impl.Window->GetShaderCache()->ReadyShaderProgram(
+    vtkShadowScreenQuadVS, vtkShadowScreenBatchFS, "");
+  if (!program)
+  {
+    this->Error = "the screen-space mask's batch shader did not compile";
+    return;
+  }
+  vtkTextureObject* layer = impl.Layers[LayerOf(light)];
+  // Sampled, so not attached: no feedback loop. Depth and stencil stay.
+  impl.FBO->RemoveColorAttachment(0);
+  impl.FBO->DeactivateDrawBuffers();
+  {
+    vtkOpenGLState::ScopedglColorMask colorMask(state);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_CULL_FACE);
+    state->vtkglEnable(GL_STENCIL_TEST);
+    state->vtkglStencilFunc(GL_ALWAYS, ref, 0xff);
+    state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    state->vtkglStencilMask(static_cast<GLuint>(ref));
+    layer->Activate();
+    program->SetUniformi("mask", layer->GetTextureUnit());
+    program->SetUniformi("channel", light % 4);
+    program->SetUniformi("batchLevels", batchLevels);
+    program->SetUniformi("refine", refine ? 1 : 0);
+    this->DrawFullScreen(program);
+    layer->Deactivate();
+    state->vtkglStencilMask(0xff);
+  }
+  impl.FBO->AddColorAttachment(0, layer);
+  impl.FBO->ActivateDrawBuffers(1);
 }
 
 //------------------------------------------------------------------------------
@@ -296,11 +348,11 @@ int vtkShadowScreenMask::AccumulationLevels(int sample, int samples)
   }
   // floor(255 (i + 1) / N) - floor(255 i / N): each floor(255/N) or one
   // more, summing to 255 over i = 0..N-1.
-  return (255 * (sample + 1)) / samples - (255 * sample) / samples;
+  return vsh_soft_levels(sample, samples);
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool add)
+void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool add, int ref)
 {
   Internals& impl = *this->Impl;
   if (!impl.Drawing || light < 0 || light >= this->LightCount)
@@ -341,7 +393,7 @@ void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool 
     // here leaves the cache believing the counting pass's func and ops are
     // still set, so the next frame's counting (set through the cache) would
     // be skipped and count nothing.
-    state->vtkglStencilFunc(where == Where::StencilSet ? GL_NOTEQUAL : GL_EQUAL, 0, 0xff);
+    state->vtkglStencilFunc(where == Where::StencilSet ? GL_NOTEQUAL : GL_EQUAL, ref, 0xff);
     state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   }
   vtkShaderProgram* program = impl.Window->GetShaderCache()->ReadyShaderProgram(

@@ -93,8 +93,23 @@ public:
    * N is at most 255 (every sample at least one step).
    */
   void FillLight(int light, float value);
-  void AccumulateStencil(int light, int levels);
+  // `ref`: add where the stencil equals ref instead (the pixels MarkBatch
+  // marked with ref 0x80 whose low 7 bits counted lit).
+  void AccumulateStencil(int light, int levels, int ref = 0);
   static int AccumulationLevels(int sample, int samples);
+
+  /**
+   * Inside BeginDraw(light), for adaptive sample counts (vtkShadowVolumePass's
+   * adaptive): the light's channel holds its first batch of samples, whose
+   * levels sum to `batchLevels` (vsh_soft_batch_levels). Sets the stencil
+   * bits `ref` (REPLACE, write mask ref) where refine is true: at the pixels
+   * whose 3x3 neighbourhood holds a mixed batch or both all-lit and
+   * all-blocked ones (vsh_rt_adaptive_rest_near's rule); refine false: at
+   * the other pixels whose batch is all lit. Other stencil bits are kept.
+   * The channel is read as a texture, so the colour attachment is detached
+   * meanwhile.
+   */
+  void MarkBatch(int light, int batchLevels, bool refine, int ref);
 
   /**
    * Copy the depth of the last RenderDepth() to `depth` (window depth in
@@ -160,7 +175,7 @@ private:
     StencilZero,
     Everywhere
   };
-  void DrawChannel(int light, float value, Where where, bool add);
+  void DrawChannel(int light, float value, Where where, bool add, int ref = 0);
 
   struct Internals;
   Internals* Impl;

@@ -25,7 +25,9 @@
 #include "vtk_glew.h"
 
 #include "vsh_mat4.h"
+#include "vsh_rt_adaptive.h"
 #include "vsh_soft.h"
+#include "vsh_soft_adaptive.h"
 #include "vsh_volume.h"
 
 #include "vtkShadowVolumeFS.h"
@@ -73,6 +75,10 @@ struct LightStats
   // Samples of the volumes' faces that passed the depth test in the
   // previous frame this light was counted (GL_SAMPLES_PASSED; -1 unknown).
   long long SamplesPassed = -1;
+  // Adaptive sampling: the first batch's size (0: not adaptive) and the
+  // pixels that got all samples in the previous adaptive frame (-1 unknown).
+  int Batch = 0;
+  long long RefinedPx = -1;
 };
 
 // One GL_SAMPLES_PASSED query per light around its volume draws. Its result
@@ -131,6 +137,10 @@ struct vtkShadowVolumePass::Internals
   long long FrameNumber = 0;
   LightStats Stats[MaxLights];
   FillQuery Queries[MaxLights];
+  FillQuery RefineQueries[MaxLights]; // pixels marked for refinement
+  // vsh_soft_batch_order for (SoftSamples, batch), computed when N changes.
+  std::vector<int> Order;
+  int OrderSamples = 0, OrderBatch = 0;
   int LightCount = 0;
   float LightVC[MaxLights][4] = {}; // each light in view coordinates, this frame
   // Each light's size for the facing test: radius (view units, the view
@@ -360,23 +370,35 @@ void vtkShadowVolumePass::CountLight(
     {
       glGenQueries(1, &query.Id);
     }
+    // Adaptive: the order puts the batch (centre and rim) first; otherwise
+    // the spiral's order, the samples of before.
+    const int batch =
+      vsh_rt_adaptive_first(samples, this->Adaptive ? 1 : 0, VSH_SOFT_ADAPTIVE_BATCH);
+    const std::vector<int>& order = this->SampleOrder(samples, batch);
+    impl.Stats[light].Batch = batch < samples ? batch : 0;
     // The fill of the first (or only) count: a query cannot pause around
     // the accumulation quads of the samples.
     const bool measure = query.Id && !query.Pending;
-    for (int sample = 0; sample < samples; ++sample)
+    for (int j = 0; j < samples; ++j)
     {
-      if (sample > 0)
+      const bool refining = j >= batch;
+      if (j == batch)
+      {
+        this->MarkRefined(light, vsh_soft_batch_levels(samples, batch, order.data()));
+      }
+      if (j > 0)
       {
         state->vtkglDisable(GL_SCISSOR_TEST);
-        state->vtkglStencilMask(0xff);
+        state->vtkglStencilMask(refining ? 0x7f : 0xff);
         state->vtkglClear(GL_STENCIL_BUFFER_BIT);
       }
-      if (measure && sample == 0)
+      if (measure && j == 0)
       {
         glBeginQuery(GL_SAMPLES_PASSED, query.Id);
       }
-      this->CountVolumes(program, frame, light, samples > 1 ? sample : -1);
-      if (measure && sample == 0)
+      const int sample = order[static_cast<size_t>(j)];
+      this->CountVolumes(program, frame, light, samples > 1 ? sample : -1, refining);
+      if (measure && j == 0)
       {
         glEndQuery(GL_SAMPLES_PASSED);
         query.Pending = true;
@@ -385,7 +407,7 @@ void vtkShadowVolumePass::CountLight(
       if (samples > 1)
       {
         impl.Mask.AccumulateStencil(
-          light, vtkShadowScreenMask::AccumulationLevels(sample, samples));
+          light, vtkShadowScreenMask::AccumulationLevels(sample, samples), refining ? 0x80 : 0);
       }
     }
     impl.Stats[light].SamplesPassed = query.Last;
@@ -401,12 +423,23 @@ void vtkShadowVolumePass::CountLight(
 
 //------------------------------------------------------------------------------
 void vtkShadowVolumePass::CountVolumes(
-  vtkShaderProgram* program, const Frame& frame, int light, int sample)
+  vtkShaderProgram* program, const Frame& frame, int light, int sample, bool refining)
 {
   // The state of CountLight; the mask's accumulation between two samples
-  // changed the stencil function and the bound program.
+  // changed the stencil function and the bound program. Refining: the
+  // counts go to the low 7 bits of the pixels marked in bit 7 (modulo 128
+  // instead of 256), and the others reject every fragment.
   vtkOpenGLState* state = this->Impl->State;
-  state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
+  if (refining)
+  {
+    state->vtkglStencilFunc(GL_EQUAL, 0x80, 0x80);
+    state->vtkglStencilMask(0x7f);
+  }
+  else
+  {
+    state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
+    state->vtkglStencilMask(0xff);
+  }
   state->vtkglEnable(GL_SCISSOR_TEST);
   this->Impl->Window->GetShaderCache()->ReadyShaderProgram(program);
   program->SetUniformf("depthBias", static_cast<float>(this->DepthBias * std::ldexp(1.0, -24)));
@@ -416,6 +449,68 @@ void vtkShadowVolumePass::CountVolumes(
   {
     this->DrawCaster(program, frame, light, sample, actor);
   }
+}
+
+//------------------------------------------------------------------------------
+const std::vector<int>& vtkShadowVolumePass::SampleOrder(int samples, int batch)
+{
+  Internals& impl = *this->Impl;
+  if (impl.OrderSamples != samples || impl.OrderBatch != batch)
+  {
+    // batch >= samples: the identity (vsh_soft_batch_order's), the spiral's
+    // order of the non-adaptive path.
+    impl.Order.assign(static_cast<size_t>(samples), 0);
+    vsh_soft_batch_order(samples, batch, impl.Order.data());
+    impl.OrderSamples = samples;
+    impl.OrderBatch = batch;
+  }
+  return impl.Order;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::MarkRefined(int light, int batchLevels)
+{
+  Internals& impl = *this->Impl;
+  vtkOpenGLState* state = impl.State;
+  // The pixels whose batch was all lit and stay so: stencil 0x40, then
+  // the rest of the 255 levels there (all N samples lit reads exactly 1).
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglStencilMask(0xff);
+  state->vtkglClear(GL_STENCIL_BUFFER_BIT);
+  impl.Mask.MarkBatch(light, batchLevels, false, 0x40);
+  impl.Mask.AccumulateStencil(light, 255 - batchLevels, 0x40);
+  state->vtkglClear(GL_STENCIL_BUFFER_BIT);
+  // Then the pixels to refine: stencil bit 7, counted once (the result is
+  // read a frame later, when available, for --stats).
+  FillQuery& query = impl.RefineQueries[light];
+  if (query.Pending)
+  {
+    GLuint available = 0;
+    glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT_AVAILABLE, &available);
+    if (available)
+    {
+      GLuint pixels = 0;
+      glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT, &pixels);
+      query.Last = static_cast<long long>(pixels);
+      query.Pending = false;
+    }
+  }
+  if (!query.Id)
+  {
+    glGenQueries(1, &query.Id);
+  }
+  const bool measure = query.Id && !query.Pending;
+  if (measure)
+  {
+    glBeginQuery(GL_SAMPLES_PASSED, query.Id);
+  }
+  impl.Mask.MarkBatch(light, batchLevels, true, 0x80);
+  if (measure)
+  {
+    glEndQuery(GL_SAMPLES_PASSED);
+    query.Pending = true;
+  }
+  impl.Stats[light].RefinedPx = query.Last;
 }
 
 //------------------------------------------------------------------------------
@@ -751,7 +846,8 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
         << ", \"fill_px\": " << static_cast<long long>(s.FillPx)
         << ", \"fill_samples_passed\": " << s.SamplesPassed
         << ", \"cost\": " << static_cast<long long>(s.Cost)
-        << ", \"soft_samples\": " << impl.Samples[light] << "}";
+        << ", \"soft_samples\": " << impl.Samples[light] << ", \"soft_batch\": " << s.Batch
+        << ", \"refined_px\": " << s.RefinedPx << "}";
   }
   out << "]";
   return out.str();
@@ -781,6 +877,11 @@ bool vtkShadowVolumePass::SetOption(const char* key, double value)
     this->SetFacingTest(value != 0.0);
     return true;
   }
+  if (k == "adaptive" && (value == 0.0 || value == 1.0))
+  {
+    this->SetAdaptive(value != 0.0);
+    return true;
+  }
   if (k == "soft_samples" && value >= 1.0 && value <= 255.0 && value == std::floor(value))
   {
     this->SetSoftSamples(static_cast<int>(value));
@@ -794,6 +895,14 @@ void vtkShadowVolumePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& impl = *this->Impl;
   impl.Mask.ReleaseGraphicsResources(w);
+  for (FillQuery& query : impl.RefineQueries)
+  {
+    if (query.Id && w)
+    {
+      glDeleteQueries(1, &query.Id);
+    }
+    query = FillQuery();
+  }
   for (FillQuery& query : impl.Queries)
   {
     if (query.Id && w)
@@ -830,5 +939,6 @@ void vtkShadowVolumePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ForceZFail: " << this->ForceZFail << "\n";
   os << indent << "FacingTest: " << this->FacingTest << "\n";
   os << indent << "SoftSamples: " << this->SoftSamples << "\n";
+  os << indent << "Adaptive: " << this->Adaptive << "\n";
   os << indent << "Casters: " << this->Impl->Casters.size() << "\n";
 }

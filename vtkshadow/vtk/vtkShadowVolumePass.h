@@ -25,6 +25,7 @@
 #include "vtkshadowModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for SampleOrder
 
 class vtkActor;
 class vtkOpenGLRenderWindow;
@@ -74,7 +75,18 @@ public:
   vtkGetMacro(SoftSamples, int);
 
   /**
-   * depth_bias, slope_bias, force_zfail, facing_test, soft_samples, and the
+   * Adaptive sample counts for a sampled light (docs/soft-shadows.md): a
+   * first batch of VSH_SOFT_ADAPTIVE_BATCH samples (the light's centre and
+   * rim) is counted everywhere, the other SoftSamples - batch only at the
+   * pixels where the batch disagrees or borders a disagreement; the others
+   * keep the batch's answer (0 or 1). Off by default.
+   */
+  vtkSetMacro(Adaptive, bool);
+  vtkGetMacro(Adaptive, bool);
+  vtkBooleanMacro(Adaptive, bool);
+
+  /**
+   * depth_bias, slope_bias, force_zfail, facing_test, soft_samples, adaptive, and the
    * base's cast_headlight.
    */
   bool SetOption(const char* key, double value) override;
@@ -115,6 +127,7 @@ protected:
   bool ForceZFail = false;
   bool FacingTest = true;
   int SoftSamples = 16;
+  bool Adaptive = false;
 
 private:
   vtkShadowVolumePass(const vtkShadowVolumePass&) = delete;
@@ -128,8 +141,16 @@ private:
   void SetUpFrame(const vtkRenderState* s, Frame& frame);
   void CountLight(
     vtkOpenGLRenderWindow* window, vtkShaderProgram* program, const Frame& frame, int light);
-  // Counts one light (sample < 0) or one of its SoftSamples samples.
-  void CountVolumes(vtkShaderProgram* program, const Frame& frame, int light, int sample);
+  // Counts one light (sample < 0) or one of its SoftSamples samples; with
+  // `refining`, only at the pixels MarkRefined marked (stencil bit 7).
+  void CountVolumes(
+    vtkShaderProgram* program, const Frame& frame, int light, int sample, bool refining = false);
+  // After an adaptive light's first batch: the batch's all-lit pixels to 1,
+  // and stencil bit 7 at the pixels to refine.
+  void MarkRefined(int light, int batchLevels);
+  // vsh_soft_batch_order(samples, batch), cached: the identity when
+  // batch >= samples.
+  const std::vector<int>& SampleOrder(int samples, int batch);
   void DrawCaster(
     vtkShaderProgram* program, const Frame& frame, int light, int sample, vtkActor* actor);
   Volume* UpdateVolume(vtkActor* actor, int light, int sample, const double lightWorld[4]);
