@@ -89,6 +89,28 @@ struct FillQuery
   GLuint Id = 0;
   bool Pending = false;
   long long Last = -1;
+
+  // Takes last frame's result if the GPU has it (never waits), and makes
+  // the query object on first use.
+  void Collect()
+  {
+    if (this->Pending)
+    {
+      GLuint available = 0;
+      glGetQueryObjectuiv(this->Id, GL_QUERY_RESULT_AVAILABLE, &available);
+      if (available)
+      {
+        GLuint samples = 0;
+        glGetQueryObjectuiv(this->Id, GL_QUERY_RESULT, &samples);
+        this->Last = static_cast<long long>(samples);
+        this->Pending = false;
+      }
+    }
+    if (!this->Id)
+    {
+      glGenQueries(1, &this->Id);
+    }
+  }
 };
 }
 
@@ -354,22 +376,7 @@ void vtkShadowVolumePass::CountLight(
     // plane instead of clipping it. Not in VTK's state cache: restored below.
     glEnable(GL_DEPTH_CLAMP);
     FillQuery& query = impl.Queries[light];
-    if (query.Pending)
-    {
-      GLuint available = 0;
-      glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT_AVAILABLE, &available);
-      if (available)
-      {
-        GLuint samplesPassed = 0;
-        glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT, &samplesPassed);
-        query.Last = static_cast<long long>(samplesPassed);
-        query.Pending = false;
-      }
-    }
-    if (!query.Id)
-    {
-      glGenQueries(1, &query.Id);
-    }
+    query.Collect();
     // Adaptive: the order puts the batch (centre and rim) first; otherwise
     // the spiral's order, the samples of before.
     const int batch =
@@ -483,22 +490,7 @@ void vtkShadowVolumePass::MarkRefined(int light, int batchLevels)
   // Then the pixels to refine: stencil bit 7, counted once (the result is
   // read a frame later, when available, for --stats).
   FillQuery& query = impl.RefineQueries[light];
-  if (query.Pending)
-  {
-    GLuint available = 0;
-    glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT_AVAILABLE, &available);
-    if (available)
-    {
-      GLuint pixels = 0;
-      glGetQueryObjectuiv(query.Id, GL_QUERY_RESULT, &pixels);
-      query.Last = static_cast<long long>(pixels);
-      query.Pending = false;
-    }
-  }
-  if (!query.Id)
-  {
-    glGenQueries(1, &query.Id);
-  }
+  query.Collect();
   const bool measure = query.Id && !query.Pending;
   if (measure)
   {
