@@ -43,6 +43,16 @@ std::string Number(double value)
   return buf;
 }
 
+std::string NumberList(const std::vector<double>& values)
+{
+  std::string out = "[";
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    out += (i ? ", " : "") + Number(values[i]);
+  }
+  return out + "]";
+}
+
 std::string Times(const vsh_timing_stats& s)
 {
   return "{\"median\": " + Number(s.median) + ", \"min\": " + Number(s.min) +
@@ -81,12 +91,8 @@ std::string EntryJson(const TimedEntry& entry)
   out << "},\n       \"ms\": " << Times(s)
       << ",\n       \"ratio_to_none\": {\"median\": " << Number(s.ratio)
       << ", \"min\": " << Number(s.ratio_min) << ", \"max\": " << Number(s.ratio_max)
-      << "},\n       \"round_medians_ms\": [";
-  for (size_t r = 0; r < entry.RoundMedians.size(); ++r)
-  {
-    out << (r ? ", " : "") << Number(entry.RoundMedians[r]);
-  }
-  out << "],\n       \"shadow_map_bytes\": " << entry.MemoryBytes
+      << "},\n       \"round_medians_ms\": " << NumberList(entry.RoundMedians)
+      << ",\n       \"shadow_map_bytes\": " << entry.MemoryBytes
       << ", \"pixels_changed_after_timing\": " << entry.ChangedPixels
       << ",\n       \"technique_stats\": " << entry.Details;
   if (!entry.Stages.empty())
@@ -95,7 +101,9 @@ std::string EntryJson(const TimedEntry& entry)
     // not the timed frame (each stage ends with a glFinish).
     out << ",\n       \"profiled_frame_ms\": " << Number(entry.ProfiledFrameMs)
         << ", \"stages_ms\": " << StagesJson(entry.Stages)
-        << ",\n       \"stages_cpu_ms\": " << StagesJson(entry.CPUStages);
+        << ",\n       \"stages_cpu_ms\": " << StagesJson(entry.CPUStages)
+        << ",\n       \"profiled_frames_ms\": " << NumberList(entry.ProfiledFramesMs)
+        << ", \"profiled_stage_sums_ms\": " << NumberList(entry.ProfiledStageSumsMs);
   }
   out << "}";
   return out.str();

@@ -166,6 +166,7 @@ void ProfileStages(
     renderer->SetPass(entry.Pass);
     std::vector<StageList> wall, cpu;
     std::vector<double> totals;
+    entry.ProfiledStageSumsMs.clear();
     for (int f = 0; f < run.ProfileFrames; ++f)
     {
       PlaceCamera(renderer, scene, f, run.ProfileFrames);
@@ -180,7 +181,14 @@ void ProfileStages(
           .count());
       wall.push_back(vtkshadow::GetStageTimes());
       cpu.push_back(vtkshadow::GetStageCPUTimes());
+      double sum = 0.0;
+      for (const auto& stage : wall.back())
+      {
+        sum += stage.second;
+      }
+      entry.ProfiledStageSumsMs.push_back(sum);
     }
+    entry.ProfiledFramesMs = totals;
     entry.Stages = StageMedians(wall);
     entry.CPUStages = StageMedians(cpu);
     entry.ProfiledFrameMs = vsh_timing_median(totals.data(), static_cast<int>(totals.size()));

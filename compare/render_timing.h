@@ -36,6 +36,11 @@ struct TimedEntry
   std::vector<std::pair<std::string, double>> Stages;
   std::vector<std::pair<std::string, double>> CPUStages; // process CPU ms (all threads)
   double ProfiledFrameMs = 0.0;
+  // Per profiled frame: its wall time and the sum of its stages. They agree
+  // frame by frame; the medians above need not add up (a stall lands in a
+  // different stage in each frame, and each stage's median drops it).
+  std::vector<double> ProfiledFramesMs;
+  std::vector<double> ProfiledStageSumsMs;
   long long ChangedPixels = 0; // scene-camera image after the run vs before
 };
 

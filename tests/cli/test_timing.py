@@ -145,9 +145,11 @@ for e in (doc or {}).get("timing", {}).get("entries", []):
 check(doc and len(doc["timing"]["entries"]) == 3, "mirror: none, none#2 and csm timed")
 
 # 2c. The stage profile (--profile-frames): every entry gets its stages,
-# each pass its own, in the order they run; stages are non-negative and add
-# up to about the profiled frame; none has no shadow stage. (Proportions,
-# never a speed.)
+# each pass its own, in the order they run; stages are non-negative and, in
+# every profiled frame, add up to that frame; none has no shadow stage.
+# (Proportions, never a speed.) The stage medians need not add up to the
+# frame median: on a loaded machine a stall lands in a different stage in
+# each frame and every stage's median drops it (CI: 13 ms against 38 ms).
 p, doc = run("profile", ["--technique", "csm", "--set", "resolve=1", "--time-also", "planar",
                          "--time-also", "vtk", "--time-also", "volume", "--profile-frames", "3",
                          "--rounds", "1"])
@@ -171,8 +173,16 @@ for e in (doc or {}).get("timing", {}).get("entries", []):
               for v in list(stages.values()) + list(cpu.values())),
           f"profile: {label} stage times finite and >= 0: {stages} {cpu}")
     total = e.get("profiled_frame_ms", 0)
-    check(finite_positive(total) and 0.5 * total <= sum(stages.values()) <= 1.5 * total + 1,
-          f"profile: {label} stages {sum(stages.values()):.2f} ms against the frame {total}")
+    check(finite_positive(total), f"profile: {label} frame median {total}")
+    frames = e.get("profiled_frames_ms") or []
+    sums = e.get("profiled_stage_sums_ms") or []
+    check(len(frames) == 3 and len(sums) == 3, f"profile: {label} 3 frames: {frames} {sums}")
+    check(sorted(frames)[1] == total, f"profile: {label} median of {frames} is not {total}")
+    for frame, stage_sum in zip(frames, sums):
+        # The stages run from the frame's first mark to "finish": the frame's
+        # clock starts just after and stops just before.
+        check(finite_positive(frame) and 0.98 * frame <= stage_sum <= 1.02 * frame + 1,
+              f"profile: {label} stages {stage_sum:.2f} ms against the frame {frame:.2f}")
 check(doc and all("stages_ms" in e for e in doc["timing"]["entries"]),
       "profile: every entry profiled")
 # Without --profile-frames nothing is profiled (the timed frames stay clean).
