@@ -46,15 +46,17 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # PCSS (its default for lights with a size: 16 blocker and 24 filter taps;
 # soft=0 is the hard shadow of the light's centre, and a 32 / 64-tap
 # variant; soft=2 averages soft_samples hard maps from points on the
-# light); volume averages soft_samples counts of shadow volumes from
+# light, adaptive=1 stopping after 8 where they agree); volume averages
+# soft_samples counts of shadow volumes from
 # points on the light (1: the hard shadow of the light's centre); auto as it
 # is by default.
 CONFIGS = ([("planar", [("soft_samples", n)]) for n in (1, 4, 16, 64)] +
-           [("raytrace", [("samples", n)]) for n in (1, 4, 16, 64)] +
+           [("raytrace", [("samples", n)]) for n in (1, 4, 16, 64, 128)] +
            [("csm", [("soft", 0)]), ("csm", []),
             ("csm", [("pcss_blocker_taps", 32), ("pcss_filter_taps", 64)])] +
            [("volume", [("soft_samples", n)]) for n in (1, 4, 16, 64)] +
            [("csm", [("soft", 2), ("soft_samples", n)]) for n in (4, 16, 64)] +
+           [("csm", [("soft", 2), ("soft_samples", 64), ("adaptive", 1)])] +
            [("auto", [])])
 PEERS = ("cycles", "eevee", "eevee-best")
 

@@ -37,12 +37,13 @@ def scene_with(out, name, size):
     return path
 
 
-def render(bindir, scene, technique, setting, k, stem):
+def render(bindir, scene, technique, setting, k, stem, stats=False):
     """vtkshadow-render of light k with --set SETTING (a string, or a list of
     them): (visibility, mask, image) paths STEM_vis.png, STEM_mask.png,
-    STEM.png."""
+    STEM.png; with stats, also STEM.json (--stats, one timed frame)."""
     vis, mask, image = stem + "_vis.png", stem + "_mask.png", stem + ".png"
-    sets = []
+    sets = ["--stats", stem + ".json", "--frames", "1", "--rounds", "1", "--warmup", "1"] \
+        if stats else []
     for one in ([setting] if isinstance(setting, str) else setting):
         sets += ["--set", one]
     run([os.path.join(bindir, "vtkshadow-render"), scene, "--technique", technique] + sets +

@@ -104,6 +104,7 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
   , UsedPCSS(false)
   , SoftSamples(16)
   , UsedSampled(false)
+  , Adaptive(false)
   , UsedScreenResolve(false)
   , UsedResolution(0)
   , NumberOfMapsRendered(0)
@@ -148,6 +149,7 @@ void vtkCascadedShadowMapPass::CopySettings(vtkCascadedShadowMapPass* o)
   this->PCSSFilterTaps = o->PCSSFilterTaps;
   this->PCSSMaxTexels = o->PCSSMaxTexels;
   this->SoftSamples = o->SoftSamples;
+  this->Adaptive = o->Adaptive;
   this->CastHeadlightShadows = o->CastHeadlightShadows;
   this->SkippedLights = o->SkippedLights;
   this->Modified();
@@ -981,7 +983,8 @@ std::string vtkCascadedShadowMapPass::LookupDefines() const
   }
   if (this->Impl->Sampled)
   {
-    out += "#define VSH_SAMPLED 1\n#define VSH_SAMPLES " + std::to_string(this->SoftSamples) + "\n";
+    out += "#define VSH_SAMPLED 1\n#define VSH_SAMPLES " + std::to_string(this->SoftSamples) +
+      "\n#define VSH_SAMPLE_BATCH " + std::to_string(this->Impl->SampleBatch) + "\n";
   }
   return out;
 }
@@ -1094,11 +1097,49 @@ void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UsedPCSS: " << this->UsedPCSS << "\n";
   os << indent << "SoftSamples: " << this->SoftSamples << "\n";
   os << indent << "UsedSampled: " << this->UsedSampled << "\n";
+  os << indent << "Adaptive: " << this->Adaptive << "\n";
   os << indent << "UsedScreenResolve: " << this->UsedScreenResolve << "\n";
   os << indent << "UsedResolution: " << this->UsedResolution << "\n";
   os << indent << "NumberOfMapsRendered: " << this->NumberOfMapsRendered << "\n";
   os << indent << "NumberOfMapsReused: " << this->NumberOfMapsReused << "\n";
   os << indent << "TotalMapsRendered: " << this->TotalMapsRendered << "\n";
+}
+
+//------------------------------------------------------------------------------
+// The settings of lights with a size (SetOption's soft_* and pcss_* keys,
+// adaptive): true when `k` is one of them and `v` in its range.
+bool vtkCascadedShadowMapPass::SetSoftOption(const std::string& k, double v)
+{
+  auto integral = [&](double lo, double hi) { return v >= lo && v <= hi && v == std::floor(v); };
+  if (k == "soft" && integral(SOFT_OFF, SOFT_SAMPLED))
+  {
+    this->SetSoft(static_cast<int>(v));
+  }
+  else if (k == "soft_samples" && integral(1, 64))
+  {
+    this->SetSoftSamples(static_cast<int>(v));
+  }
+  else if (k == "adaptive" && integral(0, 1))
+  {
+    this->SetAdaptive(v != 0);
+  }
+  else if (k == "pcss_blocker_taps" && integral(1, 64))
+  {
+    this->SetPCSSBlockerTaps(static_cast<int>(v));
+  }
+  else if (k == "pcss_filter_taps" && integral(1, 64))
+  {
+    this->SetPCSSFilterTaps(static_cast<int>(v));
+  }
+  else if (k == "pcss_max_texels" && v >= 1 && v <= 256)
+  {
+    this->SetPCSSMaxTexels(v);
+  }
+  else
+  {
+    return false;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -1193,27 +1234,7 @@ bool vtkCascadedShadowMapPass::SetOption(const char* key, double v)
   {
     this->SetTileCull(v != 0);
   }
-  else if (k == "soft" && integral(SOFT_OFF, SOFT_SAMPLED))
-  {
-    this->SetSoft(static_cast<int>(v));
-  }
-  else if (k == "soft_samples" && integral(1, 64))
-  {
-    this->SetSoftSamples(static_cast<int>(v));
-  }
-  else if (k == "pcss_blocker_taps" && integral(1, 64))
-  {
-    this->SetPCSSBlockerTaps(static_cast<int>(v));
-  }
-  else if (k == "pcss_filter_taps" && integral(1, 64))
-  {
-    this->SetPCSSFilterTaps(static_cast<int>(v));
-  }
-  else if (k == "pcss_max_texels" && in(1, 256))
-  {
-    this->SetPCSSMaxTexels(v);
-  }
-  else
+  else if (!this->SetSoftOption(k, v))
   {
     return this->Superclass::SetOption(key, v);
   }
@@ -1238,6 +1259,7 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
              : this->UsedSampled ? "sampled"
                                  : "hard")
       << "\", \"soft_samples\": " << (this->UsedSampled ? this->SoftSamples : 0)
+      << ", \"sample_batch\": " << (this->UsedSampled ? this->Impl->SampleBatch : 0)
       << ", \"sample_maps\": " << this->Impl->SampleSlots
       << ", \"pcss_blocker_taps\": " << (this->UsedPCSS ? this->PCSSBlockerTaps : 0)
       << ", \"pcss_filter_taps\": " << (this->UsedPCSS ? this->PCSSFilterTaps : 0)

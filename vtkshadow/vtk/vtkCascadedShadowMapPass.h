@@ -237,6 +237,19 @@ public:
   vtkGetMacro(SoftSamples, int);
   /** Whether the last frame sampled a light (SOFT_SAMPLED with a sized light, N > 1). */
   vtkGetMacro(UsedSampled, bool);
+  /**
+   * SOFT_SAMPLED with SoftSamples > 8: adaptive sample counts per pixel.
+   * The lookup compares the first batch of 8 samples (the light's centre
+   * and 7 points near its rim, vsh_soft_batch_order) and stops there where
+   * they agree (every comparison fully lit or fully blocked); elsewhere it
+   * takes all SoftSamples, the non-adaptive answer. The slots hold the same
+   * samples in that order, so only the count per pixel changes. Off by
+   * default: an occluder whose blocked part of the light lies between the
+   * batch's points is missed (docs/soft-shadows.md).
+   */
+  vtkSetMacro(Adaptive, bool);
+  vtkGetMacro(Adaptive, bool);
+  vtkBooleanMacro(Adaptive, bool);
 
   /**
    * Tint each cascade with its own colour (debug view).
@@ -269,7 +282,7 @@ public:
    * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
    * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
    * fade, debug_cascades, resolve (0 forward, 1 screen, 2 choose),
-   * tap_texel_px, tile_cull (0/1), soft (0 off, 1 PCSS, 2 sampled), soft_samples,
+   * tap_texel_px, tile_cull (0/1), soft (0 off, 1 PCSS, 2 sampled), soft_samples, adaptive (0/1),
    * pcss_blocker_taps, pcss_filter_taps, pcss_max_texels, and the base's cast_headlight.
    */
   bool SetOption(const char* key, double value) override;
@@ -345,6 +358,7 @@ protected:
   bool UsedPCSS;
   int SoftSamples;
   bool UsedSampled;
+  bool Adaptive;
   bool UsedScreenResolve;
   int UsedResolution;
   int NumberOfMapsRendered;
@@ -391,6 +405,8 @@ private:
   // budget), the sample maps derived from this frame's maps and the bake
   // list that renders them, the uniforms the sampled lookups read.
   void PlanSamples(const Frame& frame);
+  void OrderSamples(int n);
+  bool SetSoftOption(const std::string& key, double value);
   void BuildSampleTiles(std::vector<int>& bake);
   void SetSampledUniforms(vtkShaderProgram* program);
   const vsh_csm_tile& BakeTile(int t) const;

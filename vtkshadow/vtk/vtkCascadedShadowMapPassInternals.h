@@ -139,6 +139,12 @@ struct vtkCascadedShadowMapPass::Internals
   bool Sampled = false;
   std::vector<vsh_csm_tile> SampleTiles;
   float SampleDisk[VSH_CSM_MAX_SAMPLES][2];
+  // Adaptive: slot k of a light's samples holds disk sample SampleOrder[k]
+  // (the batch of SampleBatch first; identity and 0 when not adaptive),
+  // recomputed only when OrderSamples (its N) changes.
+  std::vector<int> SampleOrder;
+  int OrderSamples = 0;
+  int SampleBatch = 0;
   float SampleU[VSH_CSM_MAX_LIGHTS][3];
   float SampleV[VSH_CSM_MAX_LIGHTS][3];
   float TileShear[VSH_CSM_MAX_TILES][4];

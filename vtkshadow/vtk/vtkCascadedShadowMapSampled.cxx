@@ -20,6 +20,7 @@
 #include "vsh_bounds.h"
 #include "vsh_csm_sampled.h"
 #include "vsh_mat4.h"
+#include "vsh_soft_adaptive.h"
 
 #include <algorithm>
 #include <cmath>
@@ -114,6 +115,7 @@ void vtkCascadedShadowMapPass::PlanSamples(const Frame& frame)
   }
   impl.SampleSlots = slot - plan.tile_count;
   this->UsedSampled = impl.Sampled;
+  this->OrderSamples(n);
   // The terms the shader rebuilds each sample's map from, and what the
   // slots hold: when that changes (or sampling stops: the planned maps of a
   // sampled light were not rendered) nothing held is reused.
@@ -122,6 +124,7 @@ void vtkCascadedShadowMapPass::PlanSamples(const Frame& frame)
   {
     key = 1469598103934665603ULL;
     Mix(key, &n, sizeof n);
+    Mix(key, &impl.SampleBatch, sizeof impl.SampleBatch);
     Mix(key, &res, sizeof res);
     Mix(key, &plan.tile_count, sizeof plan.tile_count);
     Mix(key, impl.SampleFirst, sizeof impl.SampleFirst);
@@ -142,7 +145,7 @@ void vtkCascadedShadowMapPass::PlanSamples(const Frame& frame)
     for (int i = 0; i < n; ++i)
     {
       double q[2];
-      vsh_csm_sample_disk(i, n, q);
+      vsh_csm_sample_disk(impl.SampleOrder[static_cast<size_t>(i)], n, q);
       impl.SampleDisk[i][0] = static_cast<float>(q[0]);
       impl.SampleDisk[i][1] = static_cast<float>(q[1]);
     }
@@ -152,6 +155,34 @@ void vtkCascadedShadowMapPass::PlanSamples(const Frame& frame)
     impl.Held.SampleKey = key;
     impl.Held.Rendered.clear();
   }
+}
+
+//------------------------------------------------------------------------------
+// Which disk sample each of a light's n sample slots holds: adaptive (n
+// above the batch), the batch of centre and rim first (vsh_soft_batch_order,
+// as volume's adaptive counts), which the lookup stops after where it
+// agrees; otherwise the spiral's own order.
+void vtkCascadedShadowMapPass::OrderSamples(int n)
+{
+  Internals& impl = *this->Impl;
+  const int batch =
+    this->Adaptive && impl.Sampled && n > VSH_SOFT_ADAPTIVE_BATCH ? VSH_SOFT_ADAPTIVE_BATCH : 0;
+  if (impl.OrderSamples == n && impl.SampleBatch == batch &&
+    impl.SampleOrder.size() == static_cast<size_t>(n))
+  {
+    return;
+  }
+  impl.SampleOrder.resize(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i)
+  {
+    impl.SampleOrder[static_cast<size_t>(i)] = i;
+  }
+  if (batch > 0)
+  {
+    vsh_soft_batch_order(n, batch, impl.SampleOrder.data());
+  }
+  impl.OrderSamples = n;
+  impl.SampleBatch = batch;
 }
 
 //------------------------------------------------------------------------------
@@ -176,8 +207,8 @@ void vtkCascadedShadowMapPass::BuildSampleTiles(std::vector<int>& bake)
       for (int k = 0; k < n; ++k)
       {
         const int slot = impl.SampleFirst[l] + k * plan.count[l] + j - plan.tile_count;
-        vsh_csm_sample_tile(
-          &plan.tiles[plan.first[l] + j], &impl.SampleFrame[l], k, &impl.SampleTiles[slot]);
+        vsh_csm_sample_tile(&plan.tiles[plan.first[l] + j], &impl.SampleFrame[l],
+          impl.SampleOrder[static_cast<size_t>(k)], &impl.SampleTiles[slot]);
       }
     }
   }

@@ -340,6 +340,17 @@ float vshSampleMap(int tile, int slot, vec3 offsetVC, vec2 shear, vec3 posVC, ve
   return texture(vshShadowAtlas, vec3(clamp(uv, lo, hi), ref));
 }
 
+// Adaptive counts (VSH_SAMPLE_BATCH > 0): range holds the lowest and highest
+// comparison so far; after the batch (the light's centre and rim, the first
+// VSH_SAMPLE_BATCH samples) true where every one was fully lit or fully
+// blocked, and range.x is then that answer. The hardware 2x2 comparison
+// reads fractions near any sample's shadow edge, so such pixels continue.
+bool vshBatchAgrees(int k, float lit, inout vec2 range)
+{
+  range = vec2(min(range.x, lit), max(range.y, lit));
+  return k == VSH_SAMPLE_BATCH - 1 && (range.y <= 1e-4 || range.x >= 1.0 - 1e-4);
+}
+
 // The mean of light l's VSH_SAMPLES sample maps of map `tile`: sample k in
 // slot slot0 + k stride.
 float vshShadowSampled(int l, int tile, int slot0, int stride, vec3 posVC, vec3 normalVC,
@@ -347,11 +358,17 @@ float vshShadowSampled(int l, int tile, int slot0, int stride, vec3 posVC, vec3 
 {
   vec4 s = vshTileShear[tile];
   float sum = 0.0;
+  vec2 range = vec2(1.0, 0.0);
   for (int k = 0; k < VSH_SAMPLES; ++k)
   {
     vec2 q = vshSampleDisk[k];
-    sum += vshSampleMap(tile, slot0 + k * stride, q.x * vshSampleU[l] + q.y * vshSampleV[l],
+    float lit = vshSampleMap(tile, slot0 + k * stride, q.x * vshSampleU[l] + q.y * vshSampleV[l],
       q.x * s.xy + q.y * s.zw, posVC, normalVC, perspective);
+    sum += lit;
+    if (vshBatchAgrees(k, lit, range))
+    {
+      return range.x;
+    }
   }
   return sum / float(VSH_SAMPLES);
 }
@@ -393,6 +410,7 @@ float vshShadowCascadesSampled(
 float vshShadowPointSampled(int l, int first, int slot0, vec3 posVC, vec3 normalVC)
 {
   float sum = 0.0;
+  vec2 range = vec2(1.0, 0.0);
   for (int k = 0; k < VSH_SAMPLES; ++k)
   {
     vec2 q = vshSampleDisk[k];
@@ -402,7 +420,12 @@ float vshShadowPointSampled(int l, int first, int slot0, vec3 posVC, vec3 normal
     int face = (a.x >= a.y && a.x >= a.z) ? (d.x >= 0.0 ? 0 : 1)
       : (a.y >= a.z)                      ? (d.y >= 0.0 ? 2 : 3)
                                           : (d.z >= 0.0 ? 4 : 5);
-    sum += vshSampleMap(first + face, slot0 + k * 6 + face, o, vec2(0.0), posVC, normalVC, true);
+    float lit = vshSampleMap(first + face, slot0 + k * 6 + face, o, vec2(0.0), posVC, normalVC, true);
+    sum += lit;
+    if (vshBatchAgrees(k, lit, range))
+    {
+      return range.x;
+    }
   }
   return sum / float(VSH_SAMPLES);
 }
