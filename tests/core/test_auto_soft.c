@@ -109,6 +109,14 @@ static vsh_auto_soft_input frame(double target)
   in.volume.scene_triangles = 1000.0;
   in.volume.silhouette_edges = 100.0;
   in.volume.fill_px = 0.2 * in.pixels;
+  /* csm's sampled maps: the test scene of harness.soft_csm_sampled (two
+   * point lights and a sun: 13 planned maps, all of lights with a size) at
+   * csm's defaults. */
+  in.csm_resolution = 2048;
+  in.csm_budget = 256LL << 20;
+  in.csm_tiles = 13;
+  in.csm_sampled_tiles = 13;
+  in.csm_adaptive = 0;
   return in;
 }
 
@@ -124,15 +132,26 @@ static void test_choose(void)
   CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_PLANAR);
   CHECK(c.met == 1 && c.candidates[VSH_AUTO_SOFT_PLANAR].samples == VSH_AUTO_SOFT_MIN_SAMPLES);
   CHECK(c.candidates[VSH_AUTO_SOFT_PLANAR].ms < c.candidates[VSH_AUTO_SOFT_PCSS].ms);
-  /* ... and without planar (shadows on non-planes): PCSS, not raytrace. */
+  /* ... and without planar (shadows on non-planes): csm's sampled light at
+   * N = 4 (5 lookups' worth against PCSS's 10; measured 122 against 204 ms),
+   * not raytrace. */
   in.planar_available = 0;
-  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_PCSS && c.met == 1);
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_CSM_SAMPLED && c.met == 1);
+  CHECK(c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].samples == VSH_AUTO_SOFT_MIN_SAMPLES);
   CHECK(c.candidates[VSH_AUTO_SOFT_PLANAR].available == 0);
+  CHECK(c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].ms < c.candidates[VSH_AUTO_SOFT_PCSS].ms);
   CHECK(c.candidates[VSH_AUTO_SOFT_PCSS].ms < c.candidates[VSH_AUTO_SOFT_RAYTRACE].ms);
-  /* PCSS switched off: csm draws the hard shadow (0.30), which misses 0.2. */
+  /* At 0.09 sampled needs N = 10 (11 lookups): PCSS is the cheapest. */
+  in.target = 0.09;
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_PCSS && c.met == 1);
+  CHECK(c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].samples == 10);
+  in.target = 0.2;
+  /* csm's soft switched off: csm draws the hard shadow (0.30), which misses
+   * 0.2, and offers no sampled light. */
   in.pcss = 0;
   CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_RAYTRACE && c.met == 1);
   CHECK_NEAR(c.candidates[VSH_AUTO_SOFT_PCSS].pen_mae, 0.30, 1e-12);
+  CHECK(c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].available == 0);
 
   /* Huge target: everything meets it, the cheapest wins. */
   in = frame(1.0);
@@ -164,9 +183,11 @@ static void test_choose(void)
   in.raytrace_available = 0;
   CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_PLANAR && c.met == 0);
   CHECK(c.candidates[VSH_AUTO_SOFT_PLANAR].samples == VSH_AUTO_SOFT_MAX_SAMPLES);
-  /* ... with csm alone: PCSS, not met. */
+  /* ... with csm alone: its sampled light at its lowest predicted error
+   * (below PCSS's 0.09), not met. */
   in.planar_available = 0;
-  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_PCSS && c.met == 0);
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_CSM_SAMPLED && c.met == 0);
+  CHECK(c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].pen_mae < 0.09);
   /* Nothing available. */
   in.csm_available = 0;
   CHECK(vsh_auto_soft_choose(&in, &c) == -1 && c.met == 0);
@@ -312,7 +333,7 @@ static void test_choose_volume(void)
   in.planar_available = 0;
   in.volume_available = 1;
   in.volume.fill_px = NAN;
-  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_PCSS);
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_CSM_SAMPLED);
   CHECK(isinf(c.candidates[VSH_AUTO_SOFT_VOLUME].ms));
   /* Nothing available at all, volume included. */
   in = frame(0.03);
@@ -320,8 +341,105 @@ static void test_choose_volume(void)
   CHECK(vsh_auto_soft_choose(&in, &c) == -1 && c.met == 0);
 }
 
+/* csm's sampled light: the model at its fitted points, the texel ratio
+ * from the budget, the non-monotone choice of N, the cost, degenerate
+ * inputs. */
+static void test_csm_sampled_model(void)
+{
+  /* Fitted points (vsh_auto_soft.c): glyphs-soft light 0 at N = 16, maps
+   * 1392 of 2048 texels (0.0527 measured); torus-disk light 1 at N = 64,
+   * 288 texels (0.0724). Upper envelope: at or above both. */
+  const double g = vsh_auto_soft_csm_sampled_pen_mae(16, 2048.0 / 1392.0);
+  const double t = vsh_auto_soft_csm_sampled_pen_mae(64, 2048.0 / 288.0);
+  CHECK(g >= 0.0527 && g < 0.0527 + 0.002);
+  CHECK(t >= 0.0724 && t < 0.0724 + 0.002);
+  /* Ratio 1 is the technique's own figure; below 1 or NaN counts as 1. */
+  CHECK(vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_CSM_SAMPLED, 16) ==
+        vsh_auto_soft_csm_sampled_pen_mae(16, 1.0));
+  CHECK(vsh_auto_soft_csm_sampled_pen_mae(16, 0.5) == vsh_auto_soft_csm_sampled_pen_mae(16, 1.0));
+  CHECK(vsh_auto_soft_csm_sampled_pen_mae(16, NAN) == vsh_auto_soft_csm_sampled_pen_mae(16, 1.0));
+  CHECK(vsh_auto_soft_csm_sampled_pen_mae(0, 1.0) == vsh_auto_soft_csm_sampled_pen_mae(1, 1.0));
+  CHECK(isfinite(vsh_auto_soft_csm_sampled_pen_mae(64, INFINITY)));
+
+  /* The texel ratio is the pass's own resolution rule: 13 planned maps at
+   * 2048 fit 256 MiB (the hard maps lose nothing), N = 16 gives
+   * 13 + 208 tiles: 544 texels, N = 64: 272 (docs/soft-shadows.md). */
+  vsh_auto_soft_input in = frame(0.03);
+  CHECK_NEAR(vsh_auto_soft_csm_texel_ratio(&in, 16), 2048.0 / 544.0, 1e-12);
+  CHECK_NEAR(vsh_auto_soft_csm_texel_ratio(&in, 64), 2048.0 / 272.0, 1e-12);
+  CHECK(vsh_auto_soft_csm_texel_ratio(NULL, 16) == 1.0);
+  in.csm_sampled_tiles = 0; /* no light with a size has maps */
+  CHECK(vsh_auto_soft_csm_texel_ratio(&in, 16) == 1.0);
+  in = frame(0.03);
+  in.csm_budget = 0; /* no cap: no loss */
+  CHECK(vsh_auto_soft_csm_texel_ratio(&in, 64) == 1.0);
+  in = frame(0.03);
+  in.csm_sampled_tiles = 2000000000; /* absurd: no overflow, the 16 floor */
+  CHECK_NEAR(vsh_auto_soft_csm_texel_ratio(&in, 64), 2048.0 / 16.0, 1e-9);
+
+  /* Not monotone: at the default budget more samples coarsen the maps, so
+   * the lowest predicted error is at a middle N, and an unreachable target
+   * gets that N, not the most. */
+  in = frame(0.0);
+  const int best = vsh_auto_soft_csm_samples_for(&in, 0.0, 4, 64);
+  CHECK(best > 4 && best < 64);
+  const double at_best = vsh_auto_soft_csm_sampled_pen_mae(best, vsh_auto_soft_csm_texel_ratio(&in, best));
+  for (int n = 4; n <= 64; ++n) {
+    CHECK(vsh_auto_soft_csm_sampled_pen_mae(n, vsh_auto_soft_csm_texel_ratio(&in, n)) >= at_best);
+  }
+  CHECK(vsh_auto_soft_csm_samples_for(NULL, 0.03, 4, 64) == 4);
+  CHECK(vsh_auto_soft_csm_samples_for(&in, 0.03, 8, 8) == 8);
+  /* With memory to spare the error falls with N: 0.03 needs N = 28. */
+  in.csm_budget = 0;
+  CHECK(vsh_auto_soft_csm_samples_for(&in, 0.03, 4, 64) == 28);
+  CHECK(vsh_auto_soft_csm_sampled_pen_mae(28, 1.0) <= 0.03);
+  CHECK(vsh_auto_soft_csm_sampled_pen_mae(27, 1.0) > 0.03);
+
+  /* Cost: 1 + N lookups; adaptive: 1 + 8 + penumbra x (N - 8). */
+  CHECK_NEAR(vsh_auto_soft_csm_sampled_ms(2.0, 16, 0, 0.25), 34.0, 1e-12);
+  CHECK_NEAR(vsh_auto_soft_csm_sampled_ms(2.0, 64, 1, 0.25), 2.0 * (1 + 8 + 14), 1e-12);
+  CHECK_NEAR(vsh_auto_soft_csm_sampled_ms(2.0, 8, 1, 0.25), 18.0, 1e-12); /* no rest */
+  CHECK_NEAR(vsh_auto_soft_csm_sampled_ms(2.0, 64, 1, NAN), 130.0, 1e-12); /* all pixels */
+  CHECK(vsh_auto_soft_csm_sampled_ms(-1.0, 16, 0, 0.0) == 0.0);
+  CHECK(vsh_auto_soft_csm_sampled_ms(NAN, 16, 0, 0.0) == 0.0);
+}
+
+/* The choice with csm's sampled light: a band of targets where it is the
+ * cheapest (no planar), the pass's clamp of 64, adaptive making it cheaper. */
+static void test_choose_csm_sampled(void)
+{
+  vsh_auto_soft_choice c;
+  vsh_auto_soft_input in = frame(0.1);
+  in.planar_available = 0;
+  CHECK(vsh_auto_soft_choose(&in, &c) == VSH_AUTO_SOFT_CSM_SAMPLED && c.met == 1);
+  CHECK(c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].pen_mae <= 0.1);
+  /* Its N never passes the pass's clamp, even when the bounds allow more. */
+  in = frame(0.0);
+  in.min_samples = 100;
+  in.max_samples = 1024;
+  vsh_auto_soft_choose(&in, &c);
+  CHECK(c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].samples == VSH_AUTO_SOFT_CSM_MAX_SAMPLES);
+  /* Adaptive lookups cost less at the same N. */
+  in = frame(0.05);
+  in.planar_available = 0;
+  vsh_auto_soft_choose(&in, &c);
+  const double full = c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].ms;
+  const int n = c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].samples;
+  in.csm_adaptive = 1;
+  vsh_auto_soft_choose(&in, &c);
+  CHECK(c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].samples == n);
+  CHECK(n <= 8 || c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].ms < full);
+  /* csm not available: neither csm candidate. */
+  in.csm_available = 0;
+  vsh_auto_soft_choose(&in, &c);
+  CHECK(c.candidates[VSH_AUTO_SOFT_CSM_SAMPLED].available == 0);
+  CHECK(c.pick != VSH_AUTO_SOFT_CSM_SAMPLED && c.pick != VSH_AUTO_SOFT_PCSS);
+}
+
 int main(void)
 {
+  test_csm_sampled_model();
+  test_choose_csm_sampled();
   test_model();
   test_samples_for();
   test_costs();

@@ -2,6 +2,7 @@
 #include "vsh_auto_soft.h"
 
 #include "vsh_auto_general.h"
+#include "vsh_csm_sampled.h"
 #include "vsh_rt_adaptive.h"
 
 #include <math.h>
@@ -52,6 +53,23 @@
 #define VOLUME_A 0.4235
 #define VOLUME_P 0.75
 #define VOLUME_B 0.0037
+/* csm's sampled light (soft=2, soft_samples N): pen_mae(N, t) = a / N^p + b
+ * + c ln(t), t how many times coarser than the hard maps the budget makes
+ * each map (vsh_auto_soft_csm_texel_ratio). Against Cycles (1024 samples,
+ * pixel centres, 256x192; docs/soft-shadows.md, "csm against Cycles"): 33
+ * light-configurations of 3 library and 3 held-out scenes at N = 16 and 64
+ * (default budget) and 64 with a 1e9 budget, t from 1.03 to 7.1. The same
+ * p as volume (N fixed stratified points, a quadrature); a, b, c the upper
+ * envelope of all 33 with the least total excess, as the other candidates
+ * are fitted to their worse scene: glyphs-soft light 0 (0.0527 at N = 16,
+ * t 1.47; predicted 0.053) sets a and b, torus-disk light 1 (0.0724 at
+ * N = 64, t 7.1) sets c. Median excess 0.026 (sphere-disk light 0 measured
+ * 0.0093 at N = 64, t 3.66, predicted 0.054): a light's maps are coarse
+ * or fine in pixels, not in texels, which the model cannot see. */
+#define CSM_SAMPLED_A 0.29
+#define CSM_SAMPLED_P 0.75
+#define CSM_SAMPLED_B 0.006
+#define CSM_SAMPLED_C 0.0275
 
 /* Costs (ms per pixel of the viewport), from the same table (glyphs-soft,
  * 640x480 = 307,200 px, 2 soft pairs, interleaved against none on a
@@ -67,6 +85,13 @@
 #define PLANAR_BASE_MS_PER_PX 1.03e-5
 #define PLANAR_SAMPLE_MS_PER_PX 1.09e-5
 #define PCSS_COST_FACTOR 10.0
+/* csm's sampled light per frame against a hard frame's shadow work, same
+ * machine and table method (docs/soft-shadows.md, csm "Cost", 400x300):
+ * N = 4 / 16 / 64 cost 4.4 / 15 / 49 hard lookups on the still test scene
+ * and 19 / 56 at N = 16 / 64 on glyphs-soft, whose orbiting camera
+ * re-renders every sample map each frame (taking PCSS as 10): 1 + N. The
+ * adaptive batch of 8 (csm's adaptive, session 9) stops where it agrees. */
+#define CSM_SAMPLED_BATCH 8
 
 double vsh_auto_soft_pen_mae(int technique, int samples)
 {
@@ -80,9 +105,69 @@ double vsh_auto_soft_pen_mae(int technique, int samples)
     return PCSS_PEN_MAE;
   case VSH_AUTO_SOFT_VOLUME:
     return VOLUME_A / pow(n, VOLUME_P) + VOLUME_B;
+  case VSH_AUTO_SOFT_CSM_SAMPLED:
+    return vsh_auto_soft_csm_sampled_pen_mae(samples, 1.0);
   default:
     return NAN;
   }
+}
+
+double vsh_auto_soft_csm_sampled_pen_mae(int samples, double texel_ratio)
+{
+  const double n = samples > 1 ? (double)samples : 1.0;
+  const double t = texel_ratio > 1.0 && isfinite(texel_ratio) ? texel_ratio : 1.0;
+  return CSM_SAMPLED_A / pow(n, CSM_SAMPLED_P) + CSM_SAMPLED_B + CSM_SAMPLED_C * log(t);
+}
+
+double vsh_auto_soft_csm_texel_ratio(const vsh_auto_soft_input *in, int samples)
+{
+  if (!in || in->csm_sampled_tiles <= 0 || in->csm_resolution < 16) {
+    return 1.0;
+  }
+  const int n = samples > 1 ? samples : 1;
+  const int hard_tiles = in->csm_tiles > 0 ? in->csm_tiles : in->csm_sampled_tiles;
+  /* Tiles in doubles first: N x tiles cannot overflow an int here (64 x 24
+   * at most in the pass), but the input is plain data from anyone. */
+  const double tiles = (double)hard_tiles + (double)n * in->csm_sampled_tiles;
+  const int sampled_tiles = tiles < 1e9 ? (int)tiles : 1000000000;
+  const int hard = vsh_csm_sampled_resolution(in->csm_resolution, hard_tiles, in->csm_budget);
+  const int coarse = vsh_csm_sampled_resolution(in->csm_resolution, sampled_tiles, in->csm_budget);
+  return coarse > 0 && hard > coarse ? (double)hard / (double)coarse : 1.0;
+}
+
+int vsh_auto_soft_csm_samples_for(const vsh_auto_soft_input *in, double target, int min_samples,
+                                  int max_samples)
+{
+  if (!in || max_samples <= min_samples) {
+    return min_samples;
+  }
+  int best = min_samples;
+  double best_error = INFINITY;
+  for (int n = min_samples; n <= max_samples; ++n) {
+    const double e = vsh_auto_soft_csm_sampled_pen_mae(n, vsh_auto_soft_csm_texel_ratio(in, n));
+    if (e <= target) {
+      return n;
+    }
+    if (e < best_error) {
+      best_error = e;
+      best = n;
+    }
+  }
+  return best;
+}
+
+double vsh_auto_soft_csm_sampled_ms(double map_ms, int samples, int adaptive, double penumbra)
+{
+  if (!(map_ms > 0.0) || !isfinite(map_ms)) {
+    return 0.0;
+  }
+  const double n = samples > 1 ? (double)samples : 1.0;
+  double lookups = n;
+  if (adaptive && n > CSM_SAMPLED_BATCH) {
+    const double f = penumbra >= 0.0 && penumbra <= 1.0 ? penumbra : 1.0;
+    lookups = CSM_SAMPLED_BATCH + f * (n - CSM_SAMPLED_BATCH);
+  }
+  return map_ms * (1.0 + lookups);
 }
 
 int vsh_auto_soft_samples_for(int technique, double target, int min_samples, int max_samples)
@@ -193,6 +278,18 @@ int vsh_auto_soft_choose(const vsh_auto_soft_input *in, vsh_auto_soft_choice *ch
   c[VSH_AUTO_SOFT_VOLUME].samples = volume_n;
   c[VSH_AUTO_SOFT_VOLUME].pen_mae = vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_VOLUME, volume_n);
   c[VSH_AUTO_SOFT_VOLUME].ms = vsh_auto_soft_volume_ms(&in->volume, volume_n);
+
+  /* csm's sampled light: its pass's clamp (64), and only where csm may
+   * soften at all (soft not off). */
+  const int csm_hi = top < VSH_AUTO_SOFT_CSM_MAX_SAMPLES ? top : VSH_AUTO_SOFT_CSM_MAX_SAMPLES;
+  const int csm_lo = lo < csm_hi ? lo : csm_hi;
+  const int csm_n = vsh_auto_soft_csm_samples_for(in, target, csm_lo, csm_hi);
+  c[VSH_AUTO_SOFT_CSM_SAMPLED].available = in->csm_available != 0 && in->pcss != 0;
+  c[VSH_AUTO_SOFT_CSM_SAMPLED].samples = csm_n;
+  c[VSH_AUTO_SOFT_CSM_SAMPLED].pen_mae =
+    vsh_auto_soft_csm_sampled_pen_mae(csm_n, vsh_auto_soft_csm_texel_ratio(in, csm_n));
+  c[VSH_AUTO_SOFT_CSM_SAMPLED].ms =
+    vsh_auto_soft_csm_sampled_ms(in->map_ms, csm_n, in->csm_adaptive, in->rt_frame.penumbra);
 
   /* The same rule as the general choice: cheapest meeting the target, else
    * the lowest error (ties: cheaper). */

@@ -30,7 +30,8 @@ typedef enum vsh_auto_soft_technique {
   VSH_AUTO_SOFT_PCSS = 1,     /* csm with PCSS (soft=1) */
   VSH_AUTO_SOFT_RAYTRACE = 2, /* raytrace, samples N (adaptive or not) */
   VSH_AUTO_SOFT_VOLUME = 3,   /* volume's sampled area light, soft_samples N */
-  VSH_AUTO_SOFT_COUNT = 4
+  VSH_AUTO_SOFT_CSM_SAMPLED = 4, /* csm's sampled area light (soft=2), soft_samples N */
+  VSH_AUTO_SOFT_COUNT = 5
 } vsh_auto_soft_technique;
 
 /* Sample counts auto may give planar and raytrace. Below 4 a sampled light
@@ -42,6 +43,9 @@ typedef enum vsh_auto_soft_technique {
 /* volume counts each sample's share of the 8-bit mask in whole steps, so
  * its pass clamps soft_samples to 255 (docs/soft-shadows.md). */
 #define VSH_AUTO_SOFT_VOLUME_MAX_SAMPLES 255
+/* csm's sampled light renders a map per sample; its pass clamps to 64
+ * (VSH_CSM_MAX_SAMPLES). */
+#define VSH_AUTO_SOFT_CSM_MAX_SAMPLES 64
 
 /* What the choice needs to know about one light and the frame. */
 typedef struct vsh_auto_soft_input {
@@ -49,7 +53,8 @@ typedef struct vsh_auto_soft_input {
   double pixels;          /* viewport pixels */
   int planar_available;   /* every shadow of the light falls on plane receivers */
   int csm_available;      /* cascaded maps can draw the light */
-  int pcss;               /* csm's soft setting is PCSS (else csm draws it hard) */
+  int pcss;               /* csm may soften (its soft setting is not off): PCSS and
+                             the sampled light are candidates; 0: csm is hard */
   int raytrace_available; /* the ray-traced pass can draw the light */
   int volume_available;   /* shadow volumes draw every caster of the light */
   int min_samples;        /* N bounds for planar, raytrace and volume (clamped */
@@ -63,6 +68,13 @@ typedef struct vsh_auto_soft_input {
   /* The volume pass's hard inputs for the light (its centre): pixels,
    * scene triangles, silhouette edges, fill (vsh_volume_cost.h). */
   vsh_volume_ms_input volume;
+  /* csm's sampled light: its maps share one atlas within a memory budget,
+   * so more samples mean coarser maps (vsh_csm_sampled_resolution). */
+  int csm_resolution;         /* the map resolution csm asks for */
+  long long csm_budget;       /* its memory budget, bytes (<= 0: no cap) */
+  int csm_tiles;              /* planned maps of every light (hard) */
+  int csm_sampled_tiles;      /* planned maps of the lights with a size */
+  int csm_adaptive;           /* the pass's adaptive setting (N > 8: a batch of 8) */
 } vsh_auto_soft_input;
 
 /* One candidate as weighed: its samples (1 for PCSS), predicted pen_mae
@@ -86,11 +98,30 @@ typedef struct vsh_auto_soft_choice {
  * fixed, stratified sample positions are a quadrature, not random rays. */
 double vsh_auto_soft_pen_mae(int technique, int samples);
 
+/* csm's sampled light at N samples whose maps are `texel_ratio` times
+ * coarser than the hard maps would be (>= 1; 1: no loss): the sampling
+ * term a / N^p, a floor, and c ln(texel_ratio) for the resolution the
+ * budget takes away (vsh_auto_soft.c). texel_ratio < 1 or NaN counts as 1.
+ * vsh_auto_soft_pen_mae(VSH_AUTO_SOFT_CSM_SAMPLED, N) is this at ratio 1. */
+double vsh_auto_soft_csm_sampled_pen_mae(int samples, double texel_ratio);
+
+/* How much coarser csm's maps get at N samples per map of the lights with a
+ * size: resolution(hard tiles) / resolution(hard + N x sampled tiles), both
+ * by vsh_csm_sampled_resolution. 1 for NULL or no sampled tiles. */
+double vsh_auto_soft_csm_texel_ratio(const vsh_auto_soft_input *input, int samples);
+
 /* The fewest samples in [min_samples, max_samples] whose predicted pen_mae
  * is at most `target`; max_samples when none is (the lowest error the
  * technique offers). min_samples for PCSS. Bounds are used as given
  * (callers clamp them); max_samples < min_samples gives min_samples. */
 int vsh_auto_soft_samples_for(int technique, double target, int min_samples, int max_samples);
+
+/* csm's sampled light: the fewest N in [min_samples, max_samples] whose
+ * predicted pen_mae at its own texel ratio meets `target`; else the N with
+ * the lowest prediction. Not a bisection: more samples also coarsen the
+ * maps, so the error need not fall with N. min_samples for NULL. */
+int vsh_auto_soft_csm_samples_for(const vsh_auto_soft_input *input, double target,
+                                  int min_samples, int max_samples);
 
 /* Planar's predicted milliseconds for one (receiver, light) pair at N
  * samples over `pixels` viewport pixels. */
@@ -102,6 +133,11 @@ double vsh_auto_soft_planar_ms(double pixels, int samples);
  * pre-pass (the triangle term) is paid once. +inf for NULL or inputs the
  * hard model refuses. N < 1 counts as 1. */
 double vsh_auto_soft_volume_ms(const vsh_volume_ms_input *volume, int samples);
+
+/* csm's sampled light: map_ms x (1 + lookups), lookups N or, adaptive
+ * with N > 8, 8 + penumbra x (N - 8): each sample one more hard lookup and
+ * its share of the map renders (vsh_auto_soft.c). */
+double vsh_auto_soft_csm_sampled_ms(double map_ms, int samples, int adaptive, double penumbra);
 
 /* csm with PCSS: map_ms (one hard lookup per pixel) times the measured
  * factor of PCSS's taps over a hard lookup. */

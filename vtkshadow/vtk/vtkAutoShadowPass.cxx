@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -72,6 +73,14 @@ struct vtkAutoShadowPass::Internals
   int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
   int RaySamples = 0;    // the frame's samples for raytrace's lights with a size (0: none)
   int VolumeSamples = 0; // the frame's soft_samples for volume's lights with a size (0: none)
+  int CsmSamples = 0;    // the frame's soft_samples for csm's sampled lights with a size (0: none)
+  bool CsmPcss = false;  // some light with a size picked csm with PCSS this frame
+  // csm's soft setting is one per pass: auto sets it in frames where a light
+  // with a size picks csm, and puts the user's back otherwise. AsSet is the
+  // user's setting; Applied what auto last set (-1: nothing).
+  int CsmSoftAsSet = -1;
+  int CsmSoftApplied = -1;
+  std::vector<int> LightTiles; // per switched-on light: csm's planned maps, estimated
   // Per switched-on light: the soft candidates weighed (pick -1: hard, or
   // nothing to shadow) and the inputs of the volume candidate.
   std::vector<vsh_auto_soft_choice> SoftChoices;
@@ -169,7 +178,10 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   impl.SoftLights.clear();
   impl.SoftChoices.clear();
   impl.SoftJSON.clear();
-  impl.PlanarSamples = impl.RaySamples = impl.VolumeSamples = 0;
+  impl.PlanarSamples = impl.RaySamples = impl.VolumeSamples = impl.CsmSamples = 0;
+  impl.CsmPcss = false;
+  impl.LightTiles.clear();
+  this->RecallCsmSoft();
   this->LightReasons.clear();
   for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
   {
@@ -182,12 +194,17 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
         light->LightTypeIsHeadlight() ? 1 : 0, concave);
     this->LightReasons.push_back(this->LightReasonText(c.reason, c.a, c.b));
     impl.LightChoices.push_back(static_cast<vtkshadow::TechniqueSet>(c.technique));
-    // A light with a size: the soft candidates by the penumbra target.
+    impl.LightTiles.push_back(this->EstimateCsmTiles(light, impl.LightTiles.size()));
     impl.SoftChoices.emplace_back();
     impl.SoftChoices.back().pick = -1;
-    if (impl.SoftLights.back() && c.technique != VSH_AUTO_NONE)
+  }
+  // Lights with a size: the soft candidates by the penumbra target, once
+  // every light's maps are known (csm's sampled maps share one atlas).
+  for (size_t l = 0; l < impl.SoftChoices.size(); ++l)
+  {
+    if (impl.SoftLights[l] && impl.LightChoices[l] != vtkshadow::TechniqueSet::None)
     {
-      this->WeighSoft(renderer, impl.LightChoices.size() - 1, c.technique);
+      this->WeighSoft(renderer, l, static_cast<int>(impl.LightChoices[l]));
     }
   }
   this->ChooseSoft();
@@ -528,7 +545,7 @@ void vtkAutoShadowPass::WeighSoft(vtkRenderer* renderer, size_t l, int technique
   in.pixels = std::max(1.0, static_cast<double>(size[0]) * size[1]);
   in.planar_available = technique == VSH_AUTO_PLANAR ? 1 : 0;
   in.csm_available = 1;
-  in.pcss = this->CascadedPass->GetSoft() == vtkCascadedShadowMapPass::SOFT_PCSS ? 1 : 0;
+  in.pcss = impl.CsmSoftAsSet != vtkCascadedShadowMapPass::SOFT_OFF ? 1 : 0;
   in.raytrace_available = 1;
   in.map_ms = MapLookupMsPerPixel * in.pixels;
   this->RayTracedPass->GetCostInputs(in.pixels, 1.0, 1, true, &in.rt_model, &in.rt_frame);
@@ -538,36 +555,73 @@ void vtkAutoShadowPass::WeighSoft(vtkRenderer* renderer, size_t l, int technique
   const int unsupported =
     this->VolumeInputs(renderer, impl.Lights[l].data(), static_cast<int>(l), in.volume);
   in.volume_available = unsupported == 0 ? 1 : 0;
+  // csm's sampled maps: every light's planned maps, and N more per map of
+  // each light with a size, in one atlas within the memory budget.
+  in.csm_resolution = this->CascadedPass->GetMapResolution();
+  in.csm_budget = this->CascadedPass->GetMemoryBudget();
+  for (size_t k = 0; k < impl.LightTiles.size(); ++k)
+  {
+    in.csm_tiles += impl.LightTiles[k];
+    in.csm_sampled_tiles += impl.SoftLights[k] ? impl.LightTiles[k] : 0;
+  }
+  in.csm_adaptive = this->CascadedPass->GetAdaptive() ? 1 : 0;
   vsh_auto_soft_choose(&in, &impl.SoftChoices[l]);
 }
 
 //------------------------------------------------------------------------------
 void vtkAutoShadowPass::ChooseSoft()
 {
-  // The volume and ray-traced passes each own a screen mask whose lighting
-  // hook declares the same names: they cannot both hook one frame. When
-  // lights with a size pick both, the volume ones choose again without
-  // volumes (raytrace stays: it is the lowest error at any N).
+  // One setting per pass. csm has one soft mode for all its lights: when
+  // some lights pick its sampled light and others PCSS, the PCSS ones choose
+  // again without PCSS. The volume and ray-traced passes each own a screen
+  // mask whose lighting hook declares the same names, so they cannot both
+  // hook one frame: when lights pick both, the volume ones choose again
+  // without volumes (raytrace stays: it is the lowest error at any N), and
+  // without PCSS if csm samples.
   Internals& impl = *this->Impl;
-  bool volume = false, rays = false;
-  for (const vsh_auto_soft_choice& c : impl.SoftChoices)
+  auto picked = [&impl](int technique)
   {
-    volume = volume || c.pick == VSH_AUTO_SOFT_VOLUME;
-    rays = rays || c.pick == VSH_AUTO_SOFT_RAYTRACE;
+    return std::any_of(impl.SoftChoices.begin(), impl.SoftChoices.end(),
+      [technique](const vsh_auto_soft_choice& c) { return c.pick == technique; });
+  };
+  auto again = [this](vsh_auto_soft_choice& c, std::initializer_list<int> without)
+  {
+    for (int t : without)
+    {
+      c.candidates[t].available = 0;
+    }
+    vsh_auto_candidate weighed[VSH_AUTO_SOFT_COUNT];
+    for (int i = 0; i < VSH_AUTO_SOFT_COUNT; ++i)
+    {
+      weighed[i] = { c.candidates[i].available, c.candidates[i].pen_mae, c.candidates[i].ms };
+    }
+    c.pick = vsh_auto_pick_cheapest(weighed, VSH_AUTO_SOFT_COUNT, this->PenumbraTarget, &c.met);
+  };
+  const bool sampledMaps = picked(VSH_AUTO_SOFT_CSM_SAMPLED);
+  for (vsh_auto_soft_choice& c : impl.SoftChoices)
+  {
+    if (sampledMaps && c.pick == VSH_AUTO_SOFT_PCSS)
+    {
+      again(c, { VSH_AUTO_SOFT_PCSS });
+    }
+  }
+  const bool clash = picked(VSH_AUTO_SOFT_VOLUME) && picked(VSH_AUTO_SOFT_RAYTRACE);
+  for (vsh_auto_soft_choice& c : impl.SoftChoices)
+  {
+    if (clash && c.pick == VSH_AUTO_SOFT_VOLUME)
+    {
+      if (sampledMaps)
+      {
+        again(c, { VSH_AUTO_SOFT_VOLUME, VSH_AUTO_SOFT_PCSS });
+      }
+      else
+      {
+        again(c, { VSH_AUTO_SOFT_VOLUME });
+      }
+    }
   }
   for (size_t l = 0; l < impl.SoftChoices.size(); ++l)
   {
-    vsh_auto_soft_choice& c = impl.SoftChoices[l];
-    if (volume && rays && c.pick == VSH_AUTO_SOFT_VOLUME)
-    {
-      c.candidates[VSH_AUTO_SOFT_VOLUME].available = 0;
-      vsh_auto_candidate weighed[VSH_AUTO_SOFT_COUNT];
-      for (int i = 0; i < VSH_AUTO_SOFT_COUNT; ++i)
-      {
-        weighed[i] = { c.candidates[i].available, c.candidates[i].pen_mae, c.candidates[i].ms };
-      }
-      c.pick = vsh_auto_pick_cheapest(weighed, VSH_AUTO_SOFT_COUNT, this->PenumbraTarget, &c.met);
-    }
     if (impl.SoftLights[l] && impl.LightChoices[l] != vtkshadow::TechniqueSet::None)
     {
       impl.LightChoices[l] = static_cast<vtkshadow::TechniqueSet>(
@@ -582,7 +636,8 @@ int vtkAutoShadowPass::ApplySoftPick(size_t l, int technique)
   Internals& impl = *this->Impl;
   const vsh_auto_soft_choice& choice = impl.SoftChoices[l];
   const int pick = choice.pick;
-  static const char* const names[VSH_AUTO_SOFT_COUNT] = { "planar", "pcss", "raytrace", "volume" };
+  static const char* const names[VSH_AUTO_SOFT_COUNT] = { "planar", "pcss", "raytrace", "volume",
+    "csm_sampled" };
   std::ostringstream json, why;
   json.precision(4);
   why.precision(3);
@@ -615,14 +670,15 @@ int vtkAutoShadowPass::ApplySoftPick(size_t l, int technique)
       << names[pick];
   // The hard rules' reason stays when the soft pick keeps their technique.
   static const int techniques[VSH_AUTO_SOFT_COUNT] = { VSH_AUTO_PLANAR, VSH_AUTO_CSM,
-    VSH_AUTO_RAYTRACE, VSH_AUTO_VOLUME };
+    VSH_AUTO_RAYTRACE, VSH_AUTO_VOLUME, VSH_AUTO_CSM };
   std::string& reason = this->LightReasons[l];
   reason = techniques[pick] == technique ? reason + "; " + why.str() : why.str();
   // One N per pass (the passes take one setting): the largest any of the
   // lights that chose it needs.
   const int samples = choice.candidates[pick].samples;
   int* const perPass[VSH_AUTO_SOFT_COUNT] = { &impl.PlanarSamples, nullptr, &impl.RaySamples,
-    &impl.VolumeSamples };
+    &impl.VolumeSamples, &impl.CsmSamples };
+  impl.CsmPcss = impl.CsmPcss || pick == VSH_AUTO_SOFT_PCSS;
   if (perPass[pick])
   {
     *perPass[pick] = std::max(*perPass[pick], samples);
@@ -649,6 +705,57 @@ void vtkAutoShadowPass::ApplySoftSamples()
   {
     this->VolumePass->SetSoftSamples(impl.VolumeSamples);
   }
+  this->ApplyCsmSoft();
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::RecallCsmSoft()
+{
+  // The pass shows what auto set last frame unless the user has set it
+  // since: then the user's setting is the new one to keep.
+  Internals& impl = *this->Impl;
+  const int current = this->CascadedPass->GetSoft();
+  if (impl.CsmSoftApplied < 0 || current != impl.CsmSoftApplied || impl.CsmSoftAsSet < 0)
+  {
+    impl.CsmSoftAsSet = current;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ApplyCsmSoft()
+{
+  // csm's mode for the frame: sampled when a light with a size picked it
+  // (PCSS picks chose again, ChooseSoft), PCSS when one picked PCSS, else
+  // the user's setting. The user's `soft=0` keeps csm hard: then neither
+  // candidate was offered.
+  Internals& impl = *this->Impl;
+  int mode = impl.CsmSoftAsSet;
+  if (impl.CsmSamples > 0)
+  {
+    mode = vtkCascadedShadowMapPass::SOFT_SAMPLED;
+    this->CascadedPass->SetSoftSamples(impl.CsmSamples);
+  }
+  else if (impl.CsmPcss)
+  {
+    mode = vtkCascadedShadowMapPass::SOFT_PCSS;
+  }
+  this->CascadedPass->SetSoft(mode);
+  impl.CsmSoftApplied = mode == impl.CsmSoftAsSet ? -1 : mode;
+}
+
+//------------------------------------------------------------------------------
+int vtkAutoShadowPass::EstimateCsmTiles(vtkLight* light, size_t l) const
+{
+  // What csm's plan gives a light before it has planned: a cube of 6 for a
+  // point light, 1 for a spot (cone under 90 degrees, vsh_csm_map_half_angle),
+  // the cascades of a directional light (the last frame's count when csm drew
+  // it, else its setting, at least 1).
+  if (!light->GetPositional())
+  {
+    const int last = this->CascadedPass->GetNumberOfCascades(static_cast<int>(l));
+    return std::max(1, last > 0 ? last : this->CascadedPass->GetCascadeCount());
+  }
+  return light->GetConeAngle() < 90.0 ? 1 : 6;
 }
 
 //------------------------------------------------------------------------------

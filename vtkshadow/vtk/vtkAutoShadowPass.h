@@ -44,6 +44,7 @@
 #include <string> // for std::string
 #include <vector> // for std::vector
 
+class vtkLight;
 class vtkActor;
 class vtkCascadedShadowMapPass;
 class vtkRenderer;
@@ -231,6 +232,12 @@ private:
   // (`technique`, the hard rules', when nothing was picked).
   int ApplySoftPick(size_t l, int technique);
   void ApplySoftSamples();
+  // csm's soft mode is one per pass: the user's setting is recalled at the
+  // start of a frame (RecallCsmSoft) and auto's choice applied at its end
+  // (ApplyCsmSoft); EstimateCsmTiles is the maps csm will plan for a light.
+  void RecallCsmSoft();
+  void ApplyCsmSoft();
+  int EstimateCsmTiles(vtkLight* light, size_t l) const;
   // For the lights given maps: keep the map when its predicted error meets
   // the target and it is the cheapest such candidate, else an exact one.
   void ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths);
