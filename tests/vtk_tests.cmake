@@ -82,6 +82,12 @@ add_test(NAME cli.bench_soft
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_bench_soft.py
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/bench_soft)
 set_tests_properties(cli.bench_soft PROPERTIES LABELS "render" TIMEOUT 1800)
+# bench/rotation_study.py (no GL) on a small grid: its table, the
+# finding that a per-pixel turn leaves pen_mae where it was, bad options.
+add_test(NAME cli.rotation_study
+  COMMAND ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_rotation_study.py
+          --source ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.rotation_study PROPERTIES TIMEOUT 600)
 
 # Visibility against the exact answer by ray casting (tests/render/).
 function(vtkshadow_visibility_test name)
