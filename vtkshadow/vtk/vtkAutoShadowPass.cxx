@@ -337,6 +337,14 @@ void vtkAutoShadowPass::ChooseTexelTarget(vtkRenderer* renderer, double edgeLeng
   const int* size = renderer->GetSize();
   this->UsedTexelTarget = vsh_auto_frame_texel_target(this->MaxTexelPixels, this->MaxError,
     static_cast<double>(size[0]) * size[1], edgeLength, stretch);
+  // csm's sampled light was weighed at csm's own map_resolution within its
+  // memory budget (vsh_auto_soft_csm_texel_ratio): a texel target would
+  // shrink its maps further than the model saw (at 256x192 to 512 texels,
+  // and glyphs-soft's light 1 from 0.055 to 0.091 against Cycles).
+  if (this->Impl->CsmSamples > 0)
+  {
+    this->UsedTexelTarget = 0.0;
+  }
   this->UsedStretch = stretch;
   this->UsedEdgeLength = edgeLength;
   this->CascadedPass->SetMaxTexelPixels(this->UsedTexelTarget);
