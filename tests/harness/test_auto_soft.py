@@ -22,8 +22,8 @@ integrated per pixel on the plane, vsh_soft). Per light:
 
 csm's sampled light (session 10) on scenes/soft/glyphs-soft, where planar
 cannot draw the shadows (glyphs on glyphs): at 0.06 the model's cheapest
-candidate is csm's sampled light (PCSS predicts 0.09, rays and volumes cost
-4x and 100x more), so the pick is csm_sampled, the light's choice is csm,
+candidate is csm's sampled light (PCSS predicts 0.09; rays and volumes cost
+several times more), so the pick is csm_sampled, the light's choice is csm,
 and the csm pass drew that many sample maps (--stats soft_samples and
 sample_maps); with --set soft=0 (the user keeps csm hard) it is not offered
 and no sample map is drawn. Its error against Cycles is measured by
