@@ -139,11 +139,75 @@ static void test_missed_cap(void)
   }
 }
 
+/* planar's mark: the state of a float share, and the marks of a small
+ * channel with an edge between all lit and all blocked and one mixed pixel. */
+static void test_share_state(void)
+{
+  CHECK(vsh_soft_share_state(0.0, 8, 64) == VSH_RT_BATCH_FREE);
+  CHECK(vsh_soft_share_state(8.0 / 64, 8, 64) == VSH_RT_BATCH_BLOCKED);
+  CHECK(vsh_soft_share_state(1.0 / 64, 8, 64) == VSH_RT_BATCH_MIXED);
+  CHECK(vsh_soft_share_state(7.0 / 64, 8, 64) == VSH_RT_BATCH_MIXED);
+  CHECK(vsh_soft_share_state(8.0 / 1024, 8, 1024) == VSH_RT_BATCH_BLOCKED);
+  CHECK(vsh_soft_share_state(1.0 / 1024, 8, 1024) == VSH_RT_BATCH_MIXED);
+  CHECK(vsh_soft_share_state(0.0, 0, 64) == VSH_RT_BATCH_NONE);
+  CHECK(vsh_soft_share_state(0.0, 8, 4) == VSH_RT_BATCH_NONE);
+  CHECK(vsh_soft_share_state(NAN, 8, 64) == VSH_RT_BATCH_NONE);
+  /* A 1024-sample order (planar's largest N) is a permutation, centre first. */
+  static int order[1024];
+  CHECK(vsh_soft_batch_order(1024, 8, order) == 0);
+  CHECK(is_permutation(order, 1024));
+  CHECK(order[0] == 0);
+}
+
+static void test_mark_pixels(void)
+{
+  /* 10 x 6, RGBA with the share in channel 2: columns 0-4 lit, 5-9 blocked
+   * (8 of 16), pixel (8, 0) mixed, pixel (0, 5) mixed. */
+  enum { W = 10, H = 6 };
+  float rgba[W * H * 4];
+  for (int y = 0; y < H; ++y) {
+    for (int x = 0; x < W; ++x) {
+      float *p = rgba + 4 * (y * W + x);
+      p[0] = p[1] = p[3] = 0.75f; /* other pairs' channels: ignored */
+      p[2] = x < 5 ? 0.0f : 8.0f / 16;
+    }
+  }
+  rgba[4 * (0 * W + 8) + 2] = 3.0f / 16;
+  rgba[4 * (5 * W + 0) + 2] = 1.0f / 16;
+  unsigned char mark[W * H];
+  int box[4];
+  const long refined = vsh_soft_mark_pixels(rgba + 2, 4, W, H, 8, 16, mark, box);
+  /* The edge: columns 4 and 5 (every row, 12 pixels); around (8, 0):
+   * columns 7-9 of rows 0-1 (6); around (0, 5): columns 0-1 of rows 4-5
+   * (4). */
+  CHECK(refined == 12 + 6 + 4);
+  CHECK(box[0] == 0 && box[1] == 0 && box[2] == 10 && box[3] == 6);
+  CHECK(mark[2 * W + 2] == VSH_SOFT_MARK_LIT);
+  CHECK(mark[3 * W + 8] == VSH_SOFT_MARK_BLOCKED);
+  CHECK(mark[3 * W + 4] == VSH_SOFT_MARK_REFINE && mark[3 * W + 5] == VSH_SOFT_MARK_REFINE);
+  CHECK(mark[3 * W + 3] == VSH_SOFT_MARK_LIT && mark[3 * W + 6] == VSH_SOFT_MARK_BLOCKED);
+  CHECK(mark[1 * W + 9] == VSH_SOFT_MARK_REFINE && mark[2 * W + 9] == VSH_SOFT_MARK_BLOCKED);
+  CHECK(mark[4 * W + 1] == VSH_SOFT_MARK_REFINE && mark[3 * W + 1] == VSH_SOFT_MARK_LIT);
+  /* All lit but one mixed pixel in the middle: its 3x3, and the box. */
+  for (int p = 0; p < W * H; ++p) rgba[4 * p + 2] = 0.0f;
+  rgba[4 * (2 * W + 6) + 2] = 2.0f / 16;
+  CHECK(vsh_soft_mark_pixels(rgba + 2, 4, W, H, 8, 16, mark, box) == 9);
+  CHECK(box[0] == 5 && box[1] == 1 && box[2] == 8 && box[3] == 4);
+  /* Nothing to refine: an empty box. */
+  rgba[4 * (2 * W + 6) + 2] = 0.0f;
+  CHECK(vsh_soft_mark_pixels(rgba + 2, 4, W, H, 8, 16, mark, box) == 0);
+  CHECK(box[0] == 0 && box[2] == 0 && mark[0] == VSH_SOFT_MARK_LIT);
+  CHECK(vsh_soft_mark_pixels(NULL, 4, W, H, 8, 16, mark, box) == -1);
+  CHECK(vsh_soft_mark_pixels(rgba, 4, W, H, 8, 4, mark, box) == -1);
+}
+
 int main(void)
 {
   test_levels();
   test_order();
   test_batch_levels();
   test_missed_cap();
+  test_share_state();
+  test_mark_pixels();
   return vsh_check_report("soft_adaptive");
 }

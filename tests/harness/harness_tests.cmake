@@ -76,6 +76,15 @@ add_test(NAME harness.soft_planar
           --out ${VTKSHADOW_TEST_OUT}/harness/soft_planar)
 set_tests_properties(harness.soft_planar PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
 
+# planar's adaptive sample counts (adaptive=1) against the exact penumbra:
+# N = 16 and 64 per light within 0.001 of the non-adaptive pen_mae, the
+# stats say the batch was used, adaptive=0 the draw of before byte for byte,
+# and the small-occluder failure mode bounded (docs/soft-shadows.md).
+add_test(NAME harness.soft_planar_adaptive
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_planar_adaptive.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/soft_planar_adaptive)
+set_tests_properties(harness.soft_planar_adaptive PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
 # csm's PCSS (soft=1) against the exact penumbra: pen_mae per light within
 # what it reaches, at most half the hard shadow's, and size 0 / soft=0 the
 # hard path byte for byte (docs/soft-shadows.md).

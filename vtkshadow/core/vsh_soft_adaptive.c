@@ -165,3 +165,73 @@ double vsh_soft_batch_missed_cap(const double *xy, int count)
   }
   return worst;
 }
+
+int vsh_soft_share_state(double share, int batch, int samples)
+{
+  if (batch < 1 || samples < batch || !isfinite(share)) {
+    return VSH_RT_BATCH_NONE;
+  }
+  if (share < 0.5 / samples) {
+    return VSH_RT_BATCH_FREE;
+  }
+  return share > (batch - 0.5) / samples ? VSH_RT_BATCH_BLOCKED : VSH_RT_BATCH_MIXED;
+}
+
+/* Bits of a pixel's mark while vsh_soft_mark_pixels works: the state
+ * (VSH_RT_BATCH_*) in bits 0-1, refined in bit 2. */
+#define VSH_SM_STATE 3
+#define VSH_SM_REFINE 4
+
+static int mark_near(const unsigned char *mark, int width, int height, int x, int y)
+{
+  int mixed = 0, lit = 0, blocked = 0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    const int yy = y + dy < 0 ? 0 : (y + dy >= height ? height - 1 : y + dy);
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int xx = x + dx < 0 ? 0 : (x + dx >= width ? width - 1 : x + dx);
+      const int s = mark[(long)yy * width + xx] & VSH_SM_STATE;
+      mixed |= s == VSH_RT_BATCH_MIXED;
+      lit |= s == VSH_RT_BATCH_FREE;
+      blocked |= s == VSH_RT_BATCH_BLOCKED;
+    }
+  }
+  return mixed || (lit && blocked);
+}
+
+long vsh_soft_mark_pixels(const float *share, int stride, int width, int height, int batch,
+  int samples, unsigned char *mark, int box[4])
+{
+  if (!share || !mark || stride < 1 || width < 1 || height < 1 || batch < 1 || samples < batch) {
+    return -1;
+  }
+  const long count = (long)width * height;
+  for (long p = 0; p < count; ++p) {
+    mark[p] = (unsigned char)vsh_soft_share_state(share[p * stride], batch, samples);
+  }
+  int b[4] = { width, height, 0, 0 };
+  long refined = 0;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      if (mark_near(mark, width, height, x, y)) {
+        mark[(long)y * width + x] |= VSH_SM_REFINE;
+        ++refined;
+        b[0] = x < b[0] ? x : b[0];
+        b[1] = y < b[1] ? y : b[1];
+        b[2] = x + 1 > b[2] ? x + 1 : b[2];
+        b[3] = y + 1 > b[3] ? y + 1 : b[3];
+      }
+    }
+  }
+  for (long p = 0; p < count; ++p) {
+    const int s = mark[p] & VSH_SM_STATE;
+    mark[p] = (mark[p] & VSH_SM_REFINE) ? VSH_SOFT_MARK_REFINE
+                                         : (s == VSH_RT_BATCH_BLOCKED ? VSH_SOFT_MARK_BLOCKED
+                                                                      : VSH_SOFT_MARK_LIT);
+  }
+  if (box) {
+    for (int k = 0; k < 4; ++k) {
+      box[k] = refined ? b[k] : 0;
+    }
+  }
+  return refined;
+}

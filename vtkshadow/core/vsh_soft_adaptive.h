@@ -73,6 +73,33 @@ int vsh_soft_batch_state(int level, int batch_levels);
  * directions. 1 for count < 1. */
 double vsh_soft_batch_missed_cap(const double *xy, int count);
 
+/* Planar's adaptive mark (vtkPlanarShadowPass, adaptive=1). Its
+ * accumulation channel holds the shadowed share: each blocked sample adds
+ * 1 / samples (a float), so after a batch of `batch` samples a pixel holds
+ * k / samples for k of them blocked. vsh_soft_share_state tells the batch's
+ * state from that share: VSH_RT_BATCH_FREE below 0.5 / samples (k = 0),
+ * VSH_RT_BATCH_BLOCKED above (batch - 0.5) / samples (k = batch),
+ * VSH_RT_BATCH_MIXED between, VSH_RT_BATCH_NONE for bad arguments or a
+ * share that is not finite. */
+int vsh_soft_share_state(double share, int batch, int samples);
+
+/* The per-pixel marks of vsh_soft_mark_pixels. */
+#define VSH_SOFT_MARK_LIT 0     /* batch all lit, keeps 0 shadowed share */
+#define VSH_SOFT_MARK_BLOCKED 1 /* batch all blocked, set to exactly 1 */
+#define VSH_SOFT_MARK_REFINE 2  /* gets the other samples */
+
+/* Marks every pixel of a width x height channel after the batch: share[(y
+ * width + x) stride] is pixel (x, y)'s shadowed share (stride 4 picks one
+ * channel of RGBA). As volume's vtkShadowScreenBatchFS and raytrace's
+ * vsh_rt_adaptive_rest_near, a pixel is refined when any pixel of its 3x3
+ * neighbourhood (clamped at the borders) is mixed or the neighbourhood holds
+ * both all-lit and all-blocked pixels; the others keep their batch's answer.
+ * mark (width x height bytes) gets VSH_SOFT_MARK_*; box (x0, y0, x1, y1,
+ * half-open, may be null) the bounding box of the refined pixels, all 0 when
+ * none. Returns the number of refined pixels, -1 for bad arguments. */
+long vsh_soft_mark_pixels(const float *share, int stride, int width, int height, int batch,
+  int samples, unsigned char *mark, int box[4]);
+
 #ifdef __cplusplus
 }
 #endif

@@ -38,7 +38,9 @@
 #include "vsh_planar.h"
 #include "vsh_planar_plan.h"
 #include "vsh_soft.h"
+#include "vsh_soft_adaptive.h"
 
+#include "vtkPlanarShadowAdaptiveFS.h"
 #include "vtkPlanarShadowLightFS.h"
 #include "vtkPlanarShadowMaskFS.h"
 #include "vtkPlanarShadowMaskVS.h"
@@ -146,6 +148,24 @@ struct vtkPlanarShadowPass::Internals
   int SoftPair[MaxSoftPairs] = { -1, -1, -1, -1 };
   bool SoftShader = false;
   bool SoftWarned = false;
+  // Adaptive sample counts: the sample order of SoftOrderSamples (the batch
+  // first when SoftOrderAdaptive), the batch's read-back and mark (one byte
+  // per pixel, uploaded to SoftMark), and per soft pair of the last frame
+  // its light, refined pixels and the box they were drawn in.
+  std::vector<int> SoftOrder;
+  int SoftOrderSamples = 0;
+  bool SoftOrderAdaptive = false;
+  vtkTextureObject* SoftMark = nullptr;
+  std::vector<float> SoftReadback;
+  std::vector<unsigned char> SoftMarkBytes;
+  struct PairStats
+  {
+    int Light;
+    long Refined;
+    long BoxPixels;
+  };
+  std::vector<PairStats> SoftStats;
+  bool SoftAdaptive = false; // in the last frame
 
   // Per-frame values for SetShaderParameters.
   std::map<vtkProp*, int> ReceiverIndex;
@@ -209,6 +229,8 @@ vtkPlanarShadowPass::vtkPlanarShadowPass()
   , NumberOfGeometryBuilds(0)
   , SoftSamples(16)
   , NumberOfSoftPairs(0)
+  , Adaptive(false)
+  , NumberOfRefinedPixels(-1)
   , Impl(new Internals)
 {
 }
@@ -227,6 +249,10 @@ vtkPlanarShadowPass::~vtkPlanarShadowPass()
   if (this->Impl->Soft)
   {
     this->Impl->Soft->Delete();
+  }
+  if (this->Impl->SoftMark)
+  {
+    this->Impl->SoftMark->Delete();
   }
 }
 
@@ -283,6 +309,11 @@ long long vtkPlanarShadowPass::GetMemoryBytes() const
   long long bytes = static_cast<long long>(this->Impl->MaskSize[0]) * this->Impl->MaskSize[1] * 4 *
     this->Impl->MaskChannels;
   bytes += static_cast<long long>(this->Impl->SoftSize[0]) * this->Impl->SoftSize[1] * 8;
+  if (this->Impl->SoftMark)
+  {
+    bytes +=
+      static_cast<long long>(this->Impl->SoftMark->GetWidth()) * this->Impl->SoftMark->GetHeight();
+  }
   for (const auto& entry : this->Impl->Casters)
   {
     bytes += entry.second->Geometry.GetNumberOfBytes();
@@ -804,14 +835,37 @@ void vtkPlanarShadowPass::DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGL
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   state->vtkglBlendEquation(GL_FUNC_ADD);
+  // Adaptive: the batch (the light's centre and 7 rim points) first, then
+  // the mark, then the rest only at the marked pixels. Otherwise the spiral
+  // in order, as before.
+  const bool adaptive = this->Adaptive && this->SoftSamples > VSH_SOFT_ADAPTIVE_BATCH;
+  const std::vector<int>& order = this->SoftOrder(adaptive);
+  const int batch = adaptive ? VSH_SOFT_ADAPTIVE_BATCH : this->SoftSamples;
+  impl.SoftAdaptive = adaptive;
+  impl.SoftStats.clear();
+  this->NumberOfRefinedPixels = adaptive ? 0 : -1;
   for (size_t k = 0; k < softPairs.size(); ++k)
   {
     ++this->NumberOfShadowPairs;
     float weight[4] = { 0, 0, 0, 0 };
     weight[k] = 1.0f / static_cast<float>(this->SoftSamples);
-    for (int sample = 0; sample < this->SoftSamples; ++sample)
+    for (int j = 0; j < batch; ++j)
     {
-      this->DrawSoftSample(program, state, frame, softPairs[k], sample, weight);
+      this->DrawSoftSample(program, state, frame, softPairs[k], order[j], weight);
+    }
+    if (!adaptive)
+    {
+      continue;
+    }
+    int box[4];
+    const long refined = this->MarkSoftBatch(window, state, frame, static_cast<int>(k), box);
+    impl.SoftStats.push_back({ softPairs[k].light, refined,
+      static_cast<long>(box[2] - box[0]) * static_cast<long>(box[3] - box[1]) });
+    this->NumberOfRefinedPixels += std::max(refined, 0L);
+    window->GetShaderCache()->ReadyShaderProgram(program);
+    if (refined > 0)
+    {
+      this->DrawSoftRest(program, state, frame, softPairs[k], box, weight);
     }
   }
   state->vtkglStencilMask(0xff);
@@ -819,6 +873,105 @@ void vtkPlanarShadowPass::DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGL
   state->vtkglDisable(GL_BLEND);
   glDisable(GL_CLIP_DISTANCE0);
   glDisable(GL_CLIP_DISTANCE1);
+}
+
+//------------------------------------------------------------------------------
+const std::vector<int>& vtkPlanarShadowPass::SoftOrder(bool adaptive)
+{
+  // The spiral's indices in drawing order: 0..N-1, or the batch of
+  // vsh_soft_batch_order first (computed once per N: about 1e6 operations).
+  Internals& impl = *this->Impl;
+  if (impl.SoftOrderSamples != this->SoftSamples || impl.SoftOrderAdaptive != adaptive ||
+    impl.SoftOrder.size() != static_cast<size_t>(this->SoftSamples))
+  {
+    impl.SoftOrder.resize(this->SoftSamples);
+    vsh_soft_batch_order(
+      this->SoftSamples, adaptive ? VSH_SOFT_ADAPTIVE_BATCH : 1, impl.SoftOrder.data());
+    impl.SoftOrderSamples = this->SoftSamples;
+    impl.SoftOrderAdaptive = adaptive;
+  }
+  return impl.SoftOrder;
+}
+
+//------------------------------------------------------------------------------
+long vtkPlanarShadowPass::MarkSoftBatch(vtkOpenGLRenderWindow* window, vtkOpenGLState* state,
+  const FrameState& frame, int channel, int box[4])
+{
+  // After the batch of the pair in `channel`: read the accumulation back,
+  // mark its pixels (vsh_soft_mark_pixels: refine where the 3x3
+  // neighbourhood disagrees), upload the mark, and draw it: the pixels that
+  // keep the batch's answer get exactly 0 or 1 and depth 0; the refined ones
+  // keep their sum and depth 1 (cleared), which DrawSoftRest tests against.
+  Internals& impl = *this->Impl;
+  const int w = frame.Size[0], h = frame.Size[1];
+  std::fill_n(box, 4, 0);
+  impl.SoftReadback.resize(static_cast<size_t>(4) * w * h);
+  impl.SoftMarkBytes.resize(static_cast<size_t>(w) * h);
+  impl.FBO->ActivateReadBuffer(0);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, impl.SoftReadback.data());
+  const long refined = vsh_soft_mark_pixels(impl.SoftReadback.data() + channel, 4, w, h,
+    VSH_SOFT_ADAPTIVE_BATCH, this->SoftSamples, impl.SoftMarkBytes.data(), box);
+  if (!impl.SoftMark)
+  {
+    impl.SoftMark = vtkTextureObject::New();
+  }
+  impl.SoftMark->SetContext(window);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  impl.SoftMark->Create2DFromRaw(w, h, 1, VTK_UNSIGNED_CHAR, impl.SoftMarkBytes.data());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
+    vtkPlanarShadowMaskVS, vtkPlanarShadowAdaptiveFS, "");
+  if (!program)
+  {
+    return -1;
+  }
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_STENCIL_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  state->vtkglColorMask(channel == 0, channel == 1, channel == 2, channel == 3);
+  glDepthRange(0.0, 0.0);
+  impl.SoftMark->Activate();
+  program->SetUniformi("batchMark", impl.SoftMark->GetTextureUnit());
+  this->DrawViewportQuad(program);
+  impl.SoftMark->Deactivate();
+  glDepthRange(0.0, 1.0);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  return refined;
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::DrawSoftRest(vtkShaderProgram* program, vtkOpenGLState* state,
+  const FrameState& frame, const vsh_planar_pair& pair, const int box[4], const float weight[4])
+{
+  // Samples 8..N-1 within the refined pixels' box (the scissor: clears,
+  // casters and quads outside it are never rasterized) and, inside it, at
+  // the refined pixels only: every draw at depth 0.5 passes where the mark
+  // left 1 and fails where it wrote 0 (a failing depth test keeps the
+  // stencil, so the quad adds nothing there).
+  vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  state->vtkglScissor(box[0], box[1], box[2] - box[0], box[3] - box[1]);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglDepthFunc(GL_LESS);
+  glDepthRange(0.5, 0.5);
+  const std::vector<int>& order = this->Impl->SoftOrder;
+  for (int j = VSH_SOFT_ADAPTIVE_BATCH; j < this->SoftSamples; ++j)
+  {
+    this->DrawSoftSample(program, state, frame, pair, order[j], weight);
+  }
+  glDepthRange(0.0, 1.0);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
 }
 
 //------------------------------------------------------------------------------
@@ -1149,6 +1302,10 @@ void vtkPlanarShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     impl.Soft->ReleaseGraphicsResources(w);
   }
+  if (impl.SoftMark)
+  {
+    impl.SoftMark->ReleaseGraphicsResources(w);
+  }
   impl.SoftSize[0] = impl.SoftSize[1] = 0;
   if (impl.FBO)
   {
@@ -1184,6 +1341,8 @@ void vtkPlanarShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfGeometryBuilds: " << this->NumberOfGeometryBuilds << "\n";
   os << indent << "SoftSamples: " << this->SoftSamples << "\n";
   os << indent << "NumberOfSoftPairs: " << this->NumberOfSoftPairs << "\n";
+  os << indent << "Adaptive: " << this->Adaptive << "\n";
+  os << indent << "NumberOfRefinedPixels: " << this->NumberOfRefinedPixels << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -1207,6 +1366,15 @@ bool vtkPlanarShadowPass::SetOption(const char* key, double value)
     this->SetSoftSamples(static_cast<int>(value));
     return true;
   }
+  if (key && std::string(key) == "adaptive")
+  {
+    if (value != 0.0 && value != 1.0)
+    {
+      return false;
+    }
+    this->SetAdaptive(value != 0.0);
+    return true;
+  }
   if (key && std::string(key) == "plane_tolerance")
   {
     if (!(value >= 0.0 && value <= 1.0))
@@ -1222,11 +1390,24 @@ bool vtkPlanarShadowPass::SetOption(const char* key, double value)
 //------------------------------------------------------------------------------
 std::string vtkPlanarShadowPass::GetStatsJSON(vtkRenderer* renderer) const
 {
+  // Per adaptive soft pair: its light, the pixels that got all N samples
+  // and the box they were drawn in (pixels).
+  std::string adaptive = "[";
+  for (const Internals::PairStats& pair : this->Impl->SoftStats)
+  {
+    adaptive += std::string(adaptive.size() > 1 ? ", " : "") +
+      "{\"light\": " + std::to_string(pair.Light) +
+      ", \"refined_px\": " + std::to_string(pair.Refined) +
+      ", \"box_px\": " + std::to_string(pair.BoxPixels) + "}";
+  }
+  adaptive += "]";
   return "\"shadow_pairs\": " + std::to_string(this->NumberOfShadowPairs) +
     ", \"mask_triangles\": " + std::to_string(this->NumberOfMaskTriangles) +
     ", \"geometry_builds\": " + std::to_string(this->NumberOfGeometryBuilds) +
     ", \"soft_pairs\": " + std::to_string(this->NumberOfSoftPairs) +
     ", \"soft_samples\": " + std::to_string(this->SoftSamples) +
+    ", \"soft_batch\": " + std::to_string(this->Impl->SoftAdaptive ? VSH_SOFT_ADAPTIVE_BATCH : 0) +
+    ", \"soft_adaptive\": " + adaptive +
     ", \"detected_receivers\": " + this->DetectedReceiversJSON(renderer);
 }
 

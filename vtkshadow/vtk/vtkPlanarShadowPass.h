@@ -111,6 +111,24 @@ public:
   vtkGetMacro(SoftSamples, int);
 
   /**
+   * Adaptive sample counts for the sampled area light (docs/soft-shadows.md,
+   * "planar: adaptive sample counts"): with SoftSamples N > 8, a batch of 8
+   * samples (the light's centre and 7 rim points) is drawn for every pixel,
+   * and the other N - 8 only where the batch disagrees within a pixel's 3x3
+   * neighbourhood (within the bounding box of those pixels); the others get
+   * exactly 0 or 1. Default off (the draw of before).
+   */
+  vtkSetMacro(Adaptive, bool);
+  vtkGetMacro(Adaptive, bool);
+  vtkBooleanMacro(Adaptive, bool);
+
+  /**
+   * Pixels that got all N samples in the last frame, summed over its soft
+   * pairs (-1 when no soft pair was adaptive).
+   */
+  vtkGetMacro(NumberOfRefinedPixels, vtkIdType);
+
+  /**
    * Number of (receiver, light) pairs that cast in the last frame, and the
    * number of caster triangles drawn into the mask in it.
    */
@@ -130,13 +148,15 @@ public:
 
   /**
    * plane_tolerance (0..1), detect_receivers (0/1), soft_samples (1..1024),
-   * and the base's options.
+   * adaptive (0/1), and the base's options.
    */
   bool SetOption(const char* key, double value) override;
 
   /**
-   * shadow_pairs, mask_triangles, geometry_builds and detected_receivers
-   * (indices in the renderer's actor list) of the last frame.
+   * shadow_pairs, mask_triangles, geometry_builds, soft_pairs,
+   * soft_samples, soft_batch (8 when adaptive, else 0), soft_adaptive (per
+   * soft pair: light, refined_px, box_px) and detected_receivers (indices
+   * in the renderer's actor list) of the last frame.
    */
   std::string GetStatsJSON(vtkRenderer* renderer) const override;
 
@@ -176,6 +196,8 @@ protected:
   int NumberOfGeometryBuilds;
   int SoftSamples;
   int NumberOfSoftPairs;
+  bool Adaptive;
+  vtkIdType NumberOfRefinedPixels;
 
 private:
   vtkPlanarShadowPass(const vtkPlanarShadowPass&) = delete;
@@ -203,6 +225,13 @@ private:
     const std::vector<vsh_planar_pair>& softPairs);
   void DrawSoftSample(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
     const vsh_planar_pair& pair, int sample, const float weight[4]);
+  // Adaptive sample counts: the order of the samples (the batch first),
+  // the mark after the batch, and the rest within it.
+  const std::vector<int>& SoftOrder(bool adaptive);
+  long MarkSoftBatch(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const FrameState& frame,
+    int channel, int box[4]);
+  void DrawSoftRest(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
+    const vsh_planar_pair& pair, const int box[4], const float weight[4]);
   // Parts of them.
   void UpdateReceivingSet();
   void AllocateMask(vtkOpenGLRenderWindow* window, const FrameState& frame);
