@@ -39,7 +39,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -580,53 +579,46 @@ void vtkAutoShadowPass::WeighSoft(vtkRenderer* renderer, size_t l, int technique
 void vtkAutoShadowPass::ChooseSoft()
 {
   // One setting per pass. csm has one soft mode for all its lights: when
-  // some lights pick its sampled light and others PCSS, the PCSS ones choose
-  // again without PCSS. The volume and ray-traced passes each own a screen
-  // mask whose lighting hook declares the same names, so they cannot both
-  // hook one frame: when lights pick both, the volume ones choose again
-  // without volumes (raytrace stays: it is the lowest error at any N), and
-  // without PCSS if csm samples.
+  // some lights pick its sampled light, PCSS is dropped for every light. The
+  // volume and ray-traced passes each own a screen mask whose lighting hook
+  // declares the same names, so they cannot both hook one frame: when lights
+  // pick both, volumes are dropped (raytrace stays: it is the lowest error at
+  // any N). A dropped candidate is unavailable to every light, and lights
+  // that had picked it choose again; a new choice can start the other clash,
+  // so this repeats until nothing changes (at most once per rule).
   Internals& impl = *this->Impl;
   auto picked = [&impl](int technique)
   {
     return std::any_of(impl.SoftChoices.begin(), impl.SoftChoices.end(),
       [technique](const vsh_auto_soft_choice& c) { return c.pick == technique; });
   };
-  auto again = [this](vsh_auto_soft_choice& c, std::initializer_list<int> without)
+  auto drop = [this, &impl](int technique)
   {
-    for (int t : without)
+    bool changed = false;
+    for (vsh_auto_soft_choice& c : impl.SoftChoices)
     {
-      c.candidates[t].available = 0;
+      c.candidates[technique].available = 0;
+      if (c.pick != technique)
+      {
+        continue;
+      }
+      vsh_auto_candidate weighed[VSH_AUTO_SOFT_COUNT];
+      for (int i = 0; i < VSH_AUTO_SOFT_COUNT; ++i)
+      {
+        weighed[i] = { c.candidates[i].available, c.candidates[i].pen_mae, c.candidates[i].ms };
+      }
+      c.pick = vsh_auto_pick_cheapest(weighed, VSH_AUTO_SOFT_COUNT, this->PenumbraTarget, &c.met);
+      changed = true;
     }
-    vsh_auto_candidate weighed[VSH_AUTO_SOFT_COUNT];
-    for (int i = 0; i < VSH_AUTO_SOFT_COUNT; ++i)
-    {
-      weighed[i] = { c.candidates[i].available, c.candidates[i].pen_mae, c.candidates[i].ms };
-    }
-    c.pick = vsh_auto_pick_cheapest(weighed, VSH_AUTO_SOFT_COUNT, this->PenumbraTarget, &c.met);
+    return changed;
   };
-  const bool sampledMaps = picked(VSH_AUTO_SOFT_CSM_SAMPLED);
-  for (vsh_auto_soft_choice& c : impl.SoftChoices)
+  bool changed = true;
+  while (changed)
   {
-    if (sampledMaps && c.pick == VSH_AUTO_SOFT_PCSS)
-    {
-      again(c, { VSH_AUTO_SOFT_PCSS });
-    }
-  }
-  const bool clash = picked(VSH_AUTO_SOFT_VOLUME) && picked(VSH_AUTO_SOFT_RAYTRACE);
-  for (vsh_auto_soft_choice& c : impl.SoftChoices)
-  {
-    if (clash && c.pick == VSH_AUTO_SOFT_VOLUME)
-    {
-      if (sampledMaps)
-      {
-        again(c, { VSH_AUTO_SOFT_VOLUME, VSH_AUTO_SOFT_PCSS });
-      }
-      else
-      {
-        again(c, { VSH_AUTO_SOFT_VOLUME });
-      }
-    }
+    const bool pcss = picked(VSH_AUTO_SOFT_CSM_SAMPLED) && drop(VSH_AUTO_SOFT_PCSS);
+    const bool volume =
+      picked(VSH_AUTO_SOFT_VOLUME) && picked(VSH_AUTO_SOFT_RAYTRACE) && drop(VSH_AUTO_SOFT_VOLUME);
+    changed = pcss || volume;
   }
   for (size_t l = 0; l < impl.SoftChoices.size(); ++l)
   {
