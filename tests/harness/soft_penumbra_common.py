@@ -94,6 +94,41 @@ def check_hard(bindir, out, technique, hard_mae_max, extra=()):
             failures.append("size 1e-6 light %d: not the hard shadow (%s)" % (k, m))
 
 
+# The adaptive tests' small occluder (test_soft_adaptive.py,
+# test_soft_planar_adaptive.py): a sphere of radius 0.08 halfway to light 0,
+# whose blocked blob of the light can fall between a fixed batch's points.
+# Non-adaptive N = 64 must stay within PEN_MAE_MAX of the exact penumbra;
+# adaptive within SMALL_MAE_MAX, a regression bound, not a quality goal.
+PEN_MAE_MAX = 0.02
+SMALL_MAE_MAX = 0.05
+
+
+def small_occluder_scene(out):
+    """The small-occluder scene, written to OUT/small.json."""
+    scene = json.loads(json.dumps(SCENE))
+    scene["objects"][0]["sphere"]["center"] = [0, 0, 2.5]
+    scene["objects"][0]["sphere"]["radius"] = 0.08
+    path = os.path.join(out, "small.json")
+    with open(path, "w") as f:
+        json.dump(scene, f)
+    return path
+
+
+def check_small_occluder(adaptive, plain):
+    """Prints and bounds the small occluder's exact figures at N = 64,
+    adaptive and not (exact()'s dicts, or None)."""
+    if not adaptive or not plain or plain["pen_pixels"] < 20:
+        failures.append("small occluder: no penumbra measured")
+        return
+    print("small occluder, N=64, light 0: pen_mae adaptive %g (bias %g), non-adaptive %g (bias %g)"
+          % (adaptive["pen_mae"], adaptive["pen_bias"], plain["pen_mae"], plain["pen_bias"]))
+    if not plain["pen_mae"] <= PEN_MAE_MAX:
+        failures.append("small occluder: non-adaptive pen_mae %g > %g" % (plain["pen_mae"], PEN_MAE_MAX))
+    if not adaptive["pen_mae"] <= SMALL_MAE_MAX:
+        failures.append("small occluder: adaptive pen_mae %g > %g"
+                        % (adaptive["pen_mae"], SMALL_MAE_MAX))
+
+
 def verdict(test_name):
     """Print every failure (or that all bounds were met); the exit status."""
     if failures:

@@ -36,11 +36,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soft_penumbra_common as common  # noqa: E402
 from soft_penumbra_common import parse_args, verdict  # noqa: E402
 from soft_penumbra_common import SCENE, SIZE, failures, run, scene_with  # noqa: E402
+from soft_penumbra_common import PEN_MAE_MAX  # noqa: E402
 
 PEN_MAE_TOL = 0.001
-PEN_MAE_MAX = 0.02
 REFINED_MAX_FRACTION = 0.15
-SMALL_MAE_MAX = 0.05
 BATCH = 8
 
 
@@ -87,23 +86,9 @@ def check_light(args, scene, n, k):
 def check_small_occluder(args):
     """The failure mode: a small occluder whose blocked blob falls between
     the batch's points."""
-    scene = json.loads(json.dumps(SCENE))
-    scene["objects"][0]["sphere"]["center"] = [0, 0, 2.5]
-    scene["objects"][0]["sphere"]["radius"] = 0.08
-    path = os.path.join(args.out, "small.json")
-    with open(path, "w") as f:
-        json.dump(scene, f)
-    ma, _, ra = render(args, path, 64, 1, 0, "small")
-    m0, _, _ = render(args, path, 64, 0, 0, "small")
-    if not ma or not m0 or m0["pen_pixels"] < 20:
-        failures.append("small occluder: no penumbra measured")
-        return
-    print("small occluder, N=64, light 0: pen_mae adaptive %g (bias %g), non-adaptive %g (bias %g)"
-          % (ma["pen_mae"], ma["pen_bias"], m0["pen_mae"], m0["pen_bias"]))
-    if not m0["pen_mae"] <= PEN_MAE_MAX:
-        failures.append("small occluder: non-adaptive pen_mae %g > %g" % (m0["pen_mae"], PEN_MAE_MAX))
-    if not ma["pen_mae"] <= SMALL_MAE_MAX:
-        failures.append("small occluder: adaptive pen_mae %g > %g" % (ma["pen_mae"], SMALL_MAE_MAX))
+    path = common.small_occluder_scene(args.out)
+    common.check_small_occluder(render(args, path, 64, 1, 0, "small")[0],
+                                render(args, path, 64, 0, 0, "small")[0])
 
 
 def main():
