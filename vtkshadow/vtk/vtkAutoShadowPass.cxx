@@ -73,7 +73,6 @@ struct vtkAutoShadowPass::Internals
   int RaySamples = 0;    // the frame's samples for raytrace's lights with a size (0: none)
   int VolumeSamples = 0; // the frame's soft_samples for volume's lights with a size (0: none)
   int CsmSamples = 0;    // the frame's soft_samples for csm's sampled lights with a size (0: none)
-  bool CsmPcss = false;  // some light with a size picked csm with PCSS this frame
   // csm's soft setting is one per pass: auto sets it in frames where a light
   // with a size picks csm, and puts the user's back otherwise. AsSet is the
   // user's setting; Applied what auto last set (-1: nothing).
@@ -178,7 +177,6 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   impl.SoftChoices.clear();
   impl.SoftJSON.clear();
   impl.PlanarSamples = impl.RaySamples = impl.VolumeSamples = impl.CsmSamples = 0;
-  impl.CsmPcss = false;
   impl.LightTiles.clear();
   this->RecallCsmSoft();
   this->LightReasons.clear();
@@ -678,7 +676,6 @@ int vtkAutoShadowPass::ApplySoftPick(size_t l, int technique)
   const int samples = choice.candidates[pick].samples;
   int* const perPass[VSH_AUTO_SOFT_COUNT] = { &impl.PlanarSamples, nullptr, &impl.RaySamples,
     &impl.VolumeSamples, &impl.CsmSamples };
-  impl.CsmPcss = impl.CsmPcss || pick == VSH_AUTO_SOFT_PCSS;
   if (perPass[pick])
   {
     *perPass[pick] = std::max(*perPass[pick], samples);
@@ -735,7 +732,8 @@ void vtkAutoShadowPass::ApplyCsmSoft()
     mode = vtkCascadedShadowMapPass::SOFT_SAMPLED;
     this->CascadedPass->SetSoftSamples(impl.CsmSamples);
   }
-  else if (impl.CsmPcss)
+  else if (std::any_of(impl.SoftChoices.begin(), impl.SoftChoices.end(),
+             [](const vsh_auto_soft_choice& c) { return c.pick == VSH_AUTO_SOFT_PCSS; }))
   {
     mode = vtkCascadedShadowMapPass::SOFT_PCSS;
   }
