@@ -114,9 +114,14 @@ def small_occluder_scene(out):
     return path
 
 
-def check_small_occluder(adaptive, plain):
-    """Prints and bounds the small occluder's exact figures at N = 64,
-    adaptive and not (exact()'s dicts, or None)."""
+def check_small_occluder(args, render):
+    """The failure mode of a fixed batch: renders the small-occluder scene's
+    light 0 at N = 64 adaptive and not with the test's render(args, scene,
+    n, adaptive, k, tag) (exact()'s dict first in what it returns), prints
+    and bounds the figures."""
+    path = small_occluder_scene(args.out)
+    adaptive = render(args, path, 64, 1, 0, "small")[0]
+    plain = render(args, path, 64, 0, 0, "small")[0]
     if not adaptive or not plain or plain["pen_pixels"] < 20:
         failures.append("small occluder: no penumbra measured")
         return

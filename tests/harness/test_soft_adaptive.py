@@ -83,21 +83,13 @@ def check_light(args, scene, n, k):
                         % (n, k, ra, REFINED_MAX_FRACTION * w * h))
 
 
-def check_small_occluder(args):
-    """The failure mode: a small occluder whose blocked blob falls between
-    the batch's points."""
-    path = common.small_occluder_scene(args.out)
-    common.check_small_occluder(render(args, path, 64, 1, 0, "small")[0],
-                                render(args, path, 64, 0, 0, "small")[0])
-
-
 def main():
     args = parse_args()
     scene = scene_with(args.out, "soft", None)
     for k in range(len(SCENE["lights"])):
         check_light(args, scene, 64, k)
     check_light(args, scene, 16, 0)
-    check_small_occluder(args)
+    common.check_small_occluder(args, render)
     return verdict("harness.soft_adaptive")
 
 

@@ -112,14 +112,6 @@ def check_unchanged(args, scene):
                         % (same, b8))
 
 
-def check_small_occluder(args):
-    """The failure mode: a small occluder whose blocked blob falls between
-    the batch's points."""
-    path = common.small_occluder_scene(args.out)
-    common.check_small_occluder(render(args, path, 64, 1, 0, "small")[0],
-                                render(args, path, 64, 0, 0, "small")[0])
-
-
 def main():
     args = parse_args()
     scene = scene_with(args.out, "soft", None)
@@ -127,7 +119,7 @@ def main():
         for k in range(len(SCENE["lights"])):
             check_light(args, scene, n, k)
     check_unchanged(args, scene)
-    check_small_occluder(args)
+    common.check_small_occluder(args, render)
     return verdict("harness.soft_planar_adaptive")
 
 
