@@ -1,7 +1,8 @@
 # The ParaView plugin (VTKSHADOW_PARAVIEW, paraview/): it loads in pvpython
 # and its view renders a library scene with every technique, shadows where
-# they belong (test_pv_view.py); the GUI starts with it and its screenshot is
-# not empty; csm across 2 pvbatch ranks equals 1 rank (run_ranks.sh).
+# they belong (test_pv_view.py); the GUI starts with it, exits with status 0
+# and its screenshot shows the sphere's shadow from ParaView's key light
+# (run_gui.sh); csm across 2 pvbatch ranks equals 1 rank (run_ranks.sh).
 # ParaView's Debian build is -O0: these take a minute or two each.
 if(VTKSHADOW_PARAVIEW)
   set(vtkshadow_pv_out "${VTKSHADOW_TEST_OUT}/paraview")

@@ -97,17 +97,3 @@ def luminance(png, pixel, half=3):
             n += 1
     return total / n
 
-
-def nonblank_fraction(png):
-    """Fraction of pixels that differ from the top-left (background) pixel."""
-    reader = vtkPNGReader()
-    reader.SetFileName(png)
-    reader.Update()
-    image = reader.GetOutput()
-    data = image.GetPointData().GetScalars()
-    n = data.GetNumberOfTuples()
-    comps = min(3, data.GetNumberOfComponents())
-    bg = [data.GetComponent(0, c) for c in range(comps)]
-    differ = sum(1 for i in range(0, n, 7)
-                 if any(abs(data.GetComponent(i, c) - bg[c]) > 8 for c in range(comps)))
-    return differ / float(len(range(0, n, 7)))
