@@ -1,58 +1,62 @@
 """Write or verify scenes/thresholds.json, the --check limits of vtkshadow-compare.
 
 Regenerate after a deliberate change (review the diff: a limit that goes up
-is a regression):
+is a regression). The library run is what the harness.library.* tests run
+(docs/harness.md, "Writing limits"); with the shipped references it
+renders only the VTK techniques:
 
-    tests/gl-run.sh build/bin/vtkshadow-compare scenes --out /tmp/t --scale 0.4 --no-cache
-    python3 scenes/update_thresholds.py /tmp/t/results.json --write scenes/thresholds.json
-    tests/gl-run.sh build/bin/vtkshadow-compare scenes/soft --out /tmp/t-soft --scale 0.4 \
-        --cache /tmp/t/cache --techniques all,volume:soft_samples=64,planar:soft_samples=64
-    python3 scenes/update_thresholds.py /tmp/t-soft/results.json --write scenes/thresholds.json
+    sh scripts/library-run.sh /tmp/t
+    python3 scenes/update_thresholds.py /tmp/t/*/results.json --write scenes/thresholds.json
 
-(the second run: the soft scenes with the technique variants that
-harness.library.soft also runs; a scene's limits are replaced whole by the
-rows of the results given, so that run has every technique too).
+Verify a thresholds file against a run without changing it (the test
+harness.thresholds does this on every CI run):
 
-Several results files may be given (e.g. one per library group); scenes not
-in them keep their limits from the current file (--base, default: the file
-being written). Verify a thresholds file against a run without changing it:
-
-    python3 scenes/update_thresholds.py --verify scenes/thresholds.json /tmp/t/results.json
+    python3 scenes/update_thresholds.py --verify scenes/thresholds.json /tmp/t/*/results.json
 
 Rules (docs/harness.md, "--check, thresholds and known failures"):
 
-- Every row (scene, light, test) of a VTK technique or an EEVEE preset gets,
-  for each metric of LIMITED, the limit ceil100(MEASURED * GEN_FACTOR +
-  GEN_POINTS): measured at --scale 0.4 (320x240), 1.25 x + 0.25 points, so a
-  regression fails --check while renderer noise does not. Rows of "cycles"
-  (POV-Ray against Cycles) are bounded by the file's default (0.1% wrong),
-  except where the reference has a penumbra (pen_pixels > 0: a light with a
-  size, sampled by both renderers), which get the same generated limit.
-- Rows are keyed by their test as the harness names it, technique variants
-  included (vtk/volume:soft_samples=64, docs/harness.md "Technique
-  variants"); each variant row gets its own limits like any other row.
-- Exact techniques (EXACT: volume and raytrace, and their variants) also get, on every row of a
-  hard light (no penumbra in the reference), the fixed bound of issues 12 and
-  13 on wrong_band_pct (wrong pixels outside the one-pixel band along the
-  reference's shadow boundary): 0.05%, not a generated limit. A row over it
-  is refused like a 50% row: fix the technique or list the row as a known
-  failure with its reason. --verify checks that each such row has it.
-- A limit of REFUSED_PCT (50%) or more bounds nothing: the script refuses to
-  write it (exit 2) and names the row. Such a row goes into
-  known-failures.json (beside the thresholds file) with its reason; listed
-  rows get no limit.
-- --verify refuses (exit 1) any limit of 50% or more, any limit more than the
-  MARGIN above the measured value (above MEASURED * MARGIN_FACTOR +
-  MARGIN_POINTS = 1.5 x + 0.5 points, so a hand-raised limit is caught while
-  a limit written by this script survives a measurement drifting down a
-  little), and any row with neither a limit nor a known-failure entry. The
-  same verification runs on every file this script writes.
+- A limit is GEN_FACTOR (1.25) x the measured value plus an allowance of
+  A pixels expressed in the metric's own denominator: A = ALLOW_PX (16) where
+  the reference has no shadow, else min(16, max(1, shadow / 5)) with shadow
+  the reference's shadow pixels, so that a lost shadow, however small, is
+  more than the allowance. Rounded up to 0.01 (1e-4 for pen_mae and
+  reflection_mae).
+- Rows of our techniques (every vtk/<technique> but the controls vtk/none
+  and vtk/vtk, variants included) bound wrong_pct, false_shadow_pct,
+  wrong_of_shadow_pct (wrong pixels per pixel of the reference's shadow)
+  and wrong_of_test_shadow_pct (per pixel of the technique's shadow).
+  Where the reference has a penumbra (pen_pixels > 0, a light with a size)
+  they also bound pen_mae (+ 0.01) and the 0.1 / 0.5 / 0.9 contour distances
+  (+ 0.5 px), so that a hard shadow fails a soft row.
+- The controls vtk/none and vtk/vtk, and the EEVEE presets, bound wrong_pct
+  and false_shadow_pct (regressions of VTK's own render).
+- Rows of "cycles" (POV-Ray against Cycles) are bounded by the file's
+  default (0.1% wrong), except where the reference has a penumbra, where
+  both renderers sample the light and the row gets a generated wrong_pct.
+- Exact techniques (EXACT: volume and raytrace, and their variants) also
+  get, on every row of a hard light, the fixed 0.05% bound on
+  wrong_band_pct (issues 12 and 13), not a generated limit.
+- A wrong_pct or false_shadow_pct limit of REFUSED_PCT (50%) or more bounds
+  nothing; nor does a limit set under which a render with no shadow
+  (vtk/none's row of the same scene and light) or, on a soft row, a hard
+  shadow (HARD_TEST, raytrace with one ray, run on the soft scenes) would
+  pass. The script refuses to write either and names the row: such a row
+  goes into known-failures.json with its reason.
+- Known failures (known-failures.json) are bounded on both sides: fixed once
+  no metric of fails_while is above its value, worse once a metric of
+  at_most is above its value. --write rewrites each listed row's at_most
+  from its measurement with the rule above.
+- --verify refuses (exit 1) every such problem, any limit more than the
+  margin above the measured value (MARGIN_FACTOR x measured + 2 allowances:
+  a hand-raised limit), any row with neither a limit nor a known-failure
+  entry, and a known failure whose at_most is under its measurement or over
+  the margin. The same verification runs on every file this script writes.
 - A row with no valid pixels (status "empty") gets no limit; --check fails it
   unless thresholds.json gives the reason under
   scenes[SCENE].no_valid_pixels[LIGHT] (kept from the base file).
 
-The file is written to a temporary name and renamed, and only when every row
-passes: a refusal leaves the old file untouched.
+Files are written to a temporary name and renamed, and only when every row
+passes: a refusal leaves the old files untouched.
 """
 import argparse
 import json
@@ -60,10 +64,18 @@ import math
 import os
 import sys
 
-LIMITED = ("wrong_pct", "false_shadow_pct")
-GEN_FACTOR, GEN_POINTS = 1.25, 0.25
-MARGIN_FACTOR, MARGIN_POINTS = 1.5, 0.5
+GEN_FACTOR = 1.25
+ALLOW_PX = 16
+MARGIN_FACTOR = 1.5
 REFUSED_PCT = 50.0
+# Metrics relative to the frame: a limit of REFUSED_PCT or more bounds nothing.
+FRAME_PCT = ("wrong_pct", "false_shadow_pct")
+SHADOW_PCT = ("wrong_of_shadow_pct", "wrong_of_test_shadow_pct")
+PENUMBRA = {"pen_mae": 0.01, "pen_contour_01_px": 0.5, "pen_contour_05_px": 0.5,
+            "pen_contour_09_px": 0.5}
+CONTROLS = ("vtk/none", "vtk/vtk")
+SHADOWLESS_TEST = "vtk/none"
+HARD_TEST = "vtk/raytrace:samples=1"
 DESCRIPTION = ("Per-scene, per-light --check limits of vtkshadow-compare (docs/harness.md); "
                "measured at --scale 0.4, written by scenes/update_thresholds.py")
 DEFAULT = {"cycles": {"wrong_pct": 0.1}}
@@ -74,33 +86,78 @@ EXACT_METRIC = "wrong_band_pct"
 
 
 def load_known(path):
-    """{(scene, test, light): reason} of known-failures.json (missing file: none)."""
+    """(whole file, {(scene, test, light): entry}) of known-failures.json;
+    a missing file has no entry."""
     if not path or not os.path.exists(path):
-        return {}
+        return {"failures": []}, {}
     with open(path) as f:
         data = json.load(f)
-    return {(e["scene"], e["test"], int(e["light"])): e["reason"] for e in data["failures"]}
+    return data, {(e["scene"], e["test"], int(e["light"])): e for e in data["failures"]}
 
 
 def rows_of(results_files):
     """[(scene, lights, row)] of every results.json given."""
     out = []
     for p in results_files:
-        with open(p) as f:
-            for s in json.load(f)["scenes"]:
-                for r in s["results"]:
-                    out.append((s["scene"], s["lights"], r))
+        try:
+            with open(p) as f:
+                scenes = json.load(f)["scenes"]
+        except (OSError, ValueError, KeyError) as e:
+            print("update_thresholds: %s: not a results.json of vtkshadow-compare (%s); run "
+                  "sh scripts/library-run.sh OUT first" % (p, e), file=sys.stderr)
+            sys.exit(2)
+        for s in scenes:
+            for r in s["results"]:
+                out.append((s["scene"], s["lights"], r))
     return out
 
 
-def generated(value):
-    return math.ceil((value * GEN_FACTOR + GEN_POINTS) * 100) / 100
+def base_test(test):
+    """The test of a technique variant without its settings: vtk/volume for
+    vtk/volume:soft_samples=64 (docs/harness.md, "Technique variants")."""
+    return test.split(":", 1)[0]
 
 
-# reflection_mae (scenes with mirrors, docs/reflections.md) is a colour error
-# in [0, 1], not a percentage: 1.25 x + 0.005, rounded up to 1e-4.
-def generated_mae(value):
-    return math.ceil((value * GEN_FACTOR + 0.005) * 10000) / 10000
+def ours(test):
+    return test.startswith("vtk/") and base_test(test) not in CONTROLS
+
+
+def soft(r):
+    return (r.get("pen_pixels") or 0) > 0
+
+
+def allowance_px(r):
+    """Pixels of slack a limit gives over 1.25 x the measurement: fewer than
+    the reference's shadow, so that losing it fails."""
+    shadow = r.get("ref_shadow_pixels") or 0
+    return ALLOW_PX if shadow == 0 else min(ALLOW_PX, max(1, shadow // 5))
+
+
+def allowance(r, metric):
+    """The allowance of `metric` in its own unit."""
+    if metric in PENUMBRA:
+        return PENUMBRA[metric]
+    if metric == "reflection_mae":
+        return 0.005
+    denominator = {"wrong_of_shadow_pct": r.get("ref_shadow_pixels"),
+                   "wrong_of_test_shadow_pct": r.get("test_shadow_pixels")}.get(
+                       metric, r.get("compared_pixels"))
+    return 100.0 * allowance_px(r) / max(denominator or 0, 1)
+
+
+def generated(r, metric):
+    step = 1e4 if metric in ("pen_mae", "reflection_mae") else 1e2
+    return math.ceil((r[metric] * GEN_FACTOR + allowance(r, metric)) * step - 1e-9) / step
+
+
+def limited_metrics(r):
+    """The generated metrics of a row."""
+    if not ours(r["test"]):
+        return list(FRAME_PCT)
+    metrics = list(FRAME_PCT + SHADOW_PCT)
+    if soft(r):
+        metrics += sorted(PENUMBRA)
+    return metrics
 
 
 def where(scene, r):
@@ -124,52 +181,141 @@ def row_limits(thresholds, scene, r):
     return limits
 
 
-def base_test(test):
-    """The test of a technique variant without its settings: vtk/volume for
-    vtk/volume:soft_samples=64 (docs/harness.md, "Technique variants")."""
-    return test.split(":", 1)[0]
+def passes(limits, r):
+    """Whether row `r` passes every limit (as --check decides)."""
+    return all(r.get(m) is not None and r[m] <= v for m, v in limits.items())
 
 
 def exact_bound(r):
     """The fixed wrong_band_pct bound of a row, or None when it has none.
     A variant of an exact technique is exact too (its settings sample lights
     with a size, which these rows do not have)."""
-    if base_test(r["test"]) not in EXACT or (r.get("pen_pixels") or 0) > 0:
+    if base_test(r["test"]) not in EXACT or soft(r):
         return None
     return EXACT[base_test(r["test"])]
 
 
-def verify(thresholds, rows, known):
+def index_rows(rows):
+    return {(scene, r["test"], r["light"]): r for scene, _, r in rows if r["status"] == "ok"}
+
+
+def bounds_nothing(limits, scene, r, by_key, require_controls):
+    """Why `limits` of row `r` would let a shadowless render (or, on a soft
+    row, a hard shadow) pass, or None. A control row the run does not have
+    is a problem only with `require_controls` (the library run has both)."""
+    if not ours(r["test"]) or r["test"] == HARD_TEST:
+        return None
+    controls = []
+    if (r.get("ref_shadow_pixels") or 0) > 0:
+        controls.append((SHADOWLESS_TEST, "a render with no shadow"))
+    if soft(r):
+        controls.append((HARD_TEST, "a hard shadow"))
+    for test, what in controls:
+        control = by_key.get((scene, test, r["light"]))
+        if control is None and require_controls:
+            return "the run has no %s row to test the limits against" % test
+        if control is not None and passes(limits, control):
+            return "%s (%s) passes them" % (what, test)
+    return None
+
+
+def margin_problems(scene, r, metric, limit, what="limit"):
+    measured = r.get(metric)
+    if what == "limit" and metric in FRAME_PCT and limit >= REFUSED_PCT:
+        return ["%s: %s limit %g is %g%% or more, which bounds nothing: list the row in "
+                "known-failures.json with its reason" % (where(scene, r), metric, limit,
+                                                         REFUSED_PCT)]
+    if metric == EXACT_METRIC or measured is None:
+        return []
+    most = measured * MARGIN_FACTOR + 2 * allowance(r, metric) + 0.01
+    if limit > most:
+        return ["%s: %s %s %g is more than the margin above the measured %.4g (at most "
+                "%.4g = %g x + 2 allowances): regenerate it"
+                % (where(scene, r), metric, what, limit, measured, most, MARGIN_FACTOR)]
+    return []
+
+
+def verify_known(scene, r, entry):
+    """Problems of a known failure's bounds against its measured row."""
+    problems = []
+    if not entry.get("at_most"):
+        return ["%s: known failure without at_most (its upper bound): write it with --write"
+                % where(scene, r)]
+    for metric, bound in sorted(entry["at_most"].items()):
+        measured = r.get(metric)
+        if measured is not None and measured > bound:
+            problems.append("%s: known failure got worse: %s = %.4g > at_most %g"
+                            % (where(scene, r), metric, measured, bound))
+        problems += margin_problems(scene, r, metric, bound, what="at_most")
+    return problems
+
+
+def verify(thresholds, rows, known, require_controls=False):
     """Every problem of `thresholds` against the measured rows, one line each."""
     problems = []
+    by_key = index_rows(rows)
     for scene, _, r in rows:
         key = (scene, r["test"], r["light"])
-        if key in known or r["status"] != "ok":
+        if r["status"] != "ok":
+            continue
+        if key in known:
+            problems += verify_known(scene, r, known[key])
             continue
         limits = row_limits(thresholds, scene, r)
         if not limits:
             problems.append("%s: no limit (and not a known failure)" % where(scene, r))
+            continue
         if exact_bound(r) is not None and limits.get(EXACT_METRIC) != exact_bound(r):
             problems.append("%s: %s limit %s, but an exact technique on a hard light is bound "
                             "by %g" % (where(scene, r), EXACT_METRIC, limits.get(EXACT_METRIC),
                                        exact_bound(r)))
-        for metric, limit in sorted(limits.items()):
-            measured = r.get(metric)
-            if metric.endswith("_pct") and limit >= REFUSED_PCT:
-                problems.append("%s: %s limit %g is %g%% or more, which bounds nothing: list "
-                                "the row in known-failures.json with its reason"
-                                % (where(scene, r), metric, limit, REFUSED_PCT))
-            elif measured is not None and limit > measured * MARGIN_FACTOR + MARGIN_POINTS:
-                problems.append("%s: %s limit %g is more than the margin above the measured "
-                                "%.4g (at most %.4g = %g x + %g): regenerate it"
-                                % (where(scene, r), metric, limit, measured,
-                                   measured * MARGIN_FACTOR + MARGIN_POINTS, MARGIN_FACTOR,
-                                   MARGIN_POINTS))
+        for metric in limited_metrics(r) if r["test"] != "cycles" else []:
+            if metric not in limits:
+                problems.append("%s: no %s limit" % (where(scene, r), metric))
+        # The default trust limit of POV-Ray against Cycles is a stated
+        # bound, not a measurement's: no margin to keep to.
+        trusted = r["test"] == "cycles" and not soft(r)
+        for metric, limit in sorted(limits.items()) if not trusted else []:
+            problems += margin_problems(scene, r, metric, limit)
+        why = bounds_nothing(limits, scene, r, by_key, require_controls)
+        if why:
+            problems.append("%s: the limits bound nothing: %s; fix the technique or list the "
+                            "row in known-failures.json with its reason" % (where(scene, r), why))
     return problems
 
 
+def set_limit(entry, r, lights, metric, value):
+    entry.setdefault(r["test"], {}).setdefault(metric, [None] * lights)[r["light"]] = value
+
+
+def row_entry(r, lights, entry):
+    """Writes the limits of one measured row into the scene's `entry`;
+    returns the refusals."""
+    refused = []
+    for metric in limited_metrics(r):
+        limit = generated(r, metric)
+        if metric in FRAME_PCT and limit >= REFUSED_PCT:
+            refused.append("%s measured %.4g, a limit would be %g (>= %g%%): list the row in "
+                           "known-failures.json with its reason instead"
+                           % (metric, r[metric], limit, REFUSED_PCT))
+            continue
+        set_limit(entry, r, lights, metric, limit)
+    bound = exact_bound(r)
+    if bound is not None:
+        measured = r.get(EXACT_METRIC)
+        if measured is None or measured > bound:
+            refused.append("%s measured %s, over the exact bound %g: fix the technique or list "
+                           "the row in known-failures.json with its reason"
+                           % (EXACT_METRIC, measured, bound))
+        else:
+            set_limit(entry, r, lights, EXACT_METRIC, bound)
+    if r.get("reflection_mae") is not None:
+        set_limit(entry, r, lights, "reflection_mae", generated(r, "reflection_mae"))
+    return refused
+
+
 def generate(base, rows, known):
-    """(new thresholds, refusals)."""
+    """(new thresholds, refusals); the at_most of `known` entries is rewritten."""
     out = {"description": DESCRIPTION, "default": base.get("default", DEFAULT),
            "scenes": dict(base.get("scenes", {}))}
     refused, fresh = [], {}
@@ -178,46 +324,25 @@ def generate(base, rows, known):
         old = out["scenes"].get(scene, {})
         if "no_valid_pixels" in old:
             entry["no_valid_pixels"] = old["no_valid_pixels"]
+        key = (scene, r["test"], r["light"])
         if r["test"] == "cycles":
             # POV-Ray against Cycles: the file's default bounds it, except
             # where the reference has a penumbra (a light with a size): both
             # renderers sample the light there, so their agreement gets a
             # limit from its measurement like every other row.
-            if r["status"] == "ok" and (r.get("pen_pixels") or 0) > 0:
-                limit = generated(r["wrong_pct"])
-                entry.setdefault("cycles", {}).setdefault("wrong_pct", [None] * lights)[
-                    r["light"]] = limit
+            if r["status"] == "ok" and soft(r):
+                set_limit(entry, r, lights, "wrong_pct", generated(r, "wrong_pct"))
             continue
-        if (scene, r["test"], r["light"]) in known:
+        if key in known:
+            if r["status"] == "ok":
+                known[key]["at_most"] = {m: generated(r, m)
+                                         for m in sorted(known[key]["fails_while"])}
             continue
         if r["status"] == "error":
             refused.append("%s: the row failed (%s); no limit from a failed run"
                            % (where(scene, r), r.get("check", "error")))
-            continue
-        if r["status"] != "ok":
-            continue
-        for metric in LIMITED:
-            limit = generated(r[metric])
-            if limit >= REFUSED_PCT:
-                refused.append("%s: %s measured %.4g, a limit would be %g (>= %g%%): list the "
-                               "row in known-failures.json with its reason instead"
-                               % (where(scene, r), metric, r[metric], limit, REFUSED_PCT))
-                continue
-            per_light = entry.setdefault(r["test"], {}).setdefault(metric, [None] * lights)
-            per_light[r["light"]] = limit
-        bound = exact_bound(r)
-        if bound is not None:
-            measured = r.get(EXACT_METRIC)
-            if measured is None or measured > bound:
-                refused.append("%s: %s measured %s, over the exact bound %g: fix the technique "
-                               "or list the row in known-failures.json with its reason"
-                               % (where(scene, r), EXACT_METRIC, measured, bound))
-            else:
-                entry.setdefault(r["test"], {}).setdefault(EXACT_METRIC, [None] * lights)[
-                    r["light"]] = bound
-        if r.get("reflection_mae") is not None:
-            per_light = entry.setdefault(r["test"], {}).setdefault("reflection_mae", [None] * lights)
-            per_light[r["light"]] = generated_mae(r["reflection_mae"])
+        elif r["status"] == "ok":
+            refused += ["%s: %s" % (where(scene, r), x) for x in row_entry(r, lights, entry)]
     out["scenes"].update(fresh)
     return out, refused
 
@@ -238,15 +363,19 @@ def main():
                     "(default: the --write file)")
     ap.add_argument("--known", metavar="FILE", help="known failures (default: "
                     "known-failures.json beside the thresholds file)")
+    ap.add_argument("--require-controls", action="store_true",
+                    help="with --verify: every row whose reference has a shadow must be tested "
+                    "against %s's row, every soft row against %s's" % (SHADOWLESS_TEST, HARD_TEST))
     a = ap.parse_args()
     target = a.verify or a.write or os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                  "thresholds.json")
-    known = load_known(a.known or os.path.join(os.path.dirname(os.path.abspath(target)),
-                                               "known-failures.json"))
+    known_path = a.known or os.path.join(os.path.dirname(os.path.abspath(target)),
+                                         "known-failures.json")
+    known_file, known = load_known(known_path)
     rows = rows_of(a.results)
     if a.verify:
         with open(a.verify) as f:
-            problems = verify(json.load(f), rows, known)
+            problems = verify(json.load(f), rows, known, a.require_controls)
         for p in problems:
             print("update_thresholds: REFUSED %s" % p, file=sys.stderr)
         print("update_thresholds: %s: %d row(s) verified, %d problem(s)"
@@ -266,6 +395,8 @@ def main():
         sys.exit(2)
     text = json.dumps(out, indent=1, sort_keys=True) + "\n"
     if a.write:
+        if known:
+            write_atomic(known_path, json.dumps(known_file, indent=1) + "\n")
         write_atomic(a.write, text)
         print("update_thresholds: wrote %s (%d row(s))" % (a.write, len(rows)), file=sys.stderr)
     else:

@@ -66,7 +66,13 @@ const char* Usage()
          "  --threads N           threads per ray-tracer render (default: cores / jobs)\n"
          "  --timeout S           per-render time limit in seconds (default 600)\n"
          "  --cache DIR           reference cache (default OUT/cache)\n"
-         "  --no-cache            always render POV-Ray, Cycles and EEVEE fresh (no cache read)\n"
+         "  --no-cache            always render POV-Ray, Cycles and EEVEE fresh (no cache\n"
+         "                        nor shipped reference read)\n"
+         "  --references DIR      shipped references, read first, never written (default:\n"
+         "                        references/ beside each scene's thresholds.json)\n"
+         "  --no-references       do not read shipped references\n"
+         "  --require-references  a reference that is not shipped is an error of its scene\n"
+         "                        (naming scripts/update-references.sh), not a render\n"
          "  --cycles-samples N    Cycles samples per pixel (default 1, pixel centre)\n"
          "  --soft-samples N      Cycles samples per pixel centre for scenes with a light\n"
          "                        with a size (default 1024)\n"
@@ -103,6 +109,10 @@ bool SetFlag(Options& opt, const std::string& a)
     opt.check = true;
   else if (a == "--no-cache")
     opt.no_cache = true;
+  else if (a == "--no-references")
+    opt.no_references = true;
+  else if (a == "--require-references")
+    opt.require_references = true;
   else if (a == "--no-report")
     opt.report = false;
   else if (a == "--keep-work")
@@ -170,6 +180,7 @@ bool SetValue(Options& opt, const std::string& a, const std::string& v, std::str
     : a == "--thresholds"          ? &opt.thresholds
     : a == "--known-failures"      ? &opt.known_failures
     : a == "--cache"               ? &opt.cache
+    : a == "--references"          ? &opt.references
     : a == "--povray-binary"       ? &opt.povray
     : a == "--blender-binary"      ? &opt.blender
     : a == "--render-binary"       ? &opt.render_bin
@@ -296,6 +307,14 @@ bool FinishOptions(Options& opt, std::string& error)
   if (opt.cache.empty())
     opt.cache = opt.out + "/cache";
   opt.cache = AbsPath(opt.cache);
+  if (!opt.references.empty())
+    opt.references = AbsPath(opt.references);
+  if (opt.require_references && (opt.no_references || opt.no_cache))
+  {
+    error = "--require-references reads the shipped references, which --no-references and "
+            "--no-cache turn off";
+    return false;
+  }
   return true;
 }
 

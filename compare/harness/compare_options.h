@@ -23,6 +23,13 @@ struct Options
   double timeout = 600;
   std::string cache;
   bool no_cache = false;
+  // Shipped references (docs/harness.md, "Shipped references"): entries of
+  // the cache's layout, read first and never written. Default: references/
+  // beside each scene's thresholds.json. require_references makes a missing
+  // one a scene error instead of a render.
+  std::string references;
+  bool no_references = false;
+  bool require_references = false;
   int cycles_samples = 1;
   // Lights with a size (docs/harness.md, "Lights with a size"): Cycles
   // samples per pixel centre for scenes that have one, POV-Ray's area-light

@@ -49,20 +49,22 @@ struct SceneResult
   std::map<std::string, double> seconds;       // renderer -> render time
   std::map<std::string, double> frame_seconds; // Blender renderer -> mean seconds per frame
   std::map<std::string, bool> cached;
+  // Reference renderer -> the content key of its images (the cache's and the
+  // shipped references' entry name), written to results.json so that
+  // scripts/update-references.sh keeps exactly the entries a run used.
+  std::map<std::string, std::string> reference_keys;
   std::string mirror_image; // POV-Ray's mirror pixels, when the scene has mirrors
 };
 
 // A metric of a row by name (vis_mae, wrong_pct, edge_px, false_shadow_pct,
-// false_light_pct, and wrong_of_shadow_pct when the metrics library has it).
+// false_light_pct, wrong_of_shadow_pct, wrong_of_test_shadow_pct).
 // `known` is false for any other name.
 double RowMetric(const vsh_metrics& m, const std::string& name, bool& known);
 
 // RowMetric, and also reflection_mae (NaN on rows without mirrors, which
-// then fails any limit on it).
+// then fails any limit on it), wrong_band_pct, pen_mae and
+// pen_contour_{01,05,09}_px.
 double RowMetric(const Row& r, const std::string& name, bool& known);
-
-// Whether the metrics library computes wrong_of_shadow_pct (compare/metrics).
-bool HaveWrongOfShadow();
 
 } // namespace vsh_harness
 

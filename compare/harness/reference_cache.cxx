@@ -33,7 +33,7 @@ bool ReadManifest(const std::string& path, std::map<std::string, std::string>& m
 } // namespace
 
 CacheLoadResult CacheLoad(
-  const std::string& cdir, const std::string& outdir, int lights, std::string& why)
+  const std::string& cdir, const std::string& outdir, int lights, std::string& why, bool read_only)
 {
   const std::string marker = cdir + "/complete";
   if (!FileExists(marker))
@@ -57,7 +57,8 @@ CacheLoadResult CacheLoad(
     }
   if (!good)
   {
-    RemoveTree(cdir);
+    if (!read_only)
+      RemoveTree(cdir);
     return CacheLoadResult::Corrupt;
   }
   for (const auto& f : files)

@@ -16,12 +16,14 @@ enum class CacheLoadResult
 {
   Miss,    // no usable entry (absent, incomplete): render
   Hit,     // the images are in the output folder
-  Corrupt, // the entry was damaged (message in `why`) and is deleted: render
+  Corrupt, // the entry was damaged (message in `why`) and is deleted (unless read-only)
   Failed   // the entry is good but the output could not be written (`why`)
 };
 
-CacheLoadResult CacheLoad(
-  const std::string& cdir, const std::string& outdir, int lights, std::string& why);
+// A damaged entry is deleted unless `read_only` (the shipped references,
+// which only scripts/update-references.sh writes).
+CacheLoadResult CacheLoad(const std::string& cdir, const std::string& outdir, int lights,
+  std::string& why, bool read_only = false);
 
 // Stores the light images of `outdir` under `cdir`. A failure (full disk)
 // leaves no `complete` marker, so the entry is never used; `why` says what.

@@ -15,6 +15,7 @@ namespace
 {
 // Part of every cache key: bump it when the meaning of a cached image changes.
 const char* const kFormatVersion = "vtkshadow-compare reference format 1";
+const char* const kUpdateReferences = "sh scripts/update-references.sh (docs/harness.md)";
 
 struct DriverState
 {
@@ -75,6 +76,59 @@ bool RenderFresh(DriverState& s, const std::string& exported)
   return true;
 }
 
+// The shipped references of a scene: --references, else references/ beside
+// its thresholds.json; "" when there are none to read.
+std::string ShippedFolder(const Options& opt, const SceneEntry& e)
+{
+  if (opt.no_references || opt.no_cache)
+    return "";
+  if (!opt.references.empty())
+    return opt.references;
+  return e.thresholds.empty() ? "" : DirName(e.thresholds) + "/references";
+}
+
+enum class Shipped
+{
+  Used,   // the images are in the output folder
+  Absent, // no entry: render (or fail, with --require-references)
+  Failed  // the scene failed (message recorded)
+};
+
+// The shipped entry of `key`, read only: a damaged one fails the scene
+// rather than being rendered over, since only the update script writes there.
+Shipped LoadShipped(DriverState& s, const std::string& key)
+{
+  const std::string folder = ShippedFolder(s.opt, s.e);
+  const std::string name = s.r.Name();
+  const std::string entry = folder + "/" + name + "/" + key;
+  std::string why;
+  switch (folder.empty() ? CacheLoadResult::Miss
+                         : CacheLoad(entry, s.outdir, s.lights, why, /*read_only=*/true))
+  {
+    case CacheLoadResult::Hit:
+      Progress(s.e.id + ": " + name + " shipped reference " + key);
+      s.res.cached[name] = true;
+      return Shipped::Used;
+    case CacheLoadResult::Failed:
+      s.Fail("cannot copy the shipped reference: " + why);
+      return Shipped::Failed;
+    case CacheLoadResult::Corrupt:
+      s.Fail("the shipped reference " + entry + " is damaged (" + why + "): render it again with " +
+        kUpdateReferences);
+      return Shipped::Failed;
+    case CacheLoadResult::Miss:
+      break;
+  }
+  if (!s.opt.require_references)
+    return Shipped::Absent;
+  s.Fail("no shipped reference " + name + "/" + key + " in " +
+    (folder.empty() ? std::string("(no references folder)") : folder) +
+    " (the scene, its meshes, the settings or the renderer differ from those it was rendered "
+    "for): render it with " +
+    kUpdateReferences);
+  return Shipped::Failed;
+}
+
 } // namespace
 
 bool RunReference(const ReferenceRenderer& r, const Options& opt, const SceneEntry& e,
@@ -93,6 +147,10 @@ bool RunReference(const ReferenceRenderer& r, const Options& opt, const SceneEnt
   const std::string keytext = std::string(kFormatVersion) + "\nrenderer " + r.GetVersion() + "\n" +
     r.KeySettings(ex) + content_key + "export " + MD5Hex(exported) + "\n";
   const std::string key = MD5Hex(keytext);
+  res.reference_keys[name] = key;
+  const Shipped shipped = LoadShipped(s, key);
+  if (shipped != Shipped::Absent)
+    return shipped == Shipped::Used;
   const std::string cdir = opt.cache + "/" + name + "/" + key;
   if (!opt.no_cache)
     switch (CacheLoad(cdir, s.outdir, s.lights, why))

@@ -17,13 +17,6 @@ std::string Num(double v, bool json)
   return std::isfinite(v) ? Fmt(v, "%.9g") : (json ? "null" : "");
 }
 
-double WrongOfShadow(const vsh_metrics& m)
-{
-  bool known = false;
-  const double v = RowMetric(m, "wrong_of_shadow_pct", known);
-  return known ? v : std::nan("");
-}
-
 // The penumbra columns (docs/metrics.md, "Penumbra metrics"), after status
 // so readers by position keep working.
 std::string PenumbraFields(const vsh_penumbra& p, const char* sep, bool json)
@@ -47,7 +40,7 @@ std::string CsvRow(const Row& r)
   snprintf(buf, sizeof buf, "%s,%d,%s,%s,%s,%d,%d,%ld,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%s",
     r.scene.c_str(), r.light, r.light_type.c_str(), r.test.c_str(), r.reference.c_str(), r.width,
     r.height, r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
-    r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), false).c_str(),
+    r.m.false_shadow_pct, r.m.false_light_pct, Fmt(r.m.wrong_of_shadow_pct, "%.9g").c_str(),
     r.status.c_str());
   // reflection_mae last: the columns up to the penumbra ones keep their places.
   return buf + PenumbraFields(r.pen, ",", false) + "," + Num(r.reflection_mae, false) + "," +
@@ -61,12 +54,14 @@ std::string JsonRow(const Row& r)
     "{\"light\": %d, \"light_type\": \"%s\", \"test\": \"%s\", "
     "\"reference\": \"%s\", \"valid_pixels\": %ld, \"compared_pixels\": %ld, "
     "\"vis_mae\": %.9g, \"wrong_pct\": %.9g, \"edge_px\": %.9g, "
-    "\"false_shadow_pct\": %.9g, \"false_light_pct\": %.9g, \"wrong_of_shadow_pct\": %s, "
+    "\"false_shadow_pct\": %.9g, \"false_light_pct\": %.9g, \"wrong_of_shadow_pct\": %.9g, "
+    "\"wrong_of_test_shadow_pct\": %.9g, \"ref_shadow_pixels\": %ld, \"test_shadow_pixels\": %ld, "
     "\"reflection_mae\": %s, \"status\": \"%s\", \"check\": \"%s\", \"heatmap\": \"%s\", "
     "\"mirror_heatmap\": \"%s\"",
     r.light, r.light_type.c_str(), JsonEscape(r.test).c_str(), r.reference.c_str(),
     r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
-    r.m.false_shadow_pct, r.m.false_light_pct, Num(WrongOfShadow(r.m), true).c_str(),
+    r.m.false_shadow_pct, r.m.false_light_pct, r.m.wrong_of_shadow_pct,
+    r.m.wrong_of_test_shadow_pct, r.m.ref_shadow_pixels, r.m.test_shadow_pixels,
     Num(r.reflection_mae, true).c_str(), r.status.c_str(), JsonEscape(r.check).c_str(),
     JsonEscape(r.heatmap).c_str(), JsonEscape(r.mirror_heatmap).c_str());
   return buf + PenumbraFields(r.pen, ", ", true) +
@@ -97,7 +92,15 @@ std::string JsonScene(const SceneResult& sr)
     json += std::string(first ? "" : ", ") + "\"" + JsonEscape(kv.first) + "\"";
     first = false;
   }
-  json += "],\n     \"errors\": [";
+  json += "],\n     \"reference_keys\": {";
+  first = true;
+  for (const auto& kv : sr.reference_keys)
+  {
+    json += std::string(first ? "" : ", ") + "\"" + JsonEscape(kv.first) + "\": \"" +
+      JsonEscape(kv.second) + "\"";
+    first = false;
+  }
+  json += "},\n     \"errors\": [";
   for (size_t i = 0; i < sr.errors.size(); ++i)
     json += std::string(i ? ", " : "") + "\"" + JsonEscape(sr.errors[i]) + "\"";
   json += "],\n     \"results\": [";

@@ -124,16 +124,13 @@ std::string RowTable(const SceneResult& sr, int k)
   {
     if (r.light != k)
       continue;
-    bool known = false;
-    const double wos = RowMetric(r.m, "wrong_of_shadow_pct", known);
     char buf[512];
     snprintf(buf, sizeof buf,
       "<td>%ld</td><td>%.4g</td><td>%.4g</td><td>%s</td><td>%.4g</td><td>%.4g</td><td>%.4g</td>"
       "<td>%s</td><td>%s</td>",
       r.m.valid_pixels, r.m.vis_mae, r.m.wrong_pct,
       std::isfinite(r.wrong_band_pct) ? Fmt(r.wrong_band_pct, "%.4g").c_str() : "", r.m.edge_px,
-      r.m.false_shadow_pct, r.m.false_light_pct,
-      known && std::isfinite(wos) ? Fmt(wos, "%.4g").c_str() : "",
+      r.m.false_shadow_pct, r.m.false_light_pct, Fmt(r.m.wrong_of_shadow_pct, "%.4g").c_str(),
       std::isfinite(r.reflection_mae) ? Fmt(r.reflection_mae, "%.4f").c_str() : "");
     const char* cls = r.check.rfind("FAILED", 0) == 0 ? " class=\"err\""
       : r.check.rfind("known failure", 0) == 0        ? " class=\"known\""

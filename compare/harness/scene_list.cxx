@@ -62,7 +62,7 @@ void CollectScenes(const std::string& input, std::vector<std::string>& out)
   std::sort(names.begin(), names.end());
   for (const auto& n : names)
   {
-    if (n == "." || n == ".." || n == "meshes" || n == "thresholds.json" ||
+    if (n == "." || n == ".." || n == "meshes" || n == "references" || n == "thresholds.json" ||
       n == "known-failures.json")
       continue;
     std::string p = input + "/" + n;

@@ -21,7 +21,8 @@ struct SceneEntry
 std::string SafeName(const std::string& id);
 
 // The scenes named by `inputs` (files, or folders searched for *.json except
-// thresholds.json, known-failures.json and meshes/), in a stable order.
+// thresholds.json, known-failures.json, meshes/ and references/), in a
+// stable order.
 // False with `error` when an input does not exist.
 bool ListScenes(const std::vector<std::string>& inputs, const std::string& thresholds_option,
   std::vector<SceneEntry>& scenes, std::string& error);

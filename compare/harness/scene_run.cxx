@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <set>
 #include <thread>
@@ -105,16 +106,36 @@ SceneResult RunScene(const Options& opt,
   return res;
 }
 
+namespace
+{
+// "scene 3/31 done (hard/needles); 41 s so far, about 380 s left": the
+// estimate is the mean time of a finished scene times the scenes to go.
+void ReportProgress(
+  const std::string& id, size_t done, size_t total, std::chrono::steady_clock::time_point start)
+{
+  const double elapsed =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double left = elapsed / static_cast<double>(done) * static_cast<double>(total - done);
+  Progress("scene " + std::to_string(done) + "/" + std::to_string(total) + " done (" + id + "); " +
+    Fmt(elapsed, "%.0f") + " s so far" +
+    (done < total ? ", about " + Fmt(left, "%.0f") + " s left" : ""));
+}
+} // namespace
+
 std::vector<SceneResult> RunScenes(const Options& opt,
   const std::vector<std::unique_ptr<ReferenceRenderer>>& references,
   const std::vector<SceneEntry>& scenes)
 {
   std::vector<SceneResult> results(scenes.size());
-  std::atomic<size_t> next{ 0 };
+  std::atomic<size_t> next{ 0 }, done{ 0 };
+  const auto start = std::chrono::steady_clock::now();
   auto worker = [&]()
   {
     for (size_t i; (i = next++) < scenes.size();)
+    {
       results[i] = RunScene(opt, references, scenes[i]);
+      ReportProgress(scenes[i].id, ++done, scenes.size(), start);
+    }
   };
   std::vector<std::thread> pool;
   for (int j = 0; j < std::min<int>(opt.jobs, static_cast<int>(scenes.size())); ++j)

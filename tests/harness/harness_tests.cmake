@@ -3,9 +3,14 @@
 # Xvfb fixture), VTKSHADOW_PY, VTKSHADOW_BIN and VTKSHADOW_TEST_OUT.
 #
 # harness.library.<group>: the whole scene library at test scale (0.4, i.e.
-# 320x240), POV-Ray and Cycles rendered fresh (--no-cache), every VTK
-# technique, --check against scenes/thresholds.json (mirror: wrong_pct and
-# reflection colour; soft: against POV-Ray's area lights).
+# 320x240) by scripts/library-run.sh: every VTK technique against the
+# shipped references of scenes/references (a reference that is not shipped
+# fails and names scripts/update-references.sh), --check against
+# scenes/thresholds.json (mirror: wrong_pct and reflection colour; soft:
+# against POV-Ray's area lights, with the hard-shadow control).
+# harness.thresholds: every committed limit against what those runs measured.
+# harness.references_fresh: a sample of the shipped references rendered
+# fresh by POV-Ray and Cycles, equal to the shipped ones.
 # harness.<unit>: cache invalidation, missing / hanging / crashing renderer,
 # hostile scene, unknown renderer name, HTML escaping, faults (renderer
 # killed mid-frame, full / read-only output folder, damaged cache entry).
@@ -19,20 +24,61 @@ if(NOT VTKSHADOW_POVRAY OR NOT VTKSHADOW_BLENDER)
 endif()
 
 set(_harness_src ${CMAKE_CURRENT_LIST_DIR})
-# soft: every technique and the sampled lights at 64 samples too (technique
-# variants, docs/harness.md); scenes/thresholds.json must have their rows.
-set(_harness_techniques_soft --techniques all,volume:soft_samples=64,planar:soft_samples=64)
+set(_library_out ${VTKSHADOW_TEST_OUT}/harness/library)
+# COST: seconds measured on 2 cores, so that ctest starts the long ones first.
+set(_library_cost_basic 60)
+set(_library_cost_scivis 60)
+set(_library_cost_cad 40)
+set(_library_cost_hard 150)
+set(_library_cost_mirror 60)
+set(_library_cost_soft 300)
 foreach(group basic scivis cad hard mirror soft)
   add_test(NAME harness.library.${group}
-    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_BIN}/vtkshadow-compare ${PROJECT_SOURCE_DIR}/scenes/${group}
-            --out ${VTKSHADOW_TEST_OUT}/harness/library-${group} --scale 0.4 --no-cache --check
-            --thresholds ${PROJECT_SOURCE_DIR}/scenes/thresholds.json ${_harness_techniques_${group}})
+    COMMAND ${CMAKE_COMMAND} -E env VTKSHADOW_BIN=${VTKSHADOW_BIN}
+            VTKSHADOW_DISPLAY_FILE=${CMAKE_BINARY_DIR}/xvfb/display
+            sh ${PROJECT_SOURCE_DIR}/scripts/library-run.sh ${_library_out} ${group} --check)
   set_tests_properties(harness.library.${group} PROPERTIES TIMEOUT 900 LABELS "harness"
-    FIXTURES_REQUIRED xvfb)
+    FIXTURES_REQUIRED xvfb FIXTURES_SETUP library COST ${_library_cost_${group}})
 endforeach()
-# The soft scenes' Cycles references take 1024 samples per pixel centre
-# (--soft-samples' default, docs/harness.md "Lights with a size").
-set_tests_properties(harness.library.soft PROPERTIES TIMEOUT 1800)
+
+# Every committed limit against the library run just measured: within the
+# margin rule, and failed by vtk/none wherever the reference has a shadow and
+# by a hard shadow on every soft row (scenes/update_thresholds.py --verify).
+set(_library_results)
+set(_library_tests)
+foreach(group basic scivis cad hard mirror soft)
+  list(APPEND _library_results ${_library_out}/${group}/results.json)
+  list(APPEND _library_tests harness.library.${group})
+endforeach()
+add_test(NAME harness.thresholds
+  COMMAND python3 ${PROJECT_SOURCE_DIR}/scenes/update_thresholds.py --verify
+          ${PROJECT_SOURCE_DIR}/scenes/thresholds.json --require-controls ${_library_results})
+# FIXTURES_REQUIRED pulls the library tests into a run of this test alone;
+# DEPENDS makes it wait for all of them under -j.
+set_tests_properties(harness.thresholds PROPERTIES TIMEOUT 60 LABELS "harness"
+  FIXTURES_REQUIRED library DEPENDS "${_library_tests}")
+# The same through --check itself: vtk/none under each technique's limits of
+# hard/thin-plate and basic/sphere-plane, a hard shadow (raytrace:samples=1)
+# under those of soft/sphere-disk and soft/sun-angle, every light caught.
+add_test(NAME harness.controls
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_controls.py --bin ${VTKSHADOW_BIN}
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/controls)
+set_tests_properties(harness.controls PROPERTIES TIMEOUT 300 LABELS "harness"
+  FIXTURES_REQUIRED xvfb)
+
+# The shipped references against a fresh render (a sample: a scene with a
+# directional, a point and a spot light, and one with lights with a size),
+# and their faults.
+add_test(NAME harness.references_fresh
+  COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_references.py fresh --bin ${VTKSHADOW_BIN}
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/references_fresh
+          ${PROJECT_SOURCE_DIR}/scenes/basic/sphere-plane.json
+          ${PROJECT_SOURCE_DIR}/scenes/soft/sphere-disk.json)
+set_tests_properties(harness.references_fresh PROPERTIES TIMEOUT 900 LABELS "harness" COST 120)
+add_test(NAME harness.references_faults
+  COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_references.py faults --bin ${VTKSHADOW_BIN}
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/references_faults)
+set_tests_properties(harness.references_faults PROPERTIES TIMEOUT 300 LABELS "harness")
 
 foreach(unit cache missing timeout crash hostile renderers html killed full readonly corruptcache)
   add_test(NAME harness.${unit}

@@ -527,7 +527,7 @@ def test_check(a, compare):
         fail("setup: vtk/none should miss the shadow (wrong_pct %.4f)" % none_wrong)
     write_json(kf, {"failures": [
         {"scene": "scene", "test": "vtk/none", "light": 0, "reason": "no shadows <by design>",
-         "fails_while": {"wrong_pct": 0.1}}]})
+         "fails_while": {"wrong_pct": 0.1}, "at_most": {"wrong_pct": none_wrong + 0.01}}]})
     expect_check(a, compare, scene, out, 0, ["1 known failure(s) still failing"])
     html = open(os.path.join(out, "index.html"), encoding="utf-8").read()
     if "Known failures" not in html or "no shadows &lt;by design&gt;" not in html:
@@ -537,9 +537,20 @@ def test_check(a, compare):
         fail("results.json: the known failure's row says %r" % row["check"])
     write_json(kf, {"failures": [
         {"scene": "scene", "test": "vtk/planar", "light": 0, "reason": "pretend it was broken",
-         "fails_while": {"wrong_pct": 5.0}}]})
+         "fails_while": {"wrong_pct": 5.0}, "at_most": {"wrong_pct": 10.0}}]})
     expect_check(a, compare, scene, out, 3, ["vtk/planar: known failure now passes", "remove it from"])
+    # A known failure that got worse than its at_most fails too.
+    write_json(kf, {"failures": [
+        {"scene": "scene", "test": "vtk/none", "light": 0, "reason": "no shadows",
+         "fails_while": {"wrong_pct": 0.1}, "at_most": {"wrong_pct": none_wrong * 0.5}}]})
+    expect_check(a, compare, scene, out, 3, ["vtk/none: known failure got worse", "at_most"])
+    # Without its at_most an entry is refused.
+    write_json(kf, {"failures": [
+        {"scene": "scene", "test": "vtk/none", "light": 0, "reason": "no shadows",
+         "fails_while": {"wrong_pct": 0.1}}]})
+    expect_check(a, compare, scene, out, 3, ["\"at_most\" {metric: value}"])
     os.remove(kf)
+    check_shadowless(a, compare, scene, th, saved, out)
     # 6. No valid pixels: a spot pointing away from everything.
     empty = json.loads(json.dumps(SCENE))
     empty["lights"] = [{"type": "spot", "position": [0, 0, 3], "focal_point": [0, 0, 10],
@@ -554,6 +565,30 @@ def test_check(a, compare):
     expect_check(a, compare, empty_scene, out2, 0, ["0 failure(s)"], techniques="planar")
     check_exact_bound(a, compare, scene, th, results, out)
     print("PASS check")
+
+
+def check_shadowless(a, compare, scene, th, saved, out):
+    """A render with no shadow fails the limits of a technique of ours: the
+    limits planar got, given to vtk/none, fail --check on the shadow-relative
+    metrics, and --verify names a limit set a shadowless render passes."""
+    limits = saved["scenes"]["scene"]["vtk/planar"]
+    for metric in ("wrong_of_shadow_pct", "wrong_of_test_shadow_pct"):
+        if metric not in limits:
+            fail("update_thresholds wrote no %s limit for vtk/planar: %r" % (metric, limits))
+    edited = json.loads(json.dumps(saved))
+    edited["scenes"]["scene"]["vtk/none"] = limits
+    write_json(th, edited)
+    expect_check(a, compare, scene, out, 3, ["vtk/none: wrong_of_shadow_pct"])
+    # Loosened until vtk/none would pass them: refused as bounding nothing.
+    edited = json.loads(json.dumps(saved))
+    for metric in ("wrong_pct", "false_shadow_pct", "wrong_of_shadow_pct",
+                   "wrong_of_test_shadow_pct"):
+        edited["scenes"]["scene"]["vtk/planar"][metric] = [1e9]
+    write_json(th, edited)
+    p = update_thresholds(a, "--verify", th, os.path.join(out, "results.json"), expect=1)
+    if "a render with no shadow (vtk/none) passes them" not in p.stderr:
+        fail("update_thresholds --verify accepted limits a shadowless render passes")
+    write_json(th, saved)
 
 
 def check_exact_bound(a, compare, scene, th, results, out):

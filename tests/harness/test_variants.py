@@ -139,7 +139,8 @@ def round_trip(args, out, one, sixteen):
     with open(known, "w") as f:
         json.dump({"failures": [{"scene": "sphere-disk", "test": "vtk/" + one, "light": 0,
                                  "reason": "test_variants: listed on purpose",
-                                 "fails_while": {"wrong_pct": 0.0}}]}, f)
+                                 "fails_while": {"wrong_pct": 0.0},
+                                 "at_most": {"wrong_pct": 100.0}}]}, f)
     text = compare(args, os.path.join(args.out, "check-bad"), "%s,%s" % (one, sixteen), "--check",
                    "--known-failures", known, expect=3)
     for w in ("scene sphere-disk, light 1, vtk/%s: no limit" % one,):

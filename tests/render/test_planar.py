@@ -62,7 +62,8 @@ visible depth range, and fails if a visible surface lies outside the range.
   test_planar.py --bin BUILD/bin --out DIR --case CASE [--light K]
       [--technique planar] [--reference planar|unshadowed|all]
       [--max-wrong-pct 0.05] [--max-wrong-of-shadow-pct P]
-      [--min-mask-agreement 99.9] [--known-failure REASON]
+      [--min-mask-agreement 99.9]
+      [--known-failure REASON --known-failure-at-most WRONG_PCT WRONG_OF_SHADOW_PCT]
 
 --max-wrong-of-shadow-pct bounds wrong_of_shadow_pct: the same wrong pixels
 as a percentage of the exact shadow's compared pixels (docs/metrics.md), so a
@@ -74,6 +75,9 @@ measured values (the margin rule is in tests/render/csm_tests.cmake).
 why, e.g. an issue number). The test then passes only while it still misses
 them (the render and metrics must still run cleanly), and fails once the case
 meets its bounds, so that the case moves to the bounded list when it is fixed.
+It also fails when the case gets worse than --known-failure-at-most (required
+with it: wrong_pct and wrong_of_shadow_pct as measured, x 1.25 plus the floors
+of tests/render/render_bounds.cmake).
 
 --technique none --reference unshadowed validates the geometry (camera rays,
 objects, transforms, masks) before planar exists: then wrong_pct must be 0.
@@ -375,7 +379,7 @@ def vtk_clipping_range(scene_path):
 
 def run_case(bin_dir, out, case, scene, light, technique, reference, max_wrong_pct,
              min_agreement, shadow_fact, max_wrong_of_shadow_pct=None, known_failure=None,
-             settings=(), render_args=()):
+             settings=(), render_args=(), known_at_most=None):
     """Render, compare, print one line; returns (failed, trace, metrics).
     settings: technique settings KEY=VALUE (--set); render_args: more
     vtkshadow-render arguments (--stats)."""
@@ -476,6 +480,13 @@ def run_case(bin_dir, out, case, scene, light, technique, reference, max_wrong_p
         for m in missed:
             print(f"FAIL: {m}")
         failed |= bool(missed)
+    elif known_at_most and (metrics["wrong_pct"] > known_at_most[0]
+                            or metrics["wrong_of_shadow_pct"] > known_at_most[1]):
+        print(f"FAIL: known failure ({known_failure}) got worse: wrong_pct "
+              f"{metrics['wrong_pct']:.4f}, wrong_of_shadow_pct "
+              f"{metrics['wrong_of_shadow_pct']:.4f}, at most {known_at_most[0]} / "
+              f"{known_at_most[1]}")
+        failed = True
     elif missed:
         print(f"known failure ({known_failure}), still failing as recorded: {'; '.join(missed)}")
     else:
@@ -497,13 +508,19 @@ def main():
     ap.add_argument("--max-wrong-of-shadow-pct", type=float)
     ap.add_argument("--min-mask-agreement", type=float, default=99.9)
     ap.add_argument("--known-failure", metavar="REASON")
+    ap.add_argument("--known-failure-at-most", type=float, nargs=2,
+                    metavar=("WRONG_PCT", "WRONG_OF_SHADOW_PCT"))
     ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                     help="a technique setting passed to vtkshadow-render")
     args = ap.parse_args()
+    if (args.known_failure is None) != (args.known_failure_at_most is None):
+        ap.error("--known-failure and --known-failure-at-most go together: a known failure is "
+                 "bounded on both sides")
     builder, fact = CASES[args.case]
     failed, _, _ = run_case(args.bin, args.out, args.case, builder(), args.light, args.technique,
                             args.reference, args.max_wrong_pct, args.min_mask_agreement, fact,
-                            args.max_wrong_of_shadow_pct, args.known_failure, args.set)
+                            args.max_wrong_of_shadow_pct, args.known_failure, args.set,
+                            known_at_most=args.known_failure_at_most)
     sys.exit(1 if failed else 0)
 
 
