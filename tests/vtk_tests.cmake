@@ -32,6 +32,13 @@ add_test(NAME python.enable_shadows
           ${PROJECT_SOURCE_DIR})
 set_tests_properties(python.enable_shadows PROPERTIES LABELS "render" TIMEOUT 900)
 
+# The key and fill light enable_shadows adds follow the camera in every
+# technique with LightFollowCamera off (vedo's setting) as with it on; the
+# application's own lights stay where VTK leaves them.
+add_test(NAME python.enable_follow_camera
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_follow_camera.py)
+set_tests_properties(python.enable_follow_camera PROPERTIES LABELS "render" TIMEOUT 120)
+
 # planar with a vtkLODActor floor: the mapper draws its inner Device actor,
 # which shares the floor's property keys (ParaView's actors do the same).
 add_test(NAME python.lod_receiver

@@ -1,5 +1,8 @@
 #include "vtkShadowDefaultLights.h"
 
+#include "vtkCamera.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
@@ -13,6 +16,40 @@ constexpr double KeyElevation = 50.0;
 constexpr double KeyAzimuth = 10.0;
 constexpr double KeyIntensity = 0.75;
 constexpr double KeyToHeadRatio = 3.0;
+
+// The mark on the lights AddKeyLight added or dimmed (in the light's
+// information).
+struct vtkShadowDefaultLightKeys
+{
+  static vtkInformationIntegerKey* DEFAULT_LIGHT();
+};
+vtkInformationKeyMacro(vtkShadowDefaultLightKeys, DEFAULT_LIGHT, Integer);
+
+void MarkDefault(vtkLight* light)
+{
+  if (!light->GetInformation())
+  {
+    vtkNew<vtkInformation> info;
+    light->SetInformation(info);
+  }
+  light->GetInformation()->Set(vtkShadowDefaultLightKeys::DEFAULT_LIGHT(), 1);
+}
+
+// Where vtkRenderer::UpdateLightsGeometryToFollowCamera puts a light of
+// this type: a headlight at the camera, a camera light in the camera's
+// frame; scene lights stay.
+void FollowCamera(vtkCamera* camera, vtkLight* light)
+{
+  if (light->LightTypeIsHeadlight())
+  {
+    light->SetPosition(camera->GetPosition());
+    light->SetFocalPoint(camera->GetFocalPoint());
+  }
+  else if (light->LightTypeIsCameraLight())
+  {
+    light->SetTransformMatrix(camera->GetCameraLightTransformMatrix());
+  }
+}
 }
 
 namespace vtkshadow
@@ -49,6 +86,7 @@ vtkLight* AddKeyLight(vtkRenderer* renderer, std::string& message)
     while (vtkLight* light = lights->GetNextLight(it))
     {
       light->SetIntensity(light->GetIntensity() * head);
+      MarkDefault(light);
     }
   }
   else
@@ -56,6 +94,7 @@ vtkLight* AddKeyLight(vtkRenderer* renderer, std::string& message)
     vtkNew<vtkLight> headlight;
     headlight->SetLightTypeToHeadlight();
     headlight->SetIntensity(head);
+    MarkDefault(headlight);
     renderer->AddLight(headlight);
   }
   // A camera light, as in vtkLightKit: it keeps its place above and to the
@@ -65,6 +104,7 @@ vtkLight* AddKeyLight(vtkRenderer* renderer, std::string& message)
   key->SetLightTypeToCameraLight();
   key->SetDirectionAngle(KeyElevation, KeyAzimuth);
   key->SetIntensity(KeyIntensity);
+  MarkDefault(key);
   renderer->AddLight(key);
   message = std::string("the renderer had ") +
     (hadHeadlight ? "only headlights (dimmed to 1/4: a third of the key, vtkLightKit's ratio)"
@@ -73,5 +113,36 @@ vtkLight* AddKeyLight(vtkRenderer* renderer, std::string& message)
     (hadHeadlight ? "" : " and a 0.25 headlight as fill") +
     " so shadows are visible; turn this off with AutoKeyLightOff() / key_light=False";
   return key;
+}
+
+bool IsDefaultLight(vtkLight* light)
+{
+  vtkInformation* info = light ? light->GetInformation() : nullptr;
+  return info && info->Has(vtkShadowDefaultLightKeys::DEFAULT_LIGHT()) &&
+    info->Get(vtkShadowDefaultLightKeys::DEFAULT_LIGHT()) != 0;
+}
+
+void UpdateLights(vtkRenderer* renderer)
+{
+  vtkLightCollection* lights = renderer->GetLights();
+  if (lights->GetNumberOfItems() == 0 && renderer->GetAutomaticLightCreation())
+  {
+    renderer->CreateLight();
+  }
+  if (renderer->GetLightFollowCamera())
+  {
+    renderer->UpdateLightsGeometryToFollowCamera();
+    return;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (IsDefaultLight(light))
+    {
+      FollowCamera(camera, light);
+    }
+  }
 }
 }

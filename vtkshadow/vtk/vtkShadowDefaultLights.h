@@ -1,5 +1,6 @@
 // vtkShadowDefaultLights.h - the key light enable_shadows adds when a
-// renderer has no light of its own, placed as vtkLightKit places its key.
+// renderer has no light of its own, placed as vtkLightKit places its key,
+// and how every pass brings the lights up to date for a frame.
 #ifndef vtkShadowDefaultLights_h
 #define vtkShadowDefaultLights_h
 
@@ -25,9 +26,33 @@ bool HasOnlyHeadlights(vtkRenderer* renderer);
  * existing headlights are dimmed to 0.25, or one is added when there was no
  * light. Returns the key light (owned by the renderer) and says what was
  * done in `message`; nullptr and an empty message when the renderer has
- * lights of its own (they are left alone).
+ * lights of its own (they are left alone). The key and the fill are marked
+ * as default lights (IsDefaultLight).
  */
 vtkLight* AddKeyLight(vtkRenderer* renderer, std::string& message);
+
+/**
+ * Whether `light` is one of the lights AddKeyLight added or dimmed to be
+ * the fill: they follow the camera in every frame (UpdateLights).
+ */
+bool IsDefaultLight(vtkLight* light);
+
+/**
+ * The lights as the frame about to be drawn uses them. Every pass calls it
+ * first, before its shadow work (VTK's lights pass does the same only
+ * inside the delegate, after the shadows, which would make them lag a
+ * frame):
+ *
+ * - VTK's automatic headlight is made when the renderer has no light;
+ * - headlights and camera lights are placed at the camera as VTK places
+ *   them (vtkRenderer::UpdateLightsGeometryToFollowCamera): all of them
+ *   when the renderer's LightFollowCamera is on, and the default lights
+ *   (IsDefaultLight) whatever LightFollowCamera says, so the key and fill
+ *   stay where vtkLightKit puts them relative to the view in every
+ *   technique. With LightFollowCamera off the application's own lights stay
+ *   where it put them, as VTK leaves them.
+ */
+void UpdateLights(vtkRenderer* renderer);
 }
 
 #endif
