@@ -39,6 +39,13 @@ add_test(NAME python.enable_follow_camera
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_follow_camera.py)
 set_tests_properties(python.enable_follow_camera PROPERTIES LABELS "render" TIMEOUT 120)
 
+# enable_shadows decides about the key light at each frame from the lights
+# the application has then: a light added after the call (vedo's show()) or
+# after a frame counts, removing them brings the key light back.
+add_test(NAME python.enable_light_changes
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_light_changes.py)
+set_tests_properties(python.enable_light_changes PROPERTIES LABELS "render" TIMEOUT 120)
+
 # planar with a vtkLODActor floor: the mapper draws its inner Device actor,
 # which shares the floor's property keys (ParaView's actors do the same).
 add_test(NAME python.lod_receiver

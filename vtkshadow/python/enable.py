@@ -12,10 +12,15 @@ def enable_shadows(renderer, technique="auto", max_error=None, key_light=True,
                     "auto" picks per light the cheapest that meets max_error).
     max_error:      auto's error target, wrong_pct (percent of pixels whose
                     shadow state may be wrong; default 0.5). Only for "auto".
-    key_light:      when the renderer has only VTK's automatic headlight (or
-                    no light), add vtkLightKit's key light so shadows are
-                    visible (technique.GetLightMessage() says what was done).
-                    Scenes with their own lights are left alone.
+    key_light:      while the renderer has only VTK's automatic headlight
+                    (or no light), keep vtkLightKit's key light on it so
+                    shadows are visible. Decided at each frame from the
+                    lights the application has then, not at this call: a
+                    light added later (vedo's show()) counts, and the key
+                    light goes again when the application adds its own
+                    (technique.GetLightMessage() says what is done). Scenes
+                    with their own lights are left alone. False adds none
+                    and removes those an earlier call added.
     residual_light: how much of a light remains in its shadow, 0..1 (0: the
                     physical hard shadow; 0.3 keeps 30%).
     options:        any other technique setting by name (docs/techniques.md),
