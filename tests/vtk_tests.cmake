@@ -46,6 +46,12 @@ add_test(NAME python.enable_light_changes
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_light_changes.py)
 set_tests_properties(python.enable_light_changes PROPERTIES LABELS "render" TIMEOUT 120)
 
+# enable_shadows given a plotter, a window, a technique name, None...: a
+# TypeError saying what to pass, nothing changed.
+add_test(NAME python.enable_wrong_type
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_wrong_type.py)
+set_tests_properties(python.enable_wrong_type PROPERTIES TIMEOUT 60)
+
 # planar with a vtkLODActor floor: the mapper draws its inner Device actor,
 # which shares the floor's property keys (ParaView's actors do the same).
 add_test(NAME python.lod_receiver
