@@ -32,6 +32,26 @@ add_test(NAME python.enable_shadows
           ${PROJECT_SOURCE_DIR})
 set_tests_properties(python.enable_shadows PROPERTIES LABELS "render" TIMEOUT 900)
 
+# The key and fill light enable_shadows adds follow the camera in every
+# technique with LightFollowCamera off (vedo's setting) as with it on; the
+# application's own lights stay where VTK leaves them.
+add_test(NAME python.enable_follow_camera
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_follow_camera.py)
+set_tests_properties(python.enable_follow_camera PROPERTIES LABELS "render" TIMEOUT 120)
+
+# enable_shadows decides about the key light at each frame from the lights
+# the application has then: a light added after the call (vedo's show()) or
+# after a frame counts, removing them brings the key light back.
+add_test(NAME python.enable_light_changes
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_light_changes.py)
+set_tests_properties(python.enable_light_changes PROPERTIES LABELS "render" TIMEOUT 120)
+
+# enable_shadows given a plotter, a window, a technique name, None...: a
+# TypeError saying what to pass, nothing changed.
+add_test(NAME python.enable_wrong_type
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_wrong_type.py)
+set_tests_properties(python.enable_wrong_type PROPERTIES TIMEOUT 60)
+
 # planar with a vtkLODActor floor: the mapper draws its inner Device actor,
 # which shares the floor's property keys (ParaView's actors do the same).
 add_test(NAME python.lod_receiver

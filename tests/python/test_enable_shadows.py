@@ -86,21 +86,27 @@ def differs(a, b, levels=8.0):
 
 
 # ---------------------------------------------------------------------------
-# Lights: a renderer with no light gets vtkLightKit's key light (+ headlight
-# fill), once; one with its own light is left alone; key_light=False too.
+# Lights, decided at the first frame: a renderer with no light gets
+# vtkLightKit's key light (+ headlight fill), once; one with its own light is
+# left alone; key_light=False too. (The lights changing later:
+# test_enable_light_changes.py.)
 technique = vtkshadow.enable_shadows(renderer, "none")
+check(renderer.GetLights().GetNumberOfItems() == 0 and technique.GetAddedKeyLight() is None,
+      "no light is added before the first frame")
+grab()
 text = new_messages()
 check(technique.GetAddedKeyLight() is not None, "a key light was added to a renderer without lights")
-check("key light" in technique.GetLightMessage() and "key light" in text,
+check("key light" in technique.GetLightMessage() and text.count("key light") == 1,
       "said so once: " + technique.GetLightMessage()[:80])
 key = technique.GetAddedKeyLight()
 check(key.LightTypeIsCameraLight() and abs(key.GetIntensity() - 0.75) < 1e-12,
       "the key light is vtkLightKit's: a camera light at intensity 0.75")
 check(renderer.GetLights().GetNumberOfItems() == 2, "key light + headlight fill")
 again = vtkshadow.enable_shadows(renderer, "none")
-check(again.GetAddedKeyLight() is None and again.GetLightMessage() == ""
-      and renderer.GetLights().GetNumberOfItems() == 2 and "key light" not in new_messages(),
-      "a renderer with lights of its own is left alone")
+grab()
+check(again.GetAddedKeyLight() is key and renderer.GetLights().GetNumberOfItems() == 2
+      and "key light" not in new_messages(),
+      "enable_shadows again: the same key light, not added twice, nothing said")
 
 other = vtkRenderer()
 own = vtkLight()
@@ -109,15 +115,19 @@ own.SetPosition(1, 2, 3)
 other.AddLight(own)
 window.AddRenderer(other)
 t = vtkshadow.enable_shadows(other, "auto")
-check(other.GetLights().GetNumberOfItems() == 1 and t.GetAddedKeyLight() is None,
-      "a scene light of the user's: nothing added")
+window.Render()
+check(other.GetLights().GetNumberOfItems() == 1 and t.GetAddedKeyLight() is None
+      and t.GetLightMessage() == "", "a scene light of the user's: nothing added")
 bare = vtkRenderer()
 window.AddRenderer(bare)
 t = vtkshadow.enable_shadows(bare, "auto", key_light=False)
-check(bare.GetLights().GetNumberOfItems() == 0 and t.GetLightMessage() == "",
-      "key_light=False adds nothing")
+window.Render()
+check(t.GetAddedKeyLight() is None and t.GetLightMessage() == ""
+      and all(light.LightTypeIsHeadlight() for light in bare.GetLights()),
+      f"key_light=False adds nothing ({bare.GetLights().GetNumberOfItems()} light: VTK's headlight)")
 window.RemoveRenderer(other)
 window.RemoveRenderer(bare)
+new_messages()
 
 # Bad settings: an exception, and the renderer keeps its pass and lights.
 before = renderer.GetPass()
@@ -222,8 +232,9 @@ check(handle is not None, f"C: vtkshadow_enable_shadows(renderer, planar) ({erro
 if handle:
     c_image = luminance(render())
     check(capi.vtkshadow_technique_detected_receiver_count(handle) == 1
-          and capi.vtkshadow_technique_light_message(handle) == b"",
-          "C: the floor detected, the lights left alone")
+          and b"key light" in capi.vtkshadow_technique_light_message(handle)
+          and renderer.GetLights().GetNumberOfItems() == 2,
+          "C: the floor detected, the key light and fill kept")
     check(np.mean((L_none - c_image)[floor_none] > 20.0) > 0.01, "C: the floor is shadowed")
     capi.vtkshadow_technique_free(handle)
 check(capi.vtkshadow_enable_shadows(address, b"csm", 0.5, error, len(error)) is None

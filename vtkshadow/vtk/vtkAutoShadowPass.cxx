@@ -371,6 +371,8 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   using vtkshadow::TechniqueSet;
   const TechniqueSet previous = this->Impl->Choice;
   vtkshadow::MarkStage("setup");
+  // Decide with the lights where this frame draws them.
+  vtkshadow::UpdateLights(s->GetRenderer());
   this->Decide(s);
   vtkshadow::MarkStage("auto.decide");
   const bool planar = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Planar);

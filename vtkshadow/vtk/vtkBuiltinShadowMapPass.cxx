@@ -14,6 +14,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSequencePass.h"
+#include "vtkShadowDefaultLights.h"
 #include "vtkShadowMapBakerPass.h"
 #include "vtkShadowMapPass.h"
 #include "vtkVolumetricPass.h"
@@ -198,6 +199,9 @@ void vtkBuiltinShadowMapPass::Render(const vtkRenderState* s)
   vtkshadow::MarkStage("setup");
   // The attenuation is a uniform in VTK's code: no shader rebuild needed.
   static_cast<vtkShadowMapPassGuarded*>(this->Shadows)->Residual = this->ResidualLight;
+  // The lights as every technique places them, before VTK's baker reads
+  // them (VTK's lights pass places them only when LightFollowCamera is on).
+  vtkshadow::UpdateLights(s->GetRenderer());
   // The lights VTK's baker gives a map: switched on, not the headlight, and
   // directional or a spot (VTK's pass skips point lights).
   this->ShadowingLights = 0;

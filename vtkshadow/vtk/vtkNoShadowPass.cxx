@@ -1,6 +1,8 @@
 #include "vtkNoShadowPass.h"
 
 #include "vtkObjectFactory.h"
+#include "vtkRenderState.h"
+#include "vtkShadowDefaultLights.h"
 #include "vtkShadowStageProfile.h"
 
 vtkStandardNewMacro(vtkNoShadowPass);
@@ -10,6 +12,9 @@ void vtkNoShadowPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   vtkshadow::MarkStage("setup");
+  // The lights as every technique places them (the key light follows the
+  // camera whatever LightFollowCamera says).
+  vtkshadow::UpdateLights(s->GetRenderer());
   this->RenderDelegate(s);
 }
 

@@ -11,15 +11,6 @@
 
 namespace vtkshadow
 {
-void UpdateLights(vtkRenderer* renderer)
-{
-  if (renderer->GetLights()->GetNumberOfItems() == 0 && renderer->GetAutomaticLightCreation())
-  {
-    renderer->CreateLight();
-  }
-  renderer->UpdateLightsGeometryToFollowCamera();
-}
-
 std::vector<vtkLight*> SwitchedOnLights(vtkRenderer* renderer)
 {
   std::vector<vtkLight*> lights;

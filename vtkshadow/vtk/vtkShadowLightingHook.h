@@ -3,6 +3,8 @@
 #ifndef vtkShadowLightingHook_h
 #define vtkShadowLightingHook_h
 
+#include "vtkShadowDefaultLights.h" // for UpdateLights, which every pass calls with these
+
 #include <string>
 #include <vector>
 
@@ -11,13 +13,6 @@ class vtkRenderer;
 
 namespace vtkshadow
 {
-/**
- * Bring lights that follow the camera (and the automatic headlight) up to
- * date before shadow work: VTK's lights pass does it only inside the
- * delegate, after the shadows, which would make them lag a frame.
- */
-void UpdateLights(vtkRenderer* renderer);
-
 /**
  * The renderer's switched-on lights in order: the numbering VTK's mappers
  * give the lights (lightColor0, lightColor1, ...) and every shadow pass uses.

@@ -121,16 +121,9 @@ bool vtkShadowTechnique::Enable(vtkRenderer* renderer)
   {
     return false;
   }
-  this->AddedKeyLight = nullptr;
-  this->LightMessage.clear();
-  if (this->AutoKeyLight)
-  {
-    this->AddedKeyLight = vtkshadow::AddKeyLight(renderer, this->LightMessage);
-    if (!this->LightMessage.empty())
-    {
-      vtkWarningMacro(<< "enable shadows: " << this->LightMessage);
-    }
-  }
+  // The lights are decided at each frame (vtkshadow::UpdateLights), from
+  // the lights the application has then.
+  vtkshadow::SetAutoKeyLight(renderer, this->AutoKeyLight);
   this->SetPass(renderer, pass);
   return true;
 }
@@ -147,7 +140,14 @@ vtkSmartPointer<vtkShadowTechnique> vtkShadowTechnique::EnableShadows(
 //------------------------------------------------------------------------------
 vtkLight* vtkShadowTechnique::GetAddedKeyLight() const
 {
-  return this->AddedKeyLight;
+  return vtkshadow::FindKeyLight(this->Renderer);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkShadowTechnique::GetLightMessage() const
+{
+  this->LightMessage = vtkshadow::DescribeDefaultLights(this->Renderer);
+  return this->LightMessage.c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -235,7 +235,6 @@ void vtkShadowTechnique::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Name: " << (this->Name ? this->Name : "(null)") << "\n";
   os << indent << "MapResolution: " << this->MapResolution << "\n";
   os << indent << "AutoKeyLight: " << this->AutoKeyLight << "\n";
-  os << indent << "LightMessage: " << this->LightMessage << "\n";
   for (const auto& option : this->Options)
   {
     os << indent << "Option " << option.first << ": " << option.second << "\n";

@@ -11,10 +11,10 @@
  *
  * Enable() (and the one-call EnableShadows(), vtkshadow.enable_shadows in
  * Python, vtkshadow_enable_shadows in C) also makes the shadows visible on
- * an ordinary VTK scene: when the renderer has no light of its own it adds
- * vtkLightKit's key light (AutoKeyLight; GetAddedKeyLight,
- * GetLightMessage), and the planar receivers are found by the passes
- * (GetDetectedReceiver).
+ * an ordinary VTK scene: at each frame in which the renderer has no light
+ * of its own, vtkLightKit's key light is there (AutoKeyLight;
+ * GetAddedKeyLight, GetLightMessage), and the planar receivers are found by
+ * the passes (GetDetectedReceiver).
  *
  * @code{.py}
  * technique = vtkshadow.vtkShadowTechnique()
@@ -109,12 +109,16 @@ public:
   long long GetShadowMapMemory(vtkRenderer* renderer) const;
 
   /**
-   * Shadows on an ordinary VTK scene: Install(), and first, when AutoKeyLight
-   * is on and the renderer has only VTK's automatic headlight (or no light),
-   * add vtkLightKit's key light (vtkShadowDefaultLights.h) and say so once
-   * (a warning, and GetLightMessage()). Scenes with their own lights are
-   * left alone. Returns false, changing nothing, for an unknown technique, a
-   * setting it does not take, or a renderer that is not a vtkOpenGLRenderer.
+   * Shadows on an ordinary VTK scene: Install(), and the renderer keeps
+   * the default lights when AutoKeyLight is on (vtkShadowDefaultLights.h):
+   * at each frame in which its own lights are none or only headlights
+   * (VTK's automatic headlight), vtkLightKit's key light is added, and
+   * removed again when the application adds lights of its own; each change
+   * is said once (a warning; GetLightMessage() says what is done now).
+   * AutoKeyLight off removes key lights an earlier Enable() added. Nothing
+   * happens to the lights before the first frame. Returns false, changing
+   * nothing, for an unknown technique, a setting it does not take, or a
+   * renderer that is not a vtkOpenGLRenderer.
    */
   bool Enable(vtkRenderer* renderer);
 
@@ -128,22 +132,20 @@ public:
 #endif
 
   /**
-   * Whether Enable() adds a key light to a renderer without lights of its
-   * own (default on).
+   * Whether Enable() has the renderer keep a key light while it has no
+   * lights of its own (default on).
    */
   vtkSetMacro(AutoKeyLight, bool);
   vtkGetMacro(AutoKeyLight, bool);
   vtkBooleanMacro(AutoKeyLight, bool);
 
   /**
-   * The key light Enable() added (owned by the renderer), nullptr when none
-   * was, and what was done ("" when nothing).
+   * The key light kept on the renderer the technique was last set on (owned
+   * by the renderer; added at a frame, see Enable()), nullptr when there is
+   * none, and what is done to its lights now ("" when nothing).
    */
   vtkLight* GetAddedKeyLight() const;
-  const char* GetLightMessage() const
-  {
-    return this->LightMessage.c_str();
-  }
+  const char* GetLightMessage() const;
 
   /**
    * The actors the installed pass detected as plane receivers in its last
@@ -166,8 +168,7 @@ protected:
   int MapResolution;
   std::vector<std::pair<std::string, double>> Options; // in the order set
   bool AutoKeyLight;
-  vtkWeakPointer<vtkLight> AddedKeyLight;
-  std::string LightMessage;
+  mutable std::string LightMessage; // GetLightMessage's storage
   vtkWeakPointer<vtkRenderer> Renderer;
 
   // Set `pass` on the OpenGL renderer, freeing the one it replaces.

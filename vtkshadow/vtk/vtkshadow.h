@@ -68,21 +68,24 @@ extern "C"
 
   /* Shadows in one call on an ordinary VTK scene: the technique `name` (NULL:
    * "auto") on a vtkOpenGLRenderer (passed as void*), with max_error
-   * (wrong_pct, auto only; < 0: the default). When the renderer has only
-   * VTK's automatic headlight (or no light), vtkLightKit's key light is
-   * added (vtkshadow_technique_light_message says so); flat actors become
-   * plane receivers when none is marked. Returns the technique (free it with
+   * (wrong_pct, auto only; < 0: the default). At each frame in which the
+   * renderer has only VTK's automatic headlight (or no light),
+   * vtkLightKit's key light is there, removed again when the application
+   * adds lights of its own (vtkshadow_technique_light_message says what is
+   * done); flat actors become plane receivers when none is marked. Returns
+   * the technique (free it with
    * vtkshadow_technique_free; the shadows stay on) or NULL with the message,
    * leaving the renderer unchanged. */
   VTKSHADOW_EXPORT vtkshadow_technique* vtkshadow_enable_shadows(
     void* vtk_renderer, const char* name, double max_error, char* error, size_t error_size);
   /* The same for a technique configured with vtkshadow_technique_set_option
-   * (e.g. "residual_light"): install it and add the key light if needed. */
+   * (e.g. "residual_light"): install it and keep the key light when needed. */
   VTKSHADOW_EXPORT int vtkshadow_technique_enable(
     vtkshadow_technique* technique, void* vtk_renderer, char* error, size_t error_size);
-  /* Whether enable adds the key light (default 1); 0 leaves lights alone. */
+  /* Whether enable keeps the key light (default 1); 0 adds none and removes
+   * those an earlier enable added. */
   VTKSHADOW_EXPORT int vtkshadow_technique_set_key_light(vtkshadow_technique* technique, int on);
-  /* What the last enable did to the lights ("" when nothing). */
+  /* What is done to the renderer's lights now ("" when nothing). */
   VTKSHADOW_EXPORT const char* vtkshadow_technique_light_message(
     const vtkshadow_technique* technique);
   /* Actors the technique found as plane receivers in its last frame. */
