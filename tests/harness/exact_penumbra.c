@@ -15,6 +15,15 @@
  * (vsh_penumbra.h) and its whole-image mean absolute error. Exit 0, or 2
  * on bad input. The exact image goes to EXACT_OUT.png when given.
  *
+ *   exact_penumbra --field-out FIELD SCENE LIGHT VIS.png MASK.png [EXACT_OUT.png]
+ *   exact_penumbra --field-in FIELD SCENE LIGHT VIS.png MASK.png [EXACT_OUT.png]
+ *
+ * The same, and also writes the exact per-pixel values to FIELD
+ * (exact_field.h), or takes them from FIELD instead of integrating them: they
+ * depend on the scene, the light and VIS's size only, so
+ * tests/harness/exact_cache.py computes them once for all the renders it
+ * compares. The output is the same either way.
+ *
  *   exact_penumbra --noise A.png B.png MASK.png [SCENE LIGHT]
  *
  * A renderer's own noise from two renders with different seeds: over the
@@ -22,6 +31,7 @@
  * (the noise of one render, independent renders). With SCENE and LIGHT,
  * only the plane's pixels count (as for the exact comparison): Cycles'
  * per-sample N.L makes a curved caster's terminator far noisier. */
+#include "exact_field.h"
 #include "vsh_metrics.h"
 #include "vsh_penumbra.h"
 #include "vsh_png.h"
@@ -149,12 +159,16 @@ static int noise(int argc, char **argv) {
 
 int main(int argc, char **argv) {
   if (argc > 1 && strcmp(argv[1], "--noise") == 0) return noise(argc, argv);
+  const char *field_in, *field_out;
+  exact_field_options(&argc, &argv, &field_in, &field_out);
   char err[VSH_SCENE_ERROR_MAX];
   vsh_scene *s = NULL;
   float *vis = NULL, *mask = NULL;
   int w, h, w2, h2, k;
   if (argc != 5 && argc != 6)
-    return usage_error("usage: exact_penumbra SCENE LIGHT VIS.png MASK.png [EXACT.png]", NULL);
+    return usage_error("usage: exact_penumbra [--field-in|--field-out FIELD] SCENE LIGHT VIS.png "
+                       "MASK.png [EXACT.png]",
+                       NULL);
   if (vsh_scene_load(argv[1], &s, err, sizeof err)) return usage_error(err, NULL);
   k = atoi(argv[2]);
   if (k < 0 || (size_t)k >= s->light_count || s->object_count < 2 ||
@@ -168,18 +182,29 @@ int main(int argc, char **argv) {
   cam c;
   camera_of(&s->camera, w, h, &c);
   size_t np = (size_t)w * h;
+  /* The exact visibility per pixel, -1 off the plane: all that the
+   * integration gives; the comparison below reads only this. */
+  double *field = malloc(np * sizeof *field);
+  if (field_in) {
+    if (exact_field_read(field_in, field, w, h, 1, err, sizeof err)) return usage_error(err, NULL);
+  } else {
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) field[(size_t)j * w + i] = pixel(s, &c, k, i, j, w, h);
+    if (field_out && exact_field_write(field_out, field, w, h, 1, err, sizeof err)) {
+      fprintf(stderr, "exact_penumbra: %s\n", err);
+      return 1;
+    }
+  }
   float *exact = calloc(np, sizeof *exact);
   unsigned char *valid = calloc(np, 1);
   double sum = 0.0;
   long count = 0;
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) {
-      size_t idx = (size_t)j * w + i;
-      double v = pixel(s, &c, k, i, j, w, h);
-      exact[idx] = (float)(v < 0 ? 0 : v);
-      valid[idx] = v >= 0 && mask[idx] > 0.5f;
-      if (valid[idx]) sum += fabs((double)vis[idx] - v), ++count;
-    }
+  for (size_t idx = 0; idx < np; ++idx) {
+    double v = field[idx];
+    exact[idx] = (float)(v < 0 ? 0 : v);
+    valid[idx] = v >= 0 && mask[idx] > 0.5f;
+    if (valid[idx]) sum += fabs((double)vis[idx] - v), ++count;
+  }
   vsh_penumbra p;
   int rc = vsh_penumbra_compute(vis, exact, valid, NULL, w, h, &p);
   if (argc == 6) vsh_png_write_gray16_float(argv[5], exact, w, h, err, sizeof err);
@@ -188,7 +213,7 @@ int main(int argc, char **argv) {
          "\"width_ratio\": %.6g, \"contour_05_px\": %.6g, \"status\": %d}\n",
          count, count ? sum / count : 0.0, p.penumbra_pixels, p.pen_mae, p.pen_bias, p.leak_pct,
          p.false_shadow_pct, p.width_ratio, p.contour_px[1], rc);
-  free(exact), free(valid), free(vis), free(mask);
+  free(field), free(exact), free(valid), free(vis), free(mask);
   vsh_scene_free(s);
   return rc < 0 ? 1 : 0;
 }

@@ -203,3 +203,12 @@ add_test(NAME harness.soft_adaptive
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_soft_adaptive.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/soft_adaptive)
 set_tests_properties(harness.soft_adaptive PROPERTIES TIMEOUT 1200 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
+# exact_cache.py: exact_penumbra's and exact_terminator's exact images, kept
+# by content for every test of the run, give the bytes of a fresh run from a
+# miss and from a hit, and a damaged entry is computed again
+# (test_exact_cache.py; a cache folder of its own, no display).
+add_test(NAME harness.exact_cache
+  COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_exact_cache.py --bin ${VTKSHADOW_BIN}
+          --out ${VTKSHADOW_TEST_OUT}/harness/exact_cache)
+set_tests_properties(harness.exact_cache PROPERTIES TIMEOUT 300 LABELS "harness")

@@ -8,6 +8,7 @@ import json
 import os
 import subprocess
 
+import exact_cache
 from test_soft import SCENE
 
 SIZE = "160x120"
@@ -53,8 +54,9 @@ def render(bindir, scene, technique, setting, k, stem, stats=False):
 
 
 def exact(bindir, scene, k, vis, mask):
-    """exact_penumbra's JSON figures of a visibility image, or None."""
-    r = run([os.path.join(bindir, "exact_penumbra"), scene, str(k), vis, mask])
+    """exact_penumbra's JSON figures of a visibility image, or None (the
+    exact image from the run's cache, exact_cache.py)."""
+    r = exact_cache.run_exact(run, bindir, "exact_penumbra", scene, k, vis, mask)
     try:
         return json.loads(r.stdout)
     except ValueError:

@@ -24,6 +24,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import exact_cache  # noqa: E402
 from soft_penumbra_common import SCENE, failures, parse_args, render, run, scene_with, verdict  # noqa: E402
 
 MIN_PIXELS = 10
@@ -36,7 +37,7 @@ def main():
     for k in range(len(SCENE["lights"])):
         stem = os.path.join(args.out, "light%d" % k)
         vis, mask, _ = render(args.bin, scene, "raytrace", "samples=64", k, stem)
-        r = run([os.path.join(args.bin, "exact_terminator"), scene, str(k), vis, mask])
+        r = exact_cache.run_exact(run, args.bin, "exact_terminator", scene, k, vis, mask)
         try:
             import json
             m = json.loads(r.stdout)

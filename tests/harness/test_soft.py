@@ -32,6 +32,8 @@ import os
 import subprocess
 import sys
 
+import exact_cache
+
 SCENE = {
     "description": "soft-shadow test: sphere over a plane, two disk lights and a sun with an angle",
     "size": [640, 480],
@@ -74,7 +76,7 @@ def compare(args, scene, out, seed):
 
 
 def exact(args, scene, k, vis, mask):
-    r = run([os.path.join(args.bin, "exact_penumbra"), scene, str(k), vis, mask])
+    r = exact_cache.run_exact(run, args.bin, "exact_penumbra", scene, k, vis, mask)
     try:
         return json.loads(r.stdout)
     except ValueError:

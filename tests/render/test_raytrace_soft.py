@@ -17,6 +17,9 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "harness"))
+import exact_cache  # noqa: E402
+
 SCENE = {
     "description": "raytrace soft test: sphere over a plane, two disk lights and a sun with an angle",
     "size": [640, 480],
@@ -54,9 +57,9 @@ def measure(args, scene, name, check):
          "--techniques", "raytrace", "--scale", "0.25", "--no-report"])
     stem = os.path.join(out, name, "vtk", "raytrace")
     for k in range(len(scene["lights"])):
-        r = run([os.path.join(args.bin, "exact_penumbra"), path, str(k),
-                 os.path.join(stem, "light%d_visibility.png" % k),
-                 os.path.join(stem, "light%d_mask.png" % k)])
+        r = exact_cache.run_exact(run, args.bin, "exact_penumbra", path, k,
+                                  os.path.join(stem, "light%d_visibility.png" % k),
+                                  os.path.join(stem, "light%d_mask.png" % k))
         try:
             m = json.loads(r.stdout)
         except ValueError:
