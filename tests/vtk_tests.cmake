@@ -123,9 +123,9 @@ add_test(NAME sanitize.unit
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/sanitize/run.sh ${PROJECT_SOURCE_DIR}
           ${CMAKE_BINARY_DIR}/sanitize)
 set_tests_properties(sanitize.unit PROPERTIES TIMEOUT 1200 LABELS "sanitize")
-# ... and the whole product (VTK module, C API, tools, harness) with ASan and
-# UBSan in build-asan: the C API, CLI, a few render and harness tests there
-# (tests/sanitize/run.sh lists them; Mesa's and VTK's exit-time leaks are
+# ... and what the C API, CLI and a few render and harness tests run (VTK
+# module, C API, tools) with ASan and UBSan in build-asan, those tests there
+# (tests/sanitize/run.sh lists both; Mesa's and VTK's exit-time leaks are
 # suppressed in tests/sanitize/lsan.supp).
 add_test(NAME sanitize.product
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/sanitize/run.sh ${PROJECT_SOURCE_DIR}
