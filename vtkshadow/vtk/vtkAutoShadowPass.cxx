@@ -952,9 +952,9 @@ int vtkAutoShadowPass::VolumeInputs(
       continue;
     }
     const double edges = this->VolumeEdges(i, light, index);
-    if (edges < 0.0)
+    if (edges < 0.0 || !vtkShadowVolumePass::CastsExactly(impl.Actors[i].Actor))
     {
-      ++unsupported; // no triangles: nothing to extrude
+      ++unsupported; // no triangles to extrude, or not drawn as volumes need
       continue;
     }
     double bounds[6];

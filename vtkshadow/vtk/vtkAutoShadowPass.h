@@ -247,7 +247,8 @@ private:
   double TaperErrorPct(vtkRenderer* renderer, double pixels);
   // Shadow volumes for light number `index` (`light` homogeneous, world):
   // the cost model's inputs (silhouette edges, scissored fill) and how many
-  // casters volumes cannot draw (no triangles, translucent).
+  // casters volumes cannot draw exactly (no triangles, translucent, not
+  // vtkShadowVolumePass::CastsExactly).
   int VolumeInputs(
     vtkRenderer* renderer, const double light[4], int index, vsh_volume_ms_input& input);
   // The volume silhouette's quads (sum of multiplicities) of one caster (an
