@@ -58,6 +58,20 @@ add_test(NAME python.lod_receiver
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_lod_receiver.py)
 set_tests_properties(python.lod_receiver PROPERTIES LABELS "render" TIMEOUT 120)
 
+# Parts of vtkAssembly / vtkPropAssembly (nested, moved, NO_CAST on the
+# assembly, a floor inside one) cast and receive as the same plain actors at
+# the composed matrices, with every registered technique.
+add_test(NAME python.assembly_casters
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_assembly_casters.py)
+set_tests_properties(python.assembly_casters PROPERTIES LABELS "render" TIMEOUT 120)
+
+# Meshes from live pipelines whose mappers bind buffer textures (cell
+# normals, flat shading, cell colours): volume and auto against raytrace, csm
+# screen against forward; a wireframe caster is one auto keeps volume from.
+add_test(NAME python.volume_live_pipeline
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_volume_live_pipeline.py)
+set_tests_properties(python.volume_live_pipeline PROPERTIES LABELS "render" TIMEOUT 120)
+
 # C API from a .c file.
 add_executable(test_capi capi/test_capi.c)
 target_link_libraries(test_capi PRIVATE vtkshadow::vtkshadow)

@@ -61,9 +61,10 @@ struct vtkAutoShadowPass::Internals
   };
   std::map<vtkProp*, std::unique_ptr<Caster>> Casters;
 
-  // The frame's objects: plain data for the core's decision, and their actors.
+  // The frame's objects: plain data for the core's decision, and their actors
+  // (with the matrices they are drawn with).
   std::vector<vsh_auto_object> Objects;
-  std::vector<vtkActor*> Actors;
+  std::vector<vtkshadow::ShadowActor> Actors;
   std::vector<vtkWeakPointer<vtkActor>> Detected; // receivers found, not marked
   std::string GeneralJSON;                        // per map light: the candidates auto weighed
   std::vector<std::vector<double>> Lights;        // per switched-on light: homogeneous, world
@@ -129,6 +130,14 @@ std::string JSONNumber(double value)
 // unshadowed frame of 8.1 ms, performance-probe.md), in milliseconds. Maps
 // baked once with a still camera cost nothing more per frame.
 constexpr double MapLookupMsPerPixel = 11.5 / (800.0 * 600.0);
+
+// A placement matrix's linear scale (cube root of its volume change); row
+// major, data -> world.
+double MatrixScale(const double m[16])
+{
+  const double linear[3][3] = { { m[0], m[1], m[2] }, { m[4], m[5], m[6] }, { m[8], m[9], m[10] } };
+  return std::cbrt(std::abs(vtkMath::Determinant3x3(linear)));
+}
 
 std::string Centre(const char* what, const vsh_auto_object& o)
 {
@@ -238,27 +247,28 @@ void vtkAutoShadowPass::GatherObjects(const vtkRenderState* s)
   vtkshadow::ReceiverPlaneCache& planes = this->PlanarPass->GetReceiverPlaneCache();
   Internals& impl = *this->Impl;
   impl.Objects.clear();
-  impl.Actors.clear();
-  const std::vector<vtkshadow::ShadowActor> shadowActors = vtkshadow::ShadowActors(s);
-  for (const vtkshadow::ShadowActor& shadowActor : shadowActors)
-  {
-    impl.Actors.push_back(shadowActor.Actor);
-  }
+  impl.Actors = vtkshadow::ShadowActors(s);
   // The receivers the planar pass will use: marked, or else detected.
   const vtkshadow::ReceiverChoice receivers = this->PlanarPass->ChooseReceivers(impl.Actors);
-  impl.Detected.assign(receivers.Detected ? receivers.Receivers.begin() : receivers.Receivers.end(),
-    receivers.Receivers.end());
-  for (const vtkshadow::ShadowActor& shadowActor : shadowActors)
+  impl.Detected.clear();
+  for (const vtkshadow::ShadowActor& receiver : receivers.Receivers)
   {
-    vtkActor* actor = shadowActor.Actor;
-    const bool receiver = std::find(receivers.Receivers.begin(), receivers.Receivers.end(),
-                            actor) != receivers.Receivers.end();
+    if (receivers.Detected)
+    {
+      impl.Detected.emplace_back(receiver.Actor);
+    }
+  }
+  for (const vtkshadow::ShadowActor& shadowActor : impl.Actors)
+  {
+    const bool receiver = std::any_of(receivers.Receivers.begin(), receivers.Receivers.end(),
+      [&](const vtkshadow::ShadowActor& r)
+      { return r.Actor == shadowActor.Actor && r.Instance == shadowActor.Instance; });
     vsh_auto_object object;
     vsh_auto_object_init(&object, shadowActor.Bounds, receiver ? 1 : 0,
-      vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()) ? 0 : 1, frustum);
+      vtkshadow::HasFlag(shadowActor, vtkShadowPassBase::NO_CAST()) ? 0 : 1, frustum);
     if (object.receiver)
     {
-      const vtkshadow::ReceiverPlaneCache::Entry& plane = planes.Get(actor);
+      const vtkshadow::ReceiverPlaneCache::Entry& plane = planes.Get(shadowActor);
       object.flat = plane.Flat ? 1 : 0;
       std::copy_n(plane.Plane, 4, object.plane);
     }
@@ -275,7 +285,7 @@ int vtkAutoShadowPass::FindConcaveCaster()
   for (size_t i = 0; i < impl.Objects.size(); ++i)
   {
     const vsh_auto_object& o = impl.Objects[i];
-    if (!o.receiver && o.casts && o.in_view && !impl.For(impl.Actors[i]).Convex)
+    if (!o.receiver && o.casts && o.in_view && !impl.For(impl.Actors[i].Actor).Convex)
     {
       return static_cast<int>(i);
     }
@@ -428,17 +438,19 @@ double vtkAutoShadowPass::MapOutlinePixels(const double light[4], int index, vtk
     const vsh_auto_object& o = impl.Objects[i];
     if (o.casts && !o.receiver && o.in_view)
     {
-      outline += this->OutlinePixels(impl.Actors[i], light, index, o.center, o.radius, renderer);
+      outline += this->OutlinePixels(i, light, index, renderer);
     }
   }
   return outline;
 }
 
 //------------------------------------------------------------------------------
-double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, const double light[4], int index,
-  const double center[3], double radius, vtkRenderer* renderer)
+double vtkAutoShadowPass::OutlinePixels(
+  size_t object, const double light[4], int index, vtkRenderer* renderer)
 {
-  const double pixel = this->PixelWorldSize(renderer, center);
+  const vtkshadow::ShadowActor& actor = this->Impl->Actors[object];
+  const vsh_auto_object& o = this->Impl->Objects[object];
+  const double pixel = this->PixelWorldSize(renderer, o.center);
   if (!(pixel > 0.0))
   {
     return 0.0;
@@ -447,12 +459,14 @@ double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, const double light[4], 
   // (cached per light while the light and mesh stay put), then to world
   // units by the actor's scale. A mesh that is not closed has no defined
   // silhouette: its bounding sphere's great circle stands in.
-  double world = 2.0 * vtkMath::Pi() * radius;
-  Internals::Caster& caster = this->Impl->For(actor);
-  vtkNew<vtkMatrix4x4> inverse;
-  vtkMatrix4x4::Invert(actor->GetMatrix(), inverse);
-  double inData[4];
-  inverse->MultiplyPoint(light, inData);
+  double world = 2.0 * vtkMath::Pi() * o.radius;
+  Internals::Caster& caster = this->Impl->For(actor.Actor);
+  double inverse[16], inData[4];
+  if (!vsh_mat4_inverse(actor.Matrix, inverse))
+  {
+    return world / pixel;
+  }
+  vsh_mat4_transform_point4(inverse, light, inData);
   auto& cached = caster.Silhouette[index];
   const std::vector<double> key(inData, inData + 4);
   if (cached.first != key)
@@ -462,15 +476,7 @@ double vtkAutoShadowPass::OutlinePixels(vtkActor* actor, const double light[4], 
   }
   if (cached.second >= 0.0)
   {
-    double linear[3][3];
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        linear[r][c] = actor->GetMatrix()->GetElement(r, c);
-      }
-    }
-    world = cached.second * std::cbrt(std::abs(vtkMath::Determinant3x3(linear)));
+    world = cached.second * MatrixScale(actor.Matrix);
   }
   return world / pixel;
 }
@@ -497,22 +503,6 @@ double vtkAutoShadowPass::PixelWorldSize(vtkRenderer* renderer, const double cen
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
-// The actor matrix's linear scale (cube root of its volume change).
-double ActorScale(vtkActor* actor)
-{
-  double linear[3][3];
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      linear[r][c] = actor->GetMatrix()->GetElement(r, c);
-    }
-  }
-  return std::cbrt(std::abs(vtkMath::Determinant3x3(linear)));
-}
-}
 
 //------------------------------------------------------------------------------
 double vtkAutoShadowPass::ThinnestCasterPixels(vtkRenderer* renderer)
@@ -530,14 +520,14 @@ double vtkAutoShadowPass::ThinnestCasterPixels(vtkRenderer* renderer)
     {
       continue;
     }
-    vtkActor* actor = impl.Actors[i];
-    const double width = impl.For(actor).Geometry.GetThinnestWidth();
+    const vtkshadow::ShadowActor& actor = impl.Actors[i];
+    const double width = impl.For(actor.Actor).Geometry.GetThinnestWidth();
     const double pixel = this->PixelWorldSize(renderer, o.center);
     if (!std::isfinite(width) || !(pixel > 0.0))
     {
       continue;
     }
-    thinnest = std::min(thinnest, width * ActorScale(actor) / pixel);
+    thinnest = std::min(thinnest, width * MatrixScale(actor.Matrix) / pixel);
   }
   return thinnest;
 }
@@ -773,8 +763,8 @@ double vtkAutoShadowPass::TaperErrorPct(vtkRenderer* renderer, double pixels)
     {
       continue;
     }
-    vtkActor* actor = impl.Actors[i];
-    vtkShadowCasterGeometry& geometry = impl.For(actor).Geometry;
+    const vtkshadow::ShadowActor& actor = impl.Actors[i];
+    vtkShadowCasterGeometry& geometry = impl.For(actor.Actor).Geometry;
     const std::vector<double>& widths = geometry.GetTaperWidths();
     const std::vector<double>& lengths = geometry.GetTaperLengths();
     const double pixel = this->PixelWorldSize(renderer, o.center);
@@ -783,7 +773,7 @@ double vtkAutoShadowPass::TaperErrorPct(vtkRenderer* renderer, double pixels)
       continue;
     }
     const double lost = vsh_auto_taper_error(widths.data(), lengths.data(), widths.size(),
-      ActorScale(actor) / pixel, this->UsedTexelTarget, 2.0, this->UsedStretch, pixels);
+      MatrixScale(actor.Matrix) / pixel, this->UsedTexelTarget, 2.0, this->UsedStretch, pixels);
     total += std::isfinite(lost) ? lost : 0.0;
   }
   return total;
@@ -956,17 +946,17 @@ int vtkAutoShadowPass::VolumeInputs(
   int unsupported = this->TranslucentCasters(renderer);
   for (size_t i = 0; i < impl.Objects.size(); ++i)
   {
-    vtkActor* actor = impl.Actors[i];
     // The depth pre-pass draws every opaque actor, casting or not.
-    input.scene_triangles += static_cast<double>(impl.For(actor).Geometry.GetNumberOfTriangles());
+    input.scene_triangles +=
+      static_cast<double>(impl.For(impl.Actors[i].Actor).Geometry.GetNumberOfTriangles());
     if (!impl.Objects[i].casts)
     {
       continue;
     }
-    const double edges = this->VolumeEdges(actor, light, index);
-    if (edges < 0.0)
+    const double edges = this->VolumeEdges(i, light, index);
+    if (edges < 0.0 || !vtkShadowVolumePass::CastsExactly(impl.Actors[i].Actor))
     {
-      ++unsupported; // no triangles: nothing to extrude
+      ++unsupported; // no triangles to extrude, or not drawn as volumes need
       continue;
     }
     double bounds[6];
@@ -998,26 +988,29 @@ int vtkAutoShadowPass::TranslucentCasters(vtkRenderer* renderer) const
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
-    auto* actor = vtkActor::SafeDownCast(prop);
-    count += actor && actor->GetVisibility() && actor->GetMapper() &&
-        actor->HasTranslucentPolygonalGeometry() &&
-        !vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST())
-      ? 1
-      : 0;
+    vtkshadow::ForEachPathActor(prop,
+      [&](vtkActor* actor, const double*)
+      {
+        const vtkshadow::ShadowActor part{ actor, prop, {}, {}, 0 };
+        count += actor->HasTranslucentPolygonalGeometry() &&
+            !vtkshadow::HasFlag(part, vtkShadowPassBase::NO_CAST())
+          ? 1
+          : 0;
+      });
   }
   return count;
 }
 
 //------------------------------------------------------------------------------
-double vtkAutoShadowPass::VolumeEdges(vtkActor* actor, const double light[4], int index)
+double vtkAutoShadowPass::VolumeEdges(size_t object, const double light[4], int index)
 {
-  Internals::Caster& caster = this->Impl->For(actor);
+  const vtkshadow::ShadowActor& actor = this->Impl->Actors[object];
+  Internals::Caster& caster = this->Impl->For(actor.Actor);
   vtkShadowCasterGeometry& geometry = caster.Geometry;
   const vsh_mesh_topology* topology =
     geometry.GetNumberOfTriangles() > 0 ? geometry.GetTopology() : nullptr;
-  double model[16], inverse[16], inData[4], stored[4];
-  vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
-  if (!topology || !vsh_mat4_inverse(model, inverse))
+  double inverse[16], inData[4], stored[4];
+  if (!topology || !vsh_mat4_inverse(actor.Matrix, inverse))
   {
     return -1.0;
   }

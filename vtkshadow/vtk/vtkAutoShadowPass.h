@@ -247,13 +247,15 @@ private:
   double TaperErrorPct(vtkRenderer* renderer, double pixels);
   // Shadow volumes for light number `index` (`light` homogeneous, world):
   // the cost model's inputs (silhouette edges, scissored fill) and how many
-  // casters volumes cannot draw (no triangles, translucent).
+  // casters volumes cannot draw exactly (no triangles, translucent, not
+  // vtkShadowVolumePass::CastsExactly).
   int VolumeInputs(
     vtkRenderer* renderer, const double light[4], int index, vsh_volume_ms_input& input);
-  // The volume silhouette's quads (sum of multiplicities) of one caster for
+  // The volume silhouette's quads (sum of multiplicities) of one caster (an
+  // index into the frame's objects) for
   // light number `index`, cached per light while light and mesh stay put;
   // -1 when the caster has no mesh to extrude.
-  double VolumeEdges(vtkActor* actor, const double light[4], int index);
+  double VolumeEdges(size_t object, const double light[4], int index);
   int TranslucentCasters(vtkRenderer* renderer) const;
   // Records the weighed candidates of map light `l` in the stats and, when
   // an exact technique won, the light's new choice and why.
@@ -262,10 +264,9 @@ private:
   double PixelWorldSize(vtkRenderer* renderer, const double center[3]) const;
   void DescribeChoice();
   // Pixels of shadow outline the casters in view throw under light number
-  // `index` (`light` homogeneous, world coordinates), and of one actor.
+  // `index` (`light` homogeneous, world coordinates), and of one object.
   double MapOutlinePixels(const double light[4], int index, vtkRenderer* renderer);
-  double OutlinePixels(vtkActor* actor, const double light[4], int index, const double center[3],
-    double radius, vtkRenderer* renderer);
+  double OutlinePixels(size_t object, const double light[4], int index, vtkRenderer* renderer);
 };
 
 #endif

@@ -353,7 +353,7 @@ namespace
 {
 // FNV-1a over the casters' identity, matrix values and mesh times, in
 // order: equal for an unchanged set of casters (a caster leaving changes it).
-unsigned long long CasterContentKey(const std::vector<vtkActor*>& casters)
+unsigned long long CasterContentKey(const std::vector<vtkshadow::ShadowActor>& casters)
 {
   unsigned long long h = 1469598103934665603ULL;
   auto mix = [&h](const void* data, size_t n)
@@ -364,11 +364,11 @@ unsigned long long CasterContentKey(const std::vector<vtkActor*>& casters)
       h = (h ^ b[i]) * 1099511628211ULL;
     }
   };
-  for (vtkActor* actor : casters)
+  for (const vtkshadow::ShadowActor& caster : casters)
   {
-    const vtkMTimeType mesh = vtkshadow::MeshTime(actor);
-    mix(&actor, sizeof(actor));
-    mix(&actor->GetMatrix()->Element[0][0], 16 * sizeof(double));
+    const vtkMTimeType mesh = vtkshadow::MeshTime(caster.Actor);
+    mix(&caster.Actor, sizeof(caster.Actor));
+    mix(caster.Matrix, sizeof(caster.Matrix));
     mix(&mesh, sizeof(mesh));
   }
   const size_t count = casters.size();
@@ -402,12 +402,11 @@ void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame
   }
   for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(renderer))
   {
-    vtkActor* actor = shadowActor.Actor;
-    if (!vtkshadow::HasFlag(actor, vtkShadowPassBase::NO_CAST()))
+    if (!vtkshadow::HasFlag(shadowActor, vtkShadowPassBase::NO_CAST()))
     {
       vsh_bounds ab;
       vsh_bounds_from_vtk(&ab, shadowActor.Bounds);
-      frame.Casters.push_back(actor);
+      frame.Casters.push_back(shadowActor);
       vsh_bounds_merge(&scene.casters, &ab);
     }
   }
@@ -720,14 +719,14 @@ void vtkCascadedShadowMapPass::BakeMaps(
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(
       1.5f * static_cast<float>(this->BiasScale), 2.0f * static_cast<float>(this->BiasScale));
-    for (vtkActor* actor : frame.Casters)
+    for (const vtkshadow::ShadowActor& caster : frame.Casters)
     {
-      auto& geometry = impl.Casters[actor];
+      auto& geometry = impl.Casters[caster.Actor];
       if (!geometry)
       {
         geometry.reset(new vtkShadowCasterGeometry);
       }
-      geometry->Update(actor);
+      geometry->Update(caster.Actor);
     }
     const int columns = impl.Held.TileGrid[0];
     for (int t : bake)
@@ -760,15 +759,15 @@ void vtkCascadedShadowMapPass::DrawCasters(
   {
     return;
   }
-  for (vtkActor* actor : frame.Casters)
+  for (const vtkshadow::ShadowActor& caster : frame.Casters)
   {
-    vtkShadowCasterGeometry* geometry = this->Impl->Casters[actor].get();
+    vtkShadowCasterGeometry* geometry = this->Impl->Casters[caster.Actor].get();
     if (geometry->GetNumberOfTriangles() == 0)
     {
       continue;
     }
     double modelRelative[16];
-    geometry->GetModelRelativeMatrix(actor, frame.Scene.camera.position, modelRelative);
+    geometry->GetModelRelativeMatrix(caster.Matrix, frame.Scene.camera.position, modelRelative);
     double mcdc[16];
     vsh_mat4_multiply(tile.view.world_to_clip, modelRelative, mcdc);
     float mcdcF[16];
@@ -786,7 +785,8 @@ void vtkCascadedShadowMapPass::ReleaseRemovedCasters(
   Internals& impl = *this->Impl;
   for (auto it = impl.Casters.begin(); it != impl.Casters.end();)
   {
-    if (std::find(frame.Casters.begin(), frame.Casters.end(), it->first) == frame.Casters.end())
+    if (std::none_of(frame.Casters.begin(), frame.Casters.end(),
+          [&](const vtkshadow::ShadowActor& caster) { return caster.Actor == it->first; }))
     {
       it->second->ReleaseGraphicsResources(window);
       it = impl.Casters.erase(it);

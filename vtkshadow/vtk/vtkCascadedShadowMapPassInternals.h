@@ -7,6 +7,7 @@
 
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowClipSpaceRects.h"
 #include "vtkShadowScreenMask.h"
@@ -96,7 +97,7 @@ std::string CascadedTileLookupCode(
 // from, and what the bake needs (the caster actors).
 struct vtkCascadedShadowMapPass::Frame
 {
-  std::vector<vtkActor*> Casters;
+  std::vector<vtkshadow::ShadowActor> Casters;
   vtkMTimeType CasterTime = 0;       // changes when a caster moves, changes or leaves
   std::vector<vsh_csm_light> Lights; // switched on, in the mappers' numbering
   vsh_csm_scene Scene{};             // its `lights` point into Lights

@@ -78,29 +78,24 @@ void ToFloat(const double* in, float* out, int n)
   }
 }
 
-// Whether an actor's world bounds lie in the plane (within 1e-6 of their size).
-bool LiesInPlane(vtkActor* actor, const double plane[4])
+// Whether a caster's world bounds lie in the plane (within 1e-6 of their size).
+bool LiesInPlane(const vtkshadow::ShadowActor& caster, const double plane[4])
 {
-  double b[6];
-  actor->GetBounds(b);
-  return vsh_planar_bounds_in_plane(b, plane) != 0;
+  return vsh_planar_bounds_in_plane(caster.Bounds, plane) != 0;
 }
 
-// The render state's actors that can cast or receive: visible, with a
-// mapper, opaque (translucent geometry neither blocks nor shows shadows).
-std::vector<vtkActor*> OpaqueActors(const vtkRenderState* s)
+// The props the render state draws and every actor they draw through prop
+// paths (the parts of assemblies), sorted: what the mappers may ask about.
+std::vector<vtkProp*> DrawnProps(const vtkRenderState* s)
 {
-  std::vector<vtkActor*> actors;
+  std::vector<vtkProp*> props(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    auto* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    if (actor && actor->GetVisibility() && actor->GetMapper() &&
-      !actor->HasTranslucentPolygonalGeometry())
-    {
-      actors.push_back(actor);
-    }
+    vtkshadow::ForEachPathActor(
+      s->GetPropArray()[i], [&props](vtkActor* actor, const double*) { props.push_back(actor); });
   }
-  return actors;
+  std::sort(props.begin(), props.end());
+  return props;
 }
 
 } // namespace
@@ -175,11 +170,12 @@ struct vtkPlanarShadowPass::Internals
   int PlaneReceiver[MaxExplicitPlanes] = {};
   float PlaneTolerance[MaxExplicitPlanes] = {};
   std::vector<vtkProp*> Receiving; // sorted (from the map)
-  // Receivers by their property keys, and the frame's props (sorted): a
-  // prop the mapper draws that is not one of the frame's props is an inner
-  // actor drawing for an outer one whose property keys it shares
-  // (vtkLODActor's and ParaView's vtkPVLODActor's Device): it receives as
-  // the outer actor does.
+  // Receivers by their property keys, and the frame's props and the actors
+  // they draw through prop paths (sorted): a prop the mapper draws that is
+  // none of them is an inner actor drawing for an outer one whose property
+  // keys it shares (vtkLODActor's and ParaView's vtkPVLODActor's Device): it
+  // receives as the outer actor does. (The parts of an assembly share its
+  // keys too, but each is known and receives as itself.)
   std::map<vtkInformation*, vtkProp*> ReceiverByKeys;
   std::vector<vtkProp*> FrameProps;
   bool EveryoneReceives = false;
@@ -328,7 +324,8 @@ vtkshadow::ReceiverPlaneCache& vtkPlanarShadowPass::GetReceiverPlaneCache()
 }
 
 //------------------------------------------------------------------------------
-vtkshadow::ReceiverChoice vtkPlanarShadowPass::ChooseReceivers(const std::vector<vtkActor*>& actors)
+vtkshadow::ReceiverChoice vtkPlanarShadowPass::ChooseReceivers(
+  const std::vector<vtkshadow::ShadowActor>& actors)
 {
   // Explicit planes (AddReceiverPlane) are marks too: no detection then.
   return vtkshadow::ChooseReceivers(actors, this->Impl->AddedActors(), RECEIVER(),
@@ -349,7 +346,7 @@ struct vtkPlanarShadowPass::FrameState
   // doubles per receiver.
   std::vector<vtkActor*> Receivers;
   std::vector<double> Planes;
-  std::vector<vtkActor*> Casters;
+  std::vector<vtkshadow::ShadowActor> Casters;
   // Camera: position, view rotation, and projection times view rotation
   // (camera-relative world to clip space), in double.
   double Eye[3] = { 0, 0, 0 };
@@ -386,18 +383,11 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   GetViewport(s, frame.Size, impl.MaskOrigin);
 
   this->GatherLights(renderer, frame);
-  const std::vector<vtkActor*> actors = OpaqueActors(s);
-  impl.FrameProps.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
-  std::sort(impl.FrameProps.begin(), impl.FrameProps.end());
-  this->GatherReceivers(actors, frame);
+  impl.FrameProps = DrawnProps(s);
+  this->GatherReceivers(vtkshadow::ShadowActors(s), frame);
   // Casters from the renderer's props, not the frustum-culled list: a
   // caster behind the camera still shadows a receiver in view.
-  std::vector<vtkActor*> casters;
-  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
-  {
-    casters.push_back(a.Actor);
-  }
-  this->GatherCasters(casters, frame);
+  this->GatherCasters(vtkshadow::ShadowActors(renderer), frame);
   this->SetUpCamera(renderer, frame);
   // Which (receiver, light) pairs cast, with their matrices: plain planning.
   std::vector<vsh_planar_pair> pairs(MaxPairs);
@@ -446,18 +436,23 @@ void vtkPlanarShadowPass::GatherLights(vtkRenderer* renderer, FrameState& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::GatherReceivers(const std::vector<vtkActor*>& actors, FrameState& frame)
+void vtkPlanarShadowPass::GatherReceivers(
+  const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame)
 {
   Internals& impl = *this->Impl;
   impl.ReceiverIndex.clear();
   impl.ReceiverByKeys.clear();
   // Marked actors, or else the flat ones (detection).
   const vtkshadow::ReceiverChoice choice = this->ChooseReceivers(actors);
-  impl.Detected.assign(
-    choice.Detected ? choice.Receivers.begin() : choice.Receivers.end(), choice.Receivers.end());
-  for (vtkActor* actor : choice.Receivers)
+  impl.Detected.clear();
+  for (const vtkshadow::ShadowActor& receiver : choice.Receivers)
   {
-    vtkshadow::ReceiverPlaneCache::Entry& plane = impl.ReceiverPlanes.Get(actor);
+    vtkActor* actor = receiver.Actor;
+    if (choice.Detected)
+    {
+      impl.Detected.emplace_back(actor);
+    }
+    vtkshadow::ReceiverPlaneCache::Entry& plane = impl.ReceiverPlanes.Get(receiver);
     if (!plane.Flat)
     {
       if (!plane.Reported)
@@ -518,9 +513,10 @@ void vtkPlanarShadowPass::UpdateReceivingSet()
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::GatherCasters(const std::vector<vtkActor*>& actors, FrameState& frame)
+void vtkPlanarShadowPass::GatherCasters(
+  const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame)
 {
-  for (vtkActor* actor : actors)
+  for (const vtkshadow::ShadowActor& actor : actors)
   {
     if (!vtkshadow::HasFlag(actor, NO_CAST()))
     {
@@ -721,20 +717,20 @@ void vtkPlanarShadowPass::DrawPair(vtkShaderProgram* program, vtkOpenGLState* st
   std::vector<Fan> fans;
   vsh_planar_rect fanRect;
   vsh_planar_rect_init(&fanRect);
-  for (vtkActor* actor : frame.Casters)
+  for (const vtkshadow::ShadowActor& caster : frame.Casters)
   {
-    if (actor == receiver)
+    if (caster.Actor == receiver)
     {
       continue; // a flat receiver does not shadow itself
     }
-    if (!receiver && LiesInPlane(actor, receiverPlane))
+    if (!receiver && LiesInPlane(caster, receiverPlane))
     {
       continue; // nor does a surface lying in an explicit receiver plane
     }
-    vtkShadowCasterGeometry* geometry = this->CasterGeometry(actor);
+    vtkShadowCasterGeometry* geometry = this->CasterGeometry(caster.Actor);
     if (geometry->GetNumberOfTriangles() > 0)
     {
-      this->DrawCaster(program, frame, pair, frame.Lights[pair.light].homogeneous, shadowDC, actor,
+      this->DrawCaster(program, frame, pair, frame.Lights[pair.light].homogeneous, shadowDC, caster,
         *geometry, fans, fanRect);
     }
   }
@@ -997,20 +993,19 @@ void vtkPlanarShadowPass::DrawSoftSample(vtkShaderProgram* program, vtkOpenGLSta
   std::vector<Fan> fans;
   vsh_planar_rect fanRect;
   vsh_planar_rect_init(&fanRect);
-  for (vtkActor* actor : frame.Casters)
+  for (const vtkshadow::ShadowActor& caster : frame.Casters)
   {
-    if (actor == receiver || (!receiver && LiesInPlane(actor, receiverPlane)))
+    if (caster.Actor == receiver || (!receiver && LiesInPlane(caster, receiverPlane)))
     {
       continue; // as in DrawPair
     }
-    vtkShadowCasterGeometry* geometry = this->CasterGeometry(actor);
+    vtkShadowCasterGeometry* geometry = this->CasterGeometry(caster.Actor);
     // The light's disk faces the caster's centre (docs/soft-shadows.md: the
     // direction of its shadow's centre too); a directional light ignores it.
-    double b[6], centre[3];
-    actor->GetBounds(b);
+    double centre[3];
     for (int i = 0; i < 3; ++i)
     {
-      centre[i] = 0.5 * (b[2 * i] + b[2 * i + 1]);
+      centre[i] = 0.5 * (caster.Bounds[2 * i] + caster.Bounds[2 * i + 1]);
     }
     vsh_planar_light light;
     light.casts = 1;
@@ -1025,7 +1020,7 @@ void vtkPlanarShadowPass::DrawSoftSample(vtkShaderProgram* program, vtkOpenGLSta
     double shadowDC[16];
     vsh_mat4_multiply(frame.CameraRelative, samplePair.shadow, shadowDC);
     this->DrawCaster(
-      program, frame, samplePair, light.homogeneous, shadowDC, actor, *geometry, fans, fanRect);
+      program, frame, samplePair, light.homogeneous, shadowDC, caster, *geometry, fans, fanRect);
   }
   glDisable(GL_CLIP_DISTANCE0);
   glDisable(GL_CLIP_DISTANCE1);
@@ -1079,13 +1074,14 @@ vtkShadowCasterGeometry* vtkPlanarShadowPass::CasterGeometry(vtkActor* actor)
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState& frame,
-  const vsh_planar_pair& pair, const double light[4], const double shadowDC[16], vtkActor* actor,
-  vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans, vsh_planar_rect& fanRect)
+  const vsh_planar_pair& pair, const double light[4], const double shadowDC[16],
+  const vtkshadow::ShadowActor& caster, vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans,
+  vsh_planar_rect& fanRect)
 {
   // Model (shifted) -> world -> relative to the eye, in double.
-  double model[16], modelRelative[16];
-  vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
-  geometry.GetModelRelativeMatrix(actor, frame.Eye, modelRelative);
+  const double* model = caster.Matrix;
+  double modelRelative[16];
+  geometry.GetModelRelativeMatrix(model, frame.Eye, modelRelative);
   double mcdc[16], keep0[4], keep1[4], transposed[16];
   vsh_mat4_multiply(shadowDC, modelRelative, mcdc);
   PlaneTimesMatrix(pair.clip[0], modelRelative, keep0);
@@ -1098,8 +1094,7 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
   ToFloat(keep1, keep1F, 4);
   // Clipping costs a software rasterizer a stage per triangle: skip it when
   // every corner of the caster's bounds is kept anyway.
-  double b[6];
-  actor->GetBounds(b);
+  const double* b = caster.Bounds;
   const bool clipNeeded = vsh_planar_bounds_clipped(pair.clip, b, frame.Eye) != 0;
   double inverse[16];
   if (!clipNeeded && geometry.IsClosed() && vsh_mat4_inverse(model, inverse))

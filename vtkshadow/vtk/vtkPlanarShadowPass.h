@@ -57,6 +57,7 @@ namespace vtkshadow
 {
 class ReceiverPlaneCache;
 struct ReceiverChoice;
+struct ShadowActor;
 }
 #endif
 
@@ -175,7 +176,7 @@ public:
    * added actors and detection setting (vtkshadow::ChooseReceivers):
    * vtkAutoShadowPass decides with the receivers this pass will use.
    */
-  vtkshadow::ReceiverChoice ChooseReceivers(const std::vector<vtkActor*>& actors);
+  vtkshadow::ReceiverChoice ChooseReceivers(const std::vector<vtkshadow::ShadowActor>& actors);
 #endif
 
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -211,8 +212,10 @@ private:
   struct Fan;
   // The stages of Render(), in order.
   void GatherLights(vtkRenderer* renderer, FrameState& frame);
-  void GatherReceivers(const std::vector<vtkActor*>& actors, FrameState& frame);
-  void GatherCasters(const std::vector<vtkActor*>& actors, FrameState& frame);
+#ifndef __VTK_WRAP__
+  void GatherReceivers(const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame);
+  void GatherCasters(const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame);
+#endif
   void SetUpCamera(vtkRenderer* renderer, FrameState& frame);
   void DrawMask(vtkOpenGLRenderWindow* window, const FrameState& frame,
     const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs);
@@ -239,9 +242,11 @@ private:
   void DrawPair(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
     const vsh_planar_pair& pair);
   vtkShadowCasterGeometry* CasterGeometry(vtkActor* actor);
+#ifndef __VTK_WRAP__
   void DrawCaster(vtkShaderProgram* program, const FrameState& frame, const vsh_planar_pair& pair,
-    const double light[4], const double shadowDC[16], vtkActor* actor,
+    const double light[4], const double shadowDC[16], const vtkshadow::ShadowActor& caster,
     vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans, vsh_planar_rect& fanRect);
+#endif
   void FillFans(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
     const std::vector<Fan>& fans, const vsh_planar_rect& fanRect, const unsigned int bits[4]);
   void DrawViewportQuad(vtkShaderProgram* program);

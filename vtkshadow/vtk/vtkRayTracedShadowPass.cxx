@@ -247,13 +247,14 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
   // caster behind the camera still shadows the view.
   for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
   {
-    const bool casts = !vtkshadow::HasFlag(a.Actor, NO_CAST());
-    frame.Actors.push_back({ a.Actor, casts });
-    const double* m = &a.Actor->GetMatrix()->Element[0][0];
+    const bool casts = !vtkshadow::HasFlag(a, NO_CAST());
+    vtkShadowEmbreeScene::Actor actor{ a.Actor, casts, {} };
+    std::copy_n(a.Matrix, 16, actor.Matrix);
+    frame.Actors.push_back(actor);
     key.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(a.Actor)));
     key.push_back(static_cast<double>(vtkshadow::CasterDataTime(a.Actor)));
     key.push_back(casts ? 1.0 : 0.0);
-    key.insert(key.end(), m, m + 16);
+    key.insert(key.end(), a.Matrix, a.Matrix + 16);
   }
 }
 

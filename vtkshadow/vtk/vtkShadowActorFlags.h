@@ -1,5 +1,6 @@
-// vtkShadowActorFlags.h - which actors take part in shadows, and the
-// integer shadow flags they carry in their property keys
+// vtkShadowActorFlags.h - which actors take part in shadows (plain actors
+// and the parts of assemblies, each with the matrix it is drawn with), and
+// the integer shadow flags they carry in their property keys
 // (vtkShadowPassBase::RECEIVER(), NO_CAST()); shared by every pass and the
 // C API.
 #ifndef vtkShadowActorFlags_h
@@ -10,15 +11,15 @@
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkMapper.h"
-#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkProp.h"
-#include "vtkPropCollection.h"
-#include "vtkRenderState.h"
-#include "vtkRenderer.h"
 
 #include <algorithm>
+#include <functional>
 #include <vector>
+
+class vtkRenderState;
+class vtkRenderer;
 
 namespace vtkshadow
 {
@@ -43,7 +44,8 @@ inline void SetFlag(vtkActor* actor, vtkInformationIntegerKey* key, int value)
 
 // When the actor's mesh last changed: its mapper or the mapper's input.
 // (Not the actor's own MTime: VTK's pass machinery bumps it when it gives
-// actors property keys. The placement is actor->GetMatrix()->GetMTime().)
+// actors property keys. The placement is ShadowActor::Matrix, compared by
+// value.)
 inline vtkMTimeType MeshTime(vtkActor* actor)
 {
   vtkMTimeType t = actor->GetMapper()->GetMTime();
@@ -54,64 +56,56 @@ inline vtkMTimeType MeshTime(vtkActor* actor)
   return t;
 }
 
-// An actor that takes part in the shadows of a frame, with its world bounds
-// (VTK order).
+// An actor that takes part in the shadows of a frame: the end of a prop
+// path (the prop itself for a plain actor, a part of a vtkAssembly or a
+// vtkPropAssembly otherwise), placed where VTK draws it.
 struct ShadowActor
 {
   vtkActor* Actor;
-  double Bounds[6];
+  // The renderer's prop the path starts at (Actor itself for a plain actor).
+  vtkProp* Root;
+  // Data -> world, row major: the actor's own matrix, or the path's composed
+  // one, which VTK pokes into the part while it draws it.
+  double Matrix[16];
+  double Bounds[6]; // world bounds, VTK order
+  // Earlier entries of the same list with the same Actor (a part used by two
+  // assemblies, or twice in one): caches that depend on the placement key
+  // on (Actor, Instance).
+  int Instance;
 };
 
-// Appends `prop` to `out` when it can cast or receive: an actor, visible,
-// with a mapper, opaque (translucent geometry neither blocks nor shows
-// shadows here) and with initialised bounds.
-inline void AppendShadowActor(vtkProp* prop, std::vector<ShadowActor>& out)
-{
-  auto* actor = vtkActor::SafeDownCast(prop);
-  if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
-    actor->HasTranslucentPolygonalGeometry())
-  {
-    return;
-  }
-  ShadowActor a{ actor, { 0, 0, 0, 0, 0, 0 } };
-  actor->GetBounds(a.Bounds);
-  if (vtkMath::AreBoundsInitialized(a.Bounds))
-  {
-    out.push_back(a);
-  }
-}
+// Calls visit(actor, matrix) for every visible actor with a mapper that
+// `root` draws, with the data -> world matrix (row major) it is drawn with:
+// a plain actor with its own matrix; a vtkAssembly, a vtkPropAssembly or any
+// other prop with assembly paths (InitPathTraversal / GetNextPath) for each
+// path ending in an actor, with that path's composed matrix, as their
+// RenderOpaqueGeometry pokes it. Every pass finds casters and receivers
+// through this one traversal (ShadowActors below).
+void ForEachPathActor(vtkProp* root, const std::function<void(vtkActor*, const double*)>& visit);
 
-// The render state's actors that can cast or receive. VTK's frustum culler
-// has dropped the props outside the view from this list: right for what the
-// frame draws, wrong for casters (see the overload below).
-inline std::vector<ShadowActor> ShadowActors(const vtkRenderState* s)
-{
-  std::vector<ShadowActor> out;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
-  {
-    AppendShadowActor(s->GetPropArray()[i], out);
-  }
-  return out;
-}
+// The render state's actors that can cast or receive: visible, with a
+// mapper, opaque (translucent geometry neither blocks nor shows shadows
+// here) and with initialised bounds, found by ForEachPathActor. VTK's
+// frustum culler has dropped the props outside the view from this list:
+// right for what the frame draws, wrong for casters (see the overload below).
+std::vector<ShadowActor> ShadowActors(const vtkRenderState* s);
 
 // The renderer's actors that can cast or receive, from its props rather than
 // the render state's frustum-culled ones: a caster behind the camera (or
 // beside the view) still throws its shadow into the view.
-inline std::vector<ShadowActor> ShadowActors(vtkRenderer* renderer)
+std::vector<ShadowActor> ShadowActors(vtkRenderer* renderer);
+
+// The property keys that decide `key` for a shadow actor: its own when they
+// carry the key, else its root prop's (VTK's assemblies hand their keys to
+// their parts while drawing them, so marking the assembly marks every part);
+// nullptr when neither carries it.
+vtkInformation* FlagKeys(const ShadowActor& a, vtkInformationIntegerKey* key);
+
+// True when the shadow actor's deciding keys (FlagKeys) set `key` non-zero.
+inline bool HasFlag(const ShadowActor& a, vtkInformationIntegerKey* key)
 {
-  std::vector<ShadowActor> out;
-  vtkPropCollection* props = renderer ? renderer->GetViewProps() : nullptr;
-  if (!props)
-  {
-    return out;
-  }
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    AppendShadowActor(prop, out);
-  }
-  return out;
+  vtkInformation* keys = FlagKeys(a, key);
+  return keys && keys->Get(key) != 0;
 }
 }
 

@@ -1,7 +1,6 @@
 #include "vtkShadowCasterGeometry.h"
 
 #include "vtkActor.h"
-#include "vtkMatrix4x4.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkShaderProgram.h"
@@ -350,10 +349,9 @@ bool vtkShadowCasterGeometry::DrawSilhouetteFans(
 
 //------------------------------------------------------------------------------
 void vtkShadowCasterGeometry::GetModelRelativeMatrix(
-  vtkActor* actor, const double eye[3], double out[16]) const
+  const double model[16], const double eye[3], double out[16]) const
 {
-  double model[16], toShifted[16], modelShifted[16], toRelative[16];
-  vtkMatrix4x4::DeepCopy(model, actor->GetMatrix());
+  double toShifted[16], modelShifted[16], toRelative[16];
   vsh_mat4_translation(this->Shift, toShifted);
   vsh_mat4_multiply(model, toShifted, modelShifted);
   const double negEye[3] = { -eye[0], -eye[1], -eye[2] };

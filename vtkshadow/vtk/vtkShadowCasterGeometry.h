@@ -40,9 +40,10 @@ public:
   // The shift applied to the stored positions: stored = data - Shift.
   const double* GetShift() const { return this->Shift; }
 
-  // The stored positions -> world (the actor's matrix) -> relative to `eye`,
-  // composed in double: the matrix the passes' draws start from.
-  void GetModelRelativeMatrix(vtkActor* actor, const double eye[3], double out[16]) const;
+  // The stored positions -> world (`model`, the data -> world matrix the
+  // actor is drawn with, row major) -> relative to `eye`, composed in
+  // double: the matrix the passes' draws start from.
+  void GetModelRelativeMatrix(const double model[16], const double eye[3], double out[16]) const;
 
   // Draw all triangles with `program` (attribute "vertexMC"); the caller
   // binds the program and sets its uniforms.

@@ -2,7 +2,6 @@
 
 #include "vsh_raytrace.h"
 #include "vtkActor.h"
-#include "vtkMatrix4x4.h"
 #include "vtkShadowCasterTriangles.h"
 
 #include <algorithm>
@@ -199,8 +198,7 @@ std::vector<double> vtkShadowEmbreeScene::PlacementKey(const std::vector<Actor>&
     key.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(a.Prop)));
     key.push_back(it->second->Version);
     key.push_back(a.Casts ? 1 : 0);
-    const double* m = &a.Prop->GetMatrix()->Element[0][0];
-    key.insert(key.end(), m, m + 16);
+    key.insert(key.end(), a.Matrix, a.Matrix + 16);
   }
   return key;
 }
@@ -231,8 +229,7 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const
     const Mesh& mesh = *it->second;
     // Stored positions (data - Shift) -> world -> relative to the centre,
     // composed in double and rounded to float once.
-    double m[16];
-    vtkMatrix4x4::DeepCopy(m, a.Prop->GetMatrix());
+    const double* m = a.Matrix;
     float xfm[12];
     for (int r = 0; r < 3; ++r)
     {

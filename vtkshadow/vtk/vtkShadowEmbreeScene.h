@@ -4,7 +4,9 @@
 // One Embree geometry (in its own scene, so it can be instanced) per actor
 // mesh, built from the triangles the mapper draws (vtkShadowCasterTriangles),
 // with positions relative to the mesh's own centre in float; each actor is an
-// instance of its mesh, placed by the actor's matrix, in top-level scenes
+// instance of its mesh, placed by the matrix it is drawn with (its own, or
+// its assembly path's; an actor drawn at two places is two instances), in
+// top-level scenes
 // whose origin is the centre of the frame's actors, so a scene 1e6 units
 // from the origin keeps float precision. A mesh is rebuilt only when its
 // mesh data changed (vtkshadow::CasterDataTime, not the actor's time); moving
@@ -34,6 +36,7 @@ public:
   {
     vtkActor* Prop;
     bool Casts;
+    double Matrix[16]; // data -> world, row major: where it is drawn (vtkshadow::ShadowActor)
   };
 
   // Per instance of the "visible" top level (its instance id).

@@ -6,7 +6,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkMapper.h"
-#include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkShadowActorFlags.h"
@@ -57,11 +56,9 @@ std::vector<vtkPolyData*> DrawnPolyData(vtkMapper* mapper)
 
 // The plane of a receiver actor's flat geometry in world coordinates, or
 // false when the geometry is not flat (within 1e-6 of its size) or empty.
-bool ReceiverPlane(vtkActor* actor, double plane[4], bool* surface)
+bool ReceiverPlane(vtkActor* actor, const double m[16], double plane[4], bool* surface)
 {
   const std::vector<vtkPolyData*> leaves = DrawnPolyData(actor->GetMapper());
-  double m[16];
-  vtkMatrix4x4::DeepCopy(m, actor->GetMatrix());
   std::vector<double> world;
   bool hasSurface = false;
   bool floatStorage = false;
@@ -97,28 +94,31 @@ bool ReceiverPlane(vtkActor* actor, double plane[4], bool* surface)
 }
 
 //------------------------------------------------------------------------------
-ReceiverPlaneCache::Entry& ReceiverPlaneCache::Get(vtkActor* actor)
+ReceiverPlaneCache::Entry& ReceiverPlaneCache::Get(const ShadowActor& actor)
 {
-  Entry& entry = this->Entries[actor];
-  const vtkMTimeType t = std::max(actor->GetMatrix()->GetMTime(), vtkshadow::MeshTime(actor));
-  if (t > entry.Time || entry.Time == 0)
+  Entry& entry = this->Entries[{ actor.Actor, actor.Instance }];
+  const vtkMTimeType t = vtkshadow::MeshTime(actor.Actor);
+  if (t > entry.Time || entry.Time == 0 ||
+    !std::equal(actor.Matrix, actor.Matrix + 16, entry.Matrix))
   {
     entry.Time = t;
-    entry.Flat = ReceiverPlane(actor, entry.Plane, &entry.Surface);
+    std::copy_n(actor.Matrix, 16, entry.Matrix);
+    entry.Flat = ReceiverPlane(actor.Actor, actor.Matrix, entry.Plane, &entry.Surface);
     entry.Reported = false;
   }
   return entry;
 }
 
 //------------------------------------------------------------------------------
-ReceiverChoice ChooseReceivers(const std::vector<vtkActor*>& actors,
+ReceiverChoice ChooseReceivers(const std::vector<ShadowActor>& actors,
   const std::vector<vtkActor*>& added, vtkInformationIntegerKey* receiverKey, bool detect,
   ReceiverPlaneCache& cache)
 {
   ReceiverChoice choice;
-  for (vtkActor* actor : actors)
+  for (const ShadowActor& actor : actors)
   {
-    if (HasFlag(actor, receiverKey) || std::find(added.begin(), added.end(), actor) != added.end())
+    if (HasFlag(actor, receiverKey) ||
+      std::find(added.begin(), added.end(), actor.Actor) != added.end())
     {
       choice.Receivers.push_back(actor);
     }
@@ -127,10 +127,9 @@ ReceiverChoice ChooseReceivers(const std::vector<vtkActor*>& actors,
   {
     return choice;
   }
-  for (vtkActor* actor : actors)
+  for (const ShadowActor& actor : actors)
   {
-    vtkInformation* keys = actor->GetPropertyKeys();
-    if (keys && keys->Has(receiverKey))
+    if (FlagKeys(actor, receiverKey))
     {
       continue; // RECEIVER() = 0: opted out
     }

@@ -14,21 +14,27 @@ class vtkInformationIntegerKey;
 
 namespace vtkshadow
 {
+struct ShadowActor;
+
 /**
  * The plane (N, d with N . x + d = 0, N unit) of an actor's polydata in world
- * coordinates (actor matrix applied), or false when the geometry is empty or
+ * coordinates (`matrix`, data -> world, row major: the matrix the actor is
+ * drawn with, vtkshadow::ShadowActor), or false when the geometry is empty or
  * not flat within 1e-6 of its size (plus the rounding of float points far
  * from the origin: vsh_plane_fit_stored_points). `surface` (may be null) is
  * set to whether the polydata has polygons or strips: only surfaces are
  * detected as receivers (a flat set of lines or points receives nothing
  * visible).
  */
-bool ReceiverPlane(vtkActor* actor, double plane[4], bool* surface = nullptr);
+bool ReceiverPlane(
+  vtkActor* actor, const double matrix[16], double plane[4], bool* surface = nullptr);
 
 /**
- * Receiver planes by actor, recomputed only when the actor's placement (its
- * matrix's MTime) or its mesh (MeshTime: mapper or input) changed; not on
- * the actor's own MTime, which VTK's pass machinery bumps every frame.
+ * Receiver planes by actor (and instance: the same actor drawn at two
+ * places), recomputed only when the actor's placement (its matrix's values)
+ * or its mesh (MeshTime: mapper or input) changed; not on MTimes of the
+ * actor or its matrix, which VTK bumps every frame (its pass machinery, and
+ * the matrices an assembly pokes into its parts while drawing).
  * vtkAutoShadowPass reads the cache of its planar pass, so a plane is
  * computed once per change for both.
  */
@@ -37,7 +43,8 @@ class ReceiverPlaneCache
 public:
   struct Entry
   {
-    vtkMTimeType Time = 0;            // placement and mesh time it was computed for
+    vtkMTimeType Time = 0;            // mesh time it was computed for
+    double Matrix[16] = {};           // placement it was computed for
     bool Flat = false;                // the geometry is a plane ...
     double Plane[4] = { 0, 0, 0, 0 }; // ... this one
     bool Reported = false;            // a "not flat" warning was given for this computation
@@ -45,9 +52,9 @@ public:
   };
 
   /**
-   * The actor's entry, brought up to date.
+   * The shadow actor's entry, brought up to date.
    */
-  Entry& Get(vtkActor* actor);
+  Entry& Get(const ShadowActor& actor);
 
   /**
    * Forget every entry (e.g. when graphics resources are released).
@@ -57,14 +64,16 @@ public:
   size_t GetNumberOfEntries() const { return this->Entries.size(); }
 
 private:
-  std::map<vtkActor*, Entry> Entries;
+  std::map<std::pair<vtkActor*, int>, Entry> Entries;
 };
 
 /**
  * The frame's plane receivers among `actors` (visible opaque ones), and
  * whether they were detected rather than marked.
  *
- * Marked: actors with RECEIVER() = 1 (key `receiverKey`) or in `added`
+ * Marked: actors with RECEIVER() = 1 (key `receiverKey`, on the actor or,
+ * when the actor does not carry it, on the assembly it is drawn by) or in
+ * `added`
  * (vtkPlanarShadowPass::AddReceiverActor). When any actor is marked, only
  * marked actors receive: explicit marks override detection. When none is
  * and `detect` is on, every flat surface actor (ReceiverPlane, through the
@@ -74,10 +83,10 @@ private:
  */
 struct ReceiverChoice
 {
-  std::vector<vtkActor*> Receivers;
+  std::vector<ShadowActor> Receivers;
   bool Detected = false;
 };
-ReceiverChoice ChooseReceivers(const std::vector<vtkActor*>& actors,
+ReceiverChoice ChooseReceivers(const std::vector<ShadowActor>& actors,
   const std::vector<vtkActor*>& added, vtkInformationIntegerKey* receiverKey, bool detect,
   ReceiverPlaneCache& cache);
 }

@@ -193,10 +193,16 @@ bool vtkShadowScreenMask::RenderDepth(const vtkRenderState* s, int lightCount)
     // Depth only, no colour attachment: an owner whose shader hooks are
     // registered during this pass (so the mappers build the same shaders as
     // in the main pass and do not rebuild twice a frame) may then sample the
-    // visibility textures without a feedback loop.
+    // visibility textures without a feedback loop. They are bound to units
+    // of their own here too: a hooked shader's mask samplers must never
+    // share a unit with a mapper's samplerBuffer (cell normals, cell
+    // colours), or the draw fails (GL_INVALID_OPERATION) and the caster is
+    // missing from the depth every technique counts against.
     impl.FBO->RemoveColorAttachment(0);
     impl.FBO->DeactivateDrawBuffers();
+    this->Activate();
     impl.DepthScene->Render(s);
+    this->Deactivate();
   }
   // Every light lit until a technique says otherwise: the textures, and the
   // CPU copies UploadLight() writes into (a light not uploaded this frame
@@ -502,10 +508,10 @@ bool vtkShadowScreenMask::PostReplaceShaderValues(std::string& fragmentShader, d
 void vtkShadowScreenMask::SetShaderParameters(vtkShaderProgram* program)
 {
   Internals& impl = *this->Impl;
-  // Outside Activate()/Deactivate() (e.g. the owning pass's hooks are
-  // registered during the depth pre-pass, so the mappers build the same
-  // shader there) the textures have no unit: glUniform1i(sampler, -1) is
-  // GL_INVALID_VALUE, and nothing samples the mask in that pass anyway.
+  // Outside Activate()/Deactivate() the textures have no unit:
+  // glUniform1i(sampler, -1) is GL_INVALID_VALUE. Every draw with the
+  // owner's hooks registered (the depth pre-pass, the main pass) happens
+  // between them, so the samplers always name a unit of their own.
   if (!program->IsUniformUsed("vshScreenMask0") || !impl.FBO ||
     impl.Layers[0]->GetTextureUnit() < 0 ||
     impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit() < 0)

@@ -56,10 +56,10 @@ public:
    * depth into it (colour writes off). Every channel then reads 1 (lit) and
    * the stencil 0. Returns false (with a reason in GetError()) when the
    * window is not an OpenGL window or the framebuffer is incomplete.
-   * The depth is drawn with no colour attachment: an owner may register its
-   * shader hooks (and Activate()) around this call, so the mappers draw
-   * with the same shaders as in the main pass instead of rebuilding them
-   * twice a frame.
+   * The depth is drawn with no colour attachment and the visibility
+   * textures activated (bound to units of their own): an owner may register
+   * its shader hooks around this call, so the mappers draw with the same
+   * shaders as in the main pass instead of rebuilding them twice a frame.
    */
   bool RenderDepth(const vtkRenderState* s, int lightCount);
 

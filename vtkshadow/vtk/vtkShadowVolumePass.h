@@ -30,6 +30,12 @@
 class vtkActor;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
+#ifndef __VTK_WRAP__
+namespace vtkshadow
+{
+struct ShadowActor;
+}
+#endif
 
 class VTKSHADOW_EXPORT vtkShadowVolumePass : public vtkShadowPassBase
 {
@@ -107,6 +113,17 @@ public:
   vtkIdType GetNumberOfVolumeBuilds() const;
   long long GetMemoryBytes() const override;
 
+  /**
+   * Whether the volumes give this caster's exact shadows: it is drawn as a
+   * surface (not wireframe or points, whose surface the depth pre-pass does
+   * not hold between the lines) and without front-face culling (the dark
+   * caps of a closed caster assume its inside is never seen). Casters
+   * drawn otherwise still cast, inexactly; vtkAutoShadowPass counts them
+   * among the casters volumes cannot draw, so it never picks volume for
+   * them.
+   */
+  static bool CastsExactly(vtkActor* actor);
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -151,9 +168,12 @@ private:
   // vsh_soft_batch_order(samples, batch), cached: the identity when
   // batch >= samples.
   const std::vector<int>& SampleOrder(int samples, int batch);
-  void DrawCaster(
-    vtkShaderProgram* program, const Frame& frame, int light, int sample, vtkActor* actor);
-  Volume* UpdateVolume(vtkActor* actor, int light, int sample, const double lightWorld[4]);
+#ifndef __VTK_WRAP__
+  void DrawCaster(vtkShaderProgram* program, const Frame& frame, int light, int sample,
+    const vtkshadow::ShadowActor& caster);
+  Volume* UpdateVolume(
+    const vtkshadow::ShadowActor& caster, int light, int sample, const double lightWorld[4]);
+#endif
   // Soft volumes of lights counted hard this frame, and of casters gone.
   void ReleaseUnusedVolumes(vtkOpenGLRenderWindow* window);
   void LightsInViewCoordinates(vtkRenderer* renderer, const Frame& frame);
