@@ -25,20 +25,13 @@ endif()
 
 set(_harness_src ${CMAKE_CURRENT_LIST_DIR})
 set(_library_out ${VTKSHADOW_TEST_OUT}/harness/library)
-# COST: seconds measured on 2 cores, so that ctest starts the long ones first.
-set(_library_cost_basic 60)
-set(_library_cost_scivis 60)
-set(_library_cost_cad 40)
-set(_library_cost_hard 150)
-set(_library_cost_mirror 60)
-set(_library_cost_soft 300)
 foreach(group basic scivis cad hard mirror soft)
   add_test(NAME harness.library.${group}
     COMMAND ${CMAKE_COMMAND} -E env VTKSHADOW_BIN=${VTKSHADOW_BIN}
             VTKSHADOW_DISPLAY_FILE=${CMAKE_BINARY_DIR}/xvfb/display
             sh ${PROJECT_SOURCE_DIR}/scripts/library-run.sh ${_library_out} ${group} --check)
   set_tests_properties(harness.library.${group} PROPERTIES TIMEOUT 900 LABELS "harness"
-    FIXTURES_REQUIRED xvfb FIXTURES_SETUP library COST ${_library_cost_${group}})
+    FIXTURES_REQUIRED xvfb FIXTURES_SETUP library)
 endforeach()
 
 # Every committed limit against the library run just measured: within the
@@ -74,7 +67,7 @@ add_test(NAME harness.references_fresh
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/references_fresh
           ${PROJECT_SOURCE_DIR}/scenes/basic/sphere-plane.json
           ${PROJECT_SOURCE_DIR}/scenes/soft/sphere-disk.json)
-set_tests_properties(harness.references_fresh PROPERTIES TIMEOUT 900 LABELS "harness" COST 120)
+set_tests_properties(harness.references_fresh PROPERTIES TIMEOUT 900 LABELS "harness")
 add_test(NAME harness.references_faults
   COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_references.py faults --bin ${VTKSHADOW_BIN}
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/references_faults)
