@@ -17,6 +17,9 @@ Usage: test_assembly_casters.py [--technique NAME]"""
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
+
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -32,13 +35,6 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkAssembly,  # noqa: E402
                                          vtkPolyDataMapper, vtkPropAssembly)
 
 W, H = 320, 240
-failures = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        failures.append(what)
 
 
 def actor_of(source):
@@ -201,5 +197,4 @@ for name in names:
         if name == "auto" and "NO_CAST" not in label:
             check("nothing casts" not in stats, f"auto, {label}: {stats[:160]}")
 
-print(f"{len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+finish()

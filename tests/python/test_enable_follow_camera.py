@@ -21,6 +21,9 @@ Usage: test_enable_follow_camera.py [--technique NAME]"""
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
+
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "render"))
@@ -35,13 +38,6 @@ messages = vtkStringOutputWindow()  # the key light's notice, once per renderer
 vtkOutputWindow.SetInstance(messages)
 SIZE = 240
 BACKGROUND = (0.2, 0.4, 0.8)  # no sphere pixel has this colour
-failures = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        failures.append(what)
 
 
 def grab(window):
@@ -114,5 +110,4 @@ for name in names:
           f"none {own_none:.1f}")
 check("ERROR" not in (messages.GetOutput() or ""), "no VTK error")
 
-print(f"{len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+finish()

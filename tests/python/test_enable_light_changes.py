@@ -24,6 +24,9 @@ Usage: test_enable_light_changes.py [--technique NAME]"""
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
+
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "render"))
@@ -37,13 +40,6 @@ from vtkmodules.vtkRenderingCore import vtkLight  # noqa: E402
 messages = vtkStringOutputWindow()  # the key light's notices
 vtkOutputWindow.SetInstance(messages)
 SIZE = 200
-failures = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        failures.append(what)
 
 
 def scene(follow):
@@ -157,5 +153,4 @@ for name in names:
           f"{name}: key_light=False removes the key and fill added before ({how})")
 check("ERROR" not in (messages.GetOutput() or ""), "no VTK error")
 
-print(f"{len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+finish()

@@ -24,6 +24,9 @@ Usage: test_volume_live_pipeline.py"""
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "render"))
 
@@ -45,13 +48,6 @@ import numpy as np  # noqa: E402
 
 W, H = 400, 300
 MAX_PCT = 1.0
-failures = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        failures.append(what)
 
 
 def two_spheres(operation, resolution):
@@ -203,5 +199,4 @@ for mesh in (boolean, isosurface, lego, wireframe):
               f"{mesh.__name__}: {a} against {b}: {100.0 - pct:.3f} % of {n} px differ "
               f"(at most {MAX_PCT} %)")
 
-print(f"{len(failures)} failure(s)")
-sys.exit(1 if failures else 0)
+finish()
