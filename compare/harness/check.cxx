@@ -159,7 +159,6 @@ void CheckKnown(KnownFailure& k, Row& r, CheckOutcome& out)
       k.still_failing = true;
   }
   ++out.comparisons;
-  std::string worse;
   for (const auto& am : k.at_most)
   {
     bool known = false;
@@ -168,14 +167,14 @@ void CheckKnown(KnownFailure& k, Row& r, CheckOutcome& out)
     if (!known)
       out.failures.push_back(k.file + ": unknown metric '" + am.first + "'");
     else if (!(v <= am.second))
-      worse += (worse.empty() ? "" : ", ") + am.first + " = " + Fmt(v, "%.6g") + " > " +
+      k.worse += (k.worse.empty() ? "" : ", ") + am.first + " = " + Fmt(v, "%.6g") + " > " +
         Fmt(am.second, "%.6g");
   }
-  if (!worse.empty())
+  if (!k.worse.empty())
   {
     r.check = "FAILED: known failure got worse";
-    out.failures.push_back(Where(r) + ": known failure got worse (" + worse + ", the at_most of " +
-      k.file + "; listed because: " + k.reason + ")");
+    out.failures.push_back(Where(r) + ": known failure got worse (" + k.worse +
+      ", the at_most of " + k.file + "; listed because: " + k.reason + ")");
   }
   else if (k.still_failing)
     r.check = "known failure: " + k.reason;

@@ -28,6 +28,7 @@ struct KnownFailure
   bool seen = false;          // a row of this run matched
   bool still_failing = false; // ... and is still that bad
   std::string measured;       // "wrong_pct = 95.8" of that row
+  std::string worse;          // "wrong_pct = 1.6 > 1.28": the at_most it is above, if any
 };
 
 struct CheckOutcome

@@ -104,11 +104,13 @@ std::string CheckSection(const Options& opt, const CheckOutcome& check)
   for (const KnownFailure& k : check.known)
   {
     const std::string state = !k.seen ? "not run"
+      : !k.worse.empty()              ? "GOT WORSE (" + k.worse + ")"
       : k.still_failing               ? "still failing (" + k.measured + ")"
                                       : "NOW PASSES (" + k.measured + "): remove the entry";
     h += "<tr class=\"known\"><td>" + HtmlEscape(k.scene) + "</td><td>" + std::to_string(k.light) +
       "</td><td>" + HtmlEscape(k.test) + "</td><td>" + HtmlEscape(k.reason) + "</td><td" +
-      (k.seen && !k.still_failing ? " class=\"err\"" : "") + ">" + HtmlEscape(state) + "</td></tr>";
+      (k.seen && (!k.still_failing || !k.worse.empty()) ? " class=\"err\"" : "") + ">" +
+      HtmlEscape(state) + "</td></tr>";
   }
   return h + "</table>\n";
 }
