@@ -184,11 +184,16 @@ add_test(NAME render.reflection_raytrace_traces
           ${CMAKE_SOURCE_DIR} raytrace)
 set_tests_properties(render.reflection_raytrace_traces PROPERTIES LABELS "render")
 
-# Every test of this directory may use the shared X server.
+# Every test of this directory may use the shared X server: added to the
+# fixtures a test requires already (harness.thresholds requires the library
+# runs too), not in their place.
 get_property(vtkshadow_vtk_tests DIRECTORY PROPERTY TESTS)
 foreach(test IN LISTS vtkshadow_vtk_tests)
   if(NOT test MATCHES "^xvfb\\.")
-    set_tests_properties(${test} PROPERTIES FIXTURES_REQUIRED xvfb)
+    get_property(fixtures TEST ${test} PROPERTY FIXTURES_REQUIRED)
+    list(APPEND fixtures xvfb)
+    list(REMOVE_DUPLICATES fixtures)
+    set_tests_properties(${test} PROPERTIES FIXTURES_REQUIRED "${fixtures}")
   endif()
 endforeach()
 
