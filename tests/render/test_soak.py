@@ -12,12 +12,15 @@ every 50 frames the point light is switched off or on. The state repeats
 every 300 frames, so checkpoints at multiples of 300 see the same scene.
 
 Flat means, for the last 2/3 of the frames (frame F/3 to F):
-- RSS (VmRSS of /proc/self/status, sampled every 100 frames) rises by less
-  than RSS_BOUND_MIB from its floor at F/3 to its floor at F (floor: the
-  least of six samples; live shadow-map allocations come and go in 9 MiB
-  steps under llvmpipe, a leak raises the floor; a leak of 2 KiB a frame
-  fails); children run with a fixed glibc mmap threshold so freed big
-  blocks go back to the OS;
+- RSS (VmRSS of /proc/self/status, sampled every 100 frames) does not
+  climb steadily: the samples are cut into three windows, each window's
+  floor (its least sample) taken, and the rise of the floor from window to
+  window, per frame, must stay under LEAK_BOUND_KIB in at least one of the
+  two steps. A leak raises every floor (1 KiB a frame fails); what the
+  allocator and llvmpipe do (a shadow map's 9 MiB, llvmpipe's thread
+  arenas under a loaded machine) is a step up or down once, which at most
+  one of the two steps sees. Children run with a fixed glibc mmap
+  threshold so freed big blocks go back to the OS;
 - live GL textures, buffers, framebuffers, renderbuffers and vertex arrays
   (counted with glIsTexture etc. over every name up to the highest one the
   driver has handed out) are the same at every checkpoint with the same
@@ -25,7 +28,12 @@ Flat means, for the last 2/3 of the frames (frame F/3 to F):
 - the technique's GetShadowMapMemory is the same at those checkpoints.
 
   test_soak.py --bin BUILD/bin [--frames 3000] [--json OUT.json]
-  test_soak.py --child TECHNIQUE --frames N   (one technique, prints JSON)
+              [--techniques "none csm"] [--leak-kib K --expect-leak]
+  test_soak.py --child TECHNIQUE --frames N [--leak-kib K]  (prints JSON)
+
+--leak-kib K makes each child keep K KiB more every frame (a leak put there
+on purpose); with --expect-leak the run passes only if every technique is
+reported as leaking, which shows the RSS check can fail.
 """
 import argparse
 import ctypes
@@ -36,8 +44,7 @@ import subprocess
 import sys
 import time
 
-RSS_BOUND_MIB = 4.0
-SLOPE_BOUND_KIB = 1.0
+LEAK_BOUND_KIB = 1.0
 PERIOD = 300
 
 
@@ -145,7 +152,7 @@ def build_scene(renderer):
     return lights, new_extra
 
 
-def child(technique, frames):
+def child(technique, frames, leak_kib=0):
     import vtkshadow
     from vtkmodules.vtkRenderingCore import vtkRenderWindow
     from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderer
@@ -171,6 +178,7 @@ def child(technique, frames):
     counter = None
     extras = []
     samples = []
+    kept = []  # --leak-kib: what a leaking frame would keep
     start = time.monotonic()
     for i in range(frames + 1):
         a = 2 * math.pi * (i % PERIOD) / PERIOD
@@ -185,6 +193,8 @@ def child(technique, frames):
             lights[2].SetSwitch(not lights[2].GetSwitch())
         vtkshadow.vtkShadowScene.ResetCameraClippingRange(renderer)
         window.Render()
+        if leak_kib:
+            kept.append(bytearray(b"x" * (1024 * leak_kib)))
         if i % 100 == 0:
             sample = {"frame": i, "rss_kib": rss_kib(),
                       "shadow_map_bytes": tech.GetShadowMapMemory(renderer)}
@@ -199,34 +209,33 @@ def child(technique, frames):
     return {"technique": technique, "frames": frames, "seconds": seconds, "samples": samples}
 
 
-def judge(result):
+def floor_rise_per_frame(samples):
+    """How fast RSS climbs for sure: the samples in three windows, the floor
+    (least RSS) of each, and the smaller of the two rises from one window's
+    floor to the next, per frame between the windows' starts. Returns
+    (KiB per frame, the two rises in KiB)."""
+    third = len(samples) // 3
+    windows = [samples[:third], samples[third:2 * third], samples[2 * third:]]
+    floors = [min(s["rss_kib"] for s in w) for w in windows]
+    steps = (floors[1] - floors[0], floors[2] - floors[1])
+    spacing = (windows[2][0]["frame"] - windows[0][0]["frame"]) / 2
+    return max(min(steps), 0) / spacing, steps
+
+
+def judge(result, expect_leak=False):
     frames = result["frames"]
     tail = [s for s in result["samples"] if s["frame"] >= frames // 3]
     rss0 = tail[0]["rss_kib"]
-    # Floor, not peak or median: shadow maps live in process memory under
-    # llvmpipe, and a technique that re-creates its atlas when a light is
-    # switched holds a second one (9 MiB here) for hundreds of frames at
-    # times (seen: RSS stepping up and down by one atlas, GL objects and
-    # map memory flat). A leak raises the floor: the least RSS over the
-    # first and over the last six samples (600 frames, two scene periods).
-    def floor6(samples):
-        return min(s["rss_kib"] for s in samples)
-    growth = floor6(tail[-6:]) - floor6(tail[:6])
+    rate, steps = floor_rise_per_frame(tail)
     peak = max(s["rss_kib"] for s in tail) - rss0
-    n = len(tail)
-    mx = sum(s["frame"] for s in tail) / n
-    my = sum(s["rss_kib"] for s in tail) / n
-    slope = (sum((s["frame"] - mx) * (s["rss_kib"] - my) for s in tail) /
-             max(sum((s["frame"] - mx) ** 2 for s in tail), 1e-9))
     same_state = [s for s in tail if "gl" in s]
     gl_first, gl_last = same_state[0]["gl"], same_state[-1]["gl"]
     gl_flat = all(s["gl"] == gl_first for s in same_state)
     maps = {s["shadow_map_bytes"] for s in same_state}
     problems = []
-    if growth >= RSS_BOUND_MIB * 1024:
-        problems.append(f"RSS grew {growth} KiB >= {RSS_BOUND_MIB} MiB")
-    # The slope is printed for the record; the floor's growth is the check
-    # (a leak of 2 KiB a frame raises it by 4 MiB over the 2000 frames).
+    if rate >= LEAK_BOUND_KIB:
+        problems.append(f"RSS climbs {rate:.2f} KiB/frame >= {LEAK_BOUND_KIB} "
+                        f"(window floors rose {steps[0]} and {steps[1]} KiB)")
     if not gl_flat:
         problems.append("GL object counts changed: " +
                         "; ".join(f"{s['frame']}: {s['gl']}" for s in same_state))
@@ -235,9 +244,15 @@ def judge(result):
     print(f"{result['technique']:>7}: {frames} frames in {result['seconds']:.1f} s "
           f"({1000 * result['seconds'] / frames:.1f} ms/frame); RSS at frame {tail[0]['frame']} "
           f"{rss0 / 1024:.1f} MiB, at {tail[-1]['frame']} {tail[-1]['rss_kib'] / 1024:.1f} MiB, "
-          f"level growth {growth} KiB (peak {peak} KiB), slope {slope:.4f} KiB/frame; shadow maps "
+          f"floor steps {steps[0]}, {steps[1]} KiB (peak {peak} KiB), climb {rate:.3f} KiB/frame; "
+          f"shadow maps "
           f"{sorted(maps)} B; GL objects {gl_first} at frame {same_state[0]['frame']}, "
           f"{gl_last} at {same_state[-1]['frame']}")
+    if expect_leak:
+        leaked = any(p.startswith("RSS climbs") for p in problems)
+        print(f"{'ok' if leaked else 'FAIL'} ({result['technique']}): the leak put in "
+              f"{'was' if leaked else 'was NOT'} reported")
+        return leaked
     for p in problems:
         print(f"FAIL ({result['technique']}): {p}")
     return not problems
@@ -249,12 +264,17 @@ def main():
     ap.add_argument("--frames", type=int, default=3000)
     ap.add_argument("--child")
     ap.add_argument("--json")
+    ap.add_argument("--techniques", help="default: every one GetKnownTechniques lists")
+    ap.add_argument("--leak-kib", type=int, default=0)
+    ap.add_argument("--expect-leak", action="store_true")
     args = ap.parse_args()
+    if args.expect_leak and args.leak_kib <= 0:
+        ap.error("--expect-leak needs --leak-kib K > 0")
     if args.child:
-        print(json.dumps(child(args.child, args.frames)))
+        print(json.dumps(child(args.child, args.frames, args.leak_kib)))
         return
     import vtkshadow
-    techniques = vtkshadow.vtkShadowTechnique.GetKnownTechniques().split()
+    techniques = (args.techniques or vtkshadow.vtkShadowTechnique.GetKnownTechniques()).split()
     if not techniques:
         sys.exit("GetKnownTechniques() lists no technique")
     ok, results = True, []
@@ -275,7 +295,8 @@ def main():
             t = pending.pop(0)
             running[t] = subprocess.Popen(
                 [os.path.join(args.bin, "vtkshadow-python"), os.path.abspath(__file__),
-                 "--child", t, "--frames", str(args.frames)],
+                 "--child", t, "--frames", str(args.frames),
+                 "--leak-kib", str(args.leak_kib)],
                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
         t = next(iter(running))
         out, err = running[t].communicate()
@@ -290,7 +311,7 @@ def main():
             continue
         result = json.loads(r.stdout.strip().splitlines()[-1])
         results.append(result)
-        ok = judge(result) and ok
+        ok = judge(result, args.expect_leak) and ok
     if args.json:
         with open(args.json, "w") as f:
             json.dump(results, f, indent=1)
