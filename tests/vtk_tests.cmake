@@ -52,6 +52,14 @@ add_test(NAME python.enable_wrong_type
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_wrong_type.py)
 set_tests_properties(python.enable_wrong_type PROPERTIES TIMEOUT 60)
 
+# enable_shadows on a renderer with passes or post-processing: SSAO kept on
+# top, the renderer's FXAA, depth peeling and translucency as without a pass,
+# a camera pass over standard steps drawn through, VTK's own shadow passes
+# replaced and said, anything else refused naming it.
+add_test(NAME python.enable_composes
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_composes.py)
+set_tests_properties(python.enable_composes PROPERTIES LABELS "render" TIMEOUT 120)
+
 # planar with a vtkLODActor floor: the mapper draws its inner Device actor,
 # which shares the floor's property keys (ParaView's actors do the same).
 add_test(NAME python.lod_receiver

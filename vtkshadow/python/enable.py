@@ -85,5 +85,6 @@ def enable_shadows(renderer, technique="auto", max_error=None, key_light=True,
                              f"{key}={value!r} (docs/techniques.md lists the keys)")
     made.SetAutoKeyLight(bool(key_light))
     if not made.Enable(renderer):
-        raise ValueError(f"enable_shadows: cannot enable technique {technique!r}")
+        raise ValueError(f"enable_shadows: cannot enable technique {technique!r}: "
+                         f"{made.GetPassMessage() or 'see the VTK error above'}")
     return made

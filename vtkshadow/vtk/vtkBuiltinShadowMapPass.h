@@ -47,6 +47,11 @@ public:
 
   void Render(const vtkRenderState* s) override;
 
+  /**
+   * False: VTK's shadow passes draw the scene with steps of their own.
+   */
+  bool SetApplicationScene(vtkRenderPass*) override { return false; }
+
 protected:
   vtkBuiltinShadowMapPass();
   ~vtkBuiltinShadowMapPass() override;

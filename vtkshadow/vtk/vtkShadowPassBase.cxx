@@ -12,6 +12,7 @@
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
 #include "vtkShadowLightingHook.h"
+#include "vtkShadowRendererSteps.h"
 
 #include <cmath>
 #include <cstring>
@@ -63,7 +64,29 @@ void vtkShadowPassBase::SetLightSize(vtkLight* light, double radius, double angl
   light->GetInformation()->Set(LIGHT_ANGLE(), angleDegrees);
   light->Modified();
 }
-vtkCxxSetObjectMacro(vtkShadowPassBase, DelegatePass, vtkRenderPass);
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::SetDelegatePass(vtkRenderPass* pass)
+{
+  if (pass != this->DelegatePass)
+  {
+    vtkSetObjectBodyMacro(DelegatePass, vtkRenderPass, pass);
+    this->DelegateIsApplicationScene = false;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowPassBase::SetApplicationScene(vtkRenderPass* scene)
+{
+  this->SetDelegatePass(scene);
+  this->DelegateIsApplicationScene = scene != nullptr;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkRenderPass* vtkShadowPassBase::GetApplicationScene() const
+{
+  return this->DelegateIsApplicationScene ? this->DelegatePass : nullptr;
+}
 
 //------------------------------------------------------------------------------
 vtkShadowPassBase::vtkShadowPassBase()
@@ -151,7 +174,9 @@ vtkRenderPass* vtkShadowPassBase::EnsureDelegatePass()
 {
   if (!this->DelegatePass)
   {
-    vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
+    // The renderer's own translucency and FXAA settings, which a renderer
+    // with a pass no longer applies itself.
+    vtkRenderStepsPass* steps = vtkshadow::NewRendererSteps();
     this->SetDelegatePass(steps);
     steps->Delete();
   }

@@ -83,6 +83,16 @@ public:
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);
 
   /**
+   * The application's own scene pass (a vtkRenderStepsPass it set on the
+   * renderer, vtkShadowPassComposition.h) as the delegate. Returns false,
+   * changing nothing, for a pass that draws the scene with steps of its own
+   * (the vtk technique). GetApplicationScene() is that pass, nullptr while
+   * the delegate is the pass's own.
+   */
+  virtual bool SetApplicationScene(vtkRenderPass* scene);
+  vtkRenderPass* GetApplicationScene() const;
+
+  /**
    * Whether the headlight casts shadows too (default off: they hide behind
    * the objects that cast them).
    */
@@ -210,6 +220,7 @@ protected:
   std::string DetectedReceiversJSON(vtkRenderer* renderer) const;
 
   vtkRenderPass* DelegatePass;
+  bool DelegateIsApplicationScene = false;
   bool CastHeadlightShadows;
   double ResidualLight;
   unsigned int SkippedLights;

@@ -6,6 +6,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkShadowDefaultLights.h"
 #include "vtkShadowPassBase.h"
+#include "vtkShadowPassComposition.h"
 #include "vtkShadowTechniqueRegistry.h"
 #include "vtkSmartPointer.h"
 
@@ -82,28 +83,41 @@ bool vtkShadowTechnique::Install(vtkRenderer* renderer)
     vtkErrorMacro("Install: a vtkOpenGLRenderer is required");
     return false;
   }
-  vtkRenderPass* pass = this->CreatePass();
-  if (!pass)
+  vtkSmartPointer<vtkShadowPassBase> pass;
+  pass.TakeReference(this->CreatePass());
+  return pass && this->SetPass(gl, pass);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowTechnique::SetPass(vtkRenderer* renderer, vtkShadowPassBase* pass)
+{
+  auto* gl = static_cast<vtkOpenGLRenderer*>(renderer);
+  vtkshadow::PassComposition composed = vtkshadow::ComposeShadowPass(gl->GetPass(), pass);
+  this->PassMessage = composed.Message;
+  if (!composed.Ok)
   {
+    vtkErrorMacro(<< this->PassMessage);
     return false;
   }
-  this->SetPass(gl, pass);
-  pass->Delete();
+  if (composed.Replaced && composed.Replaced->IsA("vtkShadowPassBase") == 0)
+  {
+    vtkWarningMacro(<< "enable shadows: " << this->PassMessage);
+  }
+  // Free the GL objects of the pass we take out while its context exists;
+  // VTK's passes complain (and leak) when they are deleted with them.
+  if (composed.Replaced && gl->GetRenderWindow())
+  {
+    composed.Replaced->ReleaseGraphicsResources(gl->GetRenderWindow());
+  }
+  gl->SetPass(composed.Top);
+  this->Renderer = renderer;
   return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowTechnique::SetPass(vtkRenderer* renderer, vtkRenderPass* pass)
+const char* vtkShadowTechnique::GetPassMessage() const
 {
-  auto* gl = static_cast<vtkOpenGLRenderer*>(renderer);
-  // Free the GL objects of the pass we replace while its context exists;
-  // VTK's passes complain (and leak) when they are deleted with them.
-  if (gl->GetPass() && gl->GetRenderWindow())
-  {
-    gl->GetPass()->ReleaseGraphicsResources(gl->GetRenderWindow());
-  }
-  gl->SetPass(pass);
-  this->Renderer = renderer;
+  return this->PassMessage.c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -115,16 +129,15 @@ bool vtkShadowTechnique::Enable(vtkRenderer* renderer)
     return false;
   }
   // The pass first: a bad name or setting leaves the renderer as it was.
-  vtkSmartPointer<vtkRenderPass> pass;
+  vtkSmartPointer<vtkShadowPassBase> pass;
   pass.TakeReference(this->CreatePass());
-  if (!pass)
+  if (!pass || !this->SetPass(renderer, pass))
   {
     return false;
   }
   // The lights are decided at each frame (vtkshadow::UpdateLights), from
   // the lights the application has then.
   vtkshadow::SetAutoKeyLight(renderer, this->AutoKeyLight);
-  this->SetPass(renderer, pass);
   return true;
 }
 
@@ -159,16 +172,14 @@ vtkRenderer* vtkShadowTechnique::GetRenderer() const
 //------------------------------------------------------------------------------
 int vtkShadowTechnique::GetNumberOfDetectedReceivers() const
 {
-  auto* gl = vtkOpenGLRenderer::SafeDownCast(this->Renderer);
-  auto* pass = gl ? vtkShadowPassBase::SafeDownCast(gl->GetPass()) : nullptr;
+  auto* pass = vtkshadow::FindShadowPass(this->Renderer);
   return pass ? pass->GetNumberOfDetectedReceivers() : 0;
 }
 
 //------------------------------------------------------------------------------
 vtkActor* vtkShadowTechnique::GetDetectedReceiver(int index) const
 {
-  auto* gl = vtkOpenGLRenderer::SafeDownCast(this->Renderer);
-  auto* pass = gl ? vtkShadowPassBase::SafeDownCast(gl->GetPass()) : nullptr;
+  auto* pass = vtkshadow::FindShadowPass(this->Renderer);
   return pass ? pass->GetDetectedReceiver(index) : nullptr;
 }
 
@@ -177,8 +188,7 @@ namespace
 {
 vtkShadowPassBase* InstalledPass(vtkRenderer* renderer)
 {
-  auto* gl = vtkOpenGLRenderer::SafeDownCast(renderer);
-  return gl ? vtkShadowPassBase::SafeDownCast(gl->GetPass()) : nullptr;
+  return vtkshadow::FindShadowPass(renderer);
 }
 }
 

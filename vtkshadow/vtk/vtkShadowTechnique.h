@@ -97,10 +97,23 @@ public:
   vtkShadowPassBase* CreatePass();
 
   /**
-   * Set the technique's pipeline on an OpenGL renderer. Returns false for an
-   * unknown technique or a renderer that is not a vtkOpenGLRenderer.
+   * Set the technique's pipeline on an OpenGL renderer, composed with the
+   * passes it already has: image passes (vtkSSAOPass, vtkToneMappingPass,
+   * vtkOpenGLFXAAPass, ...) stay on top with the shadows drawn under them,
+   * a vtkRenderStepsPass (or a vtkCameraPass over VTK's standard steps)
+   * becomes the scene the shadows are drawn through, an earlier technique
+   * and VTK's own shadow passes are replaced; the renderer's UseFXAA and
+   * UseDepthPeeling keep working. Returns false, changing nothing, for an
+   * unknown technique, a renderer that is not a vtkOpenGLRenderer, or a
+   * pass it cannot compose with (GetPassMessage() names it).
    */
   bool Install(vtkRenderer* renderer);
+
+  /**
+   * What the last Install() or Enable() did with the passes the renderer
+   * had ("" when it had none), or why it refused them.
+   */
+  const char* GetPassMessage() const;
 
   /**
    * Bytes of shadow-map memory the technique uses for the lights of
@@ -171,8 +184,11 @@ protected:
   mutable std::string LightMessage; // GetLightMessage's storage
   vtkWeakPointer<vtkRenderer> Renderer;
 
-  // Set `pass` on the OpenGL renderer, freeing the one it replaces.
-  void SetPass(vtkRenderer* renderer, vtkRenderPass* pass);
+  // Compose `pass` with the OpenGL renderer's passes
+  // (vtkShadowPassComposition.h), freeing the one it replaces; false, with
+  // an error and nothing changed, when it cannot.
+  bool SetPass(vtkRenderer* renderer, vtkShadowPassBase* pass);
+  std::string PassMessage; // GetPassMessage's storage
 
 private:
   vtkShadowTechnique(const vtkShadowTechnique&) = delete;
