@@ -77,6 +77,34 @@ none=$(sed -n 's/^ratio //p' "$out/none.txt")
 awk -v r="$csm" 'BEGIN { exit !(r < 0.6) }' || fail "csm: no shadow under the sphere (ratio $csm, want < 0.6)"
 awk -v r="$none" 'BEGIN { exit !(r >= 0.9) }' || fail "none: the floor under the sphere is dark (ratio $none, want >= 0.9)"
 
+# The same install under another prefix (as /usr/local, where neither the
+# library folder nor lib/python3/dist-packages is on the default paths):
+# the tools and the Python module find libvtkshadow.so by their RUNPATH, and
+# vtkshadow.pth in the site folder (read here by site.addsitedir, as site.py
+# reads /usr/local/lib/python3.X/dist-packages) adds the package's folder to
+# sys.path. That folder comes after /usr/lib/python3/dist-packages, where
+# the .deb installed above is: the import puts it first to get the prefix's.
+prefix="$work/prefix"
+cmake --install "$build" --prefix "$prefix" >"$out/install.log" 2>&1 || { cat "$out/install.log"; fail "cmake --install"; }
+env -u LD_LIBRARY_PATH "$prefix/bin/vtkshadow-render" --list-techniques >"$out/tool.txt" 2>&1 ||
+  { cat "$out/tool.txt"; fail "$prefix/bin/vtkshadow-render does not start without LD_LIBRARY_PATH"; }
+# ... and find the prefix's own libvtkshadow.so (not the .deb's in /usr/lib).
+for binary in "$prefix/bin/vtkshadow-render" "$prefix"/lib/python3/dist-packages/vtkshadow/vtkshadow*.so; do
+  env -u LD_LIBRARY_PATH ldd "$binary" | grep "libvtkshadow\.so" | grep -q "=> $prefix/" ||
+    fail "$binary does not find $prefix's libvtkshadow.so by its RUNPATH: $(env -u LD_LIBRARY_PATH ldd "$binary" | grep libvtkshadow)"
+done
+site=$(/usr/bin/python3 -c 'import sys; print("lib/python%d.%d/dist-packages" % sys.version_info[:2])')
+(cd "$work" && env -u PYTHONPATH -u LD_LIBRARY_PATH /usr/bin/python3 -c "
+import site, sys
+site.addsitedir('$prefix/$site')
+added = [p for p in sys.path if p.startswith('$prefix/')]
+print('vtkshadow.pth added', added)
+sys.path[:0] = added
+import vtkshadow; print('prefix install: vtkshadow from', vtkshadow.__file__)") >"$out/prefix.txt" 2>&1 ||
+  { cat "$out/prefix.txt"; fail "python3 cannot import vtkshadow from $prefix through $site/vtkshadow.pth"; }
+grep -q "from $prefix/" "$out/prefix.txt" || { cat "$out/prefix.txt"; fail "python3 imported vtkshadow from elsewhere than $prefix"; }
+cat "$out/prefix.txt"
+
 if [ -n "$pvpython" ]; then
   so=/usr/lib/x86_64-linux-gnu/paraview-5.11/plugins/VTKShadow/VTKShadow.so
   for program in "$pvpython" "$pvbatch"; do
