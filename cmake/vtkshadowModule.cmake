@@ -47,6 +47,11 @@ install(FILES "${VTKSHADOW_PYTHON_PACKAGE_DIR}/__init__.py"
   "${VTKSHADOW_PYTHON_PACKAGE_DIR}/enable.py"
   DESTINATION "${VTKSHADOW_PYTHON_DESTINATION}/vtkshadow")
 
+# A /usr/local (or any non-/usr) install: vtkshadow.pth in the site folder
+# Debian's python3 searches there. VTK's find_package found Python3.
+set(VTKSHADOW_PYTHON_MAJOR_MINOR "${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}")
+include("${PROJECT_SOURCE_DIR}/cmake/vtkshadowPythonSite.cmake")
+
 # build/bin/vtkshadow-python: Debian's /usr/bin/python3 with the build tree on
 # its paths, like VTK's vtkpython or ParaView's pvpython.
 set(VTKSHADOW_PYTHON_EXECUTABLE "/usr/bin/python3" CACHE FILEPATH

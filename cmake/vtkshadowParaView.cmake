@@ -44,9 +44,23 @@ ExternalProject_Add(vtkshadow_paraview
   BUILD_ALWAYS ON
   USES_TERMINAL_BUILD ON)
 
+# `cmake --install build` (and CPack's component `paraview`, the
+# vtkshadow-paraview package) installs the plugin project's `paraview`
+# component: the plugin, vtkshadow.plugins.xml and bin/paraview.conf
+# (paraview/CMakeLists.txt). Only that component: the rest of that project
+# is the static core and module compiled into the plugin.
+install(CODE "
+set(vtkshadow_component \"\${CMAKE_INSTALL_COMPONENT}\")
+set(CMAKE_INSTALL_COMPONENT paraview)
+include(\"${VTKSHADOW_PARAVIEW_BINARY_DIR}/cmake_install.cmake\")
+set(CMAKE_INSTALL_COMPONENT \"\${vtkshadow_component}\")"
+  COMPONENT paraview)
+
 # PV_PLUGIN_PATH: ParaView loads every plugin in these folders at start.
+include("${PROJECT_SOURCE_DIR}/cmake/vtkshadowParaViewLibdir.cmake")
+vtkshadow_paraview_libdir(VTKSHADOW_PARAVIEW_LIBDIR "${VTKSHADOW_PARAVIEW_DIR}")
 set(VTKSHADOW_PV_PLUGIN_DIR
-  "${VTKSHADOW_PARAVIEW_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}/paraview-5.11/plugins/VTKShadow")
+  "${VTKSHADOW_PARAVIEW_BINARY_DIR}/${VTKSHADOW_PARAVIEW_LIBDIR}/paraview-5.11/plugins/VTKShadow")
 foreach(tool pvpython pvbatch paraview)
   if(tool STREQUAL "pvpython")
     set(VTKSHADOW_PV_PROGRAM "${VTKSHADOW_PVPYTHON}")

@@ -33,8 +33,23 @@ if [ -n "$missing" ]; then
   $sudo apt-get install -y -q --no-install-recommends $missing
 fi
 
+# The vtkshadow-paraview package (docs/install.md) installs into /usr's
+# ParaView: bin/paraview.conf, and vtkshadow.plugins.xml and VTKShadow/ in
+# its plugin folder. The prefix's programs read paraview.conf beside
+# themselves and resolve it against their own prefix, so these three paths
+# of the prefix link to /usr's: with the package installed, the prefix's
+# pvpython/pvbatch/paraview load VTKShadow by name too. The links dangle
+# (ParaView ignores them) while the package is not installed.
+link_vtkshadow_paraview() {
+  plugins=usr/lib/x86_64-linux-gnu/paraview-5.11/plugins
+  for path in usr/bin/paraview.conf "$plugins/vtkshadow.plugins.xml" "$plugins/VTKShadow"; do
+    $sudo ln -sfn "/$path" "$1/$path"
+  done
+}
+
 version="$(dpkg-query -W -f='${Version}' paraview)"
 if [ -f "$prefix/.vtkshadow-paraview" ] && [ "$(cat "$prefix/.vtkshadow-paraview")" = "$version" ]; then
+  link_vtkshadow_paraview "$prefix"
   echo "install-paraview: $prefix holds ParaView $version"
   exit 0
 fi
@@ -66,4 +81,5 @@ echo "$version" > "$stage/.vtkshadow-paraview"
 $sudo mkdir -p "$(dirname "$prefix")"
 $sudo rm -rf "$prefix"
 $sudo cp -a "$stage" "$prefix"
+link_vtkshadow_paraview "$prefix"
 echo "install-paraview: ParaView $version in $prefix (ParaView_DIR=$prefix/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11)"

@@ -93,6 +93,25 @@ add_test(NAME install.downstream
   COMMAND ${VTKSHADOW_GL} ${CMAKE_CURRENT_SOURCE_DIR}/downstream/run.sh ${CMAKE_BINARY_DIR}
           ${CMAKE_CURRENT_SOURCE_DIR}/downstream ${PROJECT_SOURCE_DIR}/scenes/basic/sphere-plane.json)
 
+# The .debs of `cpack -G DEB` (cmake/vtkshadowCPack.cmake): contents, dpkg -i,
+# then Debian's /usr/bin/python3 with no wrapper renders a shadow with csm
+# and none with "none", and pvpython/pvbatch load the plugin by name. Needs
+# root; leaves the packages installed. The build tree's tests still use the
+# build tree: vtkshadow-python puts it first on PYTHONPATH, ahead of
+# /usr/lib/python3/dist-packages, and the plugin wrappers' PV_PLUGIN_PATH
+# loads the build's VTKShadow.so (the installed one is only registered).
+set(vtkshadow_install_pv "")
+if(VTKSHADOW_PARAVIEW)
+  set(vtkshadow_install_pv ${VTKSHADOW_PVPYTHON} ${VTKSHADOW_PVBATCH})
+endif()
+add_test(NAME install.package
+  COMMAND ${VTKSHADOW_GL} ${CMAKE_CURRENT_SOURCE_DIR}/install/run.sh ${CMAKE_BINARY_DIR}
+          ${PROJECT_SOURCE_DIR} ${vtkshadow_install_pv})
+# Not at the same time as install.downstream: both run `cmake --install`-
+# style rules of the same build tree.
+set_tests_properties(install.package PROPERTIES LABELS "install" TIMEOUT 180
+  RUN_SERIAL ON)
+
 # vtkshadow-render: every bad input gives exit status 2, a message naming the
 # file, field and value, and no output file.
 add_test(NAME cli.bad_input
