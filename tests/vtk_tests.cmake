@@ -60,6 +60,13 @@ add_test(NAME python.enable_composes
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_enable_composes.py)
 set_tests_properties(python.enable_composes PROPERTIES LABELS "render" TIMEOUT 120)
 
+# planar on the flat parts of meshes that are not flat as a whole (a slab
+# floor, a pedestal's top, a cylinder's cap) against raytrace; RECEIVER() = 0
+# opts a mesh out.
+add_test(NAME python.planar_flat_parts
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_planar_flat_parts.py)
+set_tests_properties(python.planar_flat_parts PROPERTIES LABELS "render" TIMEOUT 120)
+
 # planar with a vtkLODActor floor: the mapper draws its inner Device actor,
 # which shares the floor's property keys (ParaView's actors do the same).
 add_test(NAME python.lod_receiver

@@ -180,6 +180,7 @@ struct vtkPlanarShadowPass::Internals
   std::vector<vtkProp*> FrameProps;
   bool EveryoneReceives = false;
   std::vector<vtkWeakPointer<vtkActor>> Detected; // in the last frame
+  int DetectedParts = 0;                          // flat parts receiving, last frame
 
   // The actors added with AddReceiverActor() that still exist.
   std::vector<vtkActor*> AddedActors() const
@@ -346,6 +347,10 @@ struct vtkPlanarShadowPass::FrameState
   // doubles per receiver.
   std::vector<vtkActor*> Receivers;
   std::vector<double> Planes;
+  // Per receiver, how far above its plane a caster point must be to cast
+  // onto it: 0, or for a flat part of a mesh the part's own rounding, so
+  // the mesh's points on the part do not shadow the part they make up.
+  std::vector<double> CasterLift;
   std::vector<vtkshadow::ShadowActor> Casters;
   // Camera: position, view rotation, and projection times view rotation
   // (camera-relative world to clip space), in double.
@@ -383,6 +388,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   GetViewport(s, frame.Size, impl.MaskOrigin);
 
   this->GatherLights(renderer, frame);
+  renderer->GetActiveCamera()->GetPosition(frame.Eye);
   impl.FrameProps = DrawnProps(s);
   this->GatherReceivers(vtkshadow::ShadowActors(s), frame);
   // Casters from the renderer's props, not the frustum-culled list: a
@@ -395,6 +401,12 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
     static_cast<int>(frame.Receivers.size()), frame.Lights.data(),
     static_cast<int>(frame.Lights.size()), frame.Eye, pairs.data(), MaxPairs);
   pairs.resize(std::max(count, 0));
+  for (vsh_planar_pair& pair : pairs)
+  {
+    // clip[0] is the receiver's plane (normalized, eye-relative): casters
+    // are kept from CasterLift above it.
+    pair.clip[0][3] -= frame.CasterLift[pair.receiver];
+  }
   // Pairs whose light has a size are sampled (SoftSamples hard shadows).
   const std::vector<vsh_planar_pair> softPairs = this->SplitSoftPairs(frame, pairs);
   vtkshadow::MarkStage("planar.plan");
@@ -480,8 +492,8 @@ void vtkPlanarShadowPass::GatherReceivers(
     impl.ReceiverByKeys[actor->GetPropertyKeys()] = actor;
     frame.Receivers.push_back(actor);
     frame.Planes.insert(frame.Planes.end(), plane.Plane, plane.Plane + 4);
+    frame.CasterLift.push_back(0.0);
   }
-  this->UpdateReceivingSet();
   // Explicit planes receive on every opaque fragment lying on them.
   for (const auto& p : impl.Planes)
   {
@@ -489,7 +501,77 @@ void vtkPlanarShadowPass::GatherReceivers(
       -(p.Normal[0] * p.Origin[0] + p.Normal[1] * p.Origin[1] + p.Normal[2] * p.Origin[2]) };
     frame.Receivers.push_back(nullptr);
     frame.Planes.insert(frame.Planes.end(), plane, plane + 4);
+    frame.CasterLift.push_back(0.0);
   }
+  const bool detecting =
+    this->DetectReceivers && impl.Planes.empty() && (choice.Detected || choice.Receivers.empty());
+  impl.DetectedParts = detecting ? this->GatherFlatParts(actors, choice, frame) : 0;
+  this->UpdateReceivingSet();
+}
+
+//------------------------------------------------------------------------------
+int vtkPlanarShadowPass::GatherFlatParts(const std::vector<vtkshadow::ShadowActor>& actors,
+  const vtkshadow::ReceiverChoice& choice, FrameState& frame)
+{
+  // The flat parts of the meshes that are not receivers as a whole (a box's
+  // top, a slab floor), as planes every fragment on them receives on, like
+  // explicit planes. Only parts whose visible side is lit by a casting
+  // light can show a shadow; the largest of those take the plane slots.
+  Internals& impl = *this->Impl;
+  std::vector<vtkshadow::FlatPart> candidates;
+  for (const vtkshadow::ShadowActor& actor : actors)
+  {
+    const bool receiver = std::any_of(choice.Receivers.begin(), choice.Receivers.end(),
+      [&](const vtkshadow::ShadowActor& r) { return r.Actor == actor.Actor; });
+    if (receiver || vtkshadow::FlagKeys(actor, RECEIVER()))
+    {
+      continue; // a receiver itself, or opted out with RECEIVER() = 0
+    }
+    for (const vtkshadow::FlatPart& part : impl.ReceiverPlanes.GetParts(actor))
+    {
+      if (this->PartCanShowShadow(part.Plane.data(), frame))
+      {
+        candidates.push_back(part);
+      }
+    }
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+    [](const vtkshadow::FlatPart& a, const vtkshadow::FlatPart& b) { return a.Area > b.Area; });
+  int added = 0;
+  for (const vtkshadow::FlatPart& part : candidates)
+  {
+    const int planes =
+      static_cast<int>(std::count(frame.Receivers.begin(), frame.Receivers.end(), nullptr));
+    if (planes >= MaxExplicitPlanes ||
+      !vsh_planar_receiver_fits(static_cast<int>(frame.Receivers.size()), impl.LightCount))
+    {
+      break;
+    }
+    frame.Receivers.push_back(nullptr);
+    frame.Planes.insert(frame.Planes.end(), part.Plane.begin(), part.Plane.end());
+    frame.CasterLift.push_back(part.OnPlane);
+    ++added;
+  }
+  return added;
+}
+
+//------------------------------------------------------------------------------
+bool vtkPlanarShadowPass::PartCanShowShadow(const double plane[4], const FrameState& frame) const
+{
+  // Seen from the eye's side and lit from that side by a casting light
+  // (either orientation of the plane: meshes are not all wound outwards).
+  const double eye =
+    plane[0] * frame.Eye[0] + plane[1] * frame.Eye[1] + plane[2] * frame.Eye[2] + plane[3];
+  for (const vsh_planar_light& light : frame.Lights)
+  {
+    const double* l = light.homogeneous;
+    const double side = plane[0] * l[0] + plane[1] * l[1] + plane[2] * l[2] + plane[3] * l[3];
+    if (light.casts && eye * side > 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -503,7 +585,7 @@ void vtkPlanarShadowPass::UpdateReceivingSet()
   {
     receiving.push_back(entry.first);
   }
-  const bool everyone = !impl.Planes.empty();
+  const bool everyone = !impl.Planes.empty() || impl.DetectedParts > 0;
   if (receiving != impl.Receiving || everyone != impl.EveryoneReceives)
   {
     impl.Receiving = receiving;
@@ -1403,7 +1485,8 @@ std::string vtkPlanarShadowPass::GetStatsJSON(vtkRenderer* renderer) const
     ", \"soft_samples\": " + std::to_string(this->SoftSamples) +
     ", \"soft_batch\": " + std::to_string(this->Impl->SoftAdaptive ? VSH_SOFT_ADAPTIVE_BATCH : 0) +
     ", \"soft_adaptive\": " + adaptive +
-    ", \"detected_receivers\": " + this->DetectedReceiversJSON(renderer);
+    ", \"detected_receivers\": " + this->DetectedReceiversJSON(renderer) +
+    ", \"detected_flat_parts\": " + std::to_string(this->Impl->DetectedParts);
 }
 
 //------------------------------------------------------------------------------

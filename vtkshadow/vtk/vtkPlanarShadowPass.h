@@ -20,7 +20,13 @@
  * actor (all its points on one plane: a floor, a cut plane, a slice) is
  * detected as a receiver,
  * unless it carries RECEIVER() = 0 or detection is off (DetectReceivers,
- * option detect_receivers); GetDetectedReceiver() lists them.
+ * option detect_receivers); GetDetectedReceiver() lists them. The flat
+ * parts of the other opaque meshes are detected too (vsh_flat_parts: a
+ * plane holding at least 5 % of a mesh's area, such as a box's top or a
+ * slab floor) and receive like explicit planes, the largest ones whose
+ * visible side a casting light reaches first (8 plane slots); a mesh's own
+ * points on a part do not shadow it. The stats count them
+ * (detected_flat_parts).
  * Casters: every visible opaque actor except receivers onto themselves and
  * actors marked with NO_CAST(). Lights: every switched-on scene light
  * (directional, point, spot); the headlight only with CastHeadlightShadowsOn().
@@ -214,6 +220,10 @@ private:
   void GatherLights(vtkRenderer* renderer, FrameState& frame);
 #ifndef __VTK_WRAP__
   void GatherReceivers(const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame);
+  // Detected flat parts of the other meshes as plane receivers; how many.
+  int GatherFlatParts(const std::vector<vtkshadow::ShadowActor>& actors,
+    const vtkshadow::ReceiverChoice& choice, FrameState& frame);
+  bool PartCanShowShadow(const double plane[4], const FrameState& frame) const;
   void GatherCasters(const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame);
 #endif
   void SetUpCamera(vtkRenderer* renderer, FrameState& frame);

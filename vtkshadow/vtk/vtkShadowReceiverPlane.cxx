@@ -11,11 +11,16 @@
 #include "vtkShadowActorFlags.h"
 #include "vtkSmartPointer.h"
 
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+
+#include "vsh_flat_parts.h"
 #include "vsh_mat4.h"
 #include "vsh_plane.h"
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <vector>
 
 namespace vtkshadow
@@ -93,6 +98,103 @@ bool ReceiverPlane(vtkActor* actor, const double m[16], double plane[4], bool* s
     VSH_PLANE_OK;
 }
 
+namespace
+{
+// Every polygon (fanned) and strip of `cells` as triangles, indices offset
+// by `base`; false when there are more than `limit` in all.
+bool AppendTriangles(
+  vtkCellArray* cells, bool strips, long long base, std::vector<long long>& triangles, size_t limit)
+{
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 2; k < n; ++k)
+    {
+      // A strip's odd triangles are wound the other way round.
+      const bool flip = strips && (k % 2 == 1);
+      const vtkIdType a = strips ? ids[k - 2] : ids[0];
+      const vtkIdType b = flip ? ids[k] : ids[k - 1];
+      const vtkIdType c = flip ? ids[k - 1] : ids[k];
+      triangles.insert(triangles.end(), { base + a, base + b, base + c });
+    }
+    if (triangles.size() > 3 * limit)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+std::vector<FlatPart> FlatParts(vtkActor* actor, const double m[16])
+{
+  // Sorting the triangles once per mesh change is cheap up to millions;
+  // beyond, a mesh that is not flat as a whole is left without parts.
+  const size_t limit = 4u << 20;
+  std::vector<double> world;
+  std::vector<long long> triangles;
+  double largest = 0.0;
+  for (vtkPolyData* poly : DrawnPolyData(actor->GetMapper()))
+  {
+    if (!poly->GetPoints())
+    {
+      continue;
+    }
+    const long long base = static_cast<long long>(world.size() / 3);
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+    {
+      double p[3], w[3];
+      poly->GetPoint(i, p);
+      vsh_mat4_transform_point(m, p, w);
+      world.insert(world.end(), w, w + 3);
+      largest = std::max({ largest, std::abs(w[0]), std::abs(w[1]), std::abs(w[2]) });
+    }
+    if (!AppendTriangles(poly->GetPolys(), false, base, triangles, limit) ||
+      !AppendTriangles(poly->GetStrips(), true, base, triangles, limit))
+    {
+      return {};
+    }
+  }
+  vsh_flat_part found[6];
+  const int n = vsh_flat_parts(world.data(), world.size() / 3, triangles.data(),
+    triangles.size() / 3, 1e-4, 1e-5, 0.05, found, 6);
+  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+  for (size_t i = 0; i < world.size(); ++i)
+  {
+    lo[i % 3] = i < 3 ? world[i] : std::min(lo[i % 3], world[i]);
+    hi[i % 3] = i < 3 ? world[i] : std::max(hi[i % 3], world[i]);
+  }
+  const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
+    (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  std::vector<FlatPart> parts;
+  for (int i = 0; i < n; ++i)
+  {
+    // On the part: within the grouping's tolerance and the rounding of
+    // float points far from the origin.
+    parts.push_back(
+      { { found[i].plane[0], found[i].plane[1], found[i].plane[2], found[i].plane[3] },
+        found[i].area, 1e-5 * diagonal + 4.0 * FLT_EPSILON * largest });
+  }
+  return parts;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<FlatPart>& ReceiverPlaneCache::GetParts(const ShadowActor& actor)
+{
+  Entry& entry = this->Get(actor);
+  if (!entry.PartsDone)
+  {
+    entry.Parts =
+      entry.Flat || !entry.Surface ? std::vector<FlatPart>() : FlatParts(actor.Actor, actor.Matrix);
+    entry.PartsDone = true;
+  }
+  return entry.Parts;
+}
+
 //------------------------------------------------------------------------------
 ReceiverPlaneCache::Entry& ReceiverPlaneCache::Get(const ShadowActor& actor)
 {
@@ -105,6 +207,7 @@ ReceiverPlaneCache::Entry& ReceiverPlaneCache::Get(const ShadowActor& actor)
     std::copy_n(actor.Matrix, 16, entry.Matrix);
     entry.Flat = ReceiverPlane(actor.Actor, actor.Matrix, entry.Plane, &entry.Surface);
     entry.Reported = false;
+    entry.PartsDone = false;
   }
   return entry;
 }

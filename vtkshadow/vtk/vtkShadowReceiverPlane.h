@@ -5,6 +5,7 @@
 
 #include "vtkType.h" // for vtkMTimeType
 
+#include <array>   // for std::array
 #include <cstddef> // for size_t
 #include <map>     // for std::map
 #include <vector>  // for std::vector
@@ -30,6 +31,21 @@ bool ReceiverPlane(
   vtkActor* actor, const double matrix[16], double plane[4], bool* surface = nullptr);
 
 /**
+ * The flat parts of an actor's surface in world coordinates (vsh_flat_parts:
+ * planes holding at least 5 % of its area, at most 6, the largest first:
+ * a box's faces, a slab floor's top), each with the distance within which
+ * a point counts as lying on it (its mesh's rounding). Empty for a mesh
+ * without polygons or with more than 4 million triangles.
+ */
+struct FlatPart
+{
+  std::array<double, 4> Plane;
+  double Area;
+  double OnPlane; // world distance: points closer than this lie on the part
+};
+std::vector<FlatPart> FlatParts(vtkActor* actor, const double matrix[16]);
+
+/**
  * Receiver planes by actor (and instance: the same actor drawn at two
  * places), recomputed only when the actor's placement (its matrix's values)
  * or its mesh (MeshTime: mapper or input) changed; not on MTimes of the
@@ -49,12 +65,21 @@ public:
     double Plane[4] = { 0, 0, 0, 0 }; // ... this one
     bool Reported = false;            // a "not flat" warning was given for this computation
     bool Surface = false;             // it has polygons or strips (detection needs them)
+    bool PartsDone = false;           // Parts computed for this Time and Matrix
+    std::vector<FlatPart> Parts;      // its flat parts when it is not flat
   };
 
   /**
    * The shadow actor's entry, brought up to date.
    */
   Entry& Get(const ShadowActor& actor);
+
+  /**
+   * The flat parts of the shadow actor's surface (FlatParts), computed
+   * once per change like its plane; none for an actor that is flat as a
+   * whole (it is a receiver itself) or has no surface.
+   */
+  const std::vector<FlatPart>& GetParts(const ShadowActor& actor);
 
   /**
    * Forget every entry (e.g. when graphics resources are released).
