@@ -25,8 +25,8 @@ bool Options::Has(const std::string& r) const
 
 std::vector<std::string> RegisteredTechniques()
 {
-  // TODO(registry): the lead is turning vtkShadowTechnique's list into a
-  // registry; this stays the one place the harness asks for the names.
+  // The registry's names (vtkShadowTechniqueRegistry, through
+  // vtkShadowTechnique); the one place the harness asks for them.
   std::vector<std::string> r;
   std::stringstream known(vtkShadowTechnique::GetKnownTechniques());
   for (std::string t; known >> t;)

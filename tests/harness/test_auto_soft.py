@@ -20,7 +20,7 @@ integrated per pixel on the plane, vsh_soft). Per light:
   fewest with 0.22 / sqrt(N) <= 0.014: 247), the ray-traced pass traced
   that N, and the measured pen_mae is within the target.
 
-csm's sampled light (session 10) on scenes/soft/glyphs-soft, where planar
+csm's sampled light on scenes/soft/glyphs-soft, where planar
 cannot draw the shadows (glyphs on glyphs): at 0.06 the model's cheapest
 candidate is csm's sampled light (PCSS predicts 0.09; rays and volumes cost
 several times more), so the pick is csm_sampled, the light's choice is csm,

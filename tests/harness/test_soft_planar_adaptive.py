@@ -1,5 +1,5 @@
-"""planar's adaptive sample counts (soft_samples with adaptive=1, session
-10) against the exact penumbra. docs/soft-shadows.md, "planar: adaptive
+"""planar's adaptive sample counts (soft_samples with adaptive=1) against
+the exact penumbra. docs/soft-shadows.md, "planar: adaptive
 sample counts".
 
     test_soft_planar_adaptive.py --bin BUILD/bin --out DIR

@@ -19,9 +19,10 @@ A sphere over a floor, one directional scene light, frames at 240x160:
 - a pass it cannot compose with (a bare vtkSequencePass) raises ValueError
   naming it, and the renderer keeps that pass.
 
-Before the fix every case replaced the renderer's pass: csm under SSAO drew
-no occlusion, FXAA and depth peeling were dropped, translucent geometry was
-blended unsorted where VTK uses order-independent transparency.
+What it catches: a technique that replaces the renderer's pass instead of
+composing with it, so that csm under SSAO draws no occlusion, FXAA and
+depth peeling are dropped, and translucent geometry is blended unsorted
+where VTK uses order-independent transparency.
 
 Usage: test_enable_composes.py"""
 import os

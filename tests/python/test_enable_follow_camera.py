@@ -7,11 +7,11 @@ camera is moved (azimuth 140, elevation 35), and the next frame is compared
 with the same steps on a renderer with LightFollowCamera on (VTK's default):
 the sphere must be lit from the same side, its pixels' mean brightness
 within 3 % and the brightness-weighted centre of its pixels within 2 px.
-Before the fix `none` (and `auto`, which picks none for a lone sphere) left
-the key and fill at a fixed world direction and `vtk` placed them once, so
-the moved view showed the sphere's unlit back. With a floor under the
-sphere the whole picture (the key light's shadow on the floor) must match
-too. And the application's own camera light, which VTK leaves where it is
+What it catches: a pass that leaves the key and fill at a fixed world
+direction (`none`, and `auto`, which picks none for a lone sphere) or places
+them once (`vtk`), so that the moved view shows the sphere's unlit back.
+With a floor under the sphere the whole picture (the key light's shadow on
+the floor) must match too. And the application's own camera light, which VTK leaves where it is
 with LightFollowCamera off, is left there by every technique: each lights
 the sphere as `none` (VTK's own passes) does; not checked for `vtk`, whose
 vtkShadowMapBakerPass (VTK's code) places every camera light and headlight

@@ -10,9 +10,9 @@ TypeError that says what to pass, and nothing changed.
 - a technique name in the renderer's place: the renderer comes first;
 - None, a number, another VTK object: what was given and what is needed.
 
-Before the fix a string, a number and a plotter raised AttributeError
-('... has no attribute IsA') and the window's TypeError did not say what to
-pass.
+What it catches: a string, a number or a plotter raising AttributeError
+('... has no attribute IsA'), and a TypeError for a window that does not
+say what to pass.
 
 Usage: test_enable_wrong_type.py"""
 import sys

@@ -1,8 +1,8 @@
 """A receiver drawn through an inner actor (vtkLODActor draws with its
 Device actor, sharing its property keys; ParaView's vtkPVLODActor does the
-same): planar must still shadow it. Before the fix the mapper asked the
-pass about the Device, which planar did not know as a receiver, and the
-floor under the sphere stayed lit (ParaView showed no planar shadow).
+same): planar must still shadow it. What it catches: the mapper asks the
+pass about the Device; a pass that knows only the outer actor as a receiver
+leaves the floor under the sphere lit (no planar shadow in ParaView).
 
 The floor under the sphere (the light's ray through its centre) must be at
 most 30% as bright as without shadows, a lit floor point within 5%; a plain

@@ -5,12 +5,12 @@ normals, flat shading, cell scalars: vtkBooleanOperationPolyDataFilter and
 isosurface output, a lego surface coloured by cells), which VTK's mappers
 get through their input connection.
 
-Before the fix the screen mask's samplers pointed at no unit of their own
-in the pre-pass, so they shared one with the mapper's samplerBuffer: the
-draw failed (GL_INVALID_OPERATION), the caster was missing from the depth,
-and volume drew false shadows and darkened lit surfaces: 5.9 % (boolean),
-6.5 % (isosurface, auto too: it picked volume) and 26.6 % (lego) of the
-valid pixels differed from raytrace, csm screen from forward 5.8 % (lego).
+What it catches: screen-mask samplers with no texture unit of their own in
+the pre-pass share one with the mapper's samplerBuffer; then the draw
+fails (GL_INVALID_OPERATION), the caster is missing from the depth, and
+volume draws false shadows and darkens lit surfaces: 5.9 % (boolean),
+6.5 % (isosurface, auto too: it picks volume) and 26.6 % (lego) of the
+valid pixels differ from raytrace, csm screen from forward 5.8 % (lego).
 
 Per mesh, visibility (float renders, tests/render/float_render.py) of
 volume and auto at max_error 0 (which then picks an exact technique)

@@ -205,11 +205,11 @@ def reflection_mae(ref_png, test_png, mask, tag):
 # Below the mirror: a slab wholly under it and a box half under it (the
 # pov-below and below-lit cases). The mirrored draw clips them away, and so
 # must the depth pre-pass of the techniques' screen masks (csm's screen
-# resolve, volume, raytrace): before that fix the mirrored slab's depth, on
-# the eye's side of the mirror, decided the shadows of every reflected
-# pixel (before the fix, volume and raytrace: below-lit 0 of 727 lit pixels
-# of the sphere's reflection lit, csm resolve=1 264; pov-below 0.0436
-# over the pixels reflecting the sphere or the box, 0.0050 over the mirror).
+# resolve, volume, raytrace): otherwise the mirrored slab's depth, on the
+# eye's side of the mirror, decides the shadows of every reflected pixel
+# (volume and raytrace: below-lit 0 of 727 lit pixels of the sphere's
+# reflection lit, csm resolve=1 264; pov-below 0.0436 over the pixels
+# reflecting the sphere or the box, 0.0050 over the mirror).
 SLAB = ([-4.5, -4.5, -1.5], [4.5, 4.5, -0.3])
 HALF = ([1.5, 0.5, -0.6], [2.5, 1.5, 0.7])
 BELOW_LIGHT = {"type": "point", "position": [3, -2, 6]}
@@ -399,9 +399,9 @@ def pov_wall_mirror(technique):
     """A wall mirror (x = 3, facing -x) beside a sphere and a box on a matte
     floor, the sun behind the wall: the wall shadows the floor in front of
     it, and that shadow shows in the mirror. In the mirrored world the
-    mirror still casts (it is its own reflection) but is not drawn; volume
-    counted it z-pass, which draws no caps, so its shadow came out inverted
-    (0.161 here before the fix). reflection_mae <= 0.02; a technique
+    mirror still casts (it is its own reflection) but is not drawn; counted
+    z-pass, which draws no caps, its volume shadow comes out inverted
+    (0.161 here). reflection_mae <= 0.02; a technique
     without shadows must show the wall's missing shadow (none: 0.099)."""
     scene = {"size": [256, 144],
              "camera": {"position": [1, -14, 3], "focal_point": [0, 0, 0.6],

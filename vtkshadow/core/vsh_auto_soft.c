@@ -36,7 +36,7 @@
 #define PCSS_PEN_MAE 0.090
 #define HARD_PEN_MAE 0.30
 /* volume (soft_samples N): pen_mae(N) = a / N^p + b against Cycles 1024
- * samples at pixel centres, 256x192 (session 8; `vtkshadow-render --set
+ * samples at pixel centres, 256x192 (`vtkshadow-render --set
  * soft_samples=N --light K --size 256x192` scored over Cycles' penumbra).
  * Its N sample positions are fixed and stratified (a quadrature, exact per
  * sample), so the error falls faster than random rays' 1/sqrt(N): against
@@ -93,7 +93,7 @@
  * N = 4 / 16 / 64 cost 4.4 / 15 / 49 hard lookups on the still test scene
  * and 19 / 56 at N = 16 / 64 on glyphs-soft, whose orbiting camera
  * re-renders every sample map each frame (taking PCSS as 10): 1 + N. The
- * adaptive batch of 8 (csm's adaptive, session 9) stops where it agrees. */
+ * adaptive batch of 8 (csm's `adaptive`) stops where it agrees. */
 #define CSM_SAMPLED_BATCH 8
 
 double vsh_auto_soft_pen_mae(int technique, int samples)

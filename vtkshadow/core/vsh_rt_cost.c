@@ -9,9 +9,9 @@ void vsh_rt_cost_model_default(vsh_rt_cost_model *model)
 {
   /* Measured by bench/bench_growth.py and the library bench of
    * scripts/results.sh on an otherwise idle 2-core VM (Embree 3.13, 10k to
-   * 1M triangles, 2026-11-23): 4.5 to 9.1 M occlusion rays per second per
-   * thread; the low end, so that auto does not promise raytrace too cheaply
-   * (the 2e6 measured under load before made it 1.7x too dear on
+   * 1M triangles): 4.5 to 9.1 M occlusion rays per second per thread; the
+   * low end, so that auto does not promise raytrace too cheaply, and not a
+   * rate measured under load (2e6 makes raytrace 1.7x too dear on
    * arrow-glyphs). The pass refines it from every frame it traces. */
   model->rays_per_second_per_thread = 4.5e6;
   model->pixel_ns = 60.0;

@@ -3,12 +3,12 @@
 
 #include <math.h>
 
-/* Fitted on 2026-11-23 by
+/* Fitted by
  *   tests/gl-run.sh build/bin/vtkshadow-python bench/bench_volume_cost.py \
  *       --bin build/bin --out DIR --rounds 8 --frames 8
  * (3 runs of its 15 scenes refitted together with --refit: 45 rows), on the
  * project's VM (2 cores of an AMD EPYC, Mesa llvmpipe under Xvfb, Release
- * build) while about five other jobs shared it (load average 5): each row is
+ * build) at a load average of about 5: each row is
  * the median over interleaved rounds of volume's round median minus none's,
  * and single rows moved by 2-10x between runs. Residuals of the fit: within
  * a factor of 2 on most rows, 5x on the worst. The triangle term is large

@@ -3,8 +3,8 @@
  * @brief   What every vtkshadow technique's render pass shares.
  *
  * Each shadow technique is one render pass deriving from this class and one
- * line in vtkShadowTechniqueRegistry. The base holds what used to be copied
- * into every pass:
+ * line in vtkShadowTechniqueRegistry. The base holds what every pass needs,
+ * so no pass repeats it:
  *
  * - the delegate that renders the scene (a vtkRenderStepsPass unless set);
  * - which lights cast: SkippedLights (bit i = light i in the mapper's
