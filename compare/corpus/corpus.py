@@ -201,8 +201,8 @@ def judge(entry, runs, frames, defaults):
     return casts_none, why
 
 
-def known(entry, technique, check):
-    for k in entry.get("known_failures", []):
+def known(entry, technique, check, everywhere=()):
+    for k in list(entry.get("known_failures", [])) + list(everywhere):
         if k["technique"] in (technique, "*") and k["check"] in (check, "*"):
             return k
     return None
@@ -258,13 +258,13 @@ def run_example(corpus, entry, techniques, args, progress):
             "nothing_casts_why": why, "runs": runs}
 
 
-def failures_of(corpus_entry, result):
+def failures_of(corpus_entry, result, everywhere=()):
     failed, known_failed = [], []
     for t, run in result["runs"].items():
         for check, (ok, detail) in run.get("checks", {}).items():
             if ok:
                 continue
-            k = known(corpus_entry, t, check)
+            k = known(corpus_entry, t, check, everywhere)
             item = {"example": result["name"], "technique": t, "check": check,
                     "detail": detail}
             if k:
@@ -298,7 +298,7 @@ def cmd_run(args):
     for entry in entries:
         result = run_example(corpus, entry, techniques, args, progress)
         results.append(result)
-        f, k = failures_of(entry, result)
+        f, k = failures_of(entry, result, corpus.get("known_failures", []))
         failed += f
         known_failed += k
     report = {"command": " ".join(sys.argv), "python": args.python,
@@ -349,7 +349,7 @@ def cmd_rejudge(args):
                 frames[t] = frame
         casts_none, why = judge(entry, result["runs"], frames, corpus["bounds"])
         result["nothing_casts"], result["nothing_casts_why"] = casts_none, why
-        f, k = failures_of(entry, result)
+        f, k = failures_of(entry, result, corpus.get("known_failures", []))
         report["failures"] += f
         report["known_failures"] += k
     report["bounds"] = corpus["bounds"]
