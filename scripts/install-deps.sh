@@ -6,7 +6,8 @@ packages="cmake make gcc g++ pkg-config libvtk9-dev python3-vtk9 python3-numpy
   libcjson-dev libpng-dev xvfb xauth povray blender gnuplot-nox
   universal-ctags clang-format
   libx11-dev libembree-dev python3-pil
-  openmpi-bin"
+  openmpi-bin
+  python3-vedo python3-vedo-examples vtk9-examples"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -23,6 +23,7 @@ set(_vtkshadow_test_costs
   "harness.soft_adaptive=23"
   "harness.cache=23"
   "harness.library.basic=21"
+  "corpus.subset=70"
 )
 foreach(entry IN LISTS _vtkshadow_test_costs)
   string(REPLACE "=" ";" pair "${entry}")

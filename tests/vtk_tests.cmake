@@ -188,6 +188,7 @@ include(${CMAKE_CURRENT_SOURCE_DIR}/render/raytrace_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/harness/harness_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/depth_range_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/render/display_soak_tests.cmake)
+include(${CMAKE_CURRENT_SOURCE_DIR}/corpus/corpus_tests.cmake)
 include(${CMAKE_CURRENT_SOURCE_DIR}/paraview/paraview_tests.cmake)
 
 # Planar mirrors (vtkPlanarReflectionPass): mirrored silhouettes against ray
