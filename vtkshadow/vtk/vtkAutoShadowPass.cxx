@@ -31,6 +31,7 @@
 
 #include "vsh_auto.h"
 #include "vsh_auto_general.h"
+#include "vsh_auto_plan.h"
 #include "vsh_auto_soft.h"
 #include "vsh_mat4.h"
 #include "vsh_silhouette.h"
@@ -265,7 +266,7 @@ void vtkAutoShadowPass::GatherObjects(const vtkRenderState* s)
       { return r.Actor == shadowActor.Actor && r.Instance == shadowActor.Instance; });
     vsh_auto_object object;
     vsh_auto_object_init(&object, shadowActor.Bounds, receiver ? 1 : 0,
-      vtkshadow::HasFlag(shadowActor, vtkShadowPassBase::NO_CAST()) ? 0 : 1, frustum);
+      vtkshadow::CastsAsSurface(shadowActor, vtkShadowPassBase::NO_CAST()) ? 1 : 0, frustum);
     if (object.receiver)
     {
       const vtkshadow::ReceiverPlaneCache::Entry& plane = planes.Get(shadowActor);
@@ -568,51 +569,25 @@ void vtkAutoShadowPass::WeighSoft(vtkRenderer* renderer, size_t l, int technique
 //------------------------------------------------------------------------------
 void vtkAutoShadowPass::ChooseSoft()
 {
-  // One setting per pass. csm has one soft mode for all its lights: when
-  // some lights pick its sampled light, PCSS is dropped for every light. The
-  // volume and ray-traced passes each own a screen mask whose lighting hook
-  // declares the same names, so they cannot both hook one frame: when lights
-  // pick both, volumes are dropped (raytrace stays: it is the lowest error at
-  // any N). A dropped candidate is unavailable to every light, and lights
-  // that had picked it choose again; a new choice can start the other clash,
-  // so this repeats until nothing changes (at most once per rule).
+  // The rules across lights (one soft mode per csm, one screen mask per
+  // frame) are the core's (vsh_auto_plan.h); here they are applied.
   Internals& impl = *this->Impl;
-  auto picked = [&impl](int technique)
+  std::vector<int> weighed(impl.SoftChoices.size());
+  for (size_t l = 0; l < weighed.size(); ++l)
   {
-    return std::any_of(impl.SoftChoices.begin(), impl.SoftChoices.end(),
-      [technique](const vsh_auto_soft_choice& c) { return c.pick == technique; });
-  };
-  auto drop = [this, &impl](int technique)
-  {
-    bool changed = false;
-    for (vsh_auto_soft_choice& c : impl.SoftChoices)
-    {
-      c.candidates[technique].available = 0;
-      if (c.pick != technique)
-      {
-        continue;
-      }
-      vsh_auto_candidate weighed[VSH_AUTO_SOFT_COUNT];
-      for (int i = 0; i < VSH_AUTO_SOFT_COUNT; ++i)
-      {
-        weighed[i] = { c.candidates[i].available, c.candidates[i].pen_mae, c.candidates[i].ms };
-      }
-      c.pick = vsh_auto_pick_cheapest(weighed, VSH_AUTO_SOFT_COUNT, this->PenumbraTarget, &c.met);
-      changed = true;
-    }
-    return changed;
-  };
-  bool changed = true;
-  while (changed)
-  {
-    const bool pcss = picked(VSH_AUTO_SOFT_CSM_SAMPLED) && drop(VSH_AUTO_SOFT_PCSS);
-    const bool volume =
-      picked(VSH_AUTO_SOFT_VOLUME) && picked(VSH_AUTO_SOFT_RAYTRACE) && drop(VSH_AUTO_SOFT_VOLUME);
-    changed = pcss || volume;
+    weighed[l] = impl.SoftLights[l] && impl.LightChoices[l] != vtkshadow::TechniqueSet::None;
   }
-  for (size_t l = 0; l < impl.SoftChoices.size(); ++l)
+  const int count = static_cast<int>(weighed.size());
+  vsh_auto_plan_soft(impl.SoftChoices.data(), weighed.data(), count, this->PenumbraTarget);
+  int samples[VSH_AUTO_SOFT_COUNT];
+  vsh_auto_plan_soft_samples(impl.SoftChoices.data(), weighed.data(), count, samples);
+  impl.PlanarSamples = samples[VSH_AUTO_SOFT_PLANAR];
+  impl.RaySamples = samples[VSH_AUTO_SOFT_RAYTRACE];
+  impl.VolumeSamples = samples[VSH_AUTO_SOFT_VOLUME];
+  impl.CsmSamples = samples[VSH_AUTO_SOFT_CSM_SAMPLED];
+  for (size_t l = 0; l < weighed.size(); ++l)
   {
-    if (impl.SoftLights[l] && impl.LightChoices[l] != vtkshadow::TechniqueSet::None)
+    if (weighed[l])
     {
       impl.LightChoices[l] = static_cast<vtkshadow::TechniqueSet>(
         this->ApplySoftPick(l, static_cast<int>(impl.LightChoices[l])));
@@ -663,15 +638,6 @@ int vtkAutoShadowPass::ApplySoftPick(size_t l, int technique)
     VSH_AUTO_RAYTRACE, VSH_AUTO_VOLUME, VSH_AUTO_CSM };
   std::string& reason = this->LightReasons[l];
   reason = techniques[pick] == technique ? reason + "; " + why.str() : why.str();
-  // One N per pass (the passes take one setting): the largest any of the
-  // lights that chose it needs.
-  const int samples = choice.candidates[pick].samples;
-  int* const perPass[VSH_AUTO_SOFT_COUNT] = { &impl.PlanarSamples, nullptr, &impl.RaySamples,
-    &impl.VolumeSamples, &impl.CsmSamples };
-  if (perPass[pick])
-  {
-    *perPass[pick] = std::max(*perPass[pick], samples);
-  }
   return techniques[pick];
 }
 
@@ -793,18 +759,12 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
   this->UsedThinnestPixels = std::numeric_limits<double>::infinity();
   this->UsedTaperErrorPct = 0.0;
   bool measured = false;
-  struct Weighed
-  {
-    size_t Light;
-    vsh_auto_candidate Candidates[VSH_AUTO_GENERAL_COUNT];
-    vsh_volume_ms_input Volume;
-    int Unsupported;
-    int Pick;
-  };
-  std::vector<Weighed> weighed;
-  // Lights with a size were weighed by the penumbra target (ChooseSoft);
-  // when they took volumes, raytrace cannot share the frame (below).
-  bool anyVolume = impl.VolumeSamples > 0, anyRays = impl.RaySamples > 0;
+  // Per map light the inputs of each candidate; the picks, with the rules
+  // across lights (vsh_auto_plan_general), are the core's.
+  std::vector<size_t> lightOf;
+  std::vector<vsh_auto_general_light> weighed;
+  std::vector<vsh_volume_ms_input> volumes;
+  std::vector<int> unsupported;
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
     if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded || impl.SoftLights[l])
@@ -817,40 +777,35 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
       this->UsedTaperErrorPct = this->TaperErrorPct(renderer, pixels);
       measured = true;
     }
-    Weighed w = {};
-    w.Light = l;
+    vsh_auto_general_light w = {};
+    vsh_volume_ms_input volume = {};
     // Two estimates of what thin parts lose, whole parts narrower than two
     // texels and tapered ends narrower than that: the larger counts.
     const double thin = std::max(vsh_auto_thin_caster_error(this->UsedThinnestPixels,
                                    this->UsedTexelTarget, edgeLengths[l], pixels),
       this->UsedTaperErrorPct);
-    w.Candidates[VSH_AUTO_GENERAL_CSM] = { 1, thin > 0.0 ? thin : 0.0,
+    w.candidates[VSH_AUTO_GENERAL_CSM] = { 1, thin > 0.0 ? thin : 0.0,
       MapLookupMsPerPixel * pixels };
-    w.Unsupported =
-      this->VolumeInputs(renderer, impl.Lights[l].data(), static_cast<int>(l), w.Volume);
-    w.Candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
-      vsh_volume_predicted_error(w.Unsupported, impl.SoftLights[l] ? 1 : 0),
-      vsh_volume_cost_ms(&w.Volume) };
-    w.Candidates[VSH_AUTO_GENERAL_RAYTRACE] = { impl.VolumeSamples > 0 ? 0 : 1, 0.0,
+    const int notDrawn =
+      this->VolumeInputs(renderer, impl.Lights[l].data(), static_cast<int>(l), volume);
+    w.candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
+      vsh_volume_predicted_error(notDrawn, impl.SoftLights[l] ? 1 : 0),
+      vsh_volume_cost_ms(&volume) };
+    w.candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, 0.0,
       this->RayTracedPass->EstimateFrameMilliseconds(pixels, 1.0, 1, impl.SoftLights[l]) };
-    int met = 0;
-    w.Pick = vsh_auto_pick_cheapest(w.Candidates, VSH_AUTO_GENERAL_COUNT, this->MaxError, &met);
-    anyVolume = anyVolume || w.Pick == VSH_AUTO_GENERAL_VOLUME;
-    anyRays = anyRays || w.Pick == VSH_AUTO_GENERAL_RAYTRACE;
+    lightOf.push_back(l);
     weighed.push_back(w);
+    volumes.push_back(volume);
+    unsupported.push_back(notDrawn);
   }
-  // The volume and ray-traced passes each own a screen mask whose lighting
-  // hook declares the same names: they cannot both hook one frame. When the
-  // lights want both, the volume lights choose again without volumes.
-  for (Weighed& w : weighed)
+  // Lights with a size were weighed by the penumbra target (ChooseSoft);
+  // what they took constrains these.
+  vsh_auto_plan_general(weighed.data(), static_cast<int>(weighed.size()), this->MaxError,
+    impl.VolumeSamples > 0, impl.RaySamples > 0);
+  for (size_t i = 0; i < weighed.size(); ++i)
   {
-    if (anyVolume && anyRays && w.Pick == VSH_AUTO_GENERAL_VOLUME)
-    {
-      w.Candidates[VSH_AUTO_GENERAL_VOLUME].available = 0;
-      int met = 0;
-      w.Pick = vsh_auto_pick_cheapest(w.Candidates, VSH_AUTO_GENERAL_COUNT, this->MaxError, &met);
-    }
-    this->ApplyGeneralPick(w.Light, w.Candidates, w.Volume, w.Unsupported, w.Pick);
+    this->ApplyGeneralPick(
+      lightOf[i], weighed[i].candidates, volumes[i], unsupported[i], weighed[i].pick);
   }
 }
 
