@@ -600,7 +600,7 @@ void vtkPlanarShadowPass::GatherCasters(
 {
   for (const vtkshadow::ShadowActor& actor : actors)
   {
-    if (!vtkshadow::HasFlag(actor, NO_CAST()))
+    if (vtkshadow::CastsAsSurface(actor, NO_CAST()))
     {
       frame.Casters.push_back(actor);
     }

@@ -247,7 +247,7 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
   // caster behind the camera still shadows the view.
   for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
   {
-    const bool casts = !vtkshadow::HasFlag(a, NO_CAST());
+    const bool casts = vtkshadow::CastsAsSurface(a, NO_CAST());
     vtkShadowEmbreeScene::Actor actor{ a.Actor, casts, {} };
     std::copy_n(a.Matrix, 16, actor.Matrix);
     frame.Actors.push_back(actor);

@@ -2,6 +2,8 @@
 // the actors that cast and receive (see the header).
 #include "vtkShadowActorFlags.h"
 
+#include "vtkProperty.h"
+
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkBoundingBox.h"
@@ -149,5 +151,12 @@ vtkInformation* FlagKeys(const ShadowActor& a, vtkInformationIntegerKey* key)
     }
   }
   return nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool CastsAsSurface(const ShadowActor& a, vtkInformationIntegerKey* noCast)
+{
+  vtkProperty* property = a.Actor->GetProperty();
+  return !HasFlag(a, noCast) && (!property || property->GetRepresentation() == VTK_SURFACE);
 }
 }

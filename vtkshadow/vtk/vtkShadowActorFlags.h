@@ -107,6 +107,13 @@ inline bool HasFlag(const ShadowActor& a, vtkInformationIntegerKey* key)
   vtkInformation* keys = FlagKeys(a, key);
   return keys && keys->Get(key) != 0;
 }
+
+// True when the shadow actor casts with its triangles: not marked with
+// `noCast` (vtkShadowPassBase::NO_CAST) and drawn as a surface. An actor
+// drawn as a wireframe or as points shows only lines or points a few pixels
+// wide: the solid shadow of its triangles would come from nothing on
+// screen, so it casts none (csm's maps hold the lines VTK rasterizes).
+bool CastsAsSurface(const ShadowActor& a, vtkInformationIntegerKey* noCast);
 }
 
 #endif

@@ -51,13 +51,13 @@ constexpr int MaxLights = vtkShadowScreenMask::MaxLights;
 // The renderer's actors that cast: those of vtkshadow::ShadowActors (from
 // the renderer's props, not the render state's frustum-culled ones: a
 // caster behind the camera still throws its shadow into the view) without
-// NO_CAST.
+// NO_CAST and drawn as surfaces (vtkshadow::CastsAsSurface).
 std::vector<vtkshadow::ShadowActor> CastingActors(vtkRenderer* renderer)
 {
   std::vector<vtkshadow::ShadowActor> actors;
   for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
   {
-    if (!vtkshadow::HasFlag(a, vtkShadowPassBase::NO_CAST()))
+    if (vtkshadow::CastsAsSurface(a, vtkShadowPassBase::NO_CAST()))
     {
       actors.push_back(a);
     }
@@ -817,14 +817,12 @@ int vtkShadowVolumePass::ClosedCasterLights(vtkProp* prop) const
 //------------------------------------------------------------------------------
 bool vtkShadowVolumePass::CastsExactly(vtkActor* actor)
 {
-  // Z-fail counts these right where z-pass would not, but lines and points
-  // leave no surface between them for the facing test and the bias, and a
-  // front-culled closed caster shows the inside its dark caps fill (against
-  // raytrace, a sphere over a floor: wireframe 4.4 % of the pixels off,
-  // points 1.7 %, front faces culled 17.6 %).
+  // A front-culled closed caster shows the inside its dark caps fill
+  // (against raytrace, a sphere over a floor: 17.6 % of the pixels off).
+  // Actors drawn as a wireframe or points cast nothing in any exact
+  // technique (vtkshadow::CastsAsSurface), so they are exact here too.
   vtkProperty* property = actor ? actor->GetProperty() : nullptr;
-  return property && property->GetRepresentation() == VTK_SURFACE &&
-    !property->GetFrontfaceCulling();
+  return property && !property->GetFrontfaceCulling();
 }
 
 //------------------------------------------------------------------------------

@@ -114,13 +114,13 @@ public:
   long long GetMemoryBytes() const override;
 
   /**
-   * Whether the volumes give this caster's exact shadows: it is drawn as a
-   * surface (not wireframe or points, whose surface the depth pre-pass does
-   * not hold between the lines) and without front-face culling (the dark
-   * caps of a closed caster assume its inside is never seen). Casters
-   * drawn otherwise still cast, inexactly; vtkAutoShadowPass counts them
-   * among the casters volumes cannot draw, so it never picks volume for
-   * them.
+   * Whether the volumes give this caster's exact shadows: it is drawn
+   * without front-face culling (the dark caps of a closed caster assume its
+   * inside is never seen). Such casters still cast, inexactly;
+   * vtkAutoShadowPass counts them among the casters volumes cannot draw, so
+   * it never picks volume for them. (Actors drawn as a wireframe or points
+   * cast nothing here, as in every exact technique:
+   * vtkshadow::CastsAsSurface.)
    */
   static bool CastsExactly(vtkActor* actor);
 
