@@ -16,8 +16,11 @@ A sphere over a floor, one directional scene light, frames at 240x160:
 - VTK's own shadow passes (vtkCameraPass > vtkSequencePass(vtkShadowMapBakerPass,
   vtkShadowMapPass), as vedo's add_shadows sets them) are replaced and
   GetPassMessage() says so;
-- a pass it cannot compose with (a bare vtkSequencePass) raises ValueError
-  naming it, and the renderer keeps that pass.
+- vedo's add_ambient_occlusion arrangement (SSAO inside a camera pass and
+  a sequence with dual depth peeling) is drawn through: occlusion and
+  shadow both drawn;
+- a pass that does not shade with VTK's mappers (vtkValuePass) raises
+  ValueError naming it, and the renderer keeps that pass.
 
 What it catches: a technique that replaces the renderer's pass instead of
 composing with it, so that csm under SSAO draws no occlusion, FXAA and
@@ -42,7 +45,9 @@ from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkLightsPass,  # noq
                                             vtkRenderPassCollection, vtkRenderStepsPass,
                                             vtkSequencePass, vtkShadowMapBakerPass,
                                             vtkShadowMapPass, vtkSSAOPass,
-                                            vtkTranslucentPass, vtkOverlayPass)
+                                            vtkTranslucentPass, vtkOverlayPass,
+                                            vtkDualDepthPeelingPass, vtkValuePass,
+                                            vtkVolumetricPass)
 
 W, H = 240, 160
 windows = []  # every window stays open until the end (renderers keep using them)
@@ -218,18 +223,60 @@ check(renderer.GetPass().GetClassName() == "vtkCascadedShadowMapPass"
       f"VTK's shadow passes are replaced and said so: {made.GetPassMessage()!r}")
 
 
-# A pass it cannot compose with: refused, naming it, nothing changed.
+# vedo's add_ambient_occlusion: SSAO inside a camera pass and a sequence
+# (lights, SSAO over a camera pass over the opaque pass, dual depth peeling,
+# overlays): drawn through, occlusion and shadow both drawn.
+def vedo_ssao(renderer):
+    opaque_camera = vtkCameraPass()
+    opaque_camera.SetDelegatePass(vtkOpaquePass())
+    ssao = vtkSSAOPass()
+    ssao.SetRadius(0.5)
+    ssao.SetKernelSize(64)
+    ssao.SetDelegatePass(opaque_camera)
+    peeling = vtkDualDepthPeelingPass()
+    peeling.SetTranslucentPass(vtkTranslucentPass())
+    peeling.SetVolumetricPass(vtkVolumetricPass())
+    passes = vtkRenderPassCollection()
+    for p in (vtkLightsPass(), ssao, peeling, vtkOverlayPass()):
+        passes.AddItem(p)
+    sequence = vtkSequencePass()
+    sequence.SetPasses(passes)
+    camera = vtkCameraPass()
+    camera.SetDelegatePass(sequence)
+    renderer.SetPass(camera)
+
+
+vedo_csm, renderer, made = render("csm", vedo_ssao)
+vedo_none, _, _ = render("none", vedo_ssao)
+check(renderer.GetPass().GetClassName() == "vtkCascadedShadowMapPass"
+      and renderer.GetPass().GetDelegatePass().GetClassName() == "vtkCameraPass"
+      and "drawn through" in made.GetPassMessage(),
+      f"vedo's SSAO arrangement is drawn through: {made.GetPassMessage()!r}")
+check(changed(vedo_csm, csm_plain) > 200,
+      f"... with its occlusion: {changed(vedo_csm, csm_plain)} px differ from csm alone (> 200)")
+check(changed(vedo_csm, vedo_none) > 0.7 * shadow_px,
+      f"... and the shadow: {changed(vedo_csm, vedo_none)} px differ from the arrangement "
+      f"without shadows (> 0.7 x {shadow_px})")
+
+
+# A pass that does not shade with VTK's mappers: refused, naming it,
+# nothing changed.
 window, renderer = scene()
+passes = vtkRenderPassCollection()
+passes.AddItem(vtkLightsPass())
+passes.AddItem(vtkValuePass())
 unknown = vtkSequencePass()
-unknown.SetPasses(vtkRenderPassCollection())
-renderer.SetPass(unknown)
+unknown.SetPasses(passes)
+camera = vtkCameraPass()
+camera.SetDelegatePass(unknown)
+renderer.SetPass(camera)
 try:
     vtkshadow.enable_shadows(renderer, technique="csm")
     raised = None
 except ValueError as error:
     raised = error
-check(raised is not None and "vtkSequencePass" in str(raised)
+check(raised is not None and "vtkValuePass" in str(raised)
       and "SetPass(None)" in str(raised),
-      f"an unknown pass: ValueError naming it and what to do: {raised}")
-check(renderer.GetPass() is unknown, "... and the renderer keeps its pass")
+      f"a value pass: ValueError naming it and what to do: {raised}")
+check(renderer.GetPass() is camera, "... and the renderer keeps its pass")
 finish()

@@ -77,6 +77,35 @@ bool IsSceneSteps(vtkRenderPass* pass)
       });
 }
 
+bool IsNotOpenGLShading(vtkRenderPass* pass)
+{
+  return pass->IsA("vtkOSPRayPass") || pass->IsA("vtkValuePass");
+}
+
+// Whether `test` holds for `pass` or any pass under it (camera and image
+// pass delegates, sequence members).
+template <typename Test>
+bool AnyPass(vtkRenderPass* pass, Test test)
+{
+  if (!pass)
+  {
+    return false;
+  }
+  if (test(pass))
+  {
+    return true;
+  }
+  if (auto* camera = vtkCameraPass::SafeDownCast(pass))
+  {
+    return AnyPass(camera->GetDelegatePass(), test);
+  }
+  if (auto* image = vtkImageProcessingPass::SafeDownCast(pass))
+  {
+    return AnyPass(image->GetDelegatePass(), test);
+  }
+  return AnyStep(SequencedSteps(pass, true), [&](vtkRenderPass* p) { return AnyPass(p, test); });
+}
+
 // "vtkCameraPass > vtkSequencePass(vtkLightsPass, vtkOpaquePass)": what an
 // unknown pass is made of, for the refusal.
 std::string Describe(vtkRenderPass* pass)
@@ -174,12 +203,22 @@ vtkshadow::PassComposition vtkshadow::ComposeShadowPass(
       "replaced VTK's own shadow passes (" + Describe(existing) + ") that were on the renderer";
     return result;
   }
-  result.Message = "the renderer already has a render pass, " + Describe(existing) +
-    ", that shadows cannot be composed with (they compose with VTK's image passes such as "
-    "vtkSSAOPass, vtkToneMappingPass and vtkOpenGLFXAAPass, with a vtkRenderStepsPass or a "
-    "vtkCameraPass over VTK's standard steps, and with the renderer's UseFXAA and "
-    "UseDepthPeeling); remove it first with "
-    "renderer.SetPass(None)";
+  // Passes that do not draw the scene with VTK's OpenGL mappers (OSPRay's
+  // ray tracer; the value pass, which replaces the shading the shadows
+  // modulate) have nothing for the shadows' shader hooks to act on.
+  if (AnyPass(existing, IsNotOpenGLShading))
+  {
+    result.Message = "the renderer already has a render pass, " + Describe(existing) +
+      ", that does not shade with VTK's OpenGL mappers, so shadows cannot be drawn through "
+      "it; remove it first with renderer.SetPass(None)";
+    return result;
+  }
+  // Any other arrangement of passes (vedo's SSAO inside a camera pass, an
+  // application's own sequence) is the scene the shadows are drawn through:
+  // the technique's shader hooks reach every mapper it draws.
+  result.Message = DrawThrough(ours, existing);
+  result.Ok = true;
+  result.Top = ours;
   return result;
 }
 

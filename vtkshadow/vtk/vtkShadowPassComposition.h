@@ -14,7 +14,12 @@
  * - VTK's own shadow passes (vtkShadowMapPass / vtkShadowMapBakerPass, alone
  *   or in a vtkCameraPass + vtkSequencePass as VTK's examples and vedo set
  *   them): replaced by ours, and said so.
- * - Anything else: refused, naming the passes found; nothing changes.
+ * - Any other arrangement (vedo's SSAO inside a camera pass and a sequence,
+ *   an application's own sequence): the technique draws the scene through
+ *   it, its shader hooks reaching every mapper the arrangement draws.
+ * - Passes that do not shade with VTK's OpenGL mappers (vtkOSPRayPass,
+ *   vtkValuePass), anywhere in the arrangement: refused, naming the passes
+ *   found; nothing changes.
  */
 #ifndef vtkShadowPassComposition_h
 #define vtkShadowPassComposition_h
