@@ -23,7 +23,14 @@ Checks per example and technique (docs/corpus.md says why):
   vanish        the foreground without shadows (technique none), eroded by
                 2 px, lies within the technique's foreground but for at
                 most VANISH_PX pixels;
-  bound         differing(T, raytrace) <= the technique's bound;
+  bound         differing(T, raytrace) <= the technique's bound (percent
+                of the frame);
+  shadow        where the example has a shadow (shadow px: pixels differing
+                between none and raytrace, at least MIN_SHADOW_PX), the
+                pixels T differs from raytrace are at most the technique's
+                shadow share of them plus SHADOW_ALLOWANCE_PX: a lost shadow
+                differs on all of them, so it fails however small the
+                shadow is in the frame;
   none-lighting where nothing casts (auto chooses none for every light, or
                 raytrace's frame equals none's), differing(T, none) <=
                 NONE_BOUND.
@@ -51,7 +58,9 @@ NOTHING_CASTS_PCT = 0.05
 # vtk is VTK's own vtkShadowMapPass: its lighting is not VTK's default
 # lighting even where nothing casts, so it is held to crash/error/vanish only.
 NO_LIGHTING_CHECK = {"vtk"}
-CHECKS = ["crash", "error", "vanish", "bound", "none-lighting"]
+MIN_SHADOW_PX = 50
+SHADOW_ALLOWANCE_PX = 16
+CHECKS = ["crash", "error", "vanish", "bound", "shadow", "none-lighting"]
 
 
 def load_corpus(path=None):
@@ -164,11 +173,26 @@ def bound_for(entry, technique, defaults):
     return bounds.get(technique)
 
 
-def judge(entry, runs, frames, defaults):
+def shadow_check(entry, technique, frame, ref, shadow_px, shares):
+    """(ok, detail) of the shadow check, or None where it does not apply."""
+    share = bound_for(entry, technique, shares)
+    if share is None or shadow_px < MIN_SHADOW_PX or frame.shape != ref.shape:
+        return None
+    wrong = int(differing_mask(frame, ref).sum())
+    limit = share * shadow_px + SHADOW_ALLOWANCE_PX
+    return (wrong <= limit, f"{wrong} px <= {share} x {shadow_px} shadow px + "
+            f"{SHADOW_ALLOWANCE_PX}")
+
+
+def judge(entry, runs, frames, defaults, shares=None):
     """Fill each run's checks {check: (ok, detail)}."""
     casts_none, why = nothing_casts(runs, frames)
     none_frame = frames.get("none")
     ref = frames.get("raytrace")
+    shadow_px = 0
+    if ref is not None and none_frame is not None and \
+            ref["rgb"].shape == none_frame["rgb"].shape:
+        shadow_px = int(differing_mask(none_frame["rgb"], ref["rgb"]).sum())
     for t, run in runs.items():
         checks = {}
         ok_run = run.get("status") == "ok" and t in frames
@@ -189,6 +213,11 @@ def judge(entry, runs, frames, defaults):
             bound = bound_for(entry, t, defaults)
             if bound is not None:
                 checks["bound"] = (pct <= bound, f"{pct:.2f}% <= {bound}%")
+            shadow = shadow_check(entry, t, frames[t]["rgb"], ref["rgb"], shadow_px,
+                                  shares or {})
+            if shadow is not None:
+                checks["shadow"] = shadow
+            run["shadow_px"] = shadow_px
         if ok_run and none_frame is not None:
             pct_none = differing_pct(frames[t]["rgb"], none_frame["rgb"])
             run["diff_none_pct"] = round(pct_none, 3)
@@ -253,7 +282,8 @@ def run_example(corpus, entry, techniques, args, progress):
         if frame is not None:
             frames[t] = frame
         progress(name, t, run)
-    casts_none, why = judge(entry, runs, frames, corpus["bounds"])
+    casts_none, why = judge(entry, runs, frames, corpus["bounds"],
+                            corpus.get("shadow_shares"))
     return {"name": name, "path": entry["path"], "nothing_casts": casts_none,
             "nothing_casts_why": why, "runs": runs}
 
@@ -303,7 +333,9 @@ def cmd_run(args):
         known_failed += k
     report = {"command": " ".join(sys.argv), "python": args.python,
               "seconds": round(time.time() - t0, 1), "techniques": techniques,
-              "bounds": corpus["bounds"], "diff_level": DIFF_LEVEL, "vanish_px": VANISH_PX,
+              "bounds": corpus["bounds"], "shadow_shares": corpus.get("shadow_shares"),
+              "min_shadow_px": MIN_SHADOW_PX, "shadow_allowance_px": SHADOW_ALLOWANCE_PX,
+              "diff_level": DIFF_LEVEL, "vanish_px": VANISH_PX,
               "none_bound": NONE_BOUND, "results": results, "failures": failed,
               "known_failures": known_failed}
     with open(os.path.join(args.out, "corpus.json"), "w") as f:
@@ -347,12 +379,14 @@ def cmd_rejudge(args):
             frame = load_frame(os.path.join(args.out, result["name"], t))
             if frame is not None and result["runs"][t].get("status") == "ok":
                 frames[t] = frame
-        casts_none, why = judge(entry, result["runs"], frames, corpus["bounds"])
+        casts_none, why = judge(entry, result["runs"], frames, corpus["bounds"],
+                                corpus.get("shadow_shares"))
         result["nothing_casts"], result["nothing_casts_why"] = casts_none, why
         f, k = failures_of(entry, result, corpus.get("known_failures", []))
         report["failures"] += f
         report["known_failures"] += k
     report["bounds"] = corpus["bounds"]
+    report["shadow_shares"] = corpus.get("shadow_shares")
     with open(os.path.join(args.out, "corpus.json"), "w") as f:
         json.dump(report, f, indent=1)
     if args.markdown:

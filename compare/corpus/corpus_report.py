@@ -39,12 +39,13 @@ def summary_lines(report, corpus):
 
 def table_lines(report):
     techniques = report["techniques"]
-    lines = ["| example | casts? | " + " | ".join(techniques) + " |",
-             "| --- | --- | " + " | ".join("---" for _ in techniques) + " |"]
+    lines = ["| example | casts? | shadow px | " + " | ".join(techniques) + " |",
+             "| --- | --- | --- | " + " | ".join("---" for _ in techniques) + " |"]
     for res in report["results"]:
         casts = "no" if res["nothing_casts"] else "yes"
+        shadow = max((r.get("shadow_px", 0) for r in res["runs"].values()), default=0)
         cells = [cell(res["runs"][t]) if t in res["runs"] else "-" for t in techniques]
-        lines.append(f"| {res['name']} | {casts} | " + " | ".join(cells) + " |")
+        lines.append(f"| {res['name']} | {casts} | {shadow} | " + " | ".join(cells) + " |")
     return lines
 
 
@@ -70,7 +71,9 @@ def write_markdown(report, corpus, path):
             f"{len(report['results'])} examples x {len(report['techniques'])} techniques).", "",
             "Each cell: % of pixels differing from raytrace, xR = frame time / none's; "
             "a failed check is named in bold. casts? = no where nothing casts "
-            "(the none-lighting check applies).", ""]
+            "(the none-lighting check applies); shadow px = pixels where none differs "
+            "from raytrace (the shadow check applies from "
+            f"{report.get('min_shadow_px', 50)} px on).", ""]
     out += summary_lines(report, corpus) + [""] + table_lines(report)
     out += ["", "## Failures", ""] + failure_lines(report)
     out += ["", "## Excluded programs", "",
