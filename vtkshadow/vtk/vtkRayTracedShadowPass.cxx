@@ -438,7 +438,7 @@ const vtkshadow::Settings& vtkRayTracedShadowPass::SettingsTable()
         &P::SetLightRadius, &P::GetLightRadius,
         "radius of point and spot lights that have none of their own"),
       Row("light_angle", vtkshadow::OpenBelow(0, 180), &P::SetLightAngle, &P::GetLightAngle,
-        "angular diameter (degrees) of directional lights that have none of their own"),
+        "angular diameter (degrees) of directional lights without one (traced as at most 90)"),
     });
   return table;
 }
