@@ -45,7 +45,7 @@ void PrintTechniques(std::ostream& out)
 const char* RenderUsage()
 {
   return "usage: vtkshadow-render SCENE --technique T --image OUT.png\n"
-         "       vtkshadow-render --list-techniques\n"
+         "       vtkshadow-render --list-techniques | --list-settings\n"
          "         [--visibility V.png] [--mask M.png] [--light K] [--stats S.json]\n"
          "         [--frames N] [--rounds R] [--warmup W] [--profile-frames P]\n"
          "         [--time-also SPEC]...\n"
@@ -91,6 +91,8 @@ const char* RenderUsage()
          "  --image-light K      colour image with light K only (default every light)\n"
          "  --quiet              no progress output\n"
          "  --list-techniques    print each technique with its description and exit\n"
+         "  --list-settings      print each technique's settings (key, range, integer,\n"
+         "                       default, doc; tab-separated) and exit\n"
          "Exit status: 0 success, 1 rendering failure, 2 bad input, 3 timing too\n"
          "noisy with --fail-if-noisy (all outputs written).\n";
 }
@@ -476,6 +478,11 @@ int ParseRenderOptions(int argc, char* argv[], RenderOptions& options, std::stri
     if (arg == "--list-techniques")
     {
       PrintTechniques(std::cout);
+      return -1;
+    }
+    if (arg == "--list-settings")
+    {
+      std::cout << vtkShadowTechnique::GetSettingsListing();
       return -1;
     }
     if (TakesValue(arg))

@@ -246,3 +246,17 @@ add_test(NAME mesh.read_fuzz
 set_tests_properties(mesh.read_fuzz PROPERTIES LABELS "unit" TIMEOUT 900
   ENVIRONMENT VSH_FUZZ_ITERATIONS=1000)
 
+
+# The settings tables (vtkShadowSettings.h): what --list-settings prints is
+# what SetOption takes (ends, just outside, NaN, integers; no unlisted key
+# taken), the docs' tables are the listing (scripts/settings-table.py), and
+# the ParaView view's properties use their settings' ranges and defaults.
+add_test(NAME cli.settings
+  COMMAND ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/cli/test_settings.py --bin ${VTKSHADOW_BIN})
+add_test(NAME docs.settings_table
+  COMMAND ${VTKSHADOW_PY} ${PROJECT_SOURCE_DIR}/scripts/settings-table.py --check
+          ${VTKSHADOW_BIN}/vtkshadow-render ${PROJECT_SOURCE_DIR}/docs/techniques.md)
+add_test(NAME paraview.settings
+  COMMAND ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/paraview/test_pv_settings.py
+          --bin ${VTKSHADOW_BIN} --xml ${PROJECT_SOURCE_DIR}/paraview/Views/RenderViewWithShadows.xml)
+set_tests_properties(cli.settings docs.settings_table paraview.settings PROPERTIES LABELS "unit")

@@ -12,6 +12,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShadowPassBase.h"
+#include "vtkShadowSettings.h"
 #include "vtkShadowTechniqueRegistry.h"
 #include "vtkStringArray.h"
 
@@ -72,11 +73,27 @@ void vtkPVRenderViewWithShadows::SetShadowTechnique(const char* name)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// "" when `value` is in the range of `technique`'s setting `key`, else why
+// not: the ranges are the settings tables' (vtkShadowSettings.h), written
+// nowhere else; the XML's domains are checked against them
+// (tests/paraview/test_pv_settings.py).
+std::string OutOfRange(const char* technique, const char* key, double value)
+{
+  const vtkshadow::Setting* row = vtkshadow::Settings::ForTechnique(technique)->Find(key);
+  return row->Accepts(value) ? std::string()
+                             : vtkshadow::FormatNumber(value) + " is outside " + row->RangeText();
+}
+}
+
+//------------------------------------------------------------------------------
 void vtkPVRenderViewWithShadows::SetShadowMaxError(double percent)
 {
-  if (!(percent >= 0.0 && percent <= 100.0))
+  const std::string bad = OutOfRange("auto", "max_error", percent);
+  if (!bad.empty())
   {
-    vtkErrorMacro("ShadowMaxError: " << percent << " is outside [0, 100]");
+    vtkErrorMacro("ShadowMaxError: " << bad);
     return;
   }
   this->MaxError = percent;
@@ -87,9 +104,10 @@ void vtkPVRenderViewWithShadows::SetShadowMaxError(double percent)
 //------------------------------------------------------------------------------
 void vtkPVRenderViewWithShadows::SetShadowCascades(int cascades)
 {
-  if (cascades < 0 || cascades > 8)
+  const std::string bad = OutOfRange("csm", "cascades", cascades);
+  if (!bad.empty())
   {
-    vtkErrorMacro("ShadowCascades: " << cascades << " is outside [0, 8]");
+    vtkErrorMacro("ShadowCascades: " << bad);
     return;
   }
   this->Cascades = cascades;
@@ -100,9 +118,10 @@ void vtkPVRenderViewWithShadows::SetShadowCascades(int cascades)
 //------------------------------------------------------------------------------
 void vtkPVRenderViewWithShadows::SetShadowMapResolution(int texels)
 {
-  if (texels < 16 || texels > 16384)
+  const std::string bad = OutOfRange("csm", "map_resolution", texels);
+  if (!bad.empty())
   {
-    vtkErrorMacro("ShadowMapResolution: " << texels << " is outside [16, 16384]");
+    vtkErrorMacro("ShadowMapResolution: " << bad);
     return;
   }
   this->MapResolution = texels;
@@ -113,9 +132,10 @@ void vtkPVRenderViewWithShadows::SetShadowMapResolution(int texels)
 //------------------------------------------------------------------------------
 void vtkPVRenderViewWithShadows::SetShadowFilter(int filter)
 {
-  if (filter < 0 || filter > 2)
+  const std::string bad = OutOfRange("csm", "filter", filter);
+  if (!bad.empty())
   {
-    vtkErrorMacro("ShadowFilter: " << filter << " is not 0 (hardware 2x2), 1 (PCF) or 2 (Poisson)");
+    vtkErrorMacro("ShadowFilter: " << bad);
     return;
   }
   this->Filter = filter;

@@ -1,4 +1,5 @@
 #include "vtkAutoShadowPass.h"
+#include "vtkShadowSettings.h"
 #include "vtkShadowStageProfile.h"
 
 #include "vtkCamera.h"
@@ -1094,9 +1095,6 @@ void vtkAutoShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 void vtkAutoShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "MaxError: " << this->MaxError << "\n";
-  os << indent << "MaxTexelPixels: " << this->MaxTexelPixels << "\n";
-  os << indent << "PenumbraTarget: " << this->PenumbraTarget << "\n";
   os << indent << "UsedTexelTarget: " << this->UsedTexelTarget << "\n";
   os << indent << "UsedStretch: " << this->UsedStretch << "\n";
   os << indent << "UsedEdgeLength: " << this->UsedEdgeLength << "\n";
@@ -1105,38 +1103,123 @@ void vtkAutoShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAutoShadowPass::SetOption(const char* key, double value)
+// The settings (vtkShadowSettings.h): auto's own, the base's residual_light
+// (SetResidualLight hands it to every candidate), then every other key of
+// its candidates.
+namespace
 {
-  if (!key || !std::isfinite(value))
+using P = vtkAutoShadowPass;
+
+// The candidates, in the order a handed-on setting is offered to them.
+struct Candidate
+{
+  const char* Name;
+  const vtkshadow::Settings& (*Table)();
+  vtkShadowPassBase* (*Pass)(P&);
+};
+const Candidate Candidates[] = {
+  { "csm", &vtkCascadedShadowMapPass::SettingsTable,
+    [](P& a) -> vtkShadowPassBase* { return a.GetCascadedPass(); } },
+  { "planar", &vtkPlanarShadowPass::SettingsTable,
+    [](P& a) -> vtkShadowPassBase* { return a.GetPlanarPass(); } },
+  { "raytrace", &vtkRayTracedShadowPass::SettingsTable,
+    [](P& a) -> vtkShadowPassBase* { return a.GetRayTracedPass(); } },
+  { "volume", &vtkShadowVolumePass::SettingsTable,
+    [](P& a) -> vtkShadowPassBase* { return a.GetVolumePass(); } },
+};
+
+// A candidate's key, handed on as before the tables: to the first candidate
+// that takes the value (soft_samples 100 reaches planar, 10 only csm).
+vtkshadow::Setting HandedOn(const vtkshadow::Setting& row, const char* candidate)
+{
+  const std::string key = row.Key;
+  auto set = [key](vtkShadowPassBase& p, double v)
   {
-    return false;
-  }
-  const std::string k = key;
-  if (k == "max_error" && value >= 0.0 && value <= 100.0)
+    for (const Candidate& c : Candidates)
+    {
+      if (c.Pass(static_cast<P&>(p))->SetOption(key.c_str(), v))
+      {
+        return;
+      }
+    }
+  };
+  auto get = [key](vtkShadowPassBase& p)
   {
-    this->SetMaxError(value);
-    return true;
-  }
-  if (k == "max_texel_px" && value >= 0.0 && value <= 1e6)
+    for (const Candidate& c : Candidates)
+    {
+      vtkShadowPassBase* pass = c.Pass(static_cast<P&>(p));
+      const vtkshadow::Setting* found = pass->GetSettings().Find(key.c_str());
+      if (found && found->Get)
+      {
+        return found->Get(*pass);
+      }
+    }
+    return 0.0;
+  };
+  return { key, row.Range, std::string("to ") + candidate + ": " + row.Doc, set, get };
+}
+
+// A second candidate with the key: the listed range covers both (the
+// candidates' ranges of a shared key overlap: 1..64, 1..1024, 1..255), the
+// doc names them in the order they are offered the value.
+void Widen(vtkshadow::Setting& had, const vtkshadow::Setting& row, const char* candidate)
+{
+  vtkshadow::SettingRange& r = had.Range;
+  if (row.Range.Min < r.Min || (row.Range.Min == r.Min && !row.Range.MinOpen))
   {
-    this->SetMaxTexelPixels(value);
-    return true;
+    r.Min = row.Range.Min;
+    r.MinOpen = row.Range.MinOpen;
   }
-  if (k == "penumbra_target" && value > 0.0 && value <= 1.0)
+  if (row.Range.Max > r.Max || (row.Range.Max == r.Max && !row.Range.MaxOpen))
   {
-    this->SetPenumbraTarget(value);
-    return true;
+    r.Max = row.Range.Max;
+    r.MaxOpen = row.Range.MaxOpen;
   }
-  if (k == "max_error" || k == "max_texel_px" || k == "penumbra_target")
+  r.Integer = r.Integer && row.Range.Integer;
+  if (had.Doc.rfind("to the first of ", 0) != 0)
   {
-    return false;
+    had.Doc.insert(3, "the first of ");
   }
-  if (k == "residual_light")
+  had.Doc.insert(had.Doc.find(':'), std::string(", ") + candidate);
+}
+
+std::vector<vtkshadow::Setting> AutoRows()
+{
+  using vtkshadow::Row;
+  std::vector<vtkshadow::Setting> rows = {
+    Row("max_error", vtkshadow::Closed(0, 100), &P::SetMaxError, &P::GetMaxError,
+      "error target: % of visible pixels whose light visibility may be wrong"),
+    Row("max_texel_px", vtkshadow::Closed(0, 1e6), &P::SetMaxTexelPixels, &P::GetMaxTexelPixels,
+      "map candidates: at most this many pixels per texel (0 = off)"),
+    Row("penumbra_target", vtkshadow::OpenAbove(0, 1), &P::SetPenumbraTarget, &P::GetPenumbraTarget,
+      "pen_mae target for lights with a size (docs/auto.md)"),
+    *vtkShadowPassBase::SettingsTable().Find("residual_light"),
+  };
+  const size_t own = rows.size();
+  for (const Candidate& c : Candidates)
   {
-    return this->Superclass::SetOption(key, value); // SetResidualLight: all passes
+    for (const vtkshadow::Setting& row : c.Table().GetRows())
+    {
+      auto same = [&](const vtkshadow::Setting& s) { return s.Key == row.Key; };
+      auto had = std::find_if(rows.begin(), rows.end(), same);
+      if (had == rows.end())
+      {
+        rows.push_back(HandedOn(row, c.Name));
+      }
+      else if (had - rows.begin() >= static_cast<std::ptrdiff_t>(own))
+      {
+        Widen(*had, row, c.Name);
+      }
+    }
   }
-  return this->CascadedPass->SetOption(key, value) || this->PlanarPass->SetOption(key, value) ||
-    this->RayTracedPass->SetOption(key, value) || this->VolumePass->SetOption(key, value);
+  return rows;
+}
+}
+
+const vtkshadow::Settings& vtkAutoShadowPass::SettingsTable()
+{
+  static const vtkshadow::Settings table(nullptr, AutoRows());
+  return table;
 }
 
 //------------------------------------------------------------------------------

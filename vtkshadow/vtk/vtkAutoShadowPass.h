@@ -163,12 +163,10 @@ public:
   long long GetWorldsMemoryBytes() const override;
 
   /**
-   * max_error, max_texel_px, residual_light (all passes); any other key goes
-   * to the cascaded pass (its settings, e.g. filter, cascades,
-   * map_resolution) or else the planar pass (plane_tolerance,
-   * detect_receivers).
+   * The settings (SetOption keys, ranges, docs) of this pass: its table in
+   * the .cxx, listed by `vtkshadow-render --list-settings`.
    */
-  bool SetOption(const char* key, double value) override;
+  vtkShadowSettingsMacro();
 
   /**
    * choice, reason, texel_target_px, texel_stretch, edge_length_px and

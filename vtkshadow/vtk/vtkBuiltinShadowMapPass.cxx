@@ -1,4 +1,5 @@
 #include "vtkBuiltinShadowMapPass.h"
+#include "vtkShadowSettings.h"
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
@@ -178,18 +179,14 @@ void vtkBuiltinShadowMapPass::SetMapResolution(int resolution)
 }
 
 //------------------------------------------------------------------------------
-bool vtkBuiltinShadowMapPass::SetOption(const char* key, double value)
+// The settings, once (vtkShadowSettings.h).
+const vtkshadow::Settings& vtkBuiltinShadowMapPass::SettingsTable()
 {
-  if (key && std::strcmp(key, "map_resolution") == 0)
-  {
-    if (!(value >= 16 && value <= 16384 && value == std::floor(value)))
-    {
-      return false;
-    }
-    this->SetMapResolution(static_cast<int>(value));
-    return true;
-  }
-  return this->Superclass::SetOption(key, value);
+  using P = vtkBuiltinShadowMapPass;
+  static const vtkshadow::Settings table(&vtkShadowPassBase::SettingsTable(),
+    { vtkshadow::Row("map_resolution", vtkshadow::MapResolutionRange(), &P::SetMapResolution,
+      &P::GetMapResolution, "edge of VTK's shadow map in texels") });
+  return table;
 }
 
 //------------------------------------------------------------------------------
@@ -227,6 +224,5 @@ long long vtkBuiltinShadowMapPass::GetMemoryBytes() const
 //------------------------------------------------------------------------------
 void vtkBuiltinShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
 {
-  this->Superclass::PrintSelf(os, indent);
-  os << indent << "MapResolution: " << this->MapResolution << "\n";
+  this->Superclass::PrintSelf(os, indent); // map_resolution: a setting, printed there
 }

@@ -41,9 +41,10 @@ public:
   long long GetMemoryBytes() const override;
 
   /**
-   * map_resolution (16..16384), and the base's options.
+   * The settings (SetOption keys, ranges, docs) of this pass: its table in
+   * the .cxx, listed by `vtkshadow-render --list-settings`.
    */
-  bool SetOption(const char* key, double value) override;
+  vtkShadowSettingsMacro();
 
   void Render(const vtkRenderState* s) override;
 

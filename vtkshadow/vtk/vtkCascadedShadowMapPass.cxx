@@ -1,4 +1,5 @@
 #include "vtkCascadedShadowMapPass.h"
+#include "vtkShadowSettings.h"
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
@@ -1071,33 +1072,8 @@ void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
 void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "CascadeCount: " << this->CascadeCount << "\n";
-  os << indent << "RatioPerCascade: " << this->RatioPerCascade << "\n";
-  os << indent << "SplitScheme: " << this->SplitScheme << "\n";
-  os << indent << "SplitLambda: " << this->SplitLambda << "\n";
-  os << indent << "Stable: " << this->Stable << "\n";
-  os << indent << "MapResolution: " << this->MapResolution << "\n";
-  os << indent << "MaxTexelPixels: " << this->MaxTexelPixels << "\n";
-  os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
-  os << indent << "BiasScale: " << this->BiasScale << "\n";
-  os << indent << "Filter: " << this->Filter << "\n";
-  os << indent << "PCFSize: " << this->PCFSize << "\n";
-  os << indent << "PoissonRadius: " << this->PoissonRadius << "\n";
-  os << indent << "BlendBand: " << this->BlendBand << "\n";
-  os << indent << "MaxShadowDistance: " << this->MaxShadowDistance << "\n";
-  os << indent << "FadeFraction: " << this->FadeFraction << "\n";
-  os << indent << "DebugCascades: " << this->DebugCascades << "\n";
-  os << indent << "Resolve: " << this->Resolve << "\n";
-  os << indent << "TapTexelPixels: " << this->TapTexelPixels << "\n";
-  os << indent << "TileCull: " << this->TileCull << "\n";
-  os << indent << "Soft: " << this->Soft << "\n";
-  os << indent << "PCSSBlockerTaps: " << this->PCSSBlockerTaps << "\n";
-  os << indent << "PCSSFilterTaps: " << this->PCSSFilterTaps << "\n";
-  os << indent << "PCSSMaxTexels: " << this->PCSSMaxTexels << "\n";
   os << indent << "UsedPCSS: " << this->UsedPCSS << "\n";
-  os << indent << "SoftSamples: " << this->SoftSamples << "\n";
   os << indent << "UsedSampled: " << this->UsedSampled << "\n";
-  os << indent << "Adaptive: " << this->Adaptive << "\n";
   os << indent << "UsedScreenResolve: " << this->UsedScreenResolve << "\n";
   os << indent << "UsedResolution: " << this->UsedResolution << "\n";
   os << indent << "NumberOfMapsRendered: " << this->NumberOfMapsRendered << "\n";
@@ -1106,139 +1082,111 @@ void vtkCascadedShadowMapPass::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-// The settings of lights with a size (SetOption's soft_* and pcss_* keys,
-// adaptive): true when `k` is one of them and `v` in its range.
-bool vtkCascadedShadowMapPass::SetSoftOption(const std::string& k, double v)
+// The settings, once (vtkShadowSettings.h): SetOption, PrintSelf, the
+// listing and docs/techniques.md all read these rows.
+namespace
 {
-  auto integral = [&](double lo, double hi) { return v >= lo && v <= hi && v == std::floor(v); };
-  if (k == "soft" && integral(SOFT_OFF, SOFT_SAMPLED))
+using P = vtkCascadedShadowMapPass;
+using vtkshadow::Closed;
+using vtkshadow::Flag;
+using vtkshadow::Integers;
+using vtkshadow::Row;
+
+std::vector<vtkshadow::Setting> CascadeRows()
+{
+  std::vector<vtkshadow::Setting> rows = {
+    Row("map_resolution", vtkshadow::MapResolutionRange(), &P::SetMapResolution,
+      &P::GetMapResolution, "edge of each shadow map in texels"),
+    Row("cascades", Integers(0, 8), &P::SetCascadeCount, &P::GetCascadeCount,
+      "cascades per directional light; 0 picks 1..8 from the visible depth ratio"),
+    Row("ratio_per_cascade", Closed(1.5, 1e6), &P::SetRatioPerCascade, &P::GetRatioPerCascade,
+      "far/near depth ratio one cascade covers when cascades = 0"),
+    Row("split", Integers(P::UNIFORM, P::EXPLICIT), &P::SetSplitScheme, &P::GetSplitScheme,
+      "split scheme: 0 uniform, 1 logarithmic, 2 practical, 3 explicit fractions"),
+    Row("lambda", Closed(0, 1), &P::SetSplitLambda, &P::GetSplitLambda,
+      "practical split: weight of the logarithmic scheme"),
+  };
+  // split_fraction_0 .. _6: the split between cascade i and i + 1 as a
+  // fraction of the visible depth range (split = 3).
+  for (int i = 0; i < 7; ++i)
   {
-    this->SetSoft(static_cast<int>(v));
+    rows.push_back({ "split_fraction_" + std::to_string(i), vtkshadow::Open(0, 1),
+      "split = 3: split after cascade " + std::to_string(i) +
+        " as a fraction of the depth range (unset: 0, the practical split)",
+      [i](vtkShadowPassBase& p, double v) { static_cast<P&>(p).SetSplitFraction(i, v); },
+      [i](vtkShadowPassBase& p) { return static_cast<P&>(p).GetSplitFraction(i); } });
   }
-  else if (k == "soft_samples" && integral(1, 64))
-  {
-    this->SetSoftSamples(static_cast<int>(v));
-  }
-  else if (k == "adaptive" && integral(0, 1))
-  {
-    this->SetAdaptive(v != 0);
-  }
-  else if (k == "pcss_blocker_taps" && integral(1, 64))
-  {
-    this->SetPCSSBlockerTaps(static_cast<int>(v));
-  }
-  else if (k == "pcss_filter_taps" && integral(1, 64))
-  {
-    this->SetPCSSFilterTaps(static_cast<int>(v));
-  }
-  else if (k == "pcss_max_texels" && v >= 1 && v <= 256)
-  {
-    this->SetPCSSMaxTexels(v);
-  }
-  else
-  {
-    return false;
-  }
-  return true;
+  std::vector<vtkshadow::Setting> more = {
+    Row("stable", Flag(), &P::SetStable, &P::GetStable,
+      "rotation-invariant cascade size and texel snapping (no shimmer)"),
+    Row("max_texel_px", Closed(0, 1e6), &P::SetMaxTexelPixels, &P::GetMaxTexelPixels,
+      "error target: at most this many pixels per texel (0 = off)"),
+    Row("memory_budget", Closed(1 << 16, 1e12), &P::SetMemoryBudget, &P::GetMemoryBudget,
+      "bytes the error target may spend on maps"),
+    Row("max_distance", Closed(0, 1e300), &P::SetMaxShadowDistance, &P::GetMaxShadowDistance,
+      "shadows end at this view depth (0 = the visible receivers' far end)"),
+    Row("fade", Closed(0, 1), &P::SetFadeFraction, &P::GetFadeFraction,
+      "fraction of the shadowed depth range the shadows fade out over"),
+    Row("debug_cascades", Flag(), &P::SetDebugCascades, &P::GetDebugCascades,
+      "tint each cascade with its own colour"),
+  };
+  rows.insert(rows.end(), more.begin(), more.end());
+  return rows;
 }
 
-//------------------------------------------------------------------------------
-bool vtkCascadedShadowMapPass::SetOption(const char* key, double v)
+std::vector<vtkshadow::Setting> LookupRows()
 {
-  if (!key || !std::isfinite(v))
+  return {
+    Row("bias_scale", Closed(0, 100), &P::SetBiasScale, &P::GetBiasScale,
+      "scale of the automatic slope and normal offset bias"),
+    Row("filter", Integers(P::HARDWARE_2X2, P::POISSON), &P::SetFilter, &P::GetFilter,
+      "edge filter: 0 hardware 2x2, 1 PCF, 2 Poisson disc"),
+    Row("pcf_size", Integers(1, 9), &P::SetPCFSize, &P::GetPCFSize, "PCF kernel edge in texels"),
+    Row("poisson_radius", Closed(0, 16), &P::SetPoissonRadius, &P::GetPoissonRadius,
+      "Poisson disc radius in texels"),
+    Row("blend_band", Closed(0, 0.5), &P::SetBlendBand, &P::GetBlendBand,
+      "blend between cascades over this fraction of each (0 = hard switch)"),
+    Row("resolve", Integers(P::FORWARD, P::CHOOSE), &P::SetResolve, &P::GetResolve,
+      "where lookups run: 0 forward, 1 screen (after a depth pre-pass), 2 choose"),
+    Row("tap_texel_px", Closed(0, 1e6), &P::SetTapTexelPixels, &P::GetTapTexelPixels,
+      "PCF and Poisson taps only where a texel covers at most this many pixels"),
+    Row("tile_cull", Flag(), &P::SetTileCull, &P::GetTileCull,
+      "screen resolve: decide per 16x16 tile which lookups it needs"),
+  };
+}
+
+// Lights with a size (docs/soft-shadows.md).
+std::vector<vtkshadow::Setting> SoftRows()
+{
+  return {
+    Row("soft", Integers(P::SOFT_OFF, P::SOFT_SAMPLED), &P::SetSoft, &P::GetSoft,
+      "lights with a size: 0 hard, 1 PCSS, 2 sampled maps"),
+    Row("soft_samples", Integers(1, 64), &P::SetSoftSamples, &P::GetSoftSamples,
+      "soft = 2: maps (points on the light) per map of a light with a size"),
+    Row("adaptive", Flag(), &P::SetAdaptive, &P::GetAdaptive,
+      "soft = 2, soft_samples > 8: all samples only where the first 8 disagree"),
+    Row("pcss_blocker_taps", Integers(1, 64), &P::SetPCSSBlockerTaps, &P::GetPCSSBlockerTaps,
+      "PCSS blocker search taps"),
+    Row("pcss_filter_taps", Integers(1, 64), &P::SetPCSSFilterTaps, &P::GetPCSSFilterTaps,
+      "PCSS filter taps"),
+    Row("pcss_max_texels", Closed(1, 256), &P::SetPCSSMaxTexels, &P::GetPCSSMaxTexels,
+      "PCSS kernel radius limit in texels"),
+  };
+}
+}
+
+const vtkshadow::Settings& vtkCascadedShadowMapPass::SettingsTable()
+{
+  static const vtkshadow::Settings table = []
   {
-    return false;
-  }
-  const std::string k = key;
-  auto in = [&](double lo, double hi) { return v >= lo && v <= hi; };
-  auto integral = [&](double lo, double hi) { return in(lo, hi) && v == std::floor(v); };
-  const bool splitFraction =
-    k.rfind("split_fraction_", 0) == 0 && k.size() == 16 && k[15] >= '0' && k[15] <= '6';
-  if (k == "map_resolution" && integral(16, 16384))
-  {
-    this->SetMapResolution(static_cast<int>(v));
-  }
-  else if (k == "cascades" && integral(0, 8))
-  {
-    this->SetCascadeCount(static_cast<int>(v));
-  }
-  else if (k == "ratio_per_cascade" && in(1.5, 1e6))
-  {
-    this->SetRatioPerCascade(v);
-  }
-  else if (k == "split" && integral(0, 3))
-  {
-    this->SetSplitScheme(static_cast<int>(v));
-  }
-  else if (k == "lambda" && in(0, 1))
-  {
-    this->SetSplitLambda(v);
-  }
-  else if (splitFraction && v > 0 && v < 1)
-  {
-    this->SetSplitFraction(k[15] - '0', v);
-  }
-  else if (k == "stable" && integral(0, 1))
-  {
-    this->SetStable(v != 0);
-  }
-  else if (k == "max_texel_px" && in(0, 1e6))
-  {
-    this->SetMaxTexelPixels(v);
-  }
-  else if (k == "memory_budget" && in(1 << 16, 1e12))
-  {
-    this->SetMemoryBudget(static_cast<long long>(v));
-  }
-  else if (k == "bias_scale" && in(0, 100))
-  {
-    this->SetBiasScale(v);
-  }
-  else if (k == "filter" && integral(0, 2))
-  {
-    this->SetFilter(static_cast<int>(v));
-  }
-  else if (k == "pcf_size" && integral(1, 9))
-  {
-    this->SetPCFSize(static_cast<int>(v));
-  }
-  else if (k == "poisson_radius" && in(0, 16))
-  {
-    this->SetPoissonRadius(v);
-  }
-  else if (k == "blend_band" && in(0, 0.5))
-  {
-    this->SetBlendBand(v);
-  }
-  else if (k == "max_distance" && in(0, 1e300))
-  {
-    this->SetMaxShadowDistance(v);
-  }
-  else if (k == "fade" && in(0, 1))
-  {
-    this->SetFadeFraction(v);
-  }
-  else if (k == "debug_cascades" && integral(0, 1))
-  {
-    this->SetDebugCascades(v != 0);
-  }
-  else if (k == "resolve" && integral(0, 2))
-  {
-    this->SetResolve(static_cast<int>(v));
-  }
-  else if (k == "tap_texel_px" && in(0, 1e6))
-  {
-    this->SetTapTexelPixels(v);
-  }
-  else if (k == "tile_cull" && integral(0, 1))
-  {
-    this->SetTileCull(v != 0);
-  }
-  else if (!this->SetSoftOption(k, v))
-  {
-    return this->Superclass::SetOption(key, v);
-  }
-  return true;
+    std::vector<vtkshadow::Setting> rows = CascadeRows();
+    for (auto part : { LookupRows(), SoftRows() })
+    {
+      rows.insert(rows.end(), part.begin(), part.end());
+    }
+    return vtkshadow::Settings(&vtkShadowPassBase::SettingsTable(), std::move(rows));
+  }();
+  return table;
 }
 
 //------------------------------------------------------------------------------

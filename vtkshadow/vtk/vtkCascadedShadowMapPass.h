@@ -277,15 +277,10 @@ public:
   void CopySettings(vtkCascadedShadowMapPass* other);
 
   /**
-   * Settings by name: map_resolution, cascades, ratio_per_cascade, split
-   * (0 uniform, 1 log, 2 practical, 3 explicit), lambda, split_fraction_<i>,
-   * stable, max_texel_px, memory_budget, bias_scale, filter (0 hardware 2x2,
-   * 1 PCF, 2 Poisson), pcf_size, poisson_radius, blend_band, max_distance,
-   * fade, debug_cascades, resolve (0 forward, 1 screen, 2 choose),
-   * tap_texel_px, tile_cull (0/1), soft (0 off, 1 PCSS, 2 sampled), soft_samples, adaptive (0/1),
-   * pcss_blocker_taps, pcss_filter_taps, pcss_max_texels, and the base's cast_headlight.
+   * The settings (SetOption keys, ranges, docs) of this pass: its table in
+   * the .cxx, listed by `vtkshadow-render --list-settings`.
    */
-  bool SetOption(const char* key, double value) override;
+  vtkShadowSettingsMacro();
 
   /**
    * resolution, maps rendered (total) and reused (last frame), and per
@@ -406,7 +401,6 @@ private:
   // list that renders them, the uniforms the sampled lookups read.
   void PlanSamples(const Frame& frame);
   void OrderSamples(int n);
-  bool SetSoftOption(const std::string& key, double value);
   void BuildSampleTiles(std::vector<int>& bake);
   void SetSampledUniforms(vtkShaderProgram* program);
   const vsh_csm_tile& BakeTile(int t) const;

@@ -1,4 +1,5 @@
 #include "vtkPlanarShadowPass.h"
+#include "vtkShadowSettings.h"
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
@@ -1410,58 +1411,32 @@ void vtkPlanarShadowPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ReceiverActors: " << this->Impl->ReceiverActors.size() << "\n";
   os << indent << "ReceiverPlanes: " << this->Impl->Planes.size() << "\n";
-  os << indent << "PlaneTolerance: " << this->PlaneTolerance << "\n";
-  os << indent << "DetectReceivers: " << this->DetectReceivers << "\n";
   os << indent << "DetectedReceivers: " << this->Impl->Detected.size() << "\n";
   os << indent << "NumberOfShadowPairs: " << this->NumberOfShadowPairs << "\n";
   os << indent << "NumberOfMaskTriangles: " << this->NumberOfMaskTriangles << "\n";
   os << indent << "NumberOfGeometryBuilds: " << this->NumberOfGeometryBuilds << "\n";
-  os << indent << "SoftSamples: " << this->SoftSamples << "\n";
   os << indent << "NumberOfSoftPairs: " << this->NumberOfSoftPairs << "\n";
-  os << indent << "Adaptive: " << this->Adaptive << "\n";
   os << indent << "NumberOfRefinedPixels: " << this->NumberOfRefinedPixels << "\n";
 }
 
 //------------------------------------------------------------------------------
-bool vtkPlanarShadowPass::SetOption(const char* key, double value)
+// The settings, once (vtkShadowSettings.h).
+const vtkshadow::Settings& vtkPlanarShadowPass::SettingsTable()
 {
-  if (key && std::string(key) == "detect_receivers")
-  {
-    if (value != 0.0 && value != 1.0)
+  using P = vtkPlanarShadowPass;
+  using vtkshadow::Row;
+  static const vtkshadow::Settings table(&vtkShadowPassBase::SettingsTable(),
     {
-      return false;
-    }
-    this->SetDetectReceivers(value != 0.0);
-    return true;
-  }
-  if (key && std::string(key) == "soft_samples")
-  {
-    if (!(value >= 1.0 && value <= 1024.0) || value != std::floor(value))
-    {
-      return false;
-    }
-    this->SetSoftSamples(static_cast<int>(value));
-    return true;
-  }
-  if (key && std::string(key) == "adaptive")
-  {
-    if (value != 0.0 && value != 1.0)
-    {
-      return false;
-    }
-    this->SetAdaptive(value != 0.0);
-    return true;
-  }
-  if (key && std::string(key) == "plane_tolerance")
-  {
-    if (!(value >= 0.0 && value <= 1.0))
-    {
-      return false;
-    }
-    this->SetPlaneTolerance(value);
-    return true;
-  }
-  return this->Superclass::SetOption(key, value);
+      Row("plane_tolerance", vtkshadow::Closed(0, 1), &P::SetPlaneTolerance, &P::GetPlaneTolerance,
+        "fragments this close to a receiver plane (relative to their distance) receive"),
+      Row("detect_receivers", vtkshadow::Flag(), &P::SetDetectReceivers, &P::GetDetectReceivers,
+        "flat actors receive when none is marked a receiver"),
+      Row("soft_samples", vtkshadow::Integers(1, 1024), &P::SetSoftSamples, &P::GetSoftSamples,
+        "samples of a light with a size (docs/soft-shadows.md)"),
+      Row("adaptive", vtkshadow::Flag(), &P::SetAdaptive, &P::GetAdaptive,
+        "soft_samples > 8: the samples beyond a batch of 8 only where the batch disagrees"),
+    });
+  return table;
 }
 
 //------------------------------------------------------------------------------

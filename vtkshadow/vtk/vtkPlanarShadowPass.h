@@ -154,10 +154,10 @@ public:
   long long GetMemoryBytes() const override;
 
   /**
-   * plane_tolerance (0..1), detect_receivers (0/1), soft_samples (1..1024),
-   * adaptive (0/1), and the base's options.
+   * The settings (SetOption keys, ranges, docs) of this pass: its table in
+   * the .cxx, listed by `vtkshadow-render --list-settings`.
    */
-  bool SetOption(const char* key, double value) override;
+  vtkShadowSettingsMacro();
 
   /**
    * shadow_pairs, mask_triangles, geometry_builds, soft_pairs,

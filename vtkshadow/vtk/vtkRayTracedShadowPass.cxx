@@ -1,4 +1,5 @@
 #include "vtkRayTracedShadowPass.h"
+#include "vtkShadowSettings.h"
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
@@ -23,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -418,56 +420,27 @@ void vtkRayTracedShadowPass::ReleaseWorlds(vtkWindow* w, int first)
 }
 
 //------------------------------------------------------------------------------
-bool vtkRayTracedShadowPass::SetOption(const char* key, double value)
+// The settings, once (vtkShadowSettings.h). light_angle follows the
+// scene's range, [0, 180) (it was [0, 90] here before the tables).
+const vtkshadow::Settings& vtkRayTracedShadowPass::SettingsTable()
 {
-  const std::string k = key ? key : "";
-  const bool integer = std::isfinite(value) && value == std::floor(value);
-  if (k == "samples")
-  {
-    if (!integer || value < 1 || value > 1024)
+  using P = vtkRayTracedShadowPass;
+  using vtkshadow::Row;
+  static const vtkshadow::Settings table(&vtkShadowPassBase::SettingsTable(),
     {
-      return false;
-    }
-    this->SetSamples(static_cast<int>(value));
-    return true;
-  }
-  if (k == "adaptive")
-  {
-    if (value != 0.0 && value != 1.0)
-    {
-      return false;
-    }
-    this->SetAdaptive(static_cast<int>(value));
-    return true;
-  }
-  if (k == "threads")
-  {
-    if (!integer || value < 0 || value > 256)
-    {
-      return false;
-    }
-    this->SetNumberOfThreads(static_cast<int>(value));
-    return true;
-  }
-  if (k == "light_radius")
-  {
-    if (!(value >= 0.0) || !std::isfinite(value))
-    {
-      return false;
-    }
-    this->SetLightRadius(value);
-    return true;
-  }
-  if (k == "light_angle")
-  {
-    if (!(value >= 0.0 && value <= 90.0))
-    {
-      return false;
-    }
-    this->SetLightAngle(value);
-    return true;
-  }
-  return this->Superclass::SetOption(key, value);
+      Row("samples", vtkshadow::Integers(1, 1024), &P::SetSamples, &P::GetSamples,
+        "rays per pixel for a light with a size (hard lights trace 1)"),
+      Row("adaptive", vtkshadow::Flag(), &P::SetAdaptive, &P::GetAdaptive,
+        "more rays only near a penumbra"),
+      Row("threads", vtkshadow::Integers(0, 256), &P::SetNumberOfThreads, &P::GetNumberOfThreads,
+        "tracing threads (0 = one per core)"),
+      Row("light_radius", vtkshadow::OpenBelow(0, std::numeric_limits<double>::infinity()),
+        &P::SetLightRadius, &P::GetLightRadius,
+        "radius of point and spot lights that have none of their own"),
+      Row("light_angle", vtkshadow::OpenBelow(0, 180), &P::SetLightAngle, &P::GetLightAngle,
+        "angular diameter (degrees) of directional lights without one (traced as at most 90)"),
+    });
+  return table;
 }
 
 //------------------------------------------------------------------------------
@@ -572,11 +545,6 @@ bool vtkRayTracedShadowPass::SetShaderParameters(
 void vtkRayTracedShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Samples: " << this->Samples << "\n";
-  os << indent << "Adaptive: " << this->Adaptive << "\n";
-  os << indent << "LightRadius: " << this->LightRadius << "\n";
-  os << indent << "LightAngle: " << this->LightAngle << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "NumberOfRaysTraced: " << this->NumberOfRaysTraced << "\n";
   os << indent << "NumberOfTracedFrames: " << this->NumberOfTracedFrames << "\n";
 }

@@ -76,7 +76,7 @@ public:
    */
   vtkSetClampMacro(LightRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(LightRadius, double);
-  vtkSetClampMacro(LightAngle, double, 0.0, 90.0);
+  vtkSetClampMacro(LightAngle, double, 0.0, 180.0);
   vtkGetMacro(LightAngle, double);
 
   /**
@@ -124,7 +124,11 @@ public:
    */
   void ReleaseWorlds(vtkWindow* w, int first) override;
   long long GetWorldsMemoryBytes() const override;
-  bool SetOption(const char* key, double value) override;
+  /**
+   * The settings (SetOption keys, ranges, docs) of this pass: its table in
+   * the .cxx, listed by `vtkshadow-render --list-settings`.
+   */
+  vtkShadowSettingsMacro();
   std::string GetStatsJSON(vtkRenderer* renderer) const override;
 
   void Render(const vtkRenderState* s) override;

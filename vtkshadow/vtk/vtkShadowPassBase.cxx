@@ -13,6 +13,7 @@
 #include "vtkRenderer.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowRendererSteps.h"
+#include "vtkShadowSettings.h"
 
 #include <cmath>
 #include <cstring>
@@ -122,17 +123,22 @@ std::string vtkShadowPassBase::GetStatsJSON(vtkRenderer*) const
 //------------------------------------------------------------------------------
 bool vtkShadowPassBase::SetOption(const char* key, double value)
 {
-  if (key && std::strcmp(key, "cast_headlight") == 0 && (value == 0.0 || value == 1.0))
-  {
-    this->SetCastHeadlightShadows(value != 0.0);
-    return true;
-  }
-  if (key && std::strcmp(key, "residual_light") == 0 && value >= 0.0 && value <= 1.0)
-  {
-    this->SetResidualLight(value);
-    return true;
-  }
-  return false;
+  return this->GetSettings().Apply(*this, key, value);
+}
+
+//------------------------------------------------------------------------------
+// The settings every pass has (vtkShadowSettings.h).
+const vtkshadow::Settings& vtkShadowPassBase::SettingsTable()
+{
+  using P = vtkShadowPassBase;
+  static const vtkshadow::Settings table(nullptr,
+    {
+      vtkshadow::Row("cast_headlight", vtkshadow::Flag(), &P::SetCastHeadlightShadows,
+        &P::GetCastHeadlightShadows, "the headlight casts shadows too (they hide behind casters)"),
+      vtkshadow::Row("residual_light", vtkshadow::Closed(0, 1), &P::SetResidualLight,
+        &P::GetResidualLight, "how much of a light remains in its shadow (1 = no shadow)"),
+    });
+  return table;
 }
 
 //------------------------------------------------------------------------------
@@ -241,9 +247,13 @@ void vtkShadowPassBase::ReleaseGraphicsResources(vtkWindow* w)
 void vtkShadowPassBase::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "CastHeadlightShadows: " << this->CastHeadlightShadows << "\n";
+  // The settings, from the pass's table: one line per row.
+  for (const vtkshadow::Setting& row : this->GetSettings().GetRows())
+  {
+    os << indent << "Setting " << row.Key << ": "
+       << (row.Get ? vtkshadow::FormatNumber(row.Get(*this)) : "(unused)") << "\n";
+  }
   os << indent << "SkippedLights: " << this->SkippedLights << "\n";
-  os << indent << "ResidualLight: " << this->ResidualLight << "\n";
   os << indent << "WorldKey: " << this->WorldKey << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)

@@ -31,8 +31,28 @@
 
 #include <string> // for std::string
 
+/**
+ * In a pass's class: its settings table (SettingsTable(), defined in the
+ * .cxx from rows, vtkShadowSettings.h) and the virtual that SetOption and
+ * PrintSelf read it through.
+ */
+#ifndef __VTK_WRAP__
+#define vtkShadowSettingsMacro()                                                                   \
+  static const vtkshadow::Settings& SettingsTable();                                               \
+  const vtkshadow::Settings& GetSettings() const override                                          \
+  {                                                                                                \
+    return SettingsTable();                                                                        \
+  }
+#else
+#define vtkShadowSettingsMacro()
+#endif
+
 class vtkActor;
 class vtkInformationDoubleKey;
+namespace vtkshadow
+{
+class Settings;
+}
 class vtkInformationIntegerKey;
 class vtkLight;
 class vtkRenderer;
@@ -168,10 +188,24 @@ public:
   /**
    * Set a setting by name (command lines, the C API, vtkShadowTechnique).
    * Returns false for a key this pass does not have or a value out of its
-   * range; nothing changes then. The base knows cast_headlight (0 or 1)
-   * and residual_light (0..1).
+   * range; nothing changes then. The keys and ranges are the rows of the
+   * pass's settings table (GetSettings); the base's are cast_headlight and
+   * residual_light. Virtual for passes that hand settings on
+   * (vtkPlanarReflectionPass).
    */
   virtual bool SetOption(const char* key, double value);
+
+#ifndef __VTK_WRAP__
+  /**
+   * The base's settings table, and the table of this pass (the most
+   * derived class that declares one with vtkShadowSettingsMacro).
+   */
+  static const vtkshadow::Settings& SettingsTable();
+  virtual const vtkshadow::Settings& GetSettings() const
+  {
+    return SettingsTable();
+  }
+#endif
 
   void ReleaseGraphicsResources(vtkWindow* w) override;
   vtkMTimeType GetShaderStageMTime() override;

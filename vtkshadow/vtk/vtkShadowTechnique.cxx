@@ -1,17 +1,18 @@
 #include "vtkShadowTechnique.h"
 
 #include "vtkLight.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkRenderWindow.h"
 #include "vtkShadowDefaultLights.h"
 #include "vtkShadowPassBase.h"
 #include "vtkShadowPassComposition.h"
+#include "vtkShadowSettings.h"
 #include "vtkShadowTechniqueRegistry.h"
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
-#include <cmath>
 
 vtkStandardNewMacro(vtkShadowTechnique);
 
@@ -51,26 +52,31 @@ const char* vtkShadowTechnique::GetKnownTechniques()
 //------------------------------------------------------------------------------
 vtkShadowPassBase* vtkShadowTechnique::CreatePass()
 {
-  vtkSmartPointer<vtkShadowPassBase> pass;
-  pass.TakeReference(vtkShadowTechniqueRegistry::CreatePass(this->Name));
-  if (!pass)
+  // The settings are checked against the technique's table before any pass
+  // is made (the name may have changed since they were set).
+  const vtkshadow::Settings* settings = vtkshadow::Settings::ForTechnique(this->Name);
+  if (!settings)
   {
     vtkErrorMacro("unknown technique \"" << (this->Name ? this->Name : "(null)")
                                          << "\"; known: " << GetKnownTechniques());
     return nullptr;
   }
-  // Techniques without maps have no map_resolution: nothing to apply then.
-  pass->SetOption("map_resolution", this->MapResolution);
   for (const auto& option : this->Options)
   {
-    if (!pass->SetOption(option.first.c_str(), option.second))
+    const vtkshadow::Setting* row = settings->Find(option.first.c_str());
+    if (!row || !row->Accepts(option.second))
     {
       vtkErrorMacro("technique \"" << this->Name << "\" has no setting " << option.first << "="
                                    << option.second);
       return nullptr;
     }
   }
-  pass->Register(nullptr);
+  vtkShadowPassBase* pass = vtkShadowTechniqueRegistry::CreatePass(this->Name);
+  settings->Find("map_resolution")->Set(*pass, this->MapResolution);
+  for (const auto& option : this->Options)
+  {
+    settings->Find(option.first.c_str())->Set(*pass, option.second);
+  }
   return pass;
 }
 
@@ -202,26 +208,18 @@ long long vtkShadowTechnique::GetShadowMapMemory(vtkRenderer* renderer) const
 //------------------------------------------------------------------------------
 bool vtkShadowTechnique::SetOption(const char* key, double v)
 {
-  if (!key || !std::isfinite(v))
+  // The technique's settings table says which keys and values it takes.
+  const vtkshadow::Settings* settings = vtkshadow::Settings::ForTechnique(this->Name);
+  const vtkshadow::Setting* row = settings ? settings->Find(key) : nullptr;
+  if (!row || !row->Accepts(v))
   {
     return false;
   }
   const std::string k = key;
   if (k == "map_resolution")
   {
-    if (!(v >= 16 && v <= 16384 && v == std::floor(v)))
-    {
-      return false;
-    }
-    this->SetMapResolution(static_cast<int>(v));
+    this->SetMapResolution(static_cast<int>(v)); // every pass CreatePass makes gets it
     return true;
-  }
-  // The technique's own pass says which keys and values it takes.
-  vtkSmartPointer<vtkShadowPassBase> probe;
-  probe.TakeReference(vtkShadowTechniqueRegistry::CreatePass(this->Name));
-  if (!probe || !probe->SetOption(key, v))
-  {
-    return false;
   }
   auto same = [&](const std::pair<std::string, double>& o) { return o.first == k; };
   this->Options.erase(
@@ -229,6 +227,30 @@ bool vtkShadowTechnique::SetOption(const char* key, double v)
   this->Options.emplace_back(k, v);
   this->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowTechnique::GetSettingsListing()
+{
+  std::string out;
+  for (int i = 0; i < vtkShadowTechniqueRegistry::GetNumberOfTechniques(); ++i)
+  {
+    // Defaults are those of a pass as CreatePass makes it (map_resolution
+    // from the technique).
+    vtkNew<vtkShadowTechnique> technique;
+    technique->SetName(vtkShadowTechniqueRegistry::GetName(i));
+    vtkSmartPointer<vtkShadowPassBase> pass;
+    pass.TakeReference(technique->CreatePass());
+    for (const vtkshadow::Setting& row :
+      vtkshadow::Settings::ForTechnique(technique->GetName())->GetRows())
+    {
+      const double value = row.Get ? row.Get(*pass) : technique->GetMapResolution();
+      out += std::string(technique->GetName()) + "\t" + row.Key + "\t" + row.RangeText() + "\t" +
+        (row.Range.Integer ? "yes" : "no") + "\t" + vtkshadow::FormatNumber(value) + "\t" +
+        row.Doc + "\n";
+    }
+  }
+  return out;
 }
 
 //------------------------------------------------------------------------------

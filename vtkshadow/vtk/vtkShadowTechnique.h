@@ -7,7 +7,7 @@
  * techniques without knowing how each is assembled. The names, their
  * descriptions and the passes come from vtkShadowTechniqueRegistry (none,
  * vtk, planar, csm, auto, ...); settings are passed by name with SetOption
- * and checked by the technique's own pass (vtkShadowPassBase::SetOption).
+ * and checked against the technique's settings table (vtkShadowSettings.h).
  *
  * Enable() (and the one-call EnableShadows(), vtkshadow.enable_shadows in
  * Python, vtkshadow_enable_shadows in C) also makes the shadows visible on
@@ -61,14 +61,23 @@ public:
   vtkGetMacro(MapResolution, int);
 
   /**
-   * Set a technique setting by name (command lines, the C API): the
-   * technique's pass checks the key and range (see each pass's SetOption;
-   * map_resolution is accepted for every technique and used by those with
-   * maps). Returns false for an unknown key or a value out of range
-   * (nothing is changed then). Settings are applied, in the order given, to
-   * every pass CreatePass() makes.
+   * Set a technique setting by name (command lines, the C API): the key and
+   * range are checked against the technique's settings table (the rows of
+   * its pass, vtkShadowSettings.h; map_resolution is accepted for every
+   * technique and used by those with maps), without making a pass. Returns
+   * false for an unknown key or a value out of range (nothing is changed
+   * then). Settings are applied, in the order given, to every pass
+   * CreatePass() makes.
    */
   bool SetOption(const char* key, double value);
+
+  /**
+   * Every technique's settings, one per line, tab-separated: technique,
+   * key, range ("[16, 16384]", "(0, 1]", "[0, inf)"), integer ("yes" /
+   * "no"), default, one line of documentation. `vtkshadow-render
+   * --list-settings` prints it; docs/techniques.md's tables are made from it.
+   */
+  static std::string GetSettingsListing();
 
   /**
    * Technique details of the last frame rendered on `renderer` as a JSON

@@ -7,6 +7,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPlanarShadowPass.h"
 #include "vtkRayTracedShadowPass.h"
+#include "vtkShadowSettings.h"
 #include "vtkShadowVolumePass.h"
 
 #include <cstring>
@@ -21,6 +22,7 @@ struct Technique
   const char* Name;
   const char* Description;
   vtkShadowPassBase* (*Create)();
+  const vtkshadow::Settings& (*Settings)(); // read without making a pass
 };
 
 template <class Pass>
@@ -29,22 +31,26 @@ vtkShadowPassBase* Make()
   return Pass::New();
 }
 
+template <class Pass>
+Technique Of(const char* name, const char* description)
+{
+  return { name, description, &Make<Pass>, &Pass::SettingsTable };
+}
+
 // The table. Order is the order tools list and run techniques in.
 const Technique Techniques[] = {
-  { "none", "VTK's standard passes, no shadows (the cost and error floor)",
-    &Make<vtkNoShadowPass> },
-  { "vtk", "VTK 9.1's own shadow maps (vtkShadowMapPass) at map_resolution, the baseline",
-    &Make<vtkBuiltinShadowMapPass> },
-  { "planar", "exact projected shadows on plane receivers, every light type",
-    &Make<vtkPlanarShadowPass> },
-  { "csm", "cascaded shadow maps (directional), perspective (spot) and cube (point) maps",
-    &Make<vtkCascadedShadowMapPass> },
-  { "auto", "per light the cheapest technique that meets an error target (max_error)",
-    &Make<vtkAutoShadowPass> },
-  { "volume", "stencil shadow volumes: exact hard shadows on every surface, every light type",
-    &Make<vtkShadowVolumePass> },
-  { "raytrace", "exact shadows of any geometry: Embree rays per visible pixel and light (CPU)",
-    &Make<vtkRayTracedShadowPass> },
+  Of<vtkNoShadowPass>("none", "VTK's standard passes, no shadows (the cost and error floor)"),
+  Of<vtkBuiltinShadowMapPass>(
+    "vtk", "VTK 9.1's own shadow maps (vtkShadowMapPass) at map_resolution, the baseline"),
+  Of<vtkPlanarShadowPass>("planar", "exact projected shadows on plane receivers, every light type"),
+  Of<vtkCascadedShadowMapPass>(
+    "csm", "cascaded shadow maps (directional), perspective (spot) and cube (point) maps"),
+  Of<vtkAutoShadowPass>(
+    "auto", "per light the cheapest technique that meets an error target (max_error)"),
+  Of<vtkShadowVolumePass>(
+    "volume", "stencil shadow volumes: exact hard shadows on every surface, every light type"),
+  Of<vtkRayTracedShadowPass>(
+    "raytrace", "exact shadows of any geometry: Embree rays per visible pixel and light (CPU)"),
 };
 constexpr int TechniqueCount = static_cast<int>(sizeof(Techniques) / sizeof(Techniques[0]));
 }
@@ -78,6 +84,13 @@ int vtkShadowTechniqueRegistry::FindTechnique(const char* name)
     }
   }
   return -1;
+}
+
+//------------------------------------------------------------------------------
+const vtkshadow::Settings& vtkShadowTechniqueRegistry::GetSettings(int index)
+{
+  static const vtkshadow::Settings none;
+  return index >= 0 && index < TechniqueCount ? Techniques[index].Settings() : none;
 }
 
 //------------------------------------------------------------------------------

@@ -20,6 +20,10 @@
 #include "vtkshadowModule.h" // for export macro
 
 class vtkShadowPassBase;
+namespace vtkshadow
+{
+class Settings;
+}
 
 class VTKSHADOW_EXPORT vtkShadowTechniqueRegistry : public vtkObject
 {
@@ -50,6 +54,15 @@ public:
    * call Delete()), or nullptr for an unknown name.
    */
   static vtkShadowPassBase* CreatePass(const char* name);
+
+#ifndef __VTK_WRAP__
+  /**
+   * The settings table of technique `index`'s pass, without making one
+   * (empty for an out-of-range index). vtkshadow::Settings::ForTechnique
+   * adds what every technique takes.
+   */
+  static const vtkshadow::Settings& GetSettings(int index);
+#endif
 
 protected:
   vtkShadowTechniqueRegistry() = default;

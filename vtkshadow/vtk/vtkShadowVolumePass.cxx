@@ -1,4 +1,5 @@
 #include "vtkShadowVolumePass.h"
+#include "vtkShadowSettings.h"
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
@@ -878,40 +879,27 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowVolumePass::SetOption(const char* key, double value)
+// The settings, once (vtkShadowSettings.h).
+const vtkshadow::Settings& vtkShadowVolumePass::SettingsTable()
 {
-  const std::string k = key ? key : "";
-  if (k == "depth_bias" && value >= 0.0 && value <= 1e6)
-  {
-    this->SetDepthBias(value);
-    return true;
-  }
-  if (k == "slope_bias" && value >= 0.0 && value <= 16.0)
-  {
-    this->SetSlopeBias(value);
-    return true;
-  }
-  if (k == "force_zfail" && (value == 0.0 || value == 1.0))
-  {
-    this->SetForceZFail(value != 0.0);
-    return true;
-  }
-  if (k == "facing_test" && (value == 0.0 || value == 1.0))
-  {
-    this->SetFacingTest(value != 0.0);
-    return true;
-  }
-  if (k == "adaptive" && (value == 0.0 || value == 1.0))
-  {
-    this->SetAdaptive(value != 0.0);
-    return true;
-  }
-  if (k == "soft_samples" && value >= 1.0 && value <= 255.0 && value == std::floor(value))
-  {
-    this->SetSoftSamples(static_cast<int>(value));
-    return true;
-  }
-  return this->Superclass::SetOption(key, value);
+  using P = vtkShadowVolumePass;
+  using vtkshadow::Row;
+  static const vtkshadow::Settings table(&vtkShadowPassBase::SettingsTable(),
+    {
+      Row("depth_bias", vtkshadow::Closed(0, 1e6), &P::SetDepthBias, &P::GetDepthBias,
+        "depth bias of the volume faces in 2^-24 of the depth range"),
+      Row("slope_bias", vtkshadow::Closed(0, 16), &P::SetSlopeBias, &P::GetSlopeBias,
+        "fraction of the depth's slope per pixel added to depth_bias"),
+      Row("force_zfail", vtkshadow::Flag(), &P::SetForceZFail, &P::GetForceZFail,
+        "count every volume with z-fail, never z-pass"),
+      Row("facing_test", vtkshadow::Flag(), &P::SetFacingTest, &P::GetFacingTest,
+        "darken the facets of closed casters that face away from a light"),
+      Row("soft_samples", vtkshadow::Integers(1, 255), &P::SetSoftSamples, &P::GetSoftSamples,
+        "samples of a light with a size (docs/soft-shadows.md)"),
+      Row("adaptive", vtkshadow::Flag(), &P::SetAdaptive, &P::GetAdaptive,
+        "the rest of the samples only near a penumbra"),
+    });
+  return table;
 }
 
 //------------------------------------------------------------------------------
@@ -958,11 +946,5 @@ void vtkShadowVolumePass::ReleaseGraphicsResources(vtkWindow* w)
 void vtkShadowVolumePass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "DepthBias: " << this->DepthBias << "\n";
-  os << indent << "SlopeBias: " << this->SlopeBias << "\n";
-  os << indent << "ForceZFail: " << this->ForceZFail << "\n";
-  os << indent << "FacingTest: " << this->FacingTest << "\n";
-  os << indent << "SoftSamples: " << this->SoftSamples << "\n";
-  os << indent << "Adaptive: " << this->Adaptive << "\n";
   os << indent << "Casters: " << this->Impl->Casters.size() << "\n";
 }

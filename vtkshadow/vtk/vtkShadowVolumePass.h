@@ -92,10 +92,10 @@ public:
   vtkBooleanMacro(Adaptive, bool);
 
   /**
-   * depth_bias, slope_bias, force_zfail, facing_test, soft_samples, adaptive, and the
-   * base's cast_headlight.
+   * The settings (SetOption keys, ranges, docs) of this pass: its table in
+   * the .cxx, listed by `vtkshadow-render --list-settings`.
    */
-  bool SetOption(const char* key, double value) override;
+  vtkShadowSettingsMacro();
 
   /**
    * Per light: casters counted by z-pass / z-fail / culled, silhouette edges,
