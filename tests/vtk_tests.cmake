@@ -67,6 +67,13 @@ add_test(NAME python.planar_flat_parts
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_planar_flat_parts.py)
 set_tests_properties(python.planar_flat_parts PROPERTIES LABELS "render" TIMEOUT 120)
 
+# vedo: enable_shadows before show(), after it, or after another technique
+# gives the same frame, with the shadow, for every technique (needs
+# python3-vedo, which scripts/install-deps.sh installs).
+add_test(NAME python.vedo_placement
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_vedo_placement.py)
+set_tests_properties(python.vedo_placement PROPERTIES LABELS "render" TIMEOUT 300)
+
 # planar with a vtkLODActor floor: the mapper draws its inner Device actor,
 # which shares the floor's property keys (ParaView's actors do the same).
 add_test(NAME python.lod_receiver
@@ -117,7 +124,7 @@ add_test(NAME install.package
 # Not at the same time as install.downstream: both run `cmake --install`-
 # style rules of the same build tree.
 set_tests_properties(install.package PROPERTIES LABELS "install" TIMEOUT 180
-  RUN_SERIAL ON)
+  RUN_SERIAL ON FIXTURES_SETUP installed_package)
 
 # vtkshadow-render: every bad input gives exit status 2, a message naming the
 # file, field and value, and no output file.

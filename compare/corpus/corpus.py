@@ -331,7 +331,16 @@ def cmd_run(args):
         f, k = failures_of(entry, result, corpus.get("known_failures", []))
         failed += f
         known_failed += k
+    modules = sorted({run.get("vtkshadow_module") for res in results
+                      for run in res["runs"].values() if run.get("vtkshadow_module")})
+    print(f"corpus: vtkshadow imported from {', '.join(modules) or '(no run got that far)'} "
+          f"by {args.python}")
+    if args.require_module and any(not m.startswith(args.require_module) for m in modules):
+        print(f"FAIL  vtkshadow was not imported from {args.require_module}")
+        failed.append({"example": "-", "technique": "-", "check": "module",
+                       "detail": f"vtkshadow from {modules}, not {args.require_module}"})
     report = {"command": " ".join(sys.argv), "python": args.python,
+              "vtkshadow_modules": modules,
               "seconds": round(time.time() - t0, 1), "techniques": techniques,
               "bounds": corpus["bounds"], "shadow_shares": corpus.get("shadow_shares"),
               "min_shadow_px": MIN_SHADOW_PX, "shadow_allowance_px": SHADOW_ALLOWANCE_PX,
@@ -447,6 +456,9 @@ def main():
     ap.add_argument("--as", dest="as_list", default="",
                     help="T=U,...: run technique U where T is asked (negative controls)")
     ap.add_argument("--expect-fail", choices=CHECKS)
+    ap.add_argument("--require-module",
+                    help="fail unless vtkshadow is imported from under this directory "
+                         "(e.g. /usr/lib/python3/dist-packages: the installed package)")
     args = ap.parse_args()
     args.as_map = dict(p.split("=") for p in args.as_list.split(",") if p)
     args.out = os.path.abspath(args.out)

@@ -206,8 +206,9 @@ def capture(window, how):
     STATE["done"] = True
     vtkObject.GlobalWarningDisplayOn()
     before = LOG.GetOutput() or ""
+    import vtkshadow
     result = {"example": ARGS.example, "technique": ARGS.technique, "injected_at": how,
-              "status": "ok"}
+              "status": "ok", "vtkshadow_module": os.path.dirname(vtkshadow.__file__)}
     window.SetOffScreenRendering(1)
     window.SetSize(*ARGS.size)
     renderers = renderers_of(window)

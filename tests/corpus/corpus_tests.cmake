@@ -6,10 +6,16 @@
 # whole corpus is scripts/corpus.sh (60 examples, about 8 minutes).
 set(VTKSHADOW_CORPUS ${PROJECT_SOURCE_DIR}/compare/corpus/corpus.py)
 set(VTKSHADOW_CORPUS_OUT ${VTKSHADOW_TEST_OUT}/corpus)
+# The subset runs against the installed package, as a user's program would:
+# Debian's plain /usr/bin/python3 (no PYTHONPATH, no LD_LIBRARY_PATH) after
+# install.package has installed this build's .deb, and vtkshadow must come
+# from /usr/lib/python3/dist-packages.
 add_test(NAME corpus.subset
-  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${VTKSHADOW_CORPUS} run --python ${VTKSHADOW_PY}
-          --subset ctest --out ${VTKSHADOW_CORPUS_OUT}/subset)
-set_tests_properties(corpus.subset PROPERTIES LABELS "corpus;render" TIMEOUT 600)
+  COMMAND ${VTKSHADOW_GL} /usr/bin/env -u PYTHONPATH -u LD_LIBRARY_PATH /usr/bin/python3
+          ${VTKSHADOW_CORPUS} run --python /usr/bin/python3 --subset ctest
+          --require-module /usr/lib/python3/dist-packages --out ${VTKSHADOW_CORPUS_OUT}/subset)
+set_tests_properties(corpus.subset PROPERTIES LABELS "corpus;render" TIMEOUT 600
+  FIXTURES_REQUIRED installed_package)
 
 # Negative controls: each check must report a deliberately broken run
 # (corpus.py --expect-fail CHECK exits 0 only when CHECK failed). One example,
