@@ -7,7 +7,7 @@ clang_format=${2:-clang-format}
 command -v "$clang_format" >/dev/null 2>&1 || {
   echo "style.clang_format: $clang_format not found (apt-get install clang-format)"; exit 2; }
 cd "$root"
-files=$(ls vtkshadow/vtk/*.h vtkshadow/vtk/*.cxx compare/*.h compare/*.cxx compare/harness/*.h \
+files=$(ls vtkshadow/vtk/*.h vtkshadow/vtk/*.cxx tools/*.h tools/*.cxx compare/harness/*.h \
   compare/harness/*.cxx)
 count=0
 bad=0

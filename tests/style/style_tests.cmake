@@ -1,5 +1,5 @@
 # Style rules checked by tools (label unit: they need no GL and run in seconds).
-# No function longer than 120 lines in vtkshadow/ or compare/: universal-ctags
+# No function longer than 120 lines in vtkshadow/, tools/ or compare/: universal-ctags
 # gives each function's first and last line (tests/style/check_function_length.py).
 find_package(Python3 COMPONENTS Interpreter REQUIRED)
 find_program(VTKSHADOW_CTAGS NAMES ctags-universal universal-ctags ctags)
@@ -9,7 +9,7 @@ if(NOT VTKSHADOW_CTAGS)
 endif()
 add_test(NAME style.function_length
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_function_length.py
-          --ctags ${VTKSHADOW_CTAGS} --max 120 ${PROJECT_SOURCE_DIR} vtkshadow compare)
+          --ctags ${VTKSHADOW_CTAGS} --max 120 ${PROJECT_SOURCE_DIR} vtkshadow tools compare)
 set_tests_properties(style.function_length PROPERTIES LABELS "unit")
 
 # The VTK layer and the C++ tools in VTK's clang-format style.

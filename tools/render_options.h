@@ -26,7 +26,7 @@ struct RenderOptions
   std::string Stats;
   int Light = 0;
   // Interleaved timing (--stats): rounds of one block of Frames frames per
-  // timed technique, after Warmup frames each; see compare/timing/vsh_timing.h.
+  // timed technique, after Warmup frames each; see tools/timing/vsh_timing.h.
   int Frames = 15;
   int Rounds = 4;
   int Warmup = 5;

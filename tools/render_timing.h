@@ -1,6 +1,6 @@
 // render_timing.h - interleaved frame timing of several techniques in one
 // window (vtkshadow-render --stats): the schedule and the statistics are
-// compare/timing/vsh_timing.h; this file renders the frames.
+// tools/timing/vsh_timing.h; this file renders the frames.
 #ifndef vtkshadow_render_timing_h
 #define vtkshadow_render_timing_h
 
