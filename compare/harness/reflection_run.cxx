@@ -6,8 +6,8 @@
 #include "harness_util.h"
 #include "technique_variant.h"
 
-#include "vsh_metrics.h"
-#include "vsh_png.h"
+#include "vshm_metrics.h"
+#include "vshm_png.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +28,7 @@ bool ReadRgb(const std::string& path, int w, int h, Colour& c, std::string& err)
   float* px = nullptr;
   int pw = 0, ph = 0;
   char e2[1024] = "";
-  if (vsh_png_read_rgb(path.c_str(), &px, &pw, &ph, nullptr, e2, sizeof e2) != 0)
+  if (vshm_png_read_rgb(path.c_str(), &px, &pw, &ph, nullptr, e2, sizeof e2) != 0)
   {
     err = e2;
     return false;
@@ -80,7 +80,7 @@ bool PovrayColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
     mirror[i] = m.rgb[3 * i] > 0.5f ? 255 : 0;
   char e2[1024] = "";
   const bool ok = std::rename((work + "/color.png").c_str(), (dir + "/color.png").c_str()) == 0 &&
-    vsh_png_write_gray8(
+    vshm_png_write_gray8(
       (dir + "/mirror.png").c_str(), mirror.data(), ex.width, ex.height, e2, sizeof e2) == 0;
   if (!opt.keep_work)
     RemoveTree(work);
@@ -125,7 +125,7 @@ bool CyclesColour(
   char e2[1024] = "";
   if (!opt.keep_work)
     RemoveTree(work);
-  if (vsh_png_write_rgb8(
+  if (vshm_png_write_rgb8(
         (dir + "/color.png").c_str(), rgb8.data(), ex.width, ex.height, e2, sizeof e2) != 0)
     Progress("WARNING " + e.id + ": " + e2);
   return true;
@@ -162,21 +162,21 @@ void Attach(const Options& opt, const SceneEntry& e, const std::string& test, co
   double mae = 0;
   long px = 0;
   const int rc =
-    vsh_reflection_mae(c.rgb.data(), ref.rgb.data(), mirror.data(), nullptr, w, h, &mae, &px);
-  if (rc != VSH_METRICS_OK)
+    vshm_reflection_mae(c.rgb.data(), ref.rgb.data(), mirror.data(), nullptr, w, h, &mae, &px);
+  if (rc != VSHM_METRICS_OK)
   {
     res.errors.push_back("reflection_mae " + test + ": " +
-      (rc == VSH_METRICS_EMPTY ? "no mirror pixel in view" : "metric failed"));
+      (rc == VSHM_METRICS_EMPTY ? "no mirror pixel in view" : "metric failed"));
     return;
   }
   std::string tname = test;
   std::replace(tname.begin(), tname.end(), '/', '-');
   std::string heat = e.dir_id + "/heatmap/" + tname + "-mirror.png";
   std::vector<unsigned char> rgb(3 * static_cast<size_t>(w) * h);
-  vsh_reflection_heatmap_rgb(c.rgb.data(), ref.rgb.data(), mirror.data(), w, h, rgb.data());
+  vshm_reflection_heatmap_rgb(c.rgb.data(), ref.rgb.data(), mirror.data(), w, h, rgb.data());
   char e2[1024] = "";
   if (!MakeDirs(opt.out + "/" + e.dir_id + "/heatmap") ||
-    vsh_png_write_rgb8((opt.out + "/" + heat).c_str(), rgb.data(), w, h, e2, sizeof e2) != 0)
+    vshm_png_write_rgb8((opt.out + "/" + heat).c_str(), rgb.data(), w, h, e2, sizeof e2) != 0)
     heat.clear();
   Progress(e.id + ": " + test + " reflection_mae " + Fmt(mae, "%.4f") + " over " +
     std::to_string(px) + " mirror pixels");

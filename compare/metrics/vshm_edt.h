@@ -1,4 +1,4 @@
-/* vsh_edt.h - exact squared Euclidean distance transform of a binary grid.
+/* vshm_edt.h - exact squared Euclidean distance transform of a binary grid.
  *
  * Felzenszwalb & Huttenlocher, "Distance Transforms of Sampled Functions"
  * (Theory of Computing 8, 2012): the 2D squared distance separates into a
@@ -6,8 +6,8 @@
  * each 1D transform is the lower envelope of parabolas, O(n). Exact (not
  * the 3x3 chamfer approximation) so that edge_px means pixels.
  */
-#ifndef VSH_EDT_H
-#define VSH_EDT_H
+#ifndef VSHM_EDT_H
+#define VSHM_EDT_H
 
 #ifdef __cplusplus
 extern "C" {
@@ -18,7 +18,7 @@ extern "C" {
  * feature cell at all, every d2 is +INFINITY.
  * Returns the number of feature cells (>= 0), or -1 on bad arguments or
  * when out of memory. */
-long vsh_edt_sq(const unsigned char *feature, int width, int height, double *d2);
+long vshm_edt_sq(const unsigned char *feature, int width, int height, double *d2);
 
 #ifdef __cplusplus
 }

@@ -1,11 +1,11 @@
-/* vsh_png.c - see vsh_png.h. libpng reports errors with longjmp; each
+/* vshm_png.c - see vshm_png.h. libpng reports errors with longjmp; each
  * libpng call sequence lives in its own function (read_body, write_body)
  * whose caller owns every resource, so nothing modified after setjmp is a
  * local of the function that called setjmp (C11 7.13.2.1: such locals are
  * indeterminate after longjmp unless volatile). */
-#include "vsh_png.h"
+#include "vshm_png.h"
 
-#include "vsh_atomic.h"
+#include "vshm_atomic.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -63,7 +63,7 @@ static const char *color_type_name(int ct) {
 /* Largest image accepted: keeps width * height * sizeof(float) and the
  * doubled grid of the edge metric far from overflow, and stops a forged
  * header from making us allocate gigabytes. 16384^2 is plenty for renders. */
-#define VSH_PNG_MAX_PIXELS (16384L * 16384L)
+#define VSHM_PNG_MAX_PIXELS (16384L * 16384L)
 
 /* Returns 0, or -1 with job->err set. Allocates job->data and job->rows. */
 static int read_body(png_job *job, png_structp png, png_infop info) {
@@ -83,7 +83,7 @@ static int read_body(png_job *job, png_structp png, png_infop info) {
     return -1;
   }
   if (w == 0 || h == 0 || w > INT_MAX || h > INT_MAX ||
-      (double)w * (double)h > (double)VSH_PNG_MAX_PIXELS) {
+      (double)w * (double)h > (double)VSHM_PNG_MAX_PIXELS) {
     set_err(job->err, job->errlen, "%s: unsupported size %lux%lu", job->path,
             (unsigned long)w, (unsigned long)h);
     return -1;
@@ -185,12 +185,12 @@ static int read_png(const char *path, int channels, float **pixels, int *width,
   return 0;
 }
 
-int vsh_png_read_gray(const char *path, float **pixels, int *width, int *height,
+int vshm_png_read_gray(const char *path, float **pixels, int *width, int *height,
                       int *bit_depth, char *err, size_t errlen) {
   return read_png(path, 1, pixels, width, height, bit_depth, err, errlen);
 }
 
-int vsh_png_read_rgb(const char *path, float **rgb, int *width, int *height, int *bit_depth,
+int vshm_png_read_rgb(const char *path, float **rgb, int *width, int *height, int *bit_depth,
                      char *err, size_t errlen) {
   return read_png(path, 3, rgb, width, height, bit_depth, err, errlen);
 }
@@ -213,13 +213,13 @@ static int write_body(png_job *job, png_structp png, png_infop info,
 static int write_png(const char *path, const unsigned char *packed, int width, int height,
                      int color_type, int depth, int channels, char *err, size_t errlen) {
   if (!path || !packed || width <= 0 || height <= 0 ||
-      (double)width * (double)height > (double)VSH_PNG_MAX_PIXELS) {
+      (double)width * (double)height > (double)VSHM_PNG_MAX_PIXELS) {
     set_err(err, errlen, "%s: invalid image (%dx%d)", path ? path : "(null)", width,
             height);
     return -1;
   }
-  vsh_atomic_file af;
-  if (vsh_atomic_open(&af, path, err, errlen) != 0) return -1;
+  vshm_atomic_file af;
+  if (vshm_atomic_open(&af, path, err, errlen) != 0) return -1;
 
   png_job job;
   memset(&job, 0, sizeof job);
@@ -239,26 +239,26 @@ static int write_png(const char *path, const unsigned char *packed, int width, i
   }
   png_destroy_write_struct(png ? &png : NULL, info ? &info : NULL);
   if (rc != 0) {
-    vsh_atomic_abort(&af);
+    vshm_atomic_abort(&af);
     return -1;
   }
-  return vsh_atomic_commit(&af, err, errlen);
+  return vshm_atomic_commit(&af, err, errlen);
 }
 
-int vsh_png_write_gray8(const char *path, const unsigned char *pixels, int width,
+int vshm_png_write_gray8(const char *path, const unsigned char *pixels, int width,
                         int height, char *err, size_t errlen) {
   return write_png(path, pixels, width, height, PNG_COLOR_TYPE_GRAY, 8, 1, err, errlen);
 }
 
-int vsh_png_write_rgb8(const char *path, const unsigned char *rgb, int width, int height,
+int vshm_png_write_rgb8(const char *path, const unsigned char *rgb, int width, int height,
                        char *err, size_t errlen) {
   return write_png(path, rgb, width, height, PNG_COLOR_TYPE_RGB, 8, 3, err, errlen);
 }
 
-int vsh_png_write_gray16(const char *path, const uint16_t *pixels, int width, int height,
+int vshm_png_write_gray16(const char *path, const uint16_t *pixels, int width, int height,
                          char *err, size_t errlen) {
   if (!pixels || width <= 0 || height <= 0 ||
-      (double)width * (double)height > (double)VSH_PNG_MAX_PIXELS)
+      (double)width * (double)height > (double)VSHM_PNG_MAX_PIXELS)
     return write_png(path, NULL, width, height, PNG_COLOR_TYPE_GRAY, 16, 1, err, errlen);
   size_t n = (size_t)width * (size_t)height;
   unsigned char *be = malloc(2 * n);
@@ -275,11 +275,11 @@ int vsh_png_write_gray16(const char *path, const uint16_t *pixels, int width, in
   return rc;
 }
 
-int vsh_png_write_gray16_float(const char *path, const float *v, int width, int height,
+int vshm_png_write_gray16_float(const char *path, const float *v, int width, int height,
                                char *err, size_t errlen) {
   if (!v || width <= 0 || height <= 0 ||
-      (double)width * (double)height > (double)VSH_PNG_MAX_PIXELS)
-    return vsh_png_write_gray16(path, NULL, width, height, err, errlen);
+      (double)width * (double)height > (double)VSHM_PNG_MAX_PIXELS)
+    return vshm_png_write_gray16(path, NULL, width, height, err, errlen);
   size_t n = (size_t)width * (size_t)height;
   uint16_t *s = malloc(n * sizeof *s);
   if (!s) {
@@ -292,7 +292,7 @@ int vsh_png_write_gray16_float(const char *path, const float *v, int width, int 
     if (x > 1.0f) x = 1.0f;
     s[i] = (uint16_t)lrintf(x * 65535.0f);
   }
-  int rc = vsh_png_write_gray16(path, s, width, height, err, errlen);
+  int rc = vshm_png_write_gray16(path, s, width, height, err, errlen);
   free(s);
   return rc;
 }

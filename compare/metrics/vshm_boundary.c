@@ -1,9 +1,9 @@
-/* vsh_boundary.c - see vsh_boundary.h. */
-#include "vsh_boundary.h"
+/* vshm_boundary.c - see vshm_boundary.h. */
+#include "vshm_boundary.h"
 
 #include <string.h>
 
-long vsh_boundary_cracks(const float *v, const unsigned char *valid, int width,
+long vshm_boundary_cracks(const float *v, const unsigned char *valid, int width,
                          int height, unsigned char *cracks) {
   int w2 = 2 * width - 1;
   int h2 = 2 * height - 1;
@@ -13,13 +13,13 @@ long vsh_boundary_cracks(const float *v, const unsigned char *valid, int width,
     for (int x = 0; x < width; ++x) {
       size_t i = (size_t)y * width + x;
       if (!valid[i]) continue;
-      int lit = vsh_is_lit(v[i]);
+      int lit = vshm_is_lit(v[i]);
       /* Look right and down only, so each crack is found once. */
-      if (x + 1 < width && valid[i + 1] && vsh_is_lit(v[i + 1]) != lit) {
+      if (x + 1 < width && valid[i + 1] && vshm_is_lit(v[i + 1]) != lit) {
         cracks[(size_t)(2 * y) * w2 + (2 * x + 1)] = 1;
         ++count;
       }
-      if (y + 1 < height && valid[i + width] && vsh_is_lit(v[i + width]) != lit) {
+      if (y + 1 < height && valid[i + width] && vshm_is_lit(v[i + width]) != lit) {
         cracks[(size_t)(2 * y + 1) * w2 + (2 * x)] = 1;
         ++count;
       }
@@ -28,7 +28,7 @@ long vsh_boundary_cracks(const float *v, const unsigned char *valid, int width,
   return count;
 }
 
-void vsh_crack_pixels(int cx, int cy, int width, long *a, long *b) {
+void vshm_crack_pixels(int cx, int cy, int width, long *a, long *b) {
   if (cx & 1) { /* between (cx-1)/2 and (cx+1)/2 on row cy/2 */
     long row = (long)(cy / 2) * width;
     *a = row + (cx - 1) / 2;

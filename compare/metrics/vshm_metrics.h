@@ -1,33 +1,33 @@
-/* vsh_metrics.h - shadow error metrics of a visibility image v against a
+/* vshm_metrics.h - shadow error metrics of a visibility image v against a
  * ray-traced reference v_ref (definitions: docs/metrics.md).
  *
  * Images are width * height floats in [0,1] (1 lit, 0 fully shadowed), row
  * major, top row first. valid (non-zero = valid) is the reference's mask:
  * pixels whose unshadowed reference intensity is above epsilon. exclude
  * (non-zero = leave out, may be NULL) removes further pixels, e.g. a band
- * along the reference's shadow boundary (vsh_boundary_band).
+ * along the reference's shadow boundary (vshm_boundary_band).
  *
  * Thresholded state: a pixel is lit when v >= 0.5. Inputs must be finite.
  */
-#ifndef VSH_METRICS_H
-#define VSH_METRICS_H
+#ifndef VSHM_METRICS_H
+#define VSHM_METRICS_H
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 /* Return codes. */
-#define VSH_METRICS_OK 0
-#define VSH_METRICS_EMPTY 1     /* no pixel compared: all metrics are 0 */
-#define VSH_METRICS_EINVAL (-1) /* NULL image, size <= 0 or too large */
-#define VSH_METRICS_ENOMEM (-2)
+#define VSHM_METRICS_OK 0
+#define VSHM_METRICS_EMPTY 1     /* no pixel compared: all metrics are 0 */
+#define VSHM_METRICS_EINVAL (-1) /* NULL image, size <= 0 or too large */
+#define VSHM_METRICS_ENOMEM (-2)
 
-typedef struct vsh_metrics {
+typedef struct vshm_metrics {
   long valid_pixels;    /* valid != 0 */
   long compared_pixels; /* valid and not excluded: the denominator below */
   double vis_mae;       /* mean |v - v_ref| */
   double wrong_pct;     /* 100 * fraction with |v - v_ref| > 0.5 */
-  double edge_px;       /* symmetric mean boundary distance, see vsh_edge_px */
+  double edge_px;       /* symmetric mean boundary distance, see vshm_edge_px */
   double false_shadow_pct; /* 100 * fraction with v_ref > 0.9 and v < 0.5 */
   double false_light_pct;  /* 100 * fraction with v_ref < 0.1 and v > 0.5 */
   /* Errors relative to the shadow, so that losing a small shadow is a large
@@ -44,18 +44,18 @@ typedef struct vsh_metrics {
    * lost shadow). */
   double wrong_of_shadow_pct;      /* of the reference's shadow */
   double wrong_of_test_shadow_pct; /* of the technique's shadow */
-} vsh_metrics;
+} vshm_metrics;
 
 /* Computes every metric over the compared pixels (valid and not excluded).
- * Returns VSH_METRICS_OK; VSH_METRICS_EMPTY when no pixel is compared (all
- * metrics 0, valid_pixels still counted); VSH_METRICS_EINVAL or
- * VSH_METRICS_ENOMEM (out is then all zero). */
-int vsh_metrics_compute(const float *v, const float *v_ref, const unsigned char *valid,
+ * Returns VSHM_METRICS_OK; VSHM_METRICS_EMPTY when no pixel is compared (all
+ * metrics 0, valid_pixels still counted); VSHM_METRICS_EINVAL or
+ * VSHM_METRICS_ENOMEM (out is then all zero). */
+int vshm_metrics_compute(const float *v, const float *v_ref, const unsigned char *valid,
                         const unsigned char *exclude, int width, int height,
-                        vsh_metrics *out);
+                        vshm_metrics *out);
 
 /* edge_px alone. The boundaries of v and v_ref are the cracks between
- * 4-adjacent valid pixels of different state (vsh_boundary.h), found over
+ * 4-adjacent valid pixels of different state (vshm_boundary.h), found over
  * all valid pixels: exclude does not move a boundary. Every crack of v
  * with neither of its two pixels excluded contributes its Euclidean
  * distance (pixels) to the nearest crack of v_ref, and vice versa;
@@ -64,8 +64,8 @@ int vsh_metrics_compute(const float *v, const float *v_ref, const unsigned char 
  * every crack is excluded) gives 0; when one image has no boundary
  * anywhere, each crack of the other contributes the image diagonal
  * sqrt(w^2 + h^2), longer than any real distance, so edge_px is exactly
- * the diagonal. Returns VSH_METRICS_OK, _EINVAL or _ENOMEM. */
-int vsh_edge_px(const float *v, const float *v_ref, const unsigned char *valid,
+ * the diagonal. Returns VSHM_METRICS_OK, _EINVAL or _ENOMEM. */
+int vshm_edge_px(const float *v, const float *v_ref, const unsigned char *valid,
                 const unsigned char *exclude, int width, int height, double *edge_px);
 
 /* band[i] = 1 for every valid pixel within Chebyshev distance `radius` of
@@ -73,34 +73,34 @@ int vsh_edge_px(const float *v, const float *v_ref, const unsigned char *valid,
  * nothing; radius 1 marks the pixels touching the boundary on both sides
  * (the one-pixel band along the exact shadow boundary); radius N a band N
  * pixels deep on each side. Use it as (part of) exclude. Returns
- * VSH_METRICS_OK, _EINVAL (also for radius < 0) or _ENOMEM. */
-int vsh_boundary_band(const float *v_ref, const unsigned char *valid, int width,
+ * VSHM_METRICS_OK, _EINVAL (also for radius < 0) or _ENOMEM. */
+int vshm_boundary_band(const float *v_ref, const unsigned char *valid, int width,
                       int height, int radius, unsigned char *band);
 
 /* wrong[i] = 1 when valid[i] and |v - v_ref| > 0.5, else 0: the per-frame
- * error state that vsh_flicker_pct compares. Returns the number of wrong
+ * error state that vshm_flicker_pct compares. Returns the number of wrong
  * pixels, or -1 on bad arguments. */
-long vsh_error_state(const float *v, const float *v_ref, const unsigned char *valid,
+long vshm_error_state(const float *v, const float *v_ref, const unsigned char *valid,
                      int width, int height, unsigned char *wrong);
 
 /* Shimmer along a camera path of `frames` frames of width * height pixels.
- * wrong[f] is frame f's error state (vsh_error_state), valid[f] its mask
+ * wrong[f] is frame f's error state (vshm_error_state), valid[f] its mask
  * (non-zero = valid; AND in any exclusion first). For each consecutive pair
  * (f-1, f), the percentage of pixels valid in both frames whose state
  * differs; the result is the mean of those percentages over the pairs that
  * have at least one pixel valid in both. *pairs_used (may be NULL) gets
  * that number of pairs. Fewer than 2 frames, or no usable pair: 0.
  * Bad arguments (NULL arrays, frames < 0, size <= 0): -1. */
-double vsh_flicker_pct(const unsigned char *const *wrong, const unsigned char *const *valid,
+double vshm_flicker_pct(const unsigned char *const *wrong, const unsigned char *const *valid,
                        int frames, int width, int height, int *pairs_used);
 
 /* Signed error heat map for the report, 3 bytes (R,G,B) per pixel, with
  * e = v - v_ref: e < 0 (v too dark, false shadow) fades from white to blue
  * as |e| goes to 1, e > 0 (v too bright, false light) from white to red,
  * e = 0 is white, invalid pixels are mid grey (128,128,128). Linear in e,
- * so a 0.5 error is a clearly saturated colour. Returns VSH_METRICS_OK or
- * VSH_METRICS_EINVAL. */
-int vsh_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
+ * so a 0.5 error is a clearly saturated colour. Returns VSHM_METRICS_OK or
+ * VSHM_METRICS_EINVAL. */
+int vshm_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
                           int width, int height, unsigned char *rgb);
 
 /* reflection_mae, the colour metric of planar mirrors (docs/reflections.md):
@@ -111,17 +111,17 @@ int vsh_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned cha
  * (|R - R_ref| + |G - G_ref| + |B - B_ref|) / 3, each channel clamped to
  * [0,1] first (NaN counts as 0, like an unlit pixel), so it lies in [0,1].
  * *pixels (may be NULL) gets the number of compared pixels. Returns
- * VSH_METRICS_OK; VSH_METRICS_EMPTY when no pixel is compared (*mae = 0);
- * VSH_METRICS_EINVAL (NULL image or mae, bad size; *mae = 0 when mae is
+ * VSHM_METRICS_OK; VSHM_METRICS_EMPTY when no pixel is compared (*mae = 0);
+ * VSHM_METRICS_EINVAL (NULL image or mae, bad size; *mae = 0 when mae is
  * not NULL). */
-int vsh_reflection_mae(const float *rgb, const float *rgb_ref, const unsigned char *mirror,
+int vshm_reflection_mae(const float *rgb, const float *rgb_ref, const unsigned char *mirror,
                        const unsigned char *exclude, int width, int height, double *mae,
                        long *pixels);
 
 /* The mirror region's heat map for the report: the colours of
- * vsh_error_heatmap_rgb for e = mean(R,G,B) - mean(R_ref,G_ref,B_ref) (channels
- * clamped as in vsh_reflection_mae) on mirror pixels, mid grey elsewhere. */
-int vsh_reflection_heatmap_rgb(const float *rgb, const float *rgb_ref,
+ * vshm_error_heatmap_rgb for e = mean(R,G,B) - mean(R_ref,G_ref,B_ref) (channels
+ * clamped as in vshm_reflection_mae) on mirror pixels, mid grey elsewhere. */
+int vshm_reflection_heatmap_rgb(const float *rgb, const float *rgb_ref,
                                const unsigned char *mirror, int width, int height,
                                unsigned char *out);
 

@@ -1,13 +1,13 @@
-/* vsh_flicker.c - per-frame error state and flicker_pct (shimmering). */
-#include "vsh_metrics.h"
-#include "vsh_metrics_size.h"
+/* vshm_flicker.c - per-frame error state and flicker_pct (shimmering). */
+#include "vshm_metrics.h"
+#include "vshm_metrics_size.h"
 
 #include <math.h>
 #include <stddef.h>
 
-long vsh_error_state(const float *v, const float *v_ref, const unsigned char *valid,
+long vshm_error_state(const float *v, const float *v_ref, const unsigned char *valid,
                      int width, int height, unsigned char *wrong) {
-  if (!v || !v_ref || !valid || !wrong || !vsh_metrics_size_ok(width, height)) return -1;
+  if (!v || !v_ref || !valid || !wrong || !vshm_metrics_size_ok(width, height)) return -1;
   size_t n = (size_t)width * (size_t)height;
   long count = 0;
   for (size_t i = 0; i < n; ++i) {
@@ -18,10 +18,10 @@ long vsh_error_state(const float *v, const float *v_ref, const unsigned char *va
   return count;
 }
 
-double vsh_flicker_pct(const unsigned char *const *wrong, const unsigned char *const *valid,
+double vshm_flicker_pct(const unsigned char *const *wrong, const unsigned char *const *valid,
                        int frames, int width, int height, int *pairs_used) {
   if (pairs_used) *pairs_used = 0;
-  if (!wrong || !valid || frames < 0 || !vsh_metrics_size_ok(width, height)) return -1.0;
+  if (!wrong || !valid || frames < 0 || !vshm_metrics_size_ok(width, height)) return -1.0;
   for (int f = 0; f < frames; ++f)
     if (!wrong[f] || !valid[f]) return -1.0;
 

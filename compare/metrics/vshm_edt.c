@@ -1,5 +1,5 @@
-/* vsh_edt.c - see vsh_edt.h. */
-#include "vsh_edt.h"
+/* vshm_edt.c - see vshm_edt.h. */
+#include "vshm_edt.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -39,7 +39,7 @@ static void edt_1d(const double *f, int n, double *d, int *v, double *z) {
   }
 }
 
-long vsh_edt_sq(const unsigned char *feature, int width, int height, double *d2) {
+long vshm_edt_sq(const unsigned char *feature, int width, int height, double *d2) {
   if (!feature || !d2 || width <= 0 || height <= 0) return -1;
   size_t n = (size_t)width * (size_t)height;
   long count = 0;

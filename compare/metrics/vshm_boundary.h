@@ -1,4 +1,4 @@
-/* vsh_boundary.h - where the 0.5-level boundary of a visibility image lies.
+/* vshm_boundary.h - where the 0.5-level boundary of a visibility image lies.
  *
  * A valid pixel is "lit" when v >= 0.5 and "shadowed" otherwise; invalid
  * pixels have no state. The boundary is made of "cracks": the shared edge
@@ -15,24 +15,24 @@
  * crack between (x,y) and (x,y+1) is cell (2x,2y+1). Distances on that grid
  * are twice the distances in pixels.
  */
-#ifndef VSH_BOUNDARY_H
-#define VSH_BOUNDARY_H
+#ifndef VSHM_BOUNDARY_H
+#define VSHM_BOUNDARY_H
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 /* The thresholded state: non-zero for lit. */
-static inline int vsh_is_lit(float v) { return v >= 0.5f; }
+static inline int vshm_is_lit(float v) { return v >= 0.5f; }
 
 /* Clears the (2w-1) x (2h-1) grid `cracks`, then sets the cells of the
  * boundary cracks of v to 1. valid != 0 marks valid pixels. Returns the
  * number of cracks. */
-long vsh_boundary_cracks(const float *v, const unsigned char *valid, int width,
+long vshm_boundary_cracks(const float *v, const unsigned char *valid, int width,
                          int height, unsigned char *cracks);
 
 /* The two pixels (row-major indices) on either side of crack cell (cx,cy). */
-void vsh_crack_pixels(int cx, int cy, int width, long *a, long *b);
+void vshm_crack_pixels(int cx, int cy, int width, long *a, long *b);
 
 #ifdef __cplusplus
 }

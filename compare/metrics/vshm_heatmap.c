@@ -1,7 +1,7 @@
-/* vsh_heatmap.c - the signed error heat maps of the HTML report (visibility
+/* vshm_heatmap.c - the signed error heat maps of the HTML report (visibility
  * and the mirror region's colour). */
-#include "vsh_metrics.h"
-#include "vsh_metrics_size.h"
+#include "vshm_metrics.h"
+#include "vshm_metrics_size.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -23,10 +23,10 @@ static void heat_pixel(double e, unsigned char *p) {
     }
 }
 
-int vsh_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
+int vshm_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
                           int width, int height, unsigned char *rgb) {
-  if (!v || !v_ref || !valid || !rgb || !vsh_metrics_size_ok(width, height))
-    return VSH_METRICS_EINVAL;
+  if (!v || !v_ref || !valid || !rgb || !vshm_metrics_size_ok(width, height))
+    return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;
   for (size_t i = 0; i < n; ++i) {
     unsigned char *p = rgb + 3 * i;
@@ -35,17 +35,17 @@ int vsh_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned cha
     else
       heat_pixel((double)v[i] - (double)v_ref[i], p);
   }
-  return VSH_METRICS_OK;
+  return VSHM_METRICS_OK;
 }
 
 /* A colour channel as the reflection metric sees it: [0,1], NaN -> 0. */
 static double channel(float x) { return !(x > 0.0f) ? 0.0 : x > 1.0f ? 1.0 : (double)x; }
 
-int vsh_reflection_heatmap_rgb(const float *rgb, const float *rgb_ref,
+int vshm_reflection_heatmap_rgb(const float *rgb, const float *rgb_ref,
                                const unsigned char *mirror, int width, int height,
                                unsigned char *out) {
-  if (!rgb || !rgb_ref || !mirror || !out || !vsh_metrics_size_ok(width, height))
-    return VSH_METRICS_EINVAL;
+  if (!rgb || !rgb_ref || !mirror || !out || !vshm_metrics_size_ok(width, height))
+    return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;
   for (size_t i = 0; i < n; ++i) {
     unsigned char *p = out + 3 * i;
@@ -57,5 +57,5 @@ int vsh_reflection_heatmap_rgb(const float *rgb, const float *rgb_ref,
     for (int c = 0; c < 3; ++c) e += channel(rgb[3 * i + c]) - channel(rgb_ref[3 * i + c]);
     heat_pixel(e / 3.0, p);
   }
-  return VSH_METRICS_OK;
+  return VSHM_METRICS_OK;
 }

@@ -1,4 +1,4 @@
-/* vsh_atomic.h - replace a file atomically: write "<path>.tmp<pid>", then
+/* vshm_atomic.h - replace a file atomically: write "<path>.tmp<pid>", then
  * rename() it over <path>.
  *
  * Why: the harness runs many tools in parallel and may be interrupted. A
@@ -9,8 +9,8 @@
  *
  * Errors go to err (may be NULL) as "<path>: <problem>"; nothing is printed.
  */
-#ifndef VSH_ATOMIC_H
-#define VSH_ATOMIC_H
+#ifndef VSHM_ATOMIC_H
+#define VSHM_ATOMIC_H
 
 #include <stddef.h>
 #include <stdio.h>
@@ -20,28 +20,28 @@ extern "C" {
 #endif
 
 /* Enough for any path the tools take plus ".tmp" and a pid. */
-#define VSH_ATOMIC_TMP_MAX 4096
+#define VSHM_ATOMIC_TMP_MAX 4096
 
-typedef struct vsh_atomic_file {
+typedef struct vshm_atomic_file {
   FILE *fp;                      /* write the content here */
   const char *path;              /* final destination (not copied) */
-  char tmp[VSH_ATOMIC_TMP_MAX];  /* the temporary file */
-} vsh_atomic_file;
+  char tmp[VSHM_ATOMIC_TMP_MAX];  /* the temporary file */
+} vshm_atomic_file;
 
 /* Creates the temporary file. Returns 0, or -1 with err set (nothing is
  * left on disk). */
-int vsh_atomic_open(vsh_atomic_file *af, const char *path, char *err, size_t errlen);
+int vshm_atomic_open(vshm_atomic_file *af, const char *path, char *err, size_t errlen);
 
 /* Flushes, syncs and closes the temporary file, then renames it to the
  * final path. Returns 0, or -1 with err set; on failure the temporary file
  * is removed and the final path is untouched. */
-int vsh_atomic_commit(vsh_atomic_file *af, char *err, size_t errlen);
+int vshm_atomic_commit(vshm_atomic_file *af, char *err, size_t errlen);
 
 /* Closes and removes the temporary file (after a failed write). */
-void vsh_atomic_abort(vsh_atomic_file *af);
+void vshm_atomic_abort(vshm_atomic_file *af);
 
 /* Whole-buffer convenience: writes len bytes of data to path atomically. */
-int vsh_write_file_atomic(const char *path, const void *data, size_t len, char *err,
+int vshm_write_file_atomic(const char *path, const void *data, size_t len, char *err,
                           size_t errlen);
 
 #ifdef __cplusplus

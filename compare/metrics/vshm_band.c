@@ -1,12 +1,12 @@
-/* vsh_band.c - vsh_boundary_band: the pixels near v_ref's shadow boundary.
+/* vshm_band.c - vshm_boundary_band: the pixels near v_ref's shadow boundary.
  * A pixel is in the band when a valid pixel of the opposite state lies in
  * the (2r+1)^2 square around it, i.e. when it is inside the square
  * dilation of the other state's pixels. Square dilation separates into a
  * row pass and a column pass; each uses a running count, so the cost does
  * not grow with the radius. */
-#include "vsh_boundary.h"
-#include "vsh_metrics.h"
-#include "vsh_metrics_size.h"
+#include "vshm_boundary.h"
+#include "vshm_metrics.h"
+#include "vshm_metrics_size.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -32,13 +32,13 @@ static void dilate_square(unsigned char *mask, unsigned char *tmp, int width, in
   for (int x = 0; x < width; ++x) dilate_1d(tmp + x, mask + x, height, width, r, prefix);
 }
 
-int vsh_boundary_band(const float *v_ref, const unsigned char *valid, int width,
+int vshm_boundary_band(const float *v_ref, const unsigned char *valid, int width,
                       int height, int radius, unsigned char *band) {
-  if (!v_ref || !valid || !band || radius < 0 || !vsh_metrics_size_ok(width, height))
-    return VSH_METRICS_EINVAL;
+  if (!v_ref || !valid || !band || radius < 0 || !vshm_metrics_size_ok(width, height))
+    return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;
   memset(band, 0, n);
-  if (radius == 0) return VSH_METRICS_OK;
+  if (radius == 0) return VSHM_METRICS_OK;
   /* Beyond the image size a larger radius changes nothing. */
   int m = width > height ? width : height;
   if (radius > m) radius = m;
@@ -50,11 +50,11 @@ int vsh_boundary_band(const float *v_ref, const unsigned char *valid, int width,
   if (!buf || !prefix) {
     free(buf);
     free(prefix);
-    return VSH_METRICS_ENOMEM;
+    return VSHM_METRICS_ENOMEM;
   }
   unsigned char *lit = buf, *shadow = buf + n, *state = buf + 2 * n, *tmp = buf + 3 * n;
   for (size_t i = 0; i < n; ++i) {
-    state[i] = (unsigned char)vsh_is_lit(v_ref[i]);
+    state[i] = (unsigned char)vshm_is_lit(v_ref[i]);
     lit[i] = valid[i] && state[i];
     shadow[i] = valid[i] && !state[i];
   }
@@ -64,5 +64,5 @@ int vsh_boundary_band(const float *v_ref, const unsigned char *valid, int width,
     if (valid[i]) band[i] = state[i] ? shadow[i] : lit[i];
   free(buf);
   free(prefix);
-  return VSH_METRICS_OK;
+  return VSHM_METRICS_OK;
 }

@@ -1,21 +1,21 @@
-/* vsh_penumbra.c - penumbra metrics: error and bias inside the reference's
+/* vshm_penumbra.c - penumbra metrics: error and bias inside the reference's
  * penumbra, leaks into its umbra, false shadow on its lit area, penumbra
- * width, and contour distances at three levels (vsh_penumbra.h). */
-#include "vsh_penumbra.h"
+ * width, and contour distances at three levels (vshm_penumbra.h). */
+#include "vshm_penumbra.h"
 
-#include "vsh_metrics.h"
-#include "vsh_metrics_size.h"
+#include "vshm_metrics.h"
+#include "vshm_metrics_size.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-static int in_penumbra(float r) { return r > VSH_PENUMBRA_LO && r < VSH_PENUMBRA_HI; }
+static int in_penumbra(float r) { return r > VSHM_PENUMBRA_LO && r < VSHM_PENUMBRA_HI; }
 
-int vsh_penumbra_mask(const float *v_ref, const unsigned char *valid, int width, int height,
+int vshm_penumbra_mask(const float *v_ref, const unsigned char *valid, int width, int height,
                       unsigned char *mask) {
-  if (!v_ref || !valid || !mask || !vsh_metrics_size_ok(width, height))
-    return VSH_METRICS_EINVAL;
+  if (!v_ref || !valid || !mask || !vshm_metrics_size_ok(width, height))
+    return VSHM_METRICS_EINVAL;
   memset(mask, 0, (size_t)width * (size_t)height);
   /* Dilation by one pixel: a valid pixel joins when any pixel of its 3 x 3
    * neighbourhood is a valid penumbra pixel. The dilation covers the pixel
@@ -36,7 +36,7 @@ int vsh_penumbra_mask(const float *v_ref, const unsigned char *valid, int width,
           }
         }
     }
-  return VSH_METRICS_OK;
+  return VSHM_METRICS_OK;
 }
 
 /* Pixels with 0.1 < v < 0.9 over cracks of the 0.5 contour, both counted
@@ -70,21 +70,21 @@ static int contour_at(const float *v, const float *v_ref, const unsigned char *v
     a[i] = v[i] >= level ? 1.0f : 0.0f;
     b[i] = v_ref[i] >= level ? 1.0f : 0.0f;
   }
-  return vsh_edge_px(a, b, valid, exclude, width, height, out);
+  return vshm_edge_px(a, b, valid, exclude, width, height, out);
 }
 
-int vsh_penumbra_compute(const float *v, const float *v_ref, const unsigned char *valid,
+int vshm_penumbra_compute(const float *v, const float *v_ref, const unsigned char *valid,
                          const unsigned char *exclude, int width, int height,
-                         vsh_penumbra *out) {
+                         vshm_penumbra *out) {
   static const float levels[3] = {0.1f, 0.5f, 0.9f};
-  if (!out) return VSH_METRICS_EINVAL;
+  if (!out) return VSHM_METRICS_EINVAL;
   memset(out, 0, sizeof *out);
-  if (!v || !v_ref || !valid || !vsh_metrics_size_ok(width, height)) return VSH_METRICS_EINVAL;
+  if (!v || !v_ref || !valid || !vshm_metrics_size_ok(width, height)) return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;
   unsigned char *mask = malloc(n);
   float *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
-  int rc = VSH_METRICS_ENOMEM;
-  if (mask && a && b && vsh_penumbra_mask(v_ref, valid, width, height, mask) == VSH_METRICS_OK) {
+  int rc = VSHM_METRICS_ENOMEM;
+  if (mask && a && b && vshm_penumbra_mask(v_ref, valid, width, height, mask) == VSHM_METRICS_OK) {
     double sum_abs = 0.0, sum = 0.0;
     long leaks = 0, false_shadow = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -95,10 +95,10 @@ int vsh_penumbra_compute(const float *v, const float *v_ref, const unsigned char
         sum_abs += fabs(e);
         sum += e;
       }
-      if (v_ref[i] <= VSH_PENUMBRA_LO) {
+      if (v_ref[i] <= VSHM_PENUMBRA_LO) {
         ++out->umbra_pixels;
         leaks += v[i] > 0.1f;
-      } else if (v_ref[i] >= VSH_PENUMBRA_HI) {
+      } else if (v_ref[i] >= VSHM_PENUMBRA_HI) {
         ++out->lit_pixels;
         false_shadow += v[i] < 0.9f;
       }
@@ -113,11 +113,11 @@ int vsh_penumbra_compute(const float *v, const float *v_ref, const unsigned char
     out->width_px = width_of(v, valid, exclude, width, height);
     out->ref_width_px = width_of(v_ref, valid, exclude, width, height);
     out->width_ratio = out->ref_width_px > 0.0 ? out->width_px / out->ref_width_px : 0.0;
-    rc = VSH_METRICS_OK;
-    for (int k = 0; k < 3 && rc == VSH_METRICS_OK; ++k)
+    rc = VSHM_METRICS_OK;
+    for (int k = 0; k < 3 && rc == VSHM_METRICS_OK; ++k)
       rc = contour_at(v, v_ref, valid, exclude, width, height, levels[k], a, b,
                       &out->contour_px[k]);
-    if (rc == VSH_METRICS_OK && out->penumbra_pixels == 0) rc = VSH_METRICS_EMPTY;
+    if (rc == VSHM_METRICS_OK && out->penumbra_pixels == 0) rc = VSHM_METRICS_EMPTY;
   }
   if (rc < 0) memset(out, 0, sizeof *out);
   free(mask);
@@ -126,14 +126,14 @@ int vsh_penumbra_compute(const float *v, const float *v_ref, const unsigned char
   return rc;
 }
 
-int vsh_penumbra_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
+int vshm_penumbra_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
                              int width, int height, unsigned char *rgb) {
-  if (!v || !v_ref || !valid || !rgb || !vsh_metrics_size_ok(width, height))
-    return VSH_METRICS_EINVAL;
+  if (!v || !v_ref || !valid || !rgb || !vshm_metrics_size_ok(width, height))
+    return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;
   unsigned char *mask = malloc(n);
-  if (!mask) return VSH_METRICS_ENOMEM;
-  vsh_penumbra_mask(v_ref, valid, width, height, mask);
+  if (!mask) return VSHM_METRICS_ENOMEM;
+  vshm_penumbra_mask(v_ref, valid, width, height, mask);
   for (size_t i = 0; i < n; ++i) {
     unsigned char *p = rgb + 3 * i;
     if (!valid[i]) {
@@ -150,5 +150,5 @@ int vsh_penumbra_heatmap_rgb(const float *v, const float *v_ref, const unsigned 
     }
   }
   free(mask);
-  return VSH_METRICS_OK;
+  return VSHM_METRICS_OK;
 }

@@ -1,7 +1,7 @@
-/* vsh_reflection.c - reflection_mae, the colour error over a mirror's
- * pixels (definition: vsh_metrics.h, docs/metrics.md). */
-#include "vsh_metrics.h"
-#include "vsh_metrics_size.h"
+/* vshm_reflection.c - reflection_mae, the colour error over a mirror's
+ * pixels (definition: vshm_metrics.h, docs/metrics.md). */
+#include "vshm_metrics.h"
+#include "vshm_metrics_size.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -10,13 +10,13 @@
  * one pixel outweigh the rest (the result stays in [0,1]). */
 static double channel(float x) { return !(x > 0.0f) ? 0.0 : x > 1.0f ? 1.0 : (double)x; }
 
-int vsh_reflection_mae(const float *rgb, const float *rgb_ref, const unsigned char *mirror,
+int vshm_reflection_mae(const float *rgb, const float *rgb_ref, const unsigned char *mirror,
                        const unsigned char *exclude, int width, int height, double *mae,
                        long *pixels) {
   if (mae) *mae = 0.0;
   if (pixels) *pixels = 0;
-  if (!rgb || !rgb_ref || !mirror || !mae || !vsh_metrics_size_ok(width, height))
-    return VSH_METRICS_EINVAL;
+  if (!rgb || !rgb_ref || !mirror || !mae || !vshm_metrics_size_ok(width, height))
+    return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;
   long count = 0;
   double sum = 0.0; /* double: a float sum of 10^7 terms loses digits */
@@ -28,7 +28,7 @@ int vsh_reflection_mae(const float *rgb, const float *rgb_ref, const unsigned ch
     ++count;
   }
   if (pixels) *pixels = count;
-  if (count == 0) return VSH_METRICS_EMPTY;
+  if (count == 0) return VSHM_METRICS_EMPTY;
   *mae = sum / (double)count;
-  return VSH_METRICS_OK;
+  return VSHM_METRICS_OK;
 }

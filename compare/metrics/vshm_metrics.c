@@ -1,19 +1,19 @@
-/* vsh_metrics.c - the per-pixel metrics; edge_px is in vsh_edge.c. */
-#include "vsh_metrics.h"
+/* vshm_metrics.c - the per-pixel metrics; edge_px is in vshm_edge.c. */
+#include "vshm_metrics.h"
 
-#include "vsh_boundary.h"
-#include "vsh_metrics_size.h"
+#include "vshm_boundary.h"
+#include "vshm_metrics_size.h"
 
 #include <math.h>
 #include <string.h>
 
-int vsh_metrics_compute(const float *v, const float *v_ref, const unsigned char *valid,
+int vshm_metrics_compute(const float *v, const float *v_ref, const unsigned char *valid,
                         const unsigned char *exclude, int width, int height,
-                        vsh_metrics *out) {
-  if (!out) return VSH_METRICS_EINVAL;
+                        vshm_metrics *out) {
+  if (!out) return VSHM_METRICS_EINVAL;
   memset(out, 0, sizeof *out);
-  if (!v || !v_ref || !valid || !vsh_metrics_size_ok(width, height))
-    return VSH_METRICS_EINVAL;
+  if (!v || !v_ref || !valid || !vshm_metrics_size_ok(width, height))
+    return VSHM_METRICS_EINVAL;
 
   size_t n = (size_t)width * (size_t)height;
   long n_valid = 0, n_cmp = 0, n_wrong = 0, n_fshadow = 0, n_flight = 0;
@@ -30,15 +30,15 @@ int vsh_metrics_compute(const float *v, const float *v_ref, const unsigned char 
     if (e > 0.5) ++n_wrong;
     if (r > 0.9 && t < 0.5) ++n_fshadow;
     if (r < 0.1 && t > 0.5) ++n_flight;
-    n_ref_shadow += !vsh_is_lit(v_ref[i]);
-    n_test_shadow += !vsh_is_lit(v[i]);
+    n_ref_shadow += !vshm_is_lit(v_ref[i]);
+    n_test_shadow += !vshm_is_lit(v[i]);
   }
   out->valid_pixels = n_valid;
-  if (n_cmp == 0) return VSH_METRICS_EMPTY;
+  if (n_cmp == 0) return VSHM_METRICS_EMPTY;
 
   double edge = 0.0;
-  int rc = vsh_edge_px(v, v_ref, valid, exclude, width, height, &edge);
-  if (rc != VSH_METRICS_OK) {
+  int rc = vshm_edge_px(v, v_ref, valid, exclude, width, height, &edge);
+  if (rc != VSHM_METRICS_OK) {
     memset(out, 0, sizeof *out);
     return rc;
   }
@@ -53,5 +53,5 @@ int vsh_metrics_compute(const float *v, const float *v_ref, const unsigned char 
   out->wrong_of_shadow_pct = 100.0 * (double)n_wrong / (double)(n_ref_shadow > 0 ? n_ref_shadow : 1);
   out->wrong_of_test_shadow_pct =
       100.0 * (double)n_wrong / (double)(n_test_shadow > 0 ? n_test_shadow : 1);
-  return VSH_METRICS_OK;
+  return VSHM_METRICS_OK;
 }
