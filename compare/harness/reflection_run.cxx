@@ -3,7 +3,10 @@
 // seconds.
 #include "reflection_run.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_process.h"
+#include "harness_progress.h"
+#include "harness_text.h"
 #include "technique_variant.h"
 
 #include "vshm_metrics.h"
@@ -50,9 +53,7 @@ bool PovrayColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
 {
   const std::string dir = AbsPath(opt.out + "/" + e.dir_id + "/povray");
   const std::string work = dir + "/.colourwork";
-  RemoveTree(work);
-  if (!MakeDirs(work, err) ||
-    !WriteFileAtomic(work + "/colour.pov", PovColourScene(ex, opt.povray_grid, opt.seed), err))
+  if (!MakeWorkDir(work, "colour.pov", PovColourScene(ex, opt.povray_grid, opt.seed), err))
     return false;
   const std::string log = dir + "/povray-colour.log";
   for (int mask = 0; mask < 2; ++mask)
@@ -61,9 +62,8 @@ bool PovrayColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
       "Display_Gamma=1.0", "+W" + std::to_string(ex.width), "+H" + std::to_string(ex.height),
       "+WT" + std::to_string(opt.threads), "Declare=VSH_MIRROR_MASK=" + std::to_string(mask),
       "+Icolour.pov", mask ? "+Omirror.png" : "+Ocolor.png" };
-    RunResult r = RunProcess(argv, work, log, opt.timeout);
-    Progress(e.id + ": povray " + (mask ? "mirror mask" : "colour") + (r.ok() ? "" : " FAILED") +
-      " (" + Fmt(r.seconds, "%.1f") + " s)");
+    RunResult r = RunLogged(
+      e.id + ": povray " + (mask ? "mirror mask" : "colour"), argv, work, log, opt.timeout);
     if (!r.ok())
     {
       err = "povray colour: " + r.error;
@@ -95,16 +95,13 @@ bool CyclesColour(
 {
   const std::string dir = AbsPath(opt.out + "/" + e.dir_id + "/cycles");
   const std::string work = dir + "/.colourwork";
-  RemoveTree(work);
-  if (!MakeDirs(work, err) ||
-    !WriteFileAtomic(work + "/scene.bin", CyclesData(ex, 1, opt.soft_samples, opt.seed), err))
+  if (!MakeWorkDir(work, "scene.bin", CyclesData(ex, 1, opt.soft_samples, opt.seed), err))
     return false;
   std::vector<std::string> argv{ opt.blender, "-b", "--factory-startup", "--python-exit-code", "1",
     "-t", std::to_string(opt.threads), "--python", opt.cycles_script, "--", work + "/scene.bin",
     work, "cycles-color" };
-  RunResult r = RunProcess(argv, work, dir + "/cycles-colour.log", opt.timeout * 4 + 60);
-  Progress(
-    e.id + ": cycles colour" + (r.ok() ? "" : " FAILED") + " (" + Fmt(r.seconds, "%.1f") + " s)");
+  RunResult r = RunLogged(
+    e.id + ": cycles colour", argv, work, dir + "/cycles-colour.log", opt.timeout * 4 + 60);
   std::string raw;
   const size_t n = static_cast<size_t>(ex.width) * ex.height;
   if (!r.ok() || !ReadFile(work + "/color.f32", raw) || raw.size() != 12 * n)
@@ -144,9 +141,8 @@ bool VtkColour(const Options& opt, const SceneEntry& e, const ExportScene& ex, c
     "--quiet" };
   const std::vector<std::string> tech = RenderArguments(t); // a variant's --set too
   argv.insert(argv.begin() + 2, tech.begin(), tech.end());
-  RunResult r = RunProcess(argv, "", AbsPath(dir + "/render-colour.log"), opt.timeout);
-  Progress(e.id + ": vtk/" + t + " colour" + (r.ok() ? "" : " FAILED") + " (" +
-    Fmt(r.seconds, "%.1f") + " s)");
+  RunResult r = RunLogged(
+    e.id + ": vtk/" + t + " colour", argv, "", AbsPath(dir + "/render-colour.log"), opt.timeout);
   if (!r.ok())
   {
     err = "vtk/" + t + " colour: " + r.error;

@@ -1,7 +1,9 @@
 // report_data.cxx - results.csv and results.json.
 #include "report.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_progress.h"
+#include "harness_text.h"
 
 #include <cmath>
 #include <cstdio>

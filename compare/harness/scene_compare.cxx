@@ -1,7 +1,8 @@
 // scene_compare.cxx - metrics and heat map of one row.
 #include "scene_compare.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_png.h"
 
 #include "vshm_metrics.h"
 #include "vshm_penumbra.h"

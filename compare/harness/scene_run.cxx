@@ -1,7 +1,8 @@
 // scene_run.cxx - running the renderers of one scene and comparing them.
 #include "scene_run.h"
 
-#include "harness_util.h"
+#include "harness_progress.h"
+#include "harness_text.h"
 #include "reflection_run.h"
 #include "scene_compare.h"
 #include "scene_export.h"
