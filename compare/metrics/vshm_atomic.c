@@ -81,7 +81,7 @@ int vshm_atomic_commit(vshm_atomic_file *af, char *err, size_t errlen) {
 }
 
 int vshm_write_file_atomic(const char *path, const void *data, size_t len, char *err,
-                          size_t errlen) {
+                           size_t errlen) {
   vshm_atomic_file af;
   if (vshm_atomic_open(&af, path, err, errlen) != 0) return -1;
   if (len > 0 && fwrite(data, 1, len, af.fp) != len) {

@@ -42,7 +42,7 @@ void vshm_atomic_abort(vshm_atomic_file *af);
 
 /* Whole-buffer convenience: writes len bytes of data to path atomically. */
 int vshm_write_file_atomic(const char *path, const void *data, size_t len, char *err,
-                          size_t errlen);
+                           size_t errlen);
 
 #ifdef __cplusplus
 }

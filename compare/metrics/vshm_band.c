@@ -33,7 +33,7 @@ static void dilate_square(unsigned char *mask, unsigned char *tmp, int width, in
 }
 
 int vshm_boundary_band(const float *v_ref, const unsigned char *valid, int width,
-                      int height, int radius, unsigned char *band) {
+                       int height, int radius, unsigned char *band) {
   if (!v_ref || !valid || !band || radius < 0 || !vshm_metrics_size_ok(width, height))
     return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;

@@ -4,7 +4,7 @@
 #include <string.h>
 
 long vshm_boundary_cracks(const float *v, const unsigned char *valid, int width,
-                         int height, unsigned char *cracks) {
+                          int height, unsigned char *cracks) {
   int w2 = 2 * width - 1;
   int h2 = 2 * height - 1;
   memset(cracks, 0, (size_t)w2 * (size_t)h2);

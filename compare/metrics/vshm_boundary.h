@@ -29,7 +29,7 @@ static inline int vshm_is_lit(float v) { return v >= 0.5f; }
  * boundary cracks of v to 1. valid != 0 marks valid pixels. Returns the
  * number of cracks. */
 long vshm_boundary_cracks(const float *v, const unsigned char *valid, int width,
-                         int height, unsigned char *cracks);
+                          int height, unsigned char *cracks);
 
 /* The two pixels (row-major indices) on either side of crack cell (cx,cy). */
 void vshm_crack_pixels(int cx, int cy, int width, long *a, long *b);

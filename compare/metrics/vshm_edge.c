@@ -42,7 +42,7 @@ static int accumulate(const unsigned char *from, const unsigned char *to, long t
 }
 
 int vshm_edge_px(const float *v, const float *v_ref, const unsigned char *valid,
-                const unsigned char *exclude, int width, int height, double *edge_px) {
+                 const unsigned char *exclude, int width, int height, double *edge_px) {
   if (!edge_px) return VSHM_METRICS_EINVAL;
   *edge_px = 0.0;
   if (!v || !v_ref || !valid || !vshm_metrics_size_ok(width, height))

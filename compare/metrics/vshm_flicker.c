@@ -6,7 +6,7 @@
 #include <stddef.h>
 
 long vshm_error_state(const float *v, const float *v_ref, const unsigned char *valid,
-                     int width, int height, unsigned char *wrong) {
+                      int width, int height, unsigned char *wrong) {
   if (!v || !v_ref || !valid || !wrong || !vshm_metrics_size_ok(width, height)) return -1;
   size_t n = (size_t)width * (size_t)height;
   long count = 0;
@@ -19,7 +19,7 @@ long vshm_error_state(const float *v, const float *v_ref, const unsigned char *v
 }
 
 double vshm_flicker_pct(const unsigned char *const *wrong, const unsigned char *const *valid,
-                       int frames, int width, int height, int *pairs_used) {
+                        int frames, int width, int height, int *pairs_used) {
   if (pairs_used) *pairs_used = 0;
   if (!wrong || !valid || frames < 0 || !vshm_metrics_size_ok(width, height)) return -1.0;
   for (int f = 0; f < frames; ++f)

@@ -24,7 +24,7 @@ static void heat_pixel(double e, unsigned char *p) {
 }
 
 int vshm_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
-                          int width, int height, unsigned char *rgb) {
+                           int width, int height, unsigned char *rgb) {
   if (!v || !v_ref || !valid || !rgb || !vshm_metrics_size_ok(width, height))
     return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;
@@ -42,8 +42,8 @@ int vshm_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned ch
 static double channel(float x) { return !(x > 0.0f) ? 0.0 : x > 1.0f ? 1.0 : (double)x; }
 
 int vshm_reflection_heatmap_rgb(const float *rgb, const float *rgb_ref,
-                               const unsigned char *mirror, int width, int height,
-                               unsigned char *out) {
+                                const unsigned char *mirror, int width, int height,
+                                unsigned char *out) {
   if (!rgb || !rgb_ref || !mirror || !out || !vshm_metrics_size_ok(width, height))
     return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;

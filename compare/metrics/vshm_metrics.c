@@ -8,8 +8,8 @@
 #include <string.h>
 
 int vshm_metrics_compute(const float *v, const float *v_ref, const unsigned char *valid,
-                        const unsigned char *exclude, int width, int height,
-                        vshm_metrics *out) {
+                         const unsigned char *exclude, int width, int height,
+                         vshm_metrics *out) {
   if (!out) return VSHM_METRICS_EINVAL;
   memset(out, 0, sizeof *out);
   if (!v || !v_ref || !valid || !vshm_metrics_size_ok(width, height))

@@ -51,8 +51,8 @@ typedef struct vshm_metrics {
  * metrics 0, valid_pixels still counted); VSHM_METRICS_EINVAL or
  * VSHM_METRICS_ENOMEM (out is then all zero). */
 int vshm_metrics_compute(const float *v, const float *v_ref, const unsigned char *valid,
-                        const unsigned char *exclude, int width, int height,
-                        vshm_metrics *out);
+                         const unsigned char *exclude, int width, int height,
+                         vshm_metrics *out);
 
 /* edge_px alone. The boundaries of v and v_ref are the cracks between
  * 4-adjacent valid pixels of different state (vshm_boundary.h), found over
@@ -66,7 +66,7 @@ int vshm_metrics_compute(const float *v, const float *v_ref, const unsigned char
  * sqrt(w^2 + h^2), longer than any real distance, so edge_px is exactly
  * the diagonal. Returns VSHM_METRICS_OK, _EINVAL or _ENOMEM. */
 int vshm_edge_px(const float *v, const float *v_ref, const unsigned char *valid,
-                const unsigned char *exclude, int width, int height, double *edge_px);
+                 const unsigned char *exclude, int width, int height, double *edge_px);
 
 /* band[i] = 1 for every valid pixel within Chebyshev distance `radius` of
  * a valid pixel of the opposite state in v_ref, else 0. radius 0 marks
@@ -75,13 +75,13 @@ int vshm_edge_px(const float *v, const float *v_ref, const unsigned char *valid,
  * pixels deep on each side. Use it as (part of) exclude. Returns
  * VSHM_METRICS_OK, _EINVAL (also for radius < 0) or _ENOMEM. */
 int vshm_boundary_band(const float *v_ref, const unsigned char *valid, int width,
-                      int height, int radius, unsigned char *band);
+                       int height, int radius, unsigned char *band);
 
 /* wrong[i] = 1 when valid[i] and |v - v_ref| > 0.5, else 0: the per-frame
  * error state that vshm_flicker_pct compares. Returns the number of wrong
  * pixels, or -1 on bad arguments. */
 long vshm_error_state(const float *v, const float *v_ref, const unsigned char *valid,
-                     int width, int height, unsigned char *wrong);
+                      int width, int height, unsigned char *wrong);
 
 /* Shimmer along a camera path of `frames` frames of width * height pixels.
  * wrong[f] is frame f's error state (vshm_error_state), valid[f] its mask
@@ -92,7 +92,7 @@ long vshm_error_state(const float *v, const float *v_ref, const unsigned char *v
  * that number of pairs. Fewer than 2 frames, or no usable pair: 0.
  * Bad arguments (NULL arrays, frames < 0, size <= 0): -1. */
 double vshm_flicker_pct(const unsigned char *const *wrong, const unsigned char *const *valid,
-                       int frames, int width, int height, int *pairs_used);
+                        int frames, int width, int height, int *pairs_used);
 
 /* Signed error heat map for the report, 3 bytes (R,G,B) per pixel, with
  * e = v - v_ref: e < 0 (v too dark, false shadow) fades from white to blue
@@ -101,7 +101,7 @@ double vshm_flicker_pct(const unsigned char *const *wrong, const unsigned char *
  * so a 0.5 error is a clearly saturated colour. Returns VSHM_METRICS_OK or
  * VSHM_METRICS_EINVAL. */
 int vshm_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
-                          int width, int height, unsigned char *rgb);
+                           int width, int height, unsigned char *rgb);
 
 /* reflection_mae, the colour metric of planar mirrors (docs/reflections.md):
  * rgb and rgb_ref are colour images, 3 floats (linear R, G, B) per pixel,
@@ -115,15 +115,15 @@ int vshm_error_heatmap_rgb(const float *v, const float *v_ref, const unsigned ch
  * VSHM_METRICS_EINVAL (NULL image or mae, bad size; *mae = 0 when mae is
  * not NULL). */
 int vshm_reflection_mae(const float *rgb, const float *rgb_ref, const unsigned char *mirror,
-                       const unsigned char *exclude, int width, int height, double *mae,
-                       long *pixels);
+                        const unsigned char *exclude, int width, int height, double *mae,
+                        long *pixels);
 
 /* The mirror region's heat map for the report: the colours of
  * vshm_error_heatmap_rgb for e = mean(R,G,B) - mean(R_ref,G_ref,B_ref) (channels
  * clamped as in vshm_reflection_mae) on mirror pixels, mid grey elsewhere. */
 int vshm_reflection_heatmap_rgb(const float *rgb, const float *rgb_ref,
-                               const unsigned char *mirror, int width, int height,
-                               unsigned char *out);
+                                const unsigned char *mirror, int width, int height,
+                                unsigned char *out);
 
 #ifdef __cplusplus
 }

@@ -13,7 +13,7 @@
 static int in_penumbra(float r) { return r > VSHM_PENUMBRA_LO && r < VSHM_PENUMBRA_HI; }
 
 int vshm_penumbra_mask(const float *v_ref, const unsigned char *valid, int width, int height,
-                      unsigned char *mask) {
+                       unsigned char *mask) {
   if (!v_ref || !valid || !mask || !vshm_metrics_size_ok(width, height))
     return VSHM_METRICS_EINVAL;
   memset(mask, 0, (size_t)width * (size_t)height);
@@ -74,8 +74,8 @@ static int contour_at(const float *v, const float *v_ref, const unsigned char *v
 }
 
 int vshm_penumbra_compute(const float *v, const float *v_ref, const unsigned char *valid,
-                         const unsigned char *exclude, int width, int height,
-                         vshm_penumbra *out) {
+                          const unsigned char *exclude, int width, int height,
+                          vshm_penumbra *out) {
   static const float levels[3] = {0.1f, 0.5f, 0.9f};
   if (!out) return VSHM_METRICS_EINVAL;
   memset(out, 0, sizeof *out);
@@ -127,7 +127,7 @@ int vshm_penumbra_compute(const float *v, const float *v_ref, const unsigned cha
 }
 
 int vshm_penumbra_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
-                             int width, int height, unsigned char *rgb) {
+                              int width, int height, unsigned char *rgb) {
   if (!v || !v_ref || !valid || !rgb || !vshm_metrics_size_ok(width, height))
     return VSHM_METRICS_EINVAL;
   size_t n = (size_t)width * (size_t)height;

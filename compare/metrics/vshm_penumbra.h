@@ -39,14 +39,14 @@ typedef struct vshm_penumbra {
  * pixel (3 x 3, staying on valid pixels), else 0. Returns VSHM_METRICS_OK,
  * _EINVAL or _ENOMEM (vshm_metrics.h). */
 int vshm_penumbra_mask(const float *v_ref, const unsigned char *valid, int width, int height,
-                      unsigned char *mask);
+                       unsigned char *mask);
 
 /* Every penumbra figure over the compared pixels (valid, not excluded).
  * Returns VSHM_METRICS_OK, VSHM_METRICS_EMPTY when the penumbra mask has no
  * compared pixel (pen_mae and pen_bias are then 0; the other figures are
  * still computed), _EINVAL or _ENOMEM (out all zero). */
 int vshm_penumbra_compute(const float *v, const float *v_ref, const unsigned char *valid,
-                         const unsigned char *exclude, int width, int height, vshm_penumbra *out);
+                          const unsigned char *exclude, int width, int height, vshm_penumbra *out);
 
 /* Penumbra heat map, 3 bytes per pixel: inside the penumbra mask the signed
  * error e = v - v_ref, white at 0, blue (too dark) or red (too bright),
@@ -55,7 +55,7 @@ int vshm_penumbra_compute(const float *v, const float *v_ref, const unsigned cha
  * shows; invalid pixels mid grey (128). Returns VSHM_METRICS_OK, _EINVAL or
  * _ENOMEM. */
 int vshm_penumbra_heatmap_rgb(const float *v, const float *v_ref, const unsigned char *valid,
-                             int width, int height, unsigned char *rgb);
+                              int width, int height, unsigned char *rgb);
 
 #ifdef __cplusplus
 }

@@ -186,12 +186,12 @@ static int read_png(const char *path, int channels, float **pixels, int *width,
 }
 
 int vshm_png_read_gray(const char *path, float **pixels, int *width, int *height,
-                      int *bit_depth, char *err, size_t errlen) {
+                       int *bit_depth, char *err, size_t errlen) {
   return read_png(path, 1, pixels, width, height, bit_depth, err, errlen);
 }
 
 int vshm_png_read_rgb(const char *path, float **rgb, int *width, int *height, int *bit_depth,
-                     char *err, size_t errlen) {
+                      char *err, size_t errlen) {
   return read_png(path, 3, rgb, width, height, bit_depth, err, errlen);
 }
 
@@ -246,17 +246,17 @@ static int write_png(const char *path, const unsigned char *packed, int width, i
 }
 
 int vshm_png_write_gray8(const char *path, const unsigned char *pixels, int width,
-                        int height, char *err, size_t errlen) {
+                         int height, char *err, size_t errlen) {
   return write_png(path, pixels, width, height, PNG_COLOR_TYPE_GRAY, 8, 1, err, errlen);
 }
 
 int vshm_png_write_rgb8(const char *path, const unsigned char *rgb, int width, int height,
-                       char *err, size_t errlen) {
+                        char *err, size_t errlen) {
   return write_png(path, rgb, width, height, PNG_COLOR_TYPE_RGB, 8, 3, err, errlen);
 }
 
 int vshm_png_write_gray16(const char *path, const uint16_t *pixels, int width, int height,
-                         char *err, size_t errlen) {
+                          char *err, size_t errlen) {
   if (!pixels || width <= 0 || height <= 0 ||
       (double)width * (double)height > (double)VSHM_PNG_MAX_PIXELS)
     return write_png(path, NULL, width, height, PNG_COLOR_TYPE_GRAY, 16, 1, err, errlen);
@@ -276,7 +276,7 @@ int vshm_png_write_gray16(const char *path, const uint16_t *pixels, int width, i
 }
 
 int vshm_png_write_gray16_float(const char *path, const float *v, int width, int height,
-                               char *err, size_t errlen) {
+                                char *err, size_t errlen) {
   if (!v || width <= 0 || height <= 0 ||
       (double)width * (double)height > (double)VSHM_PNG_MAX_PIXELS)
     return vshm_png_write_gray16(path, NULL, width, height, err, errlen);

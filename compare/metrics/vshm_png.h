@@ -28,7 +28,7 @@ extern "C" {
  * gets the depth stored in the file. The caller free()s *pixels.
  * Returns 0, or -1 with err set and *pixels = NULL. */
 int vshm_png_read_gray(const char *path, float **pixels, int *width, int *height,
-                      int *bit_depth, char *err, size_t errlen);
+                       int *bit_depth, char *err, size_t errlen);
 
 /* Reads an RGB or RGBA PNG (bit depth 8 or 16; alpha is dropped) into
  * *rgb, 3 * width * height floats in [0,1] (R, G, B per pixel, row major,
@@ -36,24 +36,24 @@ int vshm_png_read_gray(const char *path, float **pixels, int *width, int *height
  * and palette files are refused, as the gray reader refuses colour.
  * Returns 0, or -1 with err set and *rgb = NULL. */
 int vshm_png_read_rgb(const char *path, float **rgb, int *width, int *height, int *bit_depth,
-                     char *err, size_t errlen);
+                      char *err, size_t errlen);
 
 /* Write width * height samples, row major, top row first, atomically
  * (see vshm_atomic.h). Return 0, or -1 with err set and nothing left on
  * disk (the destination, if it existed, is unchanged). */
 int vshm_png_write_gray8(const char *path, const unsigned char *pixels, int width,
-                        int height, char *err, size_t errlen);
+                         int height, char *err, size_t errlen);
 int vshm_png_write_gray16(const char *path, const uint16_t *pixels, int width, int height,
-                         char *err, size_t errlen);
+                          char *err, size_t errlen);
 /* rgb: 3 bytes per pixel, R G B. */
 int vshm_png_write_rgb8(const char *path, const unsigned char *rgb, int width, int height,
-                       char *err, size_t errlen);
+                        char *err, size_t errlen);
 
 /* Writes a visibility image as 16-bit grayscale: values are clamped to
  * [0,1] (NaN -> 0) and rounded to the nearest of 0..65535, so reading it
  * back returns the stored value within 0.5/65535. */
 int vshm_png_write_gray16_float(const char *path, const float *v, int width, int height,
-                               char *err, size_t errlen);
+                                char *err, size_t errlen);
 
 #ifdef __cplusplus
 }

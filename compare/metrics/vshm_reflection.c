@@ -11,8 +11,8 @@
 static double channel(float x) { return !(x > 0.0f) ? 0.0 : x > 1.0f ? 1.0 : (double)x; }
 
 int vshm_reflection_mae(const float *rgb, const float *rgb_ref, const unsigned char *mirror,
-                       const unsigned char *exclude, int width, int height, double *mae,
-                       long *pixels) {
+                        const unsigned char *exclude, int width, int height, double *mae,
+                        long *pixels) {
   if (mae) *mae = 0.0;
   if (pixels) *pixels = 0;
   if (!rgb || !rgb_ref || !mirror || !mae || !vshm_metrics_size_ok(width, height))
