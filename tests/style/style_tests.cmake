@@ -12,7 +12,8 @@ add_test(NAME style.function_length
           --ctags ${VTKSHADOW_CTAGS} --max 120 ${PROJECT_SOURCE_DIR} vtkshadow tools compare)
 set_tests_properties(style.function_length PROPERTIES LABELS "unit")
 
-# The VTK layer and the C++ tools in VTK's clang-format style.
+# The VTK layer, the product's tools and the harness in VTK's clang-format style
+# (every C++ file under vtkshadow/vtk, tools/ and compare/).
 find_program(VTKSHADOW_CLANG_FORMAT NAMES clang-format clang-format-14)
 if(NOT VTKSHADOW_CLANG_FORMAT)
   set(VTKSHADOW_CLANG_FORMAT clang-format) # the test fails with the install hint
