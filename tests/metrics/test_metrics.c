@@ -15,7 +15,8 @@ static void fill(float *a, float x) {
   for (int i = 0; i < N; ++i) a[i] = x;
 }
 
-int main(void) {
+/* The errors of one image against another, every pixel valid. */
+static void test_errors(void) {
   vshm_metrics m;
 
   /* identical images: every error 0, no boundary */
@@ -56,8 +57,14 @@ int main(void) {
   CHECK(vshm_metrics_compute(v, r, valid, NULL, W, H, &m) == VSHM_METRICS_OK);
   CHECK(m.false_shadow_pct == 0.0 && m.false_light_pct == 0.0 && m.wrong_pct == 0.0);
   CHECK_NEAR(m.vis_mae, 0.5, 1e-12);
+}
+
+/* Which pixels are compared: invalid ones never, excluded ones not. */
+static void test_valid_and_excluded(void) {
+  vshm_metrics m;
 
   /* invalid pixels never count, whatever they hold */
+  for (int i = 0; i < N; ++i) valid[i] = 1;
   fill(r, 1.0f);
   fill(v, 1.0f);
   for (int i = 0; i < 40; ++i) {
@@ -93,6 +100,11 @@ int main(void) {
   for (int i = 0; i < N; ++i) valid[i] = ex[i] = 1;
   CHECK(vshm_metrics_compute(v, r, valid, ex, W, H, &m) == VSHM_METRICS_EMPTY);
   CHECK(m.valid_pixels == N && m.compared_pixels == 0 && m.wrong_pct == 0.0);
+}
+
+/* wrong_of_shadow_pct and wrong_of_test_shadow_pct. */
+static void test_shadow_relative(void) {
+  vshm_metrics m;
 
   /* Errors relative to the shadow. Reference shadowed in rows 0-2 (30
    * pixels); the test keeps row 0 only and adds 4 false shadow pixels in
@@ -150,12 +162,23 @@ int main(void) {
   CHECK(vshm_metrics_compute(v, r, valid, NULL, W, H, &m) == VSHM_METRICS_OK);
   CHECK(m.ref_shadow_pixels == 0 && m.test_shadow_pixels == N);
   CHECK(m.wrong_of_shadow_pct == 0.0 && m.wrong_of_test_shadow_pct == 0.0);
+}
 
-  /* bad arguments */
+static void test_bad_arguments(void) {
+  vshm_metrics m;
+
+  for (int i = 0; i < N; ++i) valid[i] = 1;
   CHECK(vshm_metrics_compute(NULL, r, valid, NULL, W, H, &m) == VSHM_METRICS_EINVAL);
   CHECK(vshm_metrics_compute(v, r, NULL, NULL, W, H, &m) == VSHM_METRICS_EINVAL);
   CHECK(vshm_metrics_compute(v, r, valid, NULL, 0, H, &m) == VSHM_METRICS_EINVAL);
   CHECK(vshm_metrics_compute(v, r, valid, NULL, W, -1, &m) == VSHM_METRICS_EINVAL);
   CHECK(vshm_metrics_compute(v, r, valid, NULL, W, H, NULL) == VSHM_METRICS_EINVAL);
+}
+
+int main(void) {
+  test_errors();
+  test_valid_and_excluded();
+  test_shadow_relative();
+  test_bad_arguments();
   return vsh_check_report("metrics.pixel");
 }
