@@ -7,7 +7,7 @@ reflection drawn without them), against `none` without mirrors.
       [--frames 15] [--rounds 4] [--warmup 5] [--noise-tolerance 0.03]
 
 One vtkshadow-render --stats process per (technique, reflections): the
-project's interleaved timing (compare/timing) alternates the configuration
+project's interleaved timing (tools/timing) alternates the configuration
 with `none` and `none#2` (both without mirrors: the timed entries other than
 the main one are plain technique passes) in blocks, the order rotated per
 round; for `none` itself the installed pass is the reference, so its ratio

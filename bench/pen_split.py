@@ -31,7 +31,7 @@ def mask(path):
 
 
 def pen_mask(ref, valid):
-    """vsh_penumbra_mask: valid pixels with a valid penumbra pixel in their 3x3."""
+    """vshm_penumbra_mask: valid pixels with a valid penumbra pixel in their 3x3."""
     core = valid & (ref > 0.02) & (ref < 0.98)
     h, w = ref.shape
     pad = np.zeros((h + 2, w + 2), bool)

@@ -340,6 +340,37 @@ def place_light(scene, ldata, light):
     return lobj
 
 
+def render_pixels(scene, exr, width, height):
+    """One bpy.ops.render.render into `exr`, read back: (image, RGBA floats,
+    bottom row first) and the seconds of the render alone."""
+    scene.render.filepath = exr
+    start = time.monotonic()
+    bpy.ops.render.render(write_still=True)
+    seconds = time.monotonic() - start
+    img = bpy.data.images.load(exr, check_existing=False)
+    if tuple(img.size) != (width, height):
+        fail("rendered %dx%d, expected %dx%d" % (img.size[0], img.size[1], width, height))
+    px4 = array("f", bytes(4 * 4 * width * height))
+    img.pixels.foreach_get(px4)
+    return img, px4, seconds
+
+
+def write_floats(target, values):
+    """`values` (an array of float32) as raw little-endian floats, atomically."""
+    with open(target + ".tmp", "wb") as f:
+        if sys.byteorder != "little":
+            values.byteswap()
+        values.tofile(f)
+    os.replace(target + ".tmp", target)
+
+
+def remove_quietly(path):
+    try:
+        os.remove(path)
+    except OSError:
+        pass
+
+
 def render_colour(scene, lights, objects, depth, exr, outdir, width, height):
     """cycles-color: every light at once, shadows on; color.f32 = RGB."""
     for light in lights:
@@ -350,65 +381,80 @@ def render_colour(scene, lights, objects, depth, exr, outdir, width, height):
         colour_light(ldata, int(ltype))
         set_shadows(ldata, "cycles", True)
         place_light(scene, ldata, light)
-    scene.render.filepath = exr
-    bpy.ops.render.render(write_still=True)
-    img = bpy.data.images.load(exr, check_existing=False)
-    if tuple(img.size) != (width, height):
-        fail("rendered %dx%d, expected %dx%d" % (img.size[0], img.size[1], width, height))
-    px4 = array("f", bytes(4 * 4 * width * height))
-    img.pixels.foreach_get(px4)
+    _img, px4, _seconds = render_pixels(scene, exr, width, height)
     rgb = array("f", bytes(4 * 3 * width * height))
     for c in range(3):
         rgb[c::3] = px4[c::4]
-    target = os.path.join(outdir, "color.f32")
-    with open(target + ".tmp", "wb") as f:
-        if sys.byteorder != "little":
-            rgb.byteswap()
-        rgb.tofile(f)
-    os.replace(target + ".tmp", target)
-    try:
-        os.remove(exr)
-    except OSError:
-        pass
+    write_floats(os.path.join(outdir, "color.f32"), rgb)
+    remove_quietly(exr)
     sys.stderr.write("cycles-color: done\n")
 
 
-def main():
+def render_lights(scene, lights, objects, depth, preset, exr, outdir, width, height):
+    """Each light alone, shadows on then off: light<K>_on.f32 and
+    light<K>_off.f32 (red channel) and frame_seconds.txt."""
+    frame_log = []
+    for k, light in enumerate(lights):
+        (ltype, px, py, pz, _ax, _ay, _az, cone, size) = light
+        ldata = make_light(int(ltype), cone, size, preset, (px, py, pz), objects, depth)
+        lobj = place_light(scene, ldata, light)
+        for state in ("on", "off"):
+            set_shadows(ldata, preset, state == "on")
+            img, px4, seconds = render_pixels(scene, exr, width, height)
+            frame_log.append("%d %s %.4f\n" % (k, state, seconds))
+            write_floats(os.path.join(outdir, "light%d_%s.f32" % (k, state)), px4[0::4])
+            bpy.data.images.remove(img)
+            sys.stderr.write("%s: light %d shadows %s done\n" % (preset, k, state))
+        bpy.data.objects.remove(lobj, do_unlink=True)
+        bpy.data.lights.remove(ldata)
+    with open(os.path.join(outdir, "frame_seconds.txt"), "w") as f:
+        f.writelines(frame_log)
+    remove_quietly(exr)
+
+
+def parse_arguments():
+    """(datafile, outdir, preset, colour): `cycles-color` is the cycles preset
+    with colour set."""
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     if len(argv) not in (2, 3) or (len(argv) == 3 and argv[2] not in PRESETS):
         fail("usage: blender -b --factory-startup --python-exit-code 1 --python render_cycles.py "
              "-- DATAFILE OUTDIR [%s]" % "|".join(PRESETS))
-    datafile, outdir = argv[0], argv[1]
     preset = argv[2] if len(argv) == 3 else "cycles"
     colour = preset == "cycles-color"
     if colour:
-        preset = "cycles"  # the same renderer settings, then the colour changes below
-    width, height, samples, camera, clip, lights, objects = read_data(datafile)
-    if colour:
-        # (samples, seed, pixel centre): many samples, all at the pixel centre.
-        samples = (COLOR_SAMPLES, samples[1], 1)
+        preset = "cycles"  # the same renderer settings, then the colour changes
+    return argv[0], argv[1], preset, colour
 
-    # Empty scene: delete the factory cube, light and camera.
+
+def empty_scene():
+    """The factory scene without its cube, light, camera and world."""
     for obj in list(bpy.data.objects):
         bpy.data.objects.remove(obj, do_unlink=True)
     scene = bpy.context.scene
     scene.world = None
+    return scene
 
+
+def setup_renderer(scene, preset, colour, samples, camera, clip, objects):
+    """The preset's renderer settings; returns the camera's depth range."""
     if preset == "cycles":
         setup_cycles(scene, samples)
-        depth = clip
         if colour:
             # Pixel centre like POV-Ray -A; one bounce: the mirror's reflection.
             scene.cycles.filter_width = 0.01
             scene.cycles.max_bounces = 1
             scene.cycles.glossy_bounces = 1
-    else:
-        setup_eevee(scene, preset == "eevee-best")
-        # A rasterizer needs a depth range fitted to the scene (as VTK's
-        # ResetCameraClippingRange); the ray tracers' 1e-5 near plane would
-        # waste the depth buffer and the cascades. Same for both presets.
-        near, far = visible_depth(camera, clip, objects)
-        depth = (0.5 * near, 1.01 * far)
+        return clip
+    setup_eevee(scene, preset == "eevee-best")
+    # A rasterizer needs a depth range fitted to the scene (as VTK's
+    # ResetCameraClippingRange); the ray tracers' 1e-5 near plane would
+    # waste the depth buffer and the cascades. Same for both presets.
+    near, far = visible_depth(camera, clip, objects)
+    return (0.5 * near, 1.01 * far)
+
+
+def setup_output(scene, width, height):
+    """The image: its size, no colour management, 32-bit EXR."""
     scene.render.resolution_x = width
     scene.render.resolution_y = height
     scene.render.resolution_percentage = 100
@@ -426,41 +472,46 @@ def main():
     scene.render.use_compositing = False
     scene.render.use_sequencer = False
 
-    materials = {}
-    for index, (npts, ntri, casts, pts, nrm, tri, rgbm) in enumerate(objects):
-        mesh = bpy.data.meshes.new("m%d" % index)
-        mesh.vertices.add(npts)
-        mesh.vertices.foreach_set("co", array("f", pts))
-        mesh.loops.add(3 * ntri)
-        mesh.loops.foreach_set("vertex_index", tri)
-        mesh.polygons.add(ntri)
-        mesh.polygons.foreach_set("loop_start", array("i", range(0, 3 * ntri, 3)))
-        mesh.polygons.foreach_set("loop_total", array("i", [3]) * ntri)
-        mesh.polygons.foreach_set("use_smooth", array("b", [1]) * ntri)
-        mesh.update(calc_edges=True)
-        mesh.validate(clean_customdata=False)
-        # The loader's per-vertex normals, exactly (custom split normals).
-        mesh.use_auto_smooth = True
-        mesh.normals_split_custom_set_from_vertices(
-            [tuple(nrm[3 * i:3 * i + 3]) for i in range(npts)])
-        if colour:
-            mesh.materials.append(make_colour_material("c%d" % index, rgbm))
-        else:
-            if bool(casts) not in materials:
-                materials[bool(casts)] = make_material("white%d" % casts, preset, casts)
-            mesh.materials.append(materials[bool(casts)])
-        obj = bpy.data.objects.new("o%d" % index, mesh)
-        obj.visible_shadow = bool(casts)
-        # No shadow-terminator tricks: shadow rays start on the true triangle.
-        # (Blender 3.4 keeps these on the object's Cycles settings.)
-        for holder in (obj, obj.cycles):
-            for prop in ("shadow_terminator_geometry_offset", "shadow_terminator_offset",
-                         "shadow_terminator_normal_offset"):
-                if hasattr(holder, prop):
-                    setattr(holder, prop, 0.0)
-        scene.collection.objects.link(obj)
 
-    # Camera: columns (r, u, -f, E), vertical sensor fit.
+def add_mesh(scene, index, obj_data, preset, colour, materials):
+    """One object of the data file as a Blender mesh object, with the
+    loader's normals and its material."""
+    (npts, ntri, casts, pts, nrm, tri, rgbm) = obj_data
+    mesh = bpy.data.meshes.new("m%d" % index)
+    mesh.vertices.add(npts)
+    mesh.vertices.foreach_set("co", array("f", pts))
+    mesh.loops.add(3 * ntri)
+    mesh.loops.foreach_set("vertex_index", tri)
+    mesh.polygons.add(ntri)
+    mesh.polygons.foreach_set("loop_start", array("i", range(0, 3 * ntri, 3)))
+    mesh.polygons.foreach_set("loop_total", array("i", [3]) * ntri)
+    mesh.polygons.foreach_set("use_smooth", array("b", [1]) * ntri)
+    mesh.update(calc_edges=True)
+    mesh.validate(clean_customdata=False)
+    # The loader's per-vertex normals, exactly (custom split normals).
+    mesh.use_auto_smooth = True
+    mesh.normals_split_custom_set_from_vertices(
+        [tuple(nrm[3 * i:3 * i + 3]) for i in range(npts)])
+    if colour:
+        mesh.materials.append(make_colour_material("c%d" % index, rgbm))
+    else:
+        if bool(casts) not in materials:
+            materials[bool(casts)] = make_material("white%d" % casts, preset, casts)
+        mesh.materials.append(materials[bool(casts)])
+    obj = bpy.data.objects.new("o%d" % index, mesh)
+    obj.visible_shadow = bool(casts)
+    # No shadow-terminator tricks: shadow rays start on the true triangle.
+    # (Blender 3.4 keeps these on the object's Cycles settings.)
+    for holder in (obj, obj.cycles):
+        for prop in ("shadow_terminator_geometry_offset", "shadow_terminator_offset",
+                     "shadow_terminator_normal_offset"):
+            if hasattr(holder, prop):
+                setattr(holder, prop, 0.0)
+    scene.collection.objects.link(obj)
+
+
+def add_camera(scene, camera, depth):
+    """Camera: columns (r, u, -f, E), vertical sensor fit."""
     eye = Vector(camera[0:3])
     f = (Vector(camera[3:6]) - eye).normalized()
     r = f.cross(Vector(camera[6:9])).normalized()
@@ -479,47 +530,25 @@ def main():
     scene.collection.objects.link(cam)
     scene.camera = cam
 
+
+def main():
+    datafile, outdir, preset, colour = parse_arguments()
+    width, height, samples, camera, clip, lights, objects = read_data(datafile)
+    if colour:
+        # (samples, seed, pixel centre): many samples, all at the pixel centre.
+        samples = (COLOR_SAMPLES, samples[1], 1)
+    scene = empty_scene()
+    depth = setup_renderer(scene, preset, colour, samples, camera, clip, objects)
+    setup_output(scene, width, height)
+    materials = {}
+    for index, obj_data in enumerate(objects):
+        add_mesh(scene, index, obj_data, preset, colour, materials)
+    add_camera(scene, camera, depth)
     exr = os.path.join(outdir, "render.exr")
     if colour:
         render_colour(scene, lights, objects, depth, exr, outdir, width, height)
-        return
-    frame_log = []
-    for k, (ltype, px, py, pz, ax, ay, az, cone, size) in enumerate(lights):
-        ltype = int(ltype)
-        ldata = make_light(ltype, cone, size, preset, (px, py, pz), objects, depth)
-        lobj = bpy.data.objects.new("light", ldata)
-        rot = frame_from_axis((ax, ay, az)).to_4x4()
-        rot.translation = Vector((px, py, pz))
-        lobj.matrix_world = rot
-        scene.collection.objects.link(lobj)
-        for state in ("on", "off"):
-            set_shadows(ldata, preset, state == "on")
-            scene.render.filepath = exr
-            start = time.monotonic()
-            bpy.ops.render.render(write_still=True)
-            frame_log.append("%d %s %.4f\n" % (k, state, time.monotonic() - start))
-            img = bpy.data.images.load(exr, check_existing=False)
-            if tuple(img.size) != (width, height):
-                fail("rendered %dx%d, expected %dx%d" % (img.size[0], img.size[1], width, height))
-            px4 = array("f", bytes(4 * 4 * width * height))
-            img.pixels.foreach_get(px4)
-            red = px4[0::4]
-            target = os.path.join(outdir, "light%d_%s.f32" % (k, state))
-            with open(target + ".tmp", "wb") as f:
-                if sys.byteorder != "little":
-                    red.byteswap()
-                red.tofile(f)
-            os.replace(target + ".tmp", target)
-            bpy.data.images.remove(img)
-            sys.stderr.write("%s: light %d shadows %s done\n" % (preset, k, state))
-        bpy.data.objects.remove(lobj, do_unlink=True)
-        bpy.data.lights.remove(ldata)
-    with open(os.path.join(outdir, "frame_seconds.txt"), "w") as f:
-        f.writelines(frame_log)
-    try:
-        os.remove(exr)
-    except OSError:
-        pass
+    else:
+        render_lights(scene, lights, objects, depth, preset, exr, outdir, width, height)
 
 
 main()

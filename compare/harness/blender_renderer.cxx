@@ -1,7 +1,10 @@
 // blender_renderer.cxx - running Blender (Cycles or EEVEE) on the export.
 #include "blender_renderer.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_process.h"
+#include "harness_progress.h"
+#include "harness_text.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,8 @@
 // check.cxx - limits, no-valid-pixel reasons and known failures per row.
 #include "check.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_text.h"
 
 #include <cjson/cJSON.h>
 

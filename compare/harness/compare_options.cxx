@@ -1,7 +1,7 @@
 // compare_options.cxx - command line of vtkshadow-compare.
 #include "compare_options.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
 #include "technique_variant.h"
 
 #include "vtkShadowTechnique.h"

@@ -5,8 +5,8 @@
 
 #include "scene_list.h"
 
-#include "vsh_metrics.h"
-#include "vsh_penumbra.h"
+#include "vshm_metrics.h"
+#include "vshm_penumbra.h"
 
 #include <cmath>
 #include <map>
@@ -20,10 +20,10 @@ struct Row
 {
   std::string scene, test, reference = "povray", light_type, status, error, heatmap;
   int light = 0, width = 0, height = 0;
-  vsh_metrics m{};
+  vshm_metrics m{};
   // Penumbra metrics (docs/metrics.md): computed for every row; they read
   // "no penumbra" (pen.penumbra_pixels 0) on scenes with hard lights only.
-  vsh_penumbra pen{};
+  vshm_penumbra pen{};
   std::string pen_heatmap;
   // Scenes with mirrors: the colour error over the mirror's pixels against
   // POV-Ray (every light at once, so the same on each light's row), NaN
@@ -31,7 +31,7 @@ struct Row
   double reflection_mae = std::nan("");
   std::string mirror_heatmap;
   // wrong_pct outside the one-pixel band along the reference's shadow
-  // boundary (vsh_boundary_band, radius 1): the measure issues 12 and 13
+  // boundary (vshm_boundary_band, radius 1): the measure issues 12 and 13
   // bound exact techniques by. NaN when not measured.
   double wrong_band_pct = std::nan("");
   // Set by --check: "" (not checked), "ok", "FAILED: why", "known failure: reason".
@@ -59,7 +59,7 @@ struct SceneResult
 // A metric of a row by name (vis_mae, wrong_pct, edge_px, false_shadow_pct,
 // false_light_pct, wrong_of_shadow_pct, wrong_of_test_shadow_pct).
 // `known` is false for any other name.
-double RowMetric(const vsh_metrics& m, const std::string& name, bool& known);
+double RowMetric(const vshm_metrics& m, const std::string& name, bool& known);
 
 // RowMetric, and also reflection_mae (NaN on rows without mirrors, which
 // then fails any limit on it), wrong_band_pct, pen_mae and

@@ -2,7 +2,8 @@
 // (settings and why: docs/harness.md, "Renderer settings").
 #include "reference_renderer.h"
 
-#include "harness_util.h"
+#include "harness_png.h"
+#include "harness_process.h"
 
 namespace vsh_harness
 {
@@ -63,10 +64,10 @@ private:
       "+H" + std::to_string(job.ex.height), "+WT" + std::to_string(this->Opt.threads),
       "Declare=VSH_LIGHT=" + std::to_string(k), "Declare=VSH_SHADOWS=" + std::to_string(shadows),
       "+Iscene.pov", "+O" + name };
-    RunResult r = RunProcess(argv, job.work, job.log, this->Opt.timeout);
+    RunResult r = RunLogged(
+      job.entry.id + ": povray light " + std::to_string(k) + " shadows " + (shadows ? "on" : "off"),
+      argv, job.work, job.log, this->Opt.timeout);
     out.seconds += r.seconds;
-    Progress(job.entry.id + ": povray light " + std::to_string(k) + " shadows " +
-      (shadows ? "on" : "off") + (r.ok() ? "" : " FAILED") + " (" + Fmt(r.seconds, "%.1f") + " s)");
     if (!r.ok())
     {
       err = "light " + std::to_string(k) + ": " + r.error;

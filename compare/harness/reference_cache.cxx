@@ -1,7 +1,7 @@
 // reference_cache.cxx - reference cache entries with a verified manifest.
 #include "reference_cache.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
 #include "visibility_io.h"
 
 #include <map>

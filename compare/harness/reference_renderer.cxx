@@ -2,7 +2,8 @@
 // and EEVEE.
 #include "reference_renderer.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_progress.h"
 #include "reference_cache.h"
 #include "visibility_io.h"
 
@@ -40,9 +41,8 @@ struct DriverState
 bool RenderFresh(DriverState& s, const std::string& exported)
 {
   const std::string work = AbsPath(s.outdir + "/.work" + std::to_string(getpid()));
-  RemoveTree(work);
   std::string err;
-  if (!MakeDirs(work, err) || !WriteFileAtomic(work + "/" + s.r.ExportFileName(), exported, err))
+  if (!MakeWorkDir(work, s.r.ExportFileName(), exported, err))
   {
     RemoveTree(work);
     return s.Fail("cannot write the exported scene in " + work + ": " + err);

@@ -3,11 +3,14 @@
 // seconds.
 #include "reflection_run.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_process.h"
+#include "harness_progress.h"
+#include "harness_text.h"
 #include "technique_variant.h"
 
-#include "vsh_metrics.h"
-#include "vsh_png.h"
+#include "vshm_metrics.h"
+#include "vshm_png.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +31,7 @@ bool ReadRgb(const std::string& path, int w, int h, Colour& c, std::string& err)
   float* px = nullptr;
   int pw = 0, ph = 0;
   char e2[1024] = "";
-  if (vsh_png_read_rgb(path.c_str(), &px, &pw, &ph, nullptr, e2, sizeof e2) != 0)
+  if (vshm_png_read_rgb(path.c_str(), &px, &pw, &ph, nullptr, e2, sizeof e2) != 0)
   {
     err = e2;
     return false;
@@ -50,9 +53,7 @@ bool PovrayColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
 {
   const std::string dir = AbsPath(opt.out + "/" + e.dir_id + "/povray");
   const std::string work = dir + "/.colourwork";
-  RemoveTree(work);
-  if (!MakeDirs(work, err) ||
-    !WriteFileAtomic(work + "/colour.pov", PovColourScene(ex, opt.povray_grid, opt.seed), err))
+  if (!MakeWorkDir(work, "colour.pov", PovColourScene(ex, opt.povray_grid, opt.seed), err))
     return false;
   const std::string log = dir + "/povray-colour.log";
   for (int mask = 0; mask < 2; ++mask)
@@ -61,9 +62,8 @@ bool PovrayColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
       "Display_Gamma=1.0", "+W" + std::to_string(ex.width), "+H" + std::to_string(ex.height),
       "+WT" + std::to_string(opt.threads), "Declare=VSH_MIRROR_MASK=" + std::to_string(mask),
       "+Icolour.pov", mask ? "+Omirror.png" : "+Ocolor.png" };
-    RunResult r = RunProcess(argv, work, log, opt.timeout);
-    Progress(e.id + ": povray " + (mask ? "mirror mask" : "colour") + (r.ok() ? "" : " FAILED") +
-      " (" + Fmt(r.seconds, "%.1f") + " s)");
+    RunResult r = RunLogged(
+      e.id + ": povray " + (mask ? "mirror mask" : "colour"), argv, work, log, opt.timeout);
     if (!r.ok())
     {
       err = "povray colour: " + r.error;
@@ -80,7 +80,7 @@ bool PovrayColour(const Options& opt, const SceneEntry& e, const ExportScene& ex
     mirror[i] = m.rgb[3 * i] > 0.5f ? 255 : 0;
   char e2[1024] = "";
   const bool ok = std::rename((work + "/color.png").c_str(), (dir + "/color.png").c_str()) == 0 &&
-    vsh_png_write_gray8(
+    vshm_png_write_gray8(
       (dir + "/mirror.png").c_str(), mirror.data(), ex.width, ex.height, e2, sizeof e2) == 0;
   if (!opt.keep_work)
     RemoveTree(work);
@@ -95,16 +95,13 @@ bool CyclesColour(
 {
   const std::string dir = AbsPath(opt.out + "/" + e.dir_id + "/cycles");
   const std::string work = dir + "/.colourwork";
-  RemoveTree(work);
-  if (!MakeDirs(work, err) ||
-    !WriteFileAtomic(work + "/scene.bin", CyclesData(ex, 1, opt.soft_samples, opt.seed), err))
+  if (!MakeWorkDir(work, "scene.bin", CyclesData(ex, 1, opt.soft_samples, opt.seed), err))
     return false;
   std::vector<std::string> argv{ opt.blender, "-b", "--factory-startup", "--python-exit-code", "1",
     "-t", std::to_string(opt.threads), "--python", opt.cycles_script, "--", work + "/scene.bin",
     work, "cycles-color" };
-  RunResult r = RunProcess(argv, work, dir + "/cycles-colour.log", opt.timeout * 4 + 60);
-  Progress(
-    e.id + ": cycles colour" + (r.ok() ? "" : " FAILED") + " (" + Fmt(r.seconds, "%.1f") + " s)");
+  RunResult r = RunLogged(
+    e.id + ": cycles colour", argv, work, dir + "/cycles-colour.log", opt.timeout * 4 + 60);
   std::string raw;
   const size_t n = static_cast<size_t>(ex.width) * ex.height;
   if (!r.ok() || !ReadFile(work + "/color.f32", raw) || raw.size() != 12 * n)
@@ -125,7 +122,7 @@ bool CyclesColour(
   char e2[1024] = "";
   if (!opt.keep_work)
     RemoveTree(work);
-  if (vsh_png_write_rgb8(
+  if (vshm_png_write_rgb8(
         (dir + "/color.png").c_str(), rgb8.data(), ex.width, ex.height, e2, sizeof e2) != 0)
     Progress("WARNING " + e.id + ": " + e2);
   return true;
@@ -144,9 +141,8 @@ bool VtkColour(const Options& opt, const SceneEntry& e, const ExportScene& ex, c
     "--quiet" };
   const std::vector<std::string> tech = RenderArguments(t); // a variant's --set too
   argv.insert(argv.begin() + 2, tech.begin(), tech.end());
-  RunResult r = RunProcess(argv, "", AbsPath(dir + "/render-colour.log"), opt.timeout);
-  Progress(e.id + ": vtk/" + t + " colour" + (r.ok() ? "" : " FAILED") + " (" +
-    Fmt(r.seconds, "%.1f") + " s)");
+  RunResult r = RunLogged(
+    e.id + ": vtk/" + t + " colour", argv, "", AbsPath(dir + "/render-colour.log"), opt.timeout);
   if (!r.ok())
   {
     err = "vtk/" + t + " colour: " + r.error;
@@ -162,21 +158,21 @@ void Attach(const Options& opt, const SceneEntry& e, const std::string& test, co
   double mae = 0;
   long px = 0;
   const int rc =
-    vsh_reflection_mae(c.rgb.data(), ref.rgb.data(), mirror.data(), nullptr, w, h, &mae, &px);
-  if (rc != VSH_METRICS_OK)
+    vshm_reflection_mae(c.rgb.data(), ref.rgb.data(), mirror.data(), nullptr, w, h, &mae, &px);
+  if (rc != VSHM_METRICS_OK)
   {
     res.errors.push_back("reflection_mae " + test + ": " +
-      (rc == VSH_METRICS_EMPTY ? "no mirror pixel in view" : "metric failed"));
+      (rc == VSHM_METRICS_EMPTY ? "no mirror pixel in view" : "metric failed"));
     return;
   }
   std::string tname = test;
   std::replace(tname.begin(), tname.end(), '/', '-');
   std::string heat = e.dir_id + "/heatmap/" + tname + "-mirror.png";
   std::vector<unsigned char> rgb(3 * static_cast<size_t>(w) * h);
-  vsh_reflection_heatmap_rgb(c.rgb.data(), ref.rgb.data(), mirror.data(), w, h, rgb.data());
+  vshm_reflection_heatmap_rgb(c.rgb.data(), ref.rgb.data(), mirror.data(), w, h, rgb.data());
   char e2[1024] = "";
   if (!MakeDirs(opt.out + "/" + e.dir_id + "/heatmap") ||
-    vsh_png_write_rgb8((opt.out + "/" + heat).c_str(), rgb.data(), w, h, e2, sizeof e2) != 0)
+    vshm_png_write_rgb8((opt.out + "/" + heat).c_str(), rgb.data(), w, h, e2, sizeof e2) != 0)
     heat.clear();
   Progress(e.id + ": " + test + " reflection_mae " + Fmt(mae, "%.4f") + " over " +
     std::to_string(px) + " mirror pixels");

@@ -1,7 +1,9 @@
 // report_data.cxx - results.csv and results.json.
 #include "report.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_progress.h"
+#include "harness_text.h"
 
 #include <cmath>
 #include <cstdio>
@@ -19,7 +21,7 @@ std::string Num(double v, bool json)
 
 // The penumbra columns (docs/metrics.md, "Penumbra metrics"), after status
 // so readers by position keep working.
-std::string PenumbraFields(const vsh_penumbra& p, const char* sep, bool json)
+std::string PenumbraFields(const vshm_penumbra& p, const char* sep, bool json)
 {
   const char* names[] = { "pen_pixels", "pen_mae", "pen_bias", "pen_leak_pct",
     "pen_false_shadow_pct", "pen_width_ratio", "pen_contour_01_px", "pen_contour_05_px",

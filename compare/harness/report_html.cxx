@@ -3,7 +3,10 @@
 // HtmlEscape; names reach gnuplot only as data.
 #include "report.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_process.h"
+#include "harness_progress.h"
+#include "harness_text.h"
 #include "scene_list.h"
 
 #include <algorithm>

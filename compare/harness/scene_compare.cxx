@@ -1,11 +1,12 @@
 // scene_compare.cxx - metrics and heat map of one row.
 #include "scene_compare.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_png.h"
 
-#include "vsh_metrics.h"
-#include "vsh_penumbra.h"
-#include "vsh_png.h"
+#include "vshm_metrics.h"
+#include "vshm_penumbra.h"
+#include "vshm_png.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,19 +14,19 @@
 namespace vsh_harness
 {
 
-double RowMetric(const vsh_metrics& m, const std::string& name, bool& known)
+double RowMetric(const vshm_metrics& m, const std::string& name, bool& known)
 {
   struct Named
   {
     const char* name;
-    double vsh_metrics::*field;
+    double vshm_metrics::*field;
   };
-  static const Named kMetrics[] = { { "vis_mae", &vsh_metrics::vis_mae },
-    { "wrong_pct", &vsh_metrics::wrong_pct }, { "edge_px", &vsh_metrics::edge_px },
-    { "false_shadow_pct", &vsh_metrics::false_shadow_pct },
-    { "false_light_pct", &vsh_metrics::false_light_pct },
-    { "wrong_of_shadow_pct", &vsh_metrics::wrong_of_shadow_pct },
-    { "wrong_of_test_shadow_pct", &vsh_metrics::wrong_of_test_shadow_pct } };
+  static const Named kMetrics[] = { { "vis_mae", &vshm_metrics::vis_mae },
+    { "wrong_pct", &vshm_metrics::wrong_pct }, { "edge_px", &vshm_metrics::edge_px },
+    { "false_shadow_pct", &vshm_metrics::false_shadow_pct },
+    { "false_light_pct", &vshm_metrics::false_light_pct },
+    { "wrong_of_shadow_pct", &vshm_metrics::wrong_of_shadow_pct },
+    { "wrong_of_test_shadow_pct", &vshm_metrics::wrong_of_test_shadow_pct } };
   for (const Named& n : kMetrics)
     if (name == n.name)
     {
@@ -44,14 +45,14 @@ void ComparePenumbra(const Options& opt, const std::string& dir_id, const std::s
   const std::vector<float>& tv, const std::vector<float>& ref,
   const std::vector<unsigned char>& valid, int w, int h, Row& row)
 {
-  if (vsh_penumbra_compute(tv.data(), ref.data(), valid.data(), nullptr, w, h, &row.pen) < 0 ||
+  if (vshm_penumbra_compute(tv.data(), ref.data(), valid.data(), nullptr, w, h, &row.pen) < 0 ||
     row.pen.penumbra_pixels == 0)
     return;
   std::vector<unsigned char> rgb(3 * static_cast<size_t>(w) * h);
   char e2[1024] = "";
   row.pen_heatmap = dir_id + "/heatmap/" + stem + "-penumbra.png";
-  if (vsh_penumbra_heatmap_rgb(tv.data(), ref.data(), valid.data(), w, h, rgb.data()) != 0 ||
-    vsh_png_write_rgb8(
+  if (vshm_penumbra_heatmap_rgb(tv.data(), ref.data(), valid.data(), w, h, rgb.data()) != 0 ||
+    vshm_png_write_rgb8(
       (opt.out + "/" + row.pen_heatmap).c_str(), rgb.data(), w, h, e2, sizeof e2) != 0)
     row.pen_heatmap.clear();
 }
@@ -63,9 +64,9 @@ double WrongOutsideBand(const std::vector<float>& tv, const std::vector<float>& 
   const std::vector<unsigned char>& valid, int w, int h)
 {
   std::vector<unsigned char> band(valid.size());
-  vsh_metrics banded{};
-  if (vsh_boundary_band(ref.data(), valid.data(), w, h, 1, band.data()) != VSH_METRICS_OK ||
-    vsh_metrics_compute(tv.data(), ref.data(), valid.data(), band.data(), w, h, &banded) < 0)
+  vshm_metrics banded{};
+  if (vshm_boundary_band(ref.data(), valid.data(), w, h, 1, band.data()) != VSHM_METRICS_OK ||
+    vshm_metrics_compute(tv.data(), ref.data(), valid.data(), band.data(), w, h, &banded) < 0)
     return std::nan("");
   return banded.wrong_pct;
 }
@@ -124,7 +125,7 @@ Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const s
   for (size_t i = 0; err.empty() && i < mask.size(); ++i)
     valid[i] = mask[i] > 0.5f;
   const int rc = err.empty()
-    ? vsh_metrics_compute(tv.data(), ref.data(), valid.data(), nullptr, w, h, &row.m)
+    ? vshm_metrics_compute(tv.data(), ref.data(), valid.data(), nullptr, w, h, &row.m)
     : -1;
   if (rc < 0)
   {
@@ -135,16 +136,17 @@ Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const s
   row.width = w;
   row.height = h;
   row.wrong_band_pct = WrongOutsideBand(tv, ref, valid, w, h);
-  row.status = rc == VSH_METRICS_EMPTY ? "empty" : "ok";
+  row.status = rc == VSHM_METRICS_EMPTY ? "empty" : "ok";
   std::vector<unsigned char> rgb(3 * static_cast<size_t>(w) * h);
-  vsh_error_heatmap_rgb(tv.data(), ref.data(), valid.data(), w, h, rgb.data());
+  vshm_error_heatmap_rgb(tv.data(), ref.data(), valid.data(), w, h, rgb.data());
   std::string tname = test;
   std::replace(tname.begin(), tname.end(), '/', '-');
   row.heatmap = e.dir_id + "/heatmap/" + tname + lk.substr(1) + ".png";
   char e2[1024] = "";
   std::string why;
   if (!MakeDirs(base + "/heatmap", why) ||
-    vsh_png_write_rgb8((opt.out + "/" + row.heatmap).c_str(), rgb.data(), w, h, e2, sizeof e2) != 0)
+    vshm_png_write_rgb8((opt.out + "/" + row.heatmap).c_str(), rgb.data(), w, h, e2, sizeof e2) !=
+      0)
   {
     // The metrics stand; the report shows no picture rather than a broken one.
     row.error = "heat map not written: " + (why.empty() ? std::string(e2) : why);

@@ -1,7 +1,7 @@
 // scene_export.cxx - building the ExportScene from the loaded scene.
 #include "scene_export.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
 
 #include "vsh_scene.h"
 #include "vtkShadowScene.h"

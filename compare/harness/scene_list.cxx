@@ -1,7 +1,7 @@
 // scene_list.cxx - finding the scenes of a run and naming them.
 #include "scene_list.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
 
 #include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>

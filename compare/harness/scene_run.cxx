@@ -1,7 +1,8 @@
 // scene_run.cxx - running the renderers of one scene and comparing them.
 #include "scene_run.h"
 
-#include "harness_util.h"
+#include "harness_progress.h"
+#include "harness_text.h"
 #include "reflection_run.h"
 #include "scene_compare.h"
 #include "scene_export.h"
@@ -26,24 +27,26 @@ namespace
 {
 // Loads the scene and builds the export; false when the scene cannot be
 // loaded (then nothing can run). `have_export` is false when only the
-// export failed (the VTK techniques can still run).
+// export failed (the VTK techniques can still run). The file is parsed once:
+// vtkShadowScene takes the parsed vsh_scene (LoadParsed), and the fields
+// read here come from that same scene.
 bool LoadScene(const Options& opt, const SceneEntry& e, SceneResult& res, ExportScene& ex,
   std::string& content_key, bool& have_export)
 {
   char err[VSH_SCENE_ERROR_MAX];
-  vsh_scene* s = nullptr;
-  if (vsh_scene_load(e.path.c_str(), &s, err, sizeof err) != 0)
+  vsh_scene* parsed = nullptr;
+  if (vsh_scene_load(e.path.c_str(), &parsed, err, sizeof err) != 0)
   {
     res.errors.push_back(std::string("scene: ") + err);
     return false;
   }
   vtkNew<vtkShadowScene> vs;
-  if (!vs->Load(e.path.c_str()))
+  if (!vs->LoadParsed(parsed, e.path.c_str())) // takes `parsed`, also on failure
   {
     res.errors.push_back(std::string("scene: ") + vs->GetErrorMessage());
-    vsh_scene_free(s);
     return false;
   }
+  const vsh_scene* s = vs->GetParsedScene();
   res.width = std::max(1, static_cast<int>(std::lround(s->width * opt.scale)));
   res.height = std::max(1, static_cast<int>(std::lround(s->height * opt.scale)));
   res.lights = static_cast<int>(s->light_count);
@@ -56,7 +59,6 @@ bool LoadScene(const Options& opt, const SceneEntry& e, SceneResult& res, Export
   if (!have_export)
     res.errors.push_back(
       "export: " + (kerr.empty() ? std::string("cannot build the scene") : kerr));
-  vsh_scene_free(s);
   return true;
 }
 } // namespace

@@ -1,7 +1,7 @@
 // visibility_io.cxx - visibility and mask files.
 #include "visibility_io.h"
 
-#include "vsh_png.h"
+#include "vshm_png.h"
 
 #include <algorithm>
 #include <unistd.h>
@@ -20,9 +20,9 @@ bool WriteVisibility(const std::string& dir, int k, const std::vector<float>& v,
 {
   char e[1024] = "";
   const std::vector<std::string> names = LightFileNames(k);
-  if (vsh_png_write_gray16_float((dir + "/" + names[0]).c_str(), v.data(), w, h, e, sizeof e) !=
+  if (vshm_png_write_gray16_float((dir + "/" + names[0]).c_str(), v.data(), w, h, e, sizeof e) !=
       0 ||
-    vsh_png_write_gray8((dir + "/" + names[1]).c_str(), mask.data(), w, h, e, sizeof e) != 0)
+    vshm_png_write_gray8((dir + "/" + names[1]).c_str(), mask.data(), w, h, e, sizeof e) != 0)
   {
     err = e;
     return false;

@@ -1,7 +1,8 @@
 // vtk_runner.cxx - running vtkshadow-render for each technique and light.
 #include "vtk_runner.h"
 
-#include "harness_util.h"
+#include "harness_files.h"
+#include "harness_process.h"
 #include "technique_variant.h"
 #include "visibility_io.h"
 
@@ -37,10 +38,9 @@ bool RenderTechnique(const Options& opt, const SceneEntry& e, const std::string&
     // --technique NAME and a variant's --set KEY=VALUE (technique_variant.h).
     const std::vector<std::string> tech = RenderArguments(t);
     argv.insert(argv.begin() + 2, tech.begin(), tech.end());
-    RunResult r = RunProcess(argv, "", log, opt.timeout);
+    RunResult r =
+      RunLogged(e.id + ": vtk/" + t + " light " + std::to_string(k), argv, "", log, opt.timeout);
     total += r.seconds;
-    Progress(e.id + ": vtk/" + t + " light " + std::to_string(k) + (r.ok() ? "" : " FAILED") +
-      " (" + Fmt(r.seconds, "%.1f") + " s)");
     if (!r.ok())
     {
       res.errors.push_back("vtk/" + t + " light " + std::to_string(k) + ": " + r.error);

@@ -15,7 +15,7 @@
 //   report_data / report_html   results.csv / .json, index.html and the plot
 #include "check.h"
 #include "compare_options.h"
-#include "harness_util.h"
+#include "harness_progress.h"
 #include "reference_renderer.h"
 #include "report.h"
 #include "scene_list.h"

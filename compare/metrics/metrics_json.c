@@ -92,7 +92,7 @@ char *metrics_json_format_reflection(const metrics_cli_args *a, int width, int h
 }
 
 char *metrics_json_format(const metrics_cli_args *a, int width, int height,
-                          const vsh_metrics *m, const vsh_penumbra *pen) {
+                          const vshm_metrics *m, const vshm_penumbra *pen) {
   sbuf b = {malloc(512), 0, 512, 0};
   if (!b.s) return NULL;
   b.s[0] = '\0';

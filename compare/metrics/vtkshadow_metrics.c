@@ -5,9 +5,9 @@
  * input (exit 2) never leaves an output file behind. */
 #include "metrics_cli_args.h"
 #include "metrics_json.h"
-#include "vsh_atomic.h"
-#include "vsh_metrics.h"
-#include "vsh_png.h"
+#include "vshm_atomic.h"
+#include "vshm_metrics.h"
+#include "vshm_png.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,8 +27,8 @@ static void complain(const char *msg) { fprintf(stderr, "vtkshadow-metrics: %s\n
 static int load_as(image *im, const char *path, int colour) {
   char err[1024];
   im->path = path;
-  int rc = colour ? vsh_png_read_rgb(path, &im->px, &im->w, &im->h, NULL, err, sizeof err)
-                  : vsh_png_read_gray(path, &im->px, &im->w, &im->h, NULL, err, sizeof err);
+  int rc = colour ? vshm_png_read_rgb(path, &im->px, &im->w, &im->h, NULL, err, sizeof err)
+                  : vshm_png_read_gray(path, &im->px, &im->w, &im->h, NULL, err, sizeof err);
   if (rc != 0) {
     complain(err);
     return -1;
@@ -49,7 +49,7 @@ static int same_size(const image *a, const image *ref) {
 /* Writes json to --json and stdout; EXIT_OK or EXIT_FAIL. */
 static int emit(const metrics_cli_args *args, const char *json) {
   char err[1024];
-  if (args->json && vsh_write_file_atomic(args->json, json, strlen(json), err, sizeof err)) {
+  if (args->json && vshm_write_file_atomic(args->json, json, strlen(json), err, sizeof err)) {
     complain(err);
     return EXIT_FAIL;
   }
@@ -76,33 +76,33 @@ static int run(const metrics_cli_args *args, const image *ref, const image *mask
     if (!(user_ex = malloc(n))) goto oom;
     for (size_t i = 0; i < n; ++i) user_ex[i] = excl->px[i] > 0.0f;
   }
-  if (vsh_boundary_band(ref->px, valid, w, h, args->band, all_ex) != VSH_METRICS_OK) goto oom;
+  if (vshm_boundary_band(ref->px, valid, w, h, args->band, all_ex) != VSHM_METRICS_OK) goto oom;
   if (user_ex)
     for (size_t i = 0; i < n; ++i) all_ex[i] |= user_ex[i];
 
-  vsh_metrics m;
-  int rc = vsh_metrics_compute(test->px, ref->px, valid, all_ex, w, h, &m);
+  vshm_metrics m;
+  int rc = vshm_metrics_compute(test->px, ref->px, valid, all_ex, w, h, &m);
   if (rc < 0) goto oom;
   /* The band removes exactly the boundary edge_px measures, so edge_px
    * only honours --exclude. */
-  if (rc == VSH_METRICS_OK && args->band > 0 &&
-      vsh_edge_px(test->px, ref->px, valid, user_ex, w, h, &m.edge_px) != VSH_METRICS_OK)
+  if (rc == VSHM_METRICS_OK && args->band > 0 &&
+      vshm_edge_px(test->px, ref->px, valid, user_ex, w, h, &m.edge_px) != VSHM_METRICS_OK)
     goto oom;
 
   char err[1024];
   if (args->heatmap) {
     if (!(rgb = malloc(3 * n))) goto oom;
-    vsh_error_heatmap_rgb(test->px, ref->px, valid, w, h, rgb);
-    if (vsh_png_write_rgb8(args->heatmap, rgb, w, h, err, sizeof err) != 0) {
+    vshm_error_heatmap_rgb(test->px, ref->px, valid, w, h, rgb);
+    if (vshm_png_write_rgb8(args->heatmap, rgb, w, h, err, sizeof err) != 0) {
       complain(err);
       goto done;
     }
   }
-  vsh_penumbra pen;
-  if (vsh_penumbra_compute(test->px, ref->px, valid, user_ex, w, h, &pen) < 0) goto oom;
+  vshm_penumbra pen;
+  if (vshm_penumbra_compute(test->px, ref->px, valid, user_ex, w, h, &pen) < 0) goto oom;
   if (!(json = metrics_json_format(args, w, h, &m, &pen))) goto oom;
   if ((status = emit(args, json)) != EXIT_OK) goto done;
-  if (rc == VSH_METRICS_EMPTY) {
+  if (rc == VSHM_METRICS_EMPTY) {
     /* all-zero metrics look like a perfect score: make the caller notice */
     fprintf(stderr, "vtkshadow-metrics: no pixel compared (%ld valid in %s, all excluded?)\n",
             m.valid_pixels, mask->path);
@@ -133,19 +133,19 @@ static int run_reflection(const metrics_cli_args *args, const image *ref, const 
   if (!mirror || (excl->px && !ex)) goto oom;
   for (size_t i = 0; i < n; ++i) mirror_px += (mirror[i] = mask->px[i] > 0.0f);
   for (size_t i = 0; ex && i < n; ++i) ex[i] = excl->px[i] > 0.0f;
-  int rc = vsh_reflection_mae(test->px, ref->px, mirror, ex, w, h, &mae, &compared);
+  int rc = vshm_reflection_mae(test->px, ref->px, mirror, ex, w, h, &mae, &compared);
   if (rc < 0) goto oom;
   if (args->heatmap) {
     if (!(rgb = malloc(3 * n))) goto oom;
-    vsh_reflection_heatmap_rgb(test->px, ref->px, mirror, w, h, rgb);
-    if (vsh_png_write_rgb8(args->heatmap, rgb, w, h, err, sizeof err) != 0) {
+    vshm_reflection_heatmap_rgb(test->px, ref->px, mirror, w, h, rgb);
+    if (vshm_png_write_rgb8(args->heatmap, rgb, w, h, err, sizeof err) != 0) {
       complain(err);
       goto done;
     }
   }
   if (!(json = metrics_json_format_reflection(args, w, h, mirror_px, compared, mae))) goto oom;
   status = emit(args, json);
-  if (status == EXIT_OK && rc == VSH_METRICS_EMPTY) {
+  if (status == EXIT_OK && rc == VSHM_METRICS_EMPTY) {
     /* 0 looks like a perfect mirror: make the caller notice */
     fprintf(stderr, "vtkshadow-metrics: no mirror pixel compared (%ld in %s, all excluded?)\n",
             mirror_px, mask->path);

@@ -12,7 +12,7 @@
  * unoccluded fraction of the light, integrated numerically by vsh_soft
  * (64 x 256 cells). Pixels count where MASK.png is non-zero. Prints one
  * JSON object: the penumbra metrics of VIS against the exact image
- * (vsh_penumbra.h) and its whole-image mean absolute error. Exit 0, or 2
+ * (vshm_penumbra.h) and its whole-image mean absolute error. Exit 0, or 2
  * on bad input. The exact image goes to EXACT_OUT.png when given.
  *
  *   exact_penumbra --field-out FIELD SCENE LIGHT VIS.png MASK.png [EXACT_OUT.png]
@@ -27,14 +27,14 @@
  *   exact_penumbra --noise A.png B.png MASK.png [SCENE LIGHT]
  *
  * A renderer's own noise from two renders with different seeds: over the
- * penumbra mask of A (vsh_penumbra_mask), sigma = std(A - B) / sqrt(2)
+ * penumbra mask of A (vshm_penumbra_mask), sigma = std(A - B) / sqrt(2)
  * (the noise of one render, independent renders). With SCENE and LIGHT,
  * only the plane's pixels count (as for the exact comparison): Cycles'
  * per-sample N.L makes a curved caster's terminator far noisier. */
 #include "exact_field.h"
-#include "vsh_metrics.h"
-#include "vsh_penumbra.h"
-#include "vsh_png.h"
+#include "vshm_metrics.h"
+#include "vshm_penumbra.h"
+#include "vshm_png.h"
 #include "vsh_scene.h"
 #include "vsh_soft.h"
 
@@ -121,9 +121,9 @@ static int noise(int argc, char **argv) {
   int w, h, w2, h2, w3, h3;
   if (argc != 5 && argc != 7)
     return usage_error("usage: exact_penumbra --noise A.png B.png MASK.png [SCENE LIGHT]", NULL);
-  if (vsh_png_read_gray(argv[2], &a, &w, &h, NULL, err, sizeof err) ||
-      vsh_png_read_gray(argv[3], &b, &w2, &h2, NULL, err, sizeof err) ||
-      vsh_png_read_gray(argv[4], &m, &w3, &h3, NULL, err, sizeof err) || w != w2 || w != w3 ||
+  if (vshm_png_read_gray(argv[2], &a, &w, &h, NULL, err, sizeof err) ||
+      vshm_png_read_gray(argv[3], &b, &w2, &h2, NULL, err, sizeof err) ||
+      vshm_png_read_gray(argv[4], &m, &w3, &h3, NULL, err, sizeof err) || w != w2 || w != w3 ||
       h != h2 || h != h3)
     return usage_error("cannot read the images: ", err);
   size_t np = (size_t)w * h;
@@ -144,7 +144,7 @@ static int noise(int argc, char **argv) {
         if (valid[(size_t)j * w + i] && pixel(s, &c, k, i, j, w, h) < 0) valid[(size_t)j * w + i] = 0;
     vsh_scene_free(s);
   }
-  vsh_penumbra_mask(a, valid, w, h, mask);
+  vshm_penumbra_mask(a, valid, w, h, mask);
   for (size_t i = 0; i < np; ++i)
     if (mask[i]) {
       double d = (double)a[i] - (double)b[i];
@@ -176,8 +176,8 @@ int main(int argc, char **argv) {
       s->objects[0].has_transform || s->objects[1].has_transform ||
       s->lights[k].type == VSH_LIGHT_SPOT)
     return usage_error("need a sphere, a plane and a point or directional light: ", argv[1]);
-  if (vsh_png_read_gray(argv[3], &vis, &w, &h, NULL, err, sizeof err) ||
-      vsh_png_read_gray(argv[4], &mask, &w2, &h2, NULL, err, sizeof err) || w != w2 || h != h2)
+  if (vshm_png_read_gray(argv[3], &vis, &w, &h, NULL, err, sizeof err) ||
+      vshm_png_read_gray(argv[4], &mask, &w2, &h2, NULL, err, sizeof err) || w != w2 || h != h2)
     return usage_error("cannot read the images: ", err);
   cam c;
   camera_of(&s->camera, w, h, &c);
@@ -205,9 +205,9 @@ int main(int argc, char **argv) {
     valid[idx] = v >= 0 && mask[idx] > 0.5f;
     if (valid[idx]) sum += fabs((double)vis[idx] - v), ++count;
   }
-  vsh_penumbra p;
-  int rc = vsh_penumbra_compute(vis, exact, valid, NULL, w, h, &p);
-  if (argc == 6) vsh_png_write_gray16_float(argv[5], exact, w, h, err, sizeof err);
+  vshm_penumbra p;
+  int rc = vshm_penumbra_compute(vis, exact, valid, NULL, w, h, &p);
+  if (argc == 6) vshm_png_write_gray16_float(argv[5], exact, w, h, err, sizeof err);
   printf("{\"pixels\": %ld, \"mae\": %.6g, \"pen_pixels\": %ld, \"pen_mae\": %.6g, "
          "\"pen_bias\": %.6g, \"leak_pct\": %.6g, \"false_shadow_pct\": %.6g, "
          "\"width_ratio\": %.6g, \"contour_05_px\": %.6g, \"status\": %d}\n",

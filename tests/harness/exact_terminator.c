@@ -30,7 +30,7 @@
  * (tests/harness/exact_cache.py keeps them). The output is the same either
  * way. */
 #include "exact_field.h"
-#include "vsh_png.h"
+#include "vshm_png.h"
 #include "vsh_scene.h"
 #include "vsh_soft.h"
 
@@ -138,8 +138,8 @@ int main(int argc, char **argv) {
       sc->objects[0].kind != VSH_OBJECT_SPHERE || sc->objects[0].has_transform ||
       sc->lights[k].type == VSH_LIGHT_SPOT)
     return fail("need a sphere (object 0) and a point or directional light: ", argv[1]);
-  if (vsh_png_read_gray(argv[3], &vis, &w, &h, NULL, err, sizeof err) ||
-      vsh_png_read_gray(argv[4], &mask, &w2, &h2, NULL, err, sizeof err) || w != w2 || h != h2)
+  if (vshm_png_read_gray(argv[3], &vis, &w, &h, NULL, err, sizeof err) ||
+      vshm_png_read_gray(argv[4], &mask, &w2, &h2, NULL, err, sizeof err) || w != w2 || h != h2)
     return fail("cannot read the images: ", err);
   const size_t np = (size_t)w * h;
   double *field = malloc(2 * np * sizeof *field);

@@ -22,7 +22,10 @@ mkdir -p "$out"
 main=$(ls "$out"/vtkshadow_*.deb 2>/dev/null) || fail "cpack made no vtkshadow_*.deb"
 echo "built $(basename "$main")"
 
-# Contents: what a user of each package needs, each listed or the test fails.
+# Contents: what a user of each package needs, each listed or the test fails:
+# the library, headers, CMake and Python packages, the product's program
+# (tools/: vtkshadow-render) and the harness (compare/: vtkshadow-compare,
+# vtkshadow-metrics and the Blender script it runs).
 dpkg-deb -c "$main" | awk '{print $6}' >"$out/main.txt"
 for want in \
   '^\./usr/lib/python3/dist-packages/vtkshadow/__init__\.py$' \
@@ -31,7 +34,10 @@ for want in \
   '^\./usr/include/vtkshadow/vtkshadow\.h$' \
   '^\./usr/include/vtkshadow/vtkShadowTechnique\.h$' \
   '^\./usr/lib/(x86_64-linux-gnu/)?cmake/vtkshadow/vtkshadowConfig\.cmake$' \
-  '^\./usr/bin/vtkshadow-render$'; do
+  '^\./usr/bin/vtkshadow-render$' \
+  '^\./usr/bin/vtkshadow-compare$' \
+  '^\./usr/bin/vtkshadow-metrics$' \
+  '^\./usr/share/vtkshadow/render_cycles\.py$'; do
   grep -Eq "$want" "$out/main.txt" || fail "$(basename "$main") lacks $want"
 done
 if grep -q paraview "$out/main.txt" || dpkg-deb -f "$main" Depends | grep -q paraview; then

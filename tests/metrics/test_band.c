@@ -1,6 +1,6 @@
-/* test_band.c - vsh_boundary_band against its definition. */
+/* test_band.c - vshm_boundary_band against its definition. */
 #include "vsh_check.h"
-#include "vsh_metrics.h"
+#include "vshm_metrics.h"
 
 #include <stdlib.h>
 
@@ -36,19 +36,19 @@ int main(void) {
     r[i] = (i % W) < 5 ? 0.0f : 1.0f;
     valid[i] = 1;
   }
-  CHECK(vsh_boundary_band(r, valid, W, H, 0, band) == VSH_METRICS_OK);
+  CHECK(vshm_boundary_band(r, valid, W, H, 0, band) == VSHM_METRICS_OK);
   CHECK(count() == 0); /* radius 0: no band */
-  CHECK(vsh_boundary_band(r, valid, W, H, 1, band) == VSH_METRICS_OK);
+  CHECK(vshm_boundary_band(r, valid, W, H, 1, band) == VSHM_METRICS_OK);
   CHECK(count() == 2 * H); /* columns 4 and 5 */
   for (int y = 0; y < H; ++y) CHECK(band[y * W + 4] && band[y * W + 5]);
-  CHECK(vsh_boundary_band(r, valid, W, H, 2, band) == VSH_METRICS_OK);
+  CHECK(vshm_boundary_band(r, valid, W, H, 2, band) == VSHM_METRICS_OK);
   CHECK(count() == 4 * H); /* columns 3..6 */
-  CHECK(vsh_boundary_band(r, valid, W, H, 1000, band) == VSH_METRICS_OK);
+  CHECK(vshm_boundary_band(r, valid, W, H, 1000, band) == VSHM_METRICS_OK);
   CHECK(count() == W * H); /* a huge radius is clamped, covers everything */
 
   /* no boundary: empty band */
   for (int i = 0; i < W * H; ++i) r[i] = 0.3f;
-  CHECK(vsh_boundary_band(r, valid, W, H, 3, band) == VSH_METRICS_OK);
+  CHECK(vshm_boundary_band(r, valid, W, H, 3, band) == VSHM_METRICS_OK);
   CHECK(count() == 0);
 
   /* random references and masks against the brute force, radii 1..4 */
@@ -61,14 +61,14 @@ int main(void) {
       valid[i] = (u / 7) % 10 != 0;
     }
     int rad = 1 + t % 4;
-    CHECK(vsh_boundary_band(r, valid, W, H, rad, band) == VSH_METRICS_OK);
+    CHECK(vshm_boundary_band(r, valid, W, H, rad, band) == VSHM_METRICS_OK);
     int bad = 0;
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x) bad += (band[y * W + x] != 0) != expected(x, y, rad);
     CHECK(bad == 0);
   }
 
-  CHECK(vsh_boundary_band(r, valid, W, H, -1, band) == VSH_METRICS_EINVAL);
-  CHECK(vsh_boundary_band(NULL, valid, W, H, 1, band) == VSH_METRICS_EINVAL);
+  CHECK(vshm_boundary_band(r, valid, W, H, -1, band) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_boundary_band(NULL, valid, W, H, 1, band) == VSHM_METRICS_EINVAL);
   return vsh_check_report("metrics.band");
 }

@@ -1,7 +1,7 @@
 /* test_edge.c - edge_px: known shifts, the no-boundary conventions, exclude,
  * and a brute-force crack-to-crack distance on random images. */
 #include "vsh_check.h"
-#include "vsh_metrics.h"
+#include "vshm_metrics.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -74,7 +74,7 @@ static void disc(float *a, double cx, double cy, double rad) {
 
 static double edge(const unsigned char *exclude) {
   double e = -1;
-  CHECK(vsh_edge_px(v, r, valid, exclude, W, H, &e) == VSH_METRICS_OK);
+  CHECK(vshm_edge_px(v, r, valid, exclude, W, H, &e) == VSHM_METRICS_OK);
   return e;
 }
 
@@ -89,8 +89,8 @@ int main(void) {
         v[y * W + x] = x < 20 + k ? 0.0f : 1.0f;
       }
     CHECK_NEAR(edge(NULL), (double)k, 1e-12);
-    vsh_metrics m;
-    CHECK(vsh_metrics_compute(v, r, valid, NULL, W, H, &m) == VSH_METRICS_OK);
+    vshm_metrics m;
+    CHECK(vshm_metrics_compute(v, r, valid, NULL, W, H, &m) == VSHM_METRICS_OK);
     CHECK_NEAR(m.edge_px, (double)k, 1e-12);
     CHECK_NEAR(m.wrong_pct, 100.0 * k / W, 1e-9);
   }
@@ -168,7 +168,7 @@ int main(void) {
       ex[i] = rng() % 100 < 10;
     }
     double e = -1;
-    CHECK(vsh_edge_px(v, r, valid, t % 2 ? ex : NULL, W, H, &e) == VSH_METRICS_OK);
+    CHECK(vshm_edge_px(v, r, valid, t % 2 ? ex : NULL, W, H, &e) == VSHM_METRICS_OK);
     CHECK_NEAR(e, brute_edge(v, r, valid, t % 2 ? ex : NULL, W, H), 1e-9);
   }
 
@@ -177,12 +177,12 @@ int main(void) {
     float a[5] = {0, 0, 1, 1, 1}, b[5] = {0, 0, 0, 1, 1};
     unsigned char m[5] = {1, 1, 1, 1, 1};
     double e = -1;
-    CHECK(vsh_edge_px(a, b, m, NULL, 1, 5, &e) == VSH_METRICS_OK);
+    CHECK(vshm_edge_px(a, b, m, NULL, 1, 5, &e) == VSHM_METRICS_OK);
     CHECK_NEAR(e, 1.0, 1e-12);
   }
 
   double e;
-  CHECK(vsh_edge_px(NULL, r, valid, NULL, W, H, &e) == VSH_METRICS_EINVAL);
-  CHECK(vsh_edge_px(v, r, valid, NULL, W, H, NULL) == VSH_METRICS_EINVAL);
+  CHECK(vshm_edge_px(NULL, r, valid, NULL, W, H, &e) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_edge_px(v, r, valid, NULL, W, H, NULL) == VSHM_METRICS_EINVAL);
   return vsh_check_report("metrics.edge");
 }

@@ -1,6 +1,6 @@
 /* test_edt.c - the Felzenszwalb-Huttenlocher transform against brute force. */
 #include "vsh_check.h"
-#include "vsh_edt.h"
+#include "vshm_edt.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -31,7 +31,7 @@ static void check_random(int w, int h, unsigned density_per_mille) {
     f[i] = rng() % 1000 < density_per_mille;
     count += f[i];
   }
-  CHECK(vsh_edt_sq(f, w, h, d2) == count);
+  CHECK(vshm_edt_sq(f, w, h, d2) == count);
   int bad = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
@@ -57,7 +57,7 @@ int main(void) {
   unsigned char f[5 * 4] = {0};
   double d2[5 * 4];
   f[1 * 5 + 2] = 1;
-  CHECK(vsh_edt_sq(f, 5, 4, d2) == 1);
+  CHECK(vshm_edt_sq(f, 5, 4, d2) == 1);
   CHECK(d2[1 * 5 + 2] == 0.0);
   CHECK(d2[0] == 5.0);          /* (0,0): dx 2, dy 1 */
   CHECK(d2[3 * 5 + 4] == 8.0);  /* (4,3): dx 2, dy 2 */
@@ -65,11 +65,11 @@ int main(void) {
   /* no feature: +INFINITY everywhere, count 0 */
   unsigned char none[6] = {0};
   double dn[6];
-  CHECK(vsh_edt_sq(none, 3, 2, dn) == 0);
+  CHECK(vshm_edt_sq(none, 3, 2, dn) == 0);
   for (int i = 0; i < 6; ++i) CHECK(isinf(dn[i]) && dn[i] > 0);
 
   /* bad arguments */
-  CHECK(vsh_edt_sq(NULL, 3, 2, dn) == -1);
-  CHECK(vsh_edt_sq(none, 0, 2, dn) == -1);
+  CHECK(vshm_edt_sq(NULL, 3, 2, dn) == -1);
+  CHECK(vshm_edt_sq(none, 0, 2, dn) == -1);
   return vsh_check_report("metrics.edt");
 }

@@ -1,11 +1,11 @@
-/* test_penumbra.c - the penumbra metrics (vsh_penumbra.h) on images whose
+/* test_penumbra.c - the penumbra metrics (vshm_penumbra.h) on images whose
  * answers are known by construction: a linear ramp penumbra compared with
  * itself, shifted, hardened, offset, leaking and over-darkened; the one
  * pixel dilation of the mask; exclusions; empty and bad inputs; and random
  * images, whose figures must stay finite and in range. */
 #include "vsh_check.h"
-#include "vsh_metrics.h"
-#include "vsh_penumbra.h"
+#include "vshm_metrics.h"
+#include "vshm_penumbra.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -40,10 +40,10 @@ static void ramp(float *img, double x0, double width) {
 static void all_valid(void) { memset(valid, 1, sizeof valid); }
 
 static void test_identical(void) {
-  vsh_penumbra p;
+  vshm_penumbra p;
   ramp(ref, 16, 20);
   memcpy(test, ref, sizeof ref);
-  CHECK(vsh_penumbra_compute(test, ref, valid, NULL, W, H, &p) == VSH_METRICS_OK);
+  CHECK(vshm_penumbra_compute(test, ref, valid, NULL, W, H, &p) == VSHM_METRICS_OK);
   CHECK(p.pen_mae == 0.0 && p.pen_bias == 0.0);
   CHECK(p.leak_pct == 0.0 && p.false_shadow_pct == 0.0);
   CHECK_NEAR(p.width_ratio, 1.0, 1e-12);
@@ -59,10 +59,10 @@ static void test_identical(void) {
 }
 
 static void test_shifted(void) {
-  vsh_penumbra p;
+  vshm_penumbra p;
   ramp(ref, 16, 20);
   ramp(test, 19, 20); /* 3 px towards the light: too dark */
-  CHECK(vsh_penumbra_compute(test, ref, valid, NULL, W, H, &p) == VSH_METRICS_OK);
+  CHECK(vshm_penumbra_compute(test, ref, valid, NULL, W, H, &p) == VSHM_METRICS_OK);
   for (int k = 0; k < 3; ++k) CHECK_NEAR(p.contour_px[k], 3.0, 1e-12);
   CHECK_NEAR(p.width_ratio, 1.0, 1e-12);
   CHECK(p.pen_bias < 0.0);
@@ -73,10 +73,10 @@ static void test_shifted(void) {
 }
 
 static void test_hard(void) {
-  vsh_penumbra p;
+  vshm_penumbra p;
   ramp(ref, 16, 20);
   ramp(test, 26, 1e-9); /* a step where the reference crosses 0.5 */
-  CHECK(vsh_penumbra_compute(test, ref, valid, NULL, W, H, &p) == VSH_METRICS_OK);
+  CHECK(vshm_penumbra_compute(test, ref, valid, NULL, W, H, &p) == VSHM_METRICS_OK);
   CHECK(p.width_px == 0.0 && p.width_ratio == 0.0);
   CHECK_NEAR(p.contour_px[1], 0.0, 1e-12);
   /* v_ref = 0.1 at column 18, 0.9 at 34; the step is at 26: 8 px each. */
@@ -87,7 +87,7 @@ static void test_hard(void) {
 }
 
 static void test_offset_leak_false(void) {
-  vsh_penumbra p;
+  vshm_penumbra p;
   ramp(ref, 16, 20);
   for (int i = 0; i < W * H; ++i) {
     float r = ref[i];
@@ -98,7 +98,7 @@ static void test_offset_leak_false(void) {
     else
       test[i] = r + 0.05f;
   }
-  CHECK(vsh_penumbra_compute(test, ref, valid, NULL, W, H, &p) == VSH_METRICS_OK);
+  CHECK(vshm_penumbra_compute(test, ref, valid, NULL, W, H, &p) == VSHM_METRICS_OK);
   CHECK_NEAR(p.leak_pct, 100.0, 1e-12);
   CHECK_NEAR(p.false_shadow_pct, 100.0, 1e-12);
   /* Interior pixels +0.05; the two dilated rim columns (+0.2 and -0.15). */
@@ -108,16 +108,16 @@ static void test_offset_leak_false(void) {
 
 static void test_mask_and_exclude(void) {
   unsigned char mask[W * H], excl[W * H];
-  vsh_penumbra p;
+  vshm_penumbra p;
   long count = 0;
   for (int i = 0; i < W * H; ++i) ref[i] = 1.0f;
   ref[5 * W + 10] = 0.5f;
-  CHECK(vsh_penumbra_mask(ref, valid, W, H, mask) == VSH_METRICS_OK);
+  CHECK(vshm_penumbra_mask(ref, valid, W, H, mask) == VSHM_METRICS_OK);
   for (int i = 0; i < W * H; ++i) count += mask[i];
   CHECK(count == 9);
   /* Invalid pixels never join the mask. */
   valid[4 * W + 10] = 0;
-  vsh_penumbra_mask(ref, valid, W, H, mask);
+  vshm_penumbra_mask(ref, valid, W, H, mask);
   CHECK(mask[4 * W + 10] == 0 && mask[6 * W + 10] == 1);
   all_valid();
   /* Excluding the penumbra leaves nothing to measure: EMPTY, zeros. */
@@ -125,20 +125,20 @@ static void test_mask_and_exclude(void) {
   memset(excl, 0, sizeof excl);
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) excl[(5 + dy) * W + 10 + dx] = 1;
-  CHECK(vsh_penumbra_compute(test, ref, valid, excl, W, H, &p) == VSH_METRICS_EMPTY);
+  CHECK(vshm_penumbra_compute(test, ref, valid, excl, W, H, &p) == VSHM_METRICS_EMPTY);
   CHECK(p.penumbra_pixels == 0 && p.pen_mae == 0.0 && p.lit_pixels == W * H - 9);
 }
 
 static void test_bad_and_empty(void) {
-  vsh_penumbra p;
+  vshm_penumbra p;
   unsigned char none[W * H], rgb[3 * W * H];
   memset(none, 0, sizeof none);
-  CHECK(vsh_penumbra_compute(NULL, ref, valid, NULL, W, H, &p) == VSH_METRICS_EINVAL);
-  CHECK(vsh_penumbra_compute(test, ref, valid, NULL, 0, H, &p) == VSH_METRICS_EINVAL);
-  CHECK(vsh_penumbra_compute(test, ref, valid, NULL, W, H, NULL) == VSH_METRICS_EINVAL);
-  CHECK(vsh_penumbra_mask(ref, NULL, W, H, none) == VSH_METRICS_EINVAL);
-  CHECK(vsh_penumbra_heatmap_rgb(test, ref, valid, -1, H, rgb) == VSH_METRICS_EINVAL);
-  CHECK(vsh_penumbra_compute(test, ref, none, NULL, W, H, &p) == VSH_METRICS_EMPTY);
+  CHECK(vshm_penumbra_compute(NULL, ref, valid, NULL, W, H, &p) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_penumbra_compute(test, ref, valid, NULL, 0, H, &p) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_penumbra_compute(test, ref, valid, NULL, W, H, NULL) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_penumbra_mask(ref, NULL, W, H, none) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_penumbra_heatmap_rgb(test, ref, valid, -1, H, rgb) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_penumbra_compute(test, ref, none, NULL, W, H, &p) == VSHM_METRICS_EMPTY);
   CHECK(p.width_ratio == 0.0 && p.leak_pct == 0.0 && p.contour_px[1] == 0.0);
 }
 
@@ -149,7 +149,7 @@ static void test_heatmap(void) {
   test[8 * W + 25] -= 0.25f; /* saturated blue */
   test[8 * W + 27] += 0.125f; /* half red */
   valid[0] = 0;
-  CHECK(vsh_penumbra_heatmap_rgb(test, ref, valid, W, H, rgb) == VSH_METRICS_OK);
+  CHECK(vshm_penumbra_heatmap_rgb(test, ref, valid, W, H, rgb) == VSHM_METRICS_OK);
   CHECK(rgb[0] == 128 && rgb[1] == 128 && rgb[2] == 128);
   {
     const unsigned char *b = rgb + 3 * (8 * W + 25), *r = rgb + 3 * (8 * W + 27);
@@ -165,7 +165,7 @@ static void test_heatmap(void) {
 /* Random images: every figure finite and in its range. */
 static void test_random(void) {
   for (int it = 0; it < 300; ++it) {
-    vsh_penumbra p;
+    vshm_penumbra p;
     int rc;
     for (int i = 0; i < W * H; ++i) {
       double s = vsh_test_rnd(0, 1);
@@ -173,8 +173,8 @@ static void test_random(void) {
       test[i] = (float)vsh_test_rnd(0, 1);
       valid[i] = vsh_test_rnd(0, 1) < 0.9;
     }
-    rc = vsh_penumbra_compute(test, ref, valid, NULL, W, H, &p);
-    CHECK(rc == VSH_METRICS_OK || rc == VSH_METRICS_EMPTY);
+    rc = vshm_penumbra_compute(test, ref, valid, NULL, W, H, &p);
+    CHECK(rc == VSHM_METRICS_OK || rc == VSHM_METRICS_EMPTY);
     CHECK(p.pen_mae >= 0.0 && p.pen_mae <= 1.0 && fabs(p.pen_bias) <= p.pen_mae + 1e-12);
     CHECK(p.leak_pct >= 0.0 && p.leak_pct <= 100.0);
     CHECK(p.false_shadow_pct >= 0.0 && p.false_shadow_pct <= 100.0);

@@ -5,7 +5,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "vsh_check.h"
-#include "vsh_png.h"
+#include "vshm_png.h"
 
 #include <unistd.h>
 
@@ -65,9 +65,9 @@ int main(int argc, char **argv) {
   s16[2] = 32768;
   s16[3] = 1;
   s16[4] = 256; /* a byte-order mistake would swap this with 1 */
-  CHECK(vsh_png_write_gray16(path("g16.png"), s16, W16, H16, err, sizeof err) == 0);
+  CHECK(vshm_png_write_gray16(path("g16.png"), s16, W16, H16, err, sizeof err) == 0);
   CHECK(!tmp_left(path("g16.png")));
-  CHECK(vsh_png_read_gray(path("g16.png"), &px, &w, &h, &depth, err, sizeof err) == 0);
+  CHECK(vshm_png_read_gray(path("g16.png"), &px, &w, &h, &depth, err, sizeof err) == 0);
   CHECK(w == W16 && h == H16 && depth == 16);
   if (px) {
     for (int i = 0; i < W16 * H16; ++i) {
@@ -82,8 +82,8 @@ int main(int argc, char **argv) {
   enum { W8 = 32, H8 = 8 };
   unsigned char s8[W8 * H8];
   for (int i = 0; i < W8 * H8; ++i) s8[i] = (unsigned char)i;
-  CHECK(vsh_png_write_gray8(path("g8.png"), s8, W8, H8, err, sizeof err) == 0);
-  CHECK(vsh_png_read_gray(path("g8.png"), &px, &w, &h, &depth, err, sizeof err) == 0);
+  CHECK(vshm_png_write_gray8(path("g8.png"), s8, W8, H8, err, sizeof err) == 0);
+  CHECK(vshm_png_read_gray(path("g8.png"), &px, &w, &h, &depth, err, sizeof err) == 0);
   CHECK(w == W8 && h == H8 && depth == 8);
   if (px)
     for (int i = 0; i < W8 * H8; ++i) CHECK(px[i] == (float)s8[i] / 255.0f);
@@ -91,8 +91,8 @@ int main(int argc, char **argv) {
 
   /* float -> 16-bit: clamped and rounded */
   float fv[5] = {-0.5f, 0.25f, 1.5f, 0.5f, NAN};
-  CHECK(vsh_png_write_gray16_float(path("f16.png"), fv, 5, 1, err, sizeof err) == 0);
-  CHECK(vsh_png_read_gray(path("f16.png"), &px, &w, &h, NULL, err, sizeof err) == 0);
+  CHECK(vshm_png_write_gray16_float(path("f16.png"), fv, 5, 1, err, sizeof err) == 0);
+  CHECK(vshm_png_read_gray(path("f16.png"), &px, &w, &h, NULL, err, sizeof err) == 0);
   if (px) {
     CHECK(px[0] == 0.0f && px[2] == 1.0f && px[4] == 0.0f);
     CHECK(lrintf(px[1] * 65535.0f) == 16384); /* 16383.75 rounds up */
@@ -102,52 +102,52 @@ int main(int argc, char **argv) {
 
   /* RGB writes, but the reader refuses it and says what it got */
   unsigned char rgb[2 * 2 * 3] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 9, 9, 9};
-  CHECK(vsh_png_write_rgb8(path("rgb.png"), rgb, 2, 2, err, sizeof err) == 0);
+  CHECK(vshm_png_write_rgb8(path("rgb.png"), rgb, 2, 2, err, sizeof err) == 0);
   px = (float *)1;
-  CHECK(vsh_png_read_gray(path("rgb.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
+  CHECK(vshm_png_read_gray(path("rgb.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
   CHECK(px == NULL);
   CHECK_STR_CONTAINS(err, "rgb.png: expected grayscale, got RGB");
 
   /* files written by another encoder (tests/metrics/data/make_data.py) */
-  CHECK(vsh_png_read_gray(data_path("ref16.png"), &px, &w, &h, &depth, err, sizeof err) == 0);
+  CHECK(vshm_png_read_gray(data_path("ref16.png"), &px, &w, &h, &depth, err, sizeof err) == 0);
   CHECK(w == 8 && h == 8 && depth == 16);
   if (px) CHECK(px[3] == 0.0f && px[4] == 1.0f && px[63] == 1.0f);
   free(px);
-  CHECK(vsh_png_read_gray(data_path("gray_alpha8.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
+  CHECK(vshm_png_read_gray(data_path("gray_alpha8.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
   CHECK_STR_CONTAINS(err, "gray_alpha8.png: expected grayscale, got gray+alpha");
-  CHECK(vsh_png_read_gray(data_path("not_png.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
+  CHECK(vshm_png_read_gray(data_path("not_png.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
   CHECK_STR_CONTAINS(err, "not_png.png: not a PNG file");
-  CHECK(vsh_png_read_gray(data_path("truncated.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
+  CHECK(vshm_png_read_gray(data_path("truncated.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
   CHECK_STR_CONTAINS(err, "truncated.png: corrupt");
-  CHECK(vsh_png_read_gray(path("missing.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
+  CHECK(vshm_png_read_gray(path("missing.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
   CHECK_STR_CONTAINS(err, "missing.png: cannot open (No such file or directory)");
   /* an empty file is not a PNG either */
   FILE *f = fopen(path("empty.png"), "wb");
   if (f) fclose(f);
-  CHECK(vsh_png_read_gray(path("empty.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
+  CHECK(vshm_png_read_gray(path("empty.png"), &px, &w, &h, NULL, err, sizeof err) == -1);
   CHECK_STR_CONTAINS(err, "empty.png: not a PNG file");
 
   /* a failed write leaves nothing: directory missing */
-  CHECK(vsh_png_write_gray8(path("no/such/dir/x.png"), s8, W8, H8, err, sizeof err) == -1);
+  CHECK(vshm_png_write_gray8(path("no/such/dir/x.png"), s8, W8, H8, err, sizeof err) == -1);
   CHECK_STR_CONTAINS(err, "x.png: cannot create temporary file");
   CHECK(!exists(path("no/such/dir/x.png")));
   /* bad arguments: message, and the existing file is untouched */
-  CHECK(vsh_png_write_gray8(path("g8.png"), s8, 0, H8, err, sizeof err) == -1);
+  CHECK(vshm_png_write_gray8(path("g8.png"), s8, 0, H8, err, sizeof err) == -1);
   CHECK_STR_CONTAINS(err, "g8.png: invalid image (0x8)");
-  CHECK(vsh_png_write_gray16(path("g8.png"), NULL, W8, H8, err, sizeof err) == -1);
-  CHECK(vsh_png_read_gray(path("g8.png"), &px, &w, &h, &depth, err, sizeof err) == 0);
+  CHECK(vshm_png_write_gray16(path("g8.png"), NULL, W8, H8, err, sizeof err) == -1);
+  CHECK(vshm_png_read_gray(path("g8.png"), &px, &w, &h, &depth, err, sizeof err) == 0);
   CHECK(w == W8 && h == H8 && depth == 8);
   free(px);
   CHECK(!tmp_left(path("g8.png")));
 
   /* overwriting replaces the file */
   unsigned char one[1] = {7};
-  CHECK(vsh_png_write_gray8(path("g8.png"), one, 1, 1, err, sizeof err) == 0);
-  CHECK(vsh_png_read_gray(path("g8.png"), &px, &w, &h, NULL, err, sizeof err) == 0);
+  CHECK(vshm_png_write_gray8(path("g8.png"), one, 1, 1, err, sizeof err) == 0);
+  CHECK(vshm_png_read_gray(path("g8.png"), &px, &w, &h, NULL, err, sizeof err) == 0);
   CHECK(w == 1 && h == 1 && px && px[0] == 7.0f / 255.0f);
   free(px);
 
   /* err may be NULL */
-  CHECK(vsh_png_read_gray(path("missing.png"), &px, &w, &h, NULL, NULL, 0) == -1);
+  CHECK(vshm_png_read_gray(path("missing.png"), &px, &w, &h, NULL, NULL, 0) == -1);
   return vsh_check_report("metrics.png");
 }

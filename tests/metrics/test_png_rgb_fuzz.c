@@ -1,4 +1,4 @@
-/* test_png_rgb_fuzz.c - the colour PNG reader (vsh_png_read_rgb) on valid
+/* test_png_rgb_fuzz.c - the colour PNG reader (vshm_png_read_rgb) on valid
  * files and on deterministic byte mutations of them (flips, erasures,
  * insertions; every other mutant with its chunk CRCs repaired so that it
  * reaches the decoder): it must either refuse the file with a message
@@ -7,7 +7,7 @@
  * argv[1]: a scratch directory. */
 #include "vsh_check.h"
 #include "vsh_mutate.h"
-#include "vsh_png.h"
+#include "vshm_png.h"
 
 #include <zlib.h>
 
@@ -47,16 +47,16 @@ static void valid_files(const char *rgb_path, const char *gray_path) {
   for (int i = 0; i < 3 * W * H; ++i) rgb[i] = (unsigned char)(i * 17);
   for (int i = 0; i < W * H; ++i) gray[i] = (unsigned char)i;
   char err[1024];
-  CHECK(vsh_png_write_rgb8(rgb_path, rgb, W, H, err, sizeof err) == 0);
-  CHECK(vsh_png_write_gray8(gray_path, gray, W, H, err, sizeof err) == 0);
+  CHECK(vshm_png_write_rgb8(rgb_path, rgb, W, H, err, sizeof err) == 0);
+  CHECK(vshm_png_write_gray8(gray_path, gray, W, H, err, sizeof err) == 0);
   float *px = NULL;
   int w = 0, h = 0, depth = 0;
-  CHECK(vsh_png_read_rgb(rgb_path, &px, &w, &h, &depth, err, sizeof err) == 0);
+  CHECK(vshm_png_read_rgb(rgb_path, &px, &w, &h, &depth, err, sizeof err) == 0);
   CHECK(w == W && h == H && depth == 8);
   for (int i = 0; px && i < 3 * W * H; ++i) CHECK(px[i] == (float)rgb[i] / 255.0f);
   free(px);
   px = (float *)1;
-  CHECK(vsh_png_read_rgb(gray_path, &px, &w, &h, NULL, err, sizeof err) == -1);
+  CHECK(vshm_png_read_rgb(gray_path, &px, &w, &h, NULL, err, sizeof err) == -1);
   CHECK(px == NULL);
   CHECK_STR_CONTAINS(err, "expected RGB or RGBA, got grayscale");
 }
@@ -105,7 +105,7 @@ int main(int argc, char **argv) {
     float *px = NULL;
     int w = 0, h = 0;
     err[0] = '\0';
-    if (vsh_png_read_rgb(mut_path, &px, &w, &h, NULL, err, sizeof err) == 0) {
+    if (vshm_png_read_rgb(mut_path, &px, &w, &h, NULL, err, sizeof err) == 0) {
       ++accepted;
       CHECK(px != NULL && w > 0 && h > 0);
       for (long i = 0; px && i < 3L * w * h; ++i) CHECK(px[i] >= 0.0f && px[i] <= 1.0f);

@@ -5,7 +5,7 @@
  * properties any mean absolute error must keep (symmetry, zero on itself,
  * bounded by [0,1]). */
 #include "vsh_check.h"
-#include "vsh_metrics.h"
+#include "vshm_metrics.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -25,41 +25,41 @@ static void known_values(void) {
   unsigned char m[3] = {1, 1, 0};
   double mae = -1;
   long px = -1;
-  CHECK(vsh_reflection_mae(t, r, m, NULL, 3, 1, &mae, &px) == VSH_METRICS_OK);
+  CHECK(vshm_reflection_mae(t, r, m, NULL, 3, 1, &mae, &px) == VSHM_METRICS_OK);
   CHECK(px == 2);
   CHECK_NEAR(mae, (0.125 + 0.25) / 2.0, 1e-12);
   /* exclude pixel 1: only pixel 0 */
   unsigned char ex[3] = {0, 1, 0};
-  CHECK(vsh_reflection_mae(t, r, m, ex, 3, 1, &mae, &px) == VSH_METRICS_OK);
+  CHECK(vshm_reflection_mae(t, r, m, ex, 3, 1, &mae, &px) == VSHM_METRICS_OK);
   CHECK(px == 1);
   CHECK_NEAR(mae, 0.125, 1e-12);
   /* every mirror pixel excluded: empty, 0 */
   unsigned char all[3] = {1, 1, 1};
-  CHECK(vsh_reflection_mae(t, r, m, all, 3, 1, &mae, &px) == VSH_METRICS_EMPTY);
+  CHECK(vshm_reflection_mae(t, r, m, all, 3, 1, &mae, &px) == VSHM_METRICS_EMPTY);
   CHECK(mae == 0.0 && px == 0);
   unsigned char none[3] = {0, 0, 0};
-  CHECK(vsh_reflection_mae(t, r, none, NULL, 3, 1, &mae, NULL) == VSH_METRICS_EMPTY);
+  CHECK(vshm_reflection_mae(t, r, none, NULL, 3, 1, &mae, NULL) == VSHM_METRICS_EMPTY);
   /* bad arguments */
-  CHECK(vsh_reflection_mae(NULL, r, m, NULL, 3, 1, &mae, &px) == VSH_METRICS_EINVAL);
+  CHECK(vshm_reflection_mae(NULL, r, m, NULL, 3, 1, &mae, &px) == VSHM_METRICS_EINVAL);
   CHECK(mae == 0.0 && px == 0);
-  CHECK(vsh_reflection_mae(t, NULL, m, NULL, 3, 1, &mae, &px) == VSH_METRICS_EINVAL);
-  CHECK(vsh_reflection_mae(t, r, NULL, NULL, 3, 1, &mae, &px) == VSH_METRICS_EINVAL);
-  CHECK(vsh_reflection_mae(t, r, m, NULL, 3, 1, NULL, &px) == VSH_METRICS_EINVAL);
-  CHECK(vsh_reflection_mae(t, r, m, NULL, 0, 1, &mae, &px) == VSH_METRICS_EINVAL);
-  CHECK(vsh_reflection_mae(t, r, m, NULL, 3, -1, &mae, &px) == VSH_METRICS_EINVAL);
-  CHECK(vsh_reflection_mae(t, r, m, NULL, 1 << 21, 1, &mae, &px) == VSH_METRICS_EINVAL);
+  CHECK(vshm_reflection_mae(t, NULL, m, NULL, 3, 1, &mae, &px) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_reflection_mae(t, r, NULL, NULL, 3, 1, &mae, &px) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_reflection_mae(t, r, m, NULL, 3, 1, NULL, &px) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_reflection_mae(t, r, m, NULL, 0, 1, &mae, &px) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_reflection_mae(t, r, m, NULL, 3, -1, &mae, &px) == VSHM_METRICS_EINVAL);
+  CHECK(vshm_reflection_mae(t, r, m, NULL, 1 << 21, 1, &mae, &px) == VSHM_METRICS_EINVAL);
 
   /* heat map: pixel 0 too bright by 0.125 (mean of the channels): light
    * red; pixel 1 too bright by 0.25; pixel 2 grey (not a mirror pixel) */
   unsigned char rgb[9];
-  CHECK(vsh_reflection_heatmap_rgb(t, r, m, 3, 1, rgb) == VSH_METRICS_OK);
+  CHECK(vshm_reflection_heatmap_rgb(t, r, m, 3, 1, rgb) == VSHM_METRICS_OK);
   CHECK(rgb[0] == 255 && rgb[1] == 223 && rgb[2] == 223); /* lrint(255 * 0.875) */
   CHECK(rgb[3] == 255 && rgb[4] == 191 && rgb[5] == 191); /* lrint(255 * 0.75) */
   CHECK(rgb[6] == 128 && rgb[7] == 128 && rgb[8] == 128);
   /* too dark: blue */
-  CHECK(vsh_reflection_heatmap_rgb(r, t, m, 3, 1, rgb) == VSH_METRICS_OK);
+  CHECK(vshm_reflection_heatmap_rgb(r, t, m, 3, 1, rgb) == VSHM_METRICS_OK);
   CHECK(rgb[0] == 223 && rgb[1] == 223 && rgb[2] == 255);
-  CHECK(vsh_reflection_heatmap_rgb(t, r, m, 3, 1, NULL) == VSH_METRICS_EINVAL);
+  CHECK(vshm_reflection_heatmap_rgb(t, r, m, 3, 1, NULL) == VSHM_METRICS_EINVAL);
 }
 
 /* Random 8-bit images, masks and exclusions of random sizes. */
@@ -87,17 +87,17 @@ static void random_images(void) {
     }
     double mae = -1, back = -1, self = -1;
     long px = -1;
-    int rc = vsh_reflection_mae(t, r, m, ex, w, h, &mae, &px);
+    int rc = vshm_reflection_mae(t, r, m, ex, w, h, &mae, &px);
     CHECK(px == want_px);
     if (want_px == 0) {
-      CHECK(rc == VSH_METRICS_EMPTY && mae == 0.0);
+      CHECK(rc == VSHM_METRICS_EMPTY && mae == 0.0);
     } else {
-      CHECK(rc == VSH_METRICS_OK);
+      CHECK(rc == VSHM_METRICS_OK);
       CHECK_NEAR(mae, (double)sum / (3.0 * 255.0 * (double)want_px), 1e-6);
       CHECK(mae >= 0.0 && mae <= 1.0);
-      CHECK(vsh_reflection_mae(r, t, m, ex, w, h, &back, NULL) == VSH_METRICS_OK);
+      CHECK(vshm_reflection_mae(r, t, m, ex, w, h, &back, NULL) == VSHM_METRICS_OK);
       CHECK(back == mae); /* same terms, same order */
-      CHECK(vsh_reflection_mae(t, t, m, ex, w, h, &self, NULL) == VSH_METRICS_OK);
+      CHECK(vshm_reflection_mae(t, t, m, ex, w, h, &self, NULL) == VSHM_METRICS_OK);
       CHECK(self == 0.0);
     }
     free(t);

@@ -37,6 +37,38 @@ def build(renderer):
     lut.SetTableRange(low, high)
     lut.Build()
 
+    roles["contour"] = contour_actor(wavelet, lut, low, high)
+    roles["arrow"], roles["glyphs"] = gradient_arrows(wavelet)
+    roles["outline"] = outline_actor(wavelet)
+    roles["composite"] = composite_actor()
+    roles["volume"] = volume_beside(wavelet, low, high)
+    roles["floor"] = floor_actor()
+
+    for name in ("contour", "glyphs", "outline", "composite", "floor"):
+        renderer.AddActor(roles[name])
+    renderer.AddVolume(roles["volume"])
+
+    axes = vtkCubeAxesActor()
+    axes.SetBounds(wavelet.GetOutput().GetBounds())
+    axes.SetCamera(renderer.GetActiveCamera())
+    roles["axes"] = axes
+    renderer.AddActor(axes)
+
+    roles["bar"], roles["text"] = overlays(lut)
+    renderer.AddViewProp(roles["bar"])
+    renderer.AddViewProp(roles["text"])
+
+    camera = renderer.GetActiveCamera()
+    camera.SetFocalPoint(8, 4, -6)
+    camera.SetPosition(8, -95, 45)
+    camera.SetViewUp(0, 0, 1)
+    renderer.ResetCameraClippingRange()
+    renderer.SetBackground(0.05, 0.05, 0.1)
+    return roles
+
+
+def contour_actor(wavelet, lut, low, high):
+    """A contour of the wavelet, coloured by its scalars."""
     contour = vtkContourFilter()
     contour.SetInputConnection(wavelet.GetOutputPort())
     contour.SetValue(0, 0.5 * (low + high))
@@ -45,10 +77,14 @@ def build(renderer):
     mapper.SetInputConnection(contour.GetOutputPort())
     mapper.SetLookupTable(lut)
     mapper.SetScalarRange(low, high)
-    roles["contour"] = vtkActor()
-    roles["contour"].SetMapper(mapper)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    return actor
 
-    # Gradient arrows on a sparse set of the wavelet's points.
+
+def gradient_arrows(wavelet):
+    """Gradient arrows on a sparse set of the wavelet's points: (the arrow
+    source, kept: a temporary source would be freed; the glyph actor)."""
     gradient = vtkImageGradient()
     gradient.SetDimensionality(3)
     gradient.SetInputConnection(wavelet.GetOutputPort())
@@ -61,28 +97,34 @@ def build(renderer):
     sparse.GenerateVerticesOn()
     glyphs = vtkGlyph3DMapper()
     glyphs.SetInputConnection(sparse.GetOutputPort())
-    arrow = vtkArrowSource()  # kept: a temporary source would be freed
-    roles["arrow"] = arrow
+    arrow = vtkArrowSource()
     glyphs.SetSourceConnection(arrow.GetOutputPort())
     glyphs.SetOrientationArray(image.GetPointData().GetScalars().GetName())
     glyphs.OrientOn()
     glyphs.SetScaleFactor(2.5)
     glyphs.ScalingOff()
     glyphs.ScalarVisibilityOff()
-    roles["glyphs"] = vtkActor()
-    roles["glyphs"].SetMapper(glyphs)
-    roles["glyphs"].GetProperty().SetColor(0.9, 0.9, 0.9)
+    actor = vtkActor()
+    actor.SetMapper(glyphs)
+    actor.GetProperty().SetColor(0.9, 0.9, 0.9)
+    return arrow, actor
 
+
+def outline_actor(wavelet):
+    """The wavelet's outline, lighting off."""
     outline = vtkOutlineFilter()
     outline.SetInputConnection(wavelet.GetOutputPort())
-    outline_mapper = vtkPolyDataMapper()
-    outline_mapper.SetInputConnection(outline.GetOutputPort())
-    roles["outline"] = vtkActor()
-    roles["outline"].SetMapper(outline_mapper)
-    roles["outline"].GetProperty().LightingOff()
-    roles["outline"].GetProperty().SetColor(1, 1, 0)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(outline.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().LightingOff()
+    actor.GetProperty().SetColor(1, 1, 0)
+    return actor
 
-    # A composite dataset: two spheres in one vtkMultiBlockDataSet.
+
+def composite_actor():
+    """A composite dataset: two spheres in one vtkMultiBlockDataSet."""
     blocks = vtkMultiBlockDataSet()
     for i, centre in enumerate(((-15.0, -4.0, -9.0), (-15.0, 6.0, -6.0))):
         sphere = vtkSphereSource()
@@ -94,11 +136,14 @@ def build(renderer):
         blocks.SetBlock(i, sphere.GetOutput())
     composite = vtkCompositePolyDataMapper2()
     composite.SetInputDataObject(blocks)
-    roles["composite"] = vtkActor()
-    roles["composite"].SetMapper(composite)
-    roles["composite"].GetProperty().SetColor(0.3, 0.8, 0.4)
+    actor = vtkActor()
+    actor.SetMapper(composite)
+    actor.GetProperty().SetColor(0.3, 0.8, 0.4)
+    return actor
 
-    # The volume beside them (x + 34), a plain volume rendering of the wavelet.
+
+def volume_beside(wavelet, low, high):
+    """The volume beside them (x + 34), a plain volume rendering of the wavelet."""
     cast = vtkImageShiftScale()
     cast.SetInputConnection(wavelet.GetOutputPort())
     cast.SetShift(-low)
@@ -116,52 +161,39 @@ def build(renderer):
     volume_property = vtkVolumeProperty()
     volume_property.SetColor(colours)
     volume_property.SetScalarOpacity(opacity)
-    roles["volume"] = vtkVolume()
-    roles["volume"].SetMapper(volume_mapper)
-    roles["volume"].SetProperty(volume_property)
-    roles["volume"].SetPosition(34.0, 0.0, 0.0)
+    volume = vtkVolume()
+    volume.SetMapper(volume_mapper)
+    volume.SetProperty(volume_property)
+    volume.SetPosition(34.0, 0.0, 0.0)
+    return volume
 
+
+def floor_actor():
+    """The floor plane under everything, at FLOOR_Z."""
     floor = vtkPlaneSource()
     floor.SetOrigin(-40, -30, FLOOR_Z)
     floor.SetPoint1(60, -30, FLOOR_Z)
     floor.SetPoint2(-40, 40, FLOOR_Z)
     floor.SetResolution(20, 14)
-    floor_mapper = vtkPolyDataMapper()
-    floor_mapper.SetInputConnection(floor.GetOutputPort())
-    roles["floor"] = vtkActor()
-    roles["floor"].SetMapper(floor_mapper)
-    roles["floor"].GetProperty().SetColor(0.85, 0.85, 0.8)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(floor.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(0.85, 0.85, 0.8)
+    return actor
 
-    for name in ("contour", "glyphs", "outline", "composite", "floor"):
-        renderer.AddActor(roles[name])
-    renderer.AddVolume(roles["volume"])
 
-    axes = vtkCubeAxesActor()
-    axes.SetBounds(wavelet.GetOutput().GetBounds())
-    axes.SetCamera(renderer.GetActiveCamera())
-    roles["axes"] = axes
-    renderer.AddActor(axes)
-
-    # 2D overlays, on the background (left and top), away from the 3D scene.
+def overlays(lut):
+    """2D overlays, on the background (left and top), away from the 3D
+    scene: (scalar bar, text label)."""
     bar = vtkScalarBarActor()
     bar.SetLookupTable(lut)
     bar.SetTitle("RTData")
     bar.SetPosition(0.02, 0.64)
     bar.SetWidth(0.08)
     bar.SetHeight(0.3)
-    roles["bar"] = bar
-    renderer.AddViewProp(bar)
     text = vtkTextActor()
     text.SetInput("wavelet: contour, gradient, volume")
     text.GetTextProperty().SetFontSize(16)
     text.SetDisplayPosition(150, 440)
-    roles["text"] = text
-    renderer.AddViewProp(text)
-
-    camera = renderer.GetActiveCamera()
-    camera.SetFocalPoint(8, 4, -6)
-    camera.SetPosition(8, -95, 45)
-    camera.SetViewUp(0, 0, 1)
-    renderer.ResetCameraClippingRange()
-    renderer.SetBackground(0.05, 0.05, 0.1)
-    return roles
+    return bar, text

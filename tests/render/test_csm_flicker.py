@@ -24,7 +24,7 @@ object and box-face edges, where triangles and analytic shapes differ) and
 outside the one-pixel band along the exact shadow boundary (the --band 1
 convention of every bound of the render tests). flicker_pct is the mean over
 consecutive frame pairs of the percentage of pixels compared in both frames
-whose state flips (vsh_flicker_pct). The figures without the shadow band are
+whose state flips (vshm_flicker_pct). The figures without the shadow band are
 printed too.
 
 Asserted (measured with 16 frames at the origin: stable flicker 0.029,
@@ -120,7 +120,7 @@ def shadow_band(ref, valid):
 
 
 def flicker_pct(states, masks):
-    """vsh_flicker_pct: mean over consecutive pairs of the percentage of
+    """vshm_flicker_pct: mean over consecutive pairs of the percentage of
     pixels valid in both whose state differs (pairs with none skipped)."""
     pcts = []
     for k in range(1, len(states)):

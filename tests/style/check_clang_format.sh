@@ -1,14 +1,18 @@
 #!/bin/sh
-# The VTK layer and the C++ tools follow VTK's clang-format style
-# (.clang-format at the top): any file clang-format would change fails.
+# The VTK layer (vtkshadow/vtk), the product's tools (tools/) and the harness
+# (compare/) follow VTK's clang-format style (.clang-format at the top): any
+# C++ file there that clang-format would change fails. Every .cxx/.h below
+# tools/ and compare/ is checked, new folders too; C folders with a style of
+# their own (compare/metrics, tools/timing) switch formatting off in their
+# own .clang-format.
 set -eu
 root=$1
 clang_format=${2:-clang-format}
 command -v "$clang_format" >/dev/null 2>&1 || {
   echo "style.clang_format: $clang_format not found (apt-get install clang-format)"; exit 2; }
 cd "$root"
-files=$(ls vtkshadow/vtk/*.h vtkshadow/vtk/*.cxx compare/*.h compare/*.cxx compare/harness/*.h \
-  compare/harness/*.cxx)
+files=$(ls vtkshadow/vtk/*.h vtkshadow/vtk/*.cxx
+  find tools compare -type f \( -name '*.cxx' -o -name '*.h' -o -name '*.hxx' \) | sort)
 count=0
 bad=0
 for f in $files; do

@@ -1,4 +1,4 @@
-/* Unit tests of the interleaved-timing schedule (compare/timing): every
+/* Unit tests of the interleaved-timing schedule (tools/timing): every
  * round is a permutation; over a whole cycle every entry runs in every
  * position equally often and directly after every other entry equally
  * often; an even number of rounds puts every entry's mean position in the

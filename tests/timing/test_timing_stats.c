@@ -1,4 +1,4 @@
-/* Unit tests of the interleaved-timing statistics (compare/timing) on
+/* Unit tests of the interleaved-timing statistics (tools/timing) on
  * known inputs: medians and quartiles, block medians per round, paired
  * ratios to the reference, the spread over rounds, and the noise verdict. */
 #include "vsh_check.h"

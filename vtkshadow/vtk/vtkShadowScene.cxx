@@ -402,6 +402,21 @@ bool vtkShadowScene::Load(const char* path)
     this->Impl->Error = err;
     return false;
   }
+  return this->LoadParsed(scene, path);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScene::LoadParsed(vsh_scene* scene, const char* path)
+{
+  this->Impl->Clear();
+  this->Impl->Error.clear();
+  this->Impl->FileName = path ? path : "";
+  if (!scene)
+  {
+    this->Impl->Error = this->Impl->FileName + ": no parsed scene";
+    return false;
+  }
+  path = this->Impl->FileName.c_str();
   std::vector<vtkSmartPointer<vtkPolyData>> objects;
   for (size_t i = 0; i < scene->object_count; ++i)
   {
@@ -435,6 +450,12 @@ bool vtkShadowScene::Load(const char* path)
   this->Impl->Objects = std::move(objects);
   this->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+const vsh_scene* vtkShadowScene::GetParsedScene() const
+{
+  return this->Impl->Scene;
 }
 
 //------------------------------------------------------------------------------

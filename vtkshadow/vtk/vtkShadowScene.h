@@ -20,7 +20,8 @@
 #define vtkShadowScene_h
 
 #include "vtkObject.h"
-#include "vtkshadowModule.h" // for export macro
+#include "vtkWrappingHints.h" // for VTK_WRAPEXCLUDE
+#include "vtkshadowModule.h"  // for export macro
 
 #include <memory> // for std::unique_ptr
 
@@ -29,6 +30,7 @@ class vtkCamera;
 class vtkLight;
 class vtkPolyData;
 class vtkRenderer;
+struct vsh_scene; // vsh_scene.h, the C scene library
 
 class VTKSHADOW_EXPORT vtkShadowScene : public vtkObject
 {
@@ -42,6 +44,22 @@ public:
    * sets the error message on any problem.
    */
   bool Load(const char* path);
+
+  /**
+   * Load a scene the C scene library has parsed already (vsh_scene_load or
+   * vsh_scene_parse), so that a caller reading the scene's fields itself
+   * parses the file once: meshes are read and primitives tessellated as in
+   * Load(). Takes ownership of `scene` (freed on failure too); `path` is the
+   * file it came from, for GetFileName() and messages. Load(path) is
+   * vsh_scene_load followed by this. C++ only.
+   */
+  VTK_WRAPEXCLUDE bool LoadParsed(vsh_scene* scene, const char* path);
+
+  /**
+   * The parsed scene (vsh_scene.h) after a successful Load or LoadParsed,
+   * owned by this object; nullptr otherwise. C++ only.
+   */
+  VTK_WRAPEXCLUDE const vsh_scene* GetParsedScene() const;
 
   /**
    * The last error ("FILE: FIELD: problem (got VALUE)"), or an empty string.

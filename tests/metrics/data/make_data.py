@@ -2,7 +2,7 @@
 """Writes the small PNG files the vtkshadow-metrics CLI tests read.
 
 Run from this directory; the outputs are committed. Uses only zlib, an
-encoder independent of vsh_png.c, so the tests also check that the reader
+encoder independent of vshm_png.c, so the tests also check that the reader
 decodes files it did not write itself.
 
 The 8x8 case: reference shadowed in columns 0-3, lit in 4-7; mask valid
