@@ -3,13 +3,9 @@
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkMapper.h"
-#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
@@ -28,6 +24,7 @@
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowClipSpaceQuad.h"
+#include "vtkShadowFrame.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkSmartPointer.h"
@@ -335,15 +332,17 @@ vtkshadow::ReceiverChoice vtkPlanarShadowPass::ChooseReceivers(
 }
 
 //------------------------------------------------------------------------------
-// The frame in plain data: what the planning stages gather and the drawing
-// stages read.
-struct vtkPlanarShadowPass::FrameState
+// The frame: the shared inputs (viewport, camera, lights, actors) and what
+// the planning stages derive from them for the drawing stages.
+struct vtkPlanarShadowPass::Frame
 {
-  int Size[2] = { 0, 0 }; // the viewport, and the mask, in pixels
-  // Switched-on lights in the mappers' numbering.
+  explicit Frame(const vtkshadow::ShadowFrame& shared)
+    : Shared(shared)
+  {
+  }
+  const vtkshadow::ShadowFrame& Shared;
+  // Switched-on lights in the mappers' numbering, as the core plans them.
   std::vector<vsh_planar_light> Lights;
-  // Each light's size: radius (positional) or angular diameter (directional).
-  std::vector<double> LightSize;
   // Receivers: an actor (nullptr for an explicit plane) and its plane, 4
   // doubles per receiver.
   std::vector<vtkActor*> Receivers;
@@ -353,11 +352,6 @@ struct vtkPlanarShadowPass::FrameState
   // the mesh's points on the part do not shadow the part they make up.
   std::vector<double> CasterLift;
   std::vector<vtkshadow::ShadowActor> Casters;
-  // Camera: position, view rotation, and projection times view rotation
-  // (camera-relative world to clip space), in double.
-  double Eye[3] = { 0, 0, 0 };
-  double View[16];
-  double CameraRelative[16];
 };
 
 // A closed caster drawn as its silhouette fans, counted in the stencil.
@@ -384,23 +378,28 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   }
   Internals& impl = *this->Impl;
   ++impl.Frame;
-  FrameState frame;
-  // Viewport of this renderer in the target: the mask matches it pixel for pixel.
-  GetViewport(s, frame.Size, impl.MaskOrigin);
-
-  this->GatherLights(renderer, frame);
-  renderer->GetActiveCamera()->GetPosition(frame.Eye);
+  Frame frame(this->BeginFrame(s));
+  // The mask matches the viewport pixel for pixel.
+  std::copy_n(frame.Shared.Origin, 2, impl.MaskOrigin);
+  for (const vtkshadow::ShadowFrameLight& light : frame.Shared.Lights)
+  {
+    vsh_planar_light plain;
+    std::copy_n(light.Homogeneous, 4, plain.homogeneous);
+    plain.casts = light.Casts ? 1 : 0;
+    frame.Lights.push_back(plain);
+  }
+  impl.LightCount = static_cast<int>(frame.Lights.size());
   impl.FrameProps = DrawnProps(s);
-  this->GatherReceivers(vtkshadow::ShadowActors(s), frame);
+  this->GatherReceivers(frame.Shared.Drawn, frame);
   // Casters from the renderer's props, not the frustum-culled list: a
   // caster behind the camera still shadows a receiver in view.
-  this->GatherCasters(vtkshadow::ShadowActors(renderer), frame);
-  this->SetUpCamera(renderer, frame);
+  this->GatherCasters(frame.Shared.Actors, frame);
+  this->SetUpPlanes(frame);
   // Which (receiver, light) pairs cast, with their matrices: plain planning.
   std::vector<vsh_planar_pair> pairs(MaxPairs);
   const int count = vsh_planar_plan_pairs(frame.Planes.data(),
     static_cast<int>(frame.Receivers.size()), frame.Lights.data(),
-    static_cast<int>(frame.Lights.size()), frame.Eye, pairs.data(), MaxPairs);
+    static_cast<int>(frame.Lights.size()), frame.Shared.Eye, pairs.data(), MaxPairs);
   pairs.resize(std::max(count, 0));
   for (vsh_planar_pair& pair : pairs)
   {
@@ -430,27 +429,8 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::GatherLights(vtkRenderer* renderer, FrameState& frame)
-{
-  // Lights that follow the camera (and the automatic headlight) are updated
-  // by VTK's lights pass inside the delegate, after our shadow work: bring
-  // them up to date now, or their shadows lag one frame behind.
-  vtkshadow::UpdateLights(renderer);
-  for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
-  {
-    vsh_planar_light info;
-    vtkshadow::LightHomogeneous(light, info.homogeneous);
-    info.casts = this->LightCasts(light, static_cast<int>(frame.Lights.size())) ? 1 : 0;
-    frame.Lights.push_back(info);
-    frame.LightSize.push_back(
-      info.homogeneous[3] != 0.0 ? GetLightRadius(light) : GetLightAngle(light));
-  }
-  this->Impl->LightCount = static_cast<int>(frame.Lights.size());
-}
-
-//------------------------------------------------------------------------------
 void vtkPlanarShadowPass::GatherReceivers(
-  const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame)
+  const std::vector<vtkshadow::ShadowActor>& actors, Frame& frame)
 {
   Internals& impl = *this->Impl;
   impl.ReceiverIndex.clear();
@@ -512,7 +492,7 @@ void vtkPlanarShadowPass::GatherReceivers(
 
 //------------------------------------------------------------------------------
 int vtkPlanarShadowPass::GatherFlatParts(const std::vector<vtkshadow::ShadowActor>& actors,
-  const vtkshadow::ReceiverChoice& choice, FrameState& frame)
+  const vtkshadow::ReceiverChoice& choice, Frame& frame)
 {
   // The flat parts of the meshes that are not receivers as a whole (a box's
   // top, a slab floor), as planes every fragment on them receives on, like
@@ -557,12 +537,12 @@ int vtkPlanarShadowPass::GatherFlatParts(const std::vector<vtkshadow::ShadowActo
 }
 
 //------------------------------------------------------------------------------
-bool vtkPlanarShadowPass::PartCanShowShadow(const double plane[4], const FrameState& frame) const
+bool vtkPlanarShadowPass::PartCanShowShadow(const double plane[4], const Frame& frame) const
 {
   // Seen from the eye's side and lit from that side by a casting light
   // (either orientation of the plane: meshes are not all wound outwards).
-  const double eye =
-    plane[0] * frame.Eye[0] + plane[1] * frame.Eye[1] + plane[2] * frame.Eye[2] + plane[3];
+  const double eye = plane[0] * frame.Shared.Eye[0] + plane[1] * frame.Shared.Eye[1] +
+    plane[2] * frame.Shared.Eye[2] + plane[3];
   for (const vsh_planar_light& light : frame.Lights)
   {
     const double* l = light.homogeneous;
@@ -597,7 +577,7 @@ void vtkPlanarShadowPass::UpdateReceivingSet()
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::GatherCasters(
-  const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame)
+  const std::vector<vtkshadow::ShadowActor>& actors, Frame& frame)
 {
   for (const vtkshadow::ShadowActor& actor : actors)
   {
@@ -609,19 +589,8 @@ void vtkPlanarShadowPass::GatherCasters(
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::SetUpCamera(vtkRenderer* renderer, FrameState& frame)
+void vtkPlanarShadowPass::SetUpPlanes(const Frame& frame)
 {
-  // Projection times the eye-relative view rotation, in double.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const double aspect =
-    frame.Size[1] > 0 ? static_cast<double>(frame.Size[0]) / frame.Size[1] : 1.0;
-  camera->GetPosition(frame.Eye);
-  double projection[16];
-  vtkMatrix4x4::DeepCopy(frame.View, camera->GetViewTransformMatrix());
-  frame.View[3] = frame.View[7] = frame.View[11] = 0.0; // inputs are relative to the eye
-  vtkMatrix4x4::DeepCopy(projection, camera->GetProjectionTransformMatrix(aspect, -1, 1));
-  vsh_mat4_multiply(projection, frame.View, frame.CameraRelative);
-
   // Explicit planes in view coordinates for the receivers' fragment shaders.
   Internals& impl = *this->Impl;
   impl.PlaneCount = 0;
@@ -632,7 +601,8 @@ void vtkPlanarShadowPass::SetUpCamera(vtkRenderer* renderer, FrameState& frame)
       continue;
     }
     double planeVC[4];
-    vsh_planar_plane_to_view(&frame.Planes[4 * r], frame.View, frame.Eye, planeVC);
+    vsh_planar_plane_to_view(
+      &frame.Planes[4 * r], frame.Shared.ViewRotation, frame.Shared.Eye, planeVC);
     ToFloat(planeVC, impl.PlaneVC + 4 * impl.PlaneCount, 4);
     impl.PlaneReceiver[impl.PlaneCount] = static_cast<int>(r);
     impl.PlaneTolerance[impl.PlaneCount] = static_cast<float>(this->PlaneTolerance);
@@ -641,7 +611,7 @@ void vtkPlanarShadowPass::SetUpCamera(vtkRenderer* renderer, FrameState& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const FrameState& frame)
+void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const Frame& frame)
 {
   Internals& impl = *this->Impl;
   if (!impl.Mask)
@@ -655,7 +625,7 @@ void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const Fram
   // reading a quarter of the bytes is most of the pass's per-pixel cost on a
   // software rasterizer. Up to 128 pairs need all four channels. (The
   // lighting code reads .x for pairs 0..31 either way.)
-  const int* size = frame.Size;
+  const int* size = frame.Shared.Size;
   const int maskChannels =
     vsh_planar_mask_channels(static_cast<int>(frame.Receivers.size()), impl.LightCount);
   if (impl.MaskSize[0] != size[0] || impl.MaskSize[1] != size[1] || !impl.Mask->GetHandle() ||
@@ -677,11 +647,11 @@ void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const Fram
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::AttachStencil(const FrameState& frame)
+void vtkPlanarShadowPass::AttachStencil(const Frame& frame)
 {
   // Stencil (with depth, unused) for the fans' winding numbers.
   Internals& impl = *this->Impl;
-  const int* size = frame.Size;
+  const int* size = frame.Shared.Size;
   if (!impl.Stencil || impl.StencilSize[0] != size[0] || impl.StencilSize[1] != size[1])
   {
     if (!impl.Stencil)
@@ -699,7 +669,7 @@ void vtkPlanarShadowPass::AttachStencil(const FrameState& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const FrameState& frame,
+void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const Frame& frame,
   const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs)
 {
   Internals& impl = *this->Impl;
@@ -719,7 +689,7 @@ void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const FrameSta
     vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
     vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
     vtkOpenGLState::ScopedglColorMask colorMask(state);
-    state->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
+    state->vtkglViewport(0, 0, frame.Shared.Size[0], frame.Shared.Size[1]);
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDisable(GL_BLEND);
     state->vtkglDisable(GL_CULL_FACE);
@@ -749,7 +719,7 @@ void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const FrameSta
       glDisable(GL_COLOR_LOGIC_OP);
     }
     impl.DirtyAll = false;
-    if (!vsh_planar_rect_pixels(&impl.Written, frame.Size, impl.DirtyBox))
+    if (!vsh_planar_rect_pixels(&impl.Written, frame.Shared.Size, impl.DirtyBox))
     {
       std::fill_n(impl.DirtyBox, 4, 0);
     }
@@ -786,12 +756,12 @@ void vtkPlanarShadowPass::ClearWritten(vtkOpenGLState* state)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawPair(vtkShaderProgram* program, vtkOpenGLState* state,
-  const FrameState& frame, const vsh_planar_pair& pair)
+void vtkPlanarShadowPass::DrawPair(
+  vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame, const vsh_planar_pair& pair)
 {
   ++this->NumberOfShadowPairs;
   double shadowDC[16];
-  vsh_mat4_multiply(frame.CameraRelative, pair.shadow, shadowDC);
+  vsh_mat4_multiply(frame.Shared.CameraRelative, pair.shadow, shadowDC);
   unsigned int bits[4];
   vsh_planar_pair_bits(pair.bit, bits);
   glUniform4uiv(glGetUniformLocation(program->GetHandle(), "pairBit"), 1, bits);
@@ -825,7 +795,7 @@ void vtkPlanarShadowPass::DrawPair(vtkShaderProgram* program, vtkOpenGLState* st
 
 //------------------------------------------------------------------------------
 std::vector<vsh_planar_pair> vtkPlanarShadowPass::SplitSoftPairs(
-  const FrameState& frame, std::vector<vsh_planar_pair>& pairs)
+  const Frame& frame, std::vector<vsh_planar_pair>& pairs)
 {
   // A pair whose light has a size is sampled when SoftSamples > 1; the rest
   // (and soft pairs beyond the accumulation's four channels) stay in the
@@ -834,7 +804,7 @@ std::vector<vsh_planar_pair> vtkPlanarShadowPass::SplitSoftPairs(
   std::vector<vsh_planar_pair> hard, soft;
   for (const vsh_planar_pair& pair : pairs)
   {
-    const bool sized = this->SoftSamples > 1 && frame.LightSize[pair.light] > 0.0;
+    const bool sized = this->SoftSamples > 1 && frame.Shared.Lights[pair.light].Size > 0.0;
     if (sized && static_cast<int>(soft.size()) < MaxSoftPairs)
     {
       soft.push_back(pair);
@@ -866,7 +836,7 @@ std::vector<vsh_planar_pair> vtkPlanarShadowPass::SplitSoftPairs(
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::AllocateSoft(vtkOpenGLRenderWindow* window, const FrameState& frame)
+void vtkPlanarShadowPass::AllocateSoft(vtkOpenGLRenderWindow* window, const Frame& frame)
 {
   // RGBA16F, a soft pair per channel: sums of k / N are exact for N a power
   // of two up to 1024 (and within 1e-3 otherwise).
@@ -876,7 +846,7 @@ void vtkPlanarShadowPass::AllocateSoft(vtkOpenGLRenderWindow* window, const Fram
     impl.Soft = vtkTextureObject::New();
   }
   impl.Soft->SetContext(window);
-  const int* size = frame.Size;
+  const int* size = frame.Shared.Size;
   if (impl.SoftSize[0] != size[0] || impl.SoftSize[1] != size[1] || !impl.Soft->GetHandle())
   {
     impl.Soft->ReleaseGraphicsResources(window);
@@ -893,7 +863,7 @@ void vtkPlanarShadowPass::AllocateSoft(vtkOpenGLRenderWindow* window, const Fram
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state,
-  const FrameState& frame, const std::vector<vsh_planar_pair>& softPairs)
+  const Frame& frame, const std::vector<vsh_planar_pair>& softPairs)
 {
   // The sampled area light: per soft pair, N hard shadows from stratified
   // points on the light, each counted once per pixel (stencil) and added
@@ -973,8 +943,8 @@ const std::vector<int>& vtkPlanarShadowPass::SoftOrder(bool adaptive)
 }
 
 //------------------------------------------------------------------------------
-long vtkPlanarShadowPass::MarkSoftBatch(vtkOpenGLRenderWindow* window, vtkOpenGLState* state,
-  const FrameState& frame, int channel, int box[4])
+long vtkPlanarShadowPass::MarkSoftBatch(
+  vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const Frame& frame, int channel, int box[4])
 {
   // After the batch of the pair in `channel`: read the accumulation back,
   // mark its pixels (vsh_soft_mark_pixels: refine where the 3x3
@@ -982,7 +952,7 @@ long vtkPlanarShadowPass::MarkSoftBatch(vtkOpenGLRenderWindow* window, vtkOpenGL
   // keep the batch's answer get exactly 0 or 1 and depth 0; the refined ones
   // keep their sum and depth 1 (cleared), which DrawSoftRest tests against.
   Internals& impl = *this->Impl;
-  const int w = frame.Size[0], h = frame.Size[1];
+  const int w = frame.Shared.Size[0], h = frame.Shared.Size[1];
   std::fill_n(box, 4, 0);
   impl.SoftReadback.resize(static_cast<size_t>(4) * w * h);
   impl.SoftMarkBytes.resize(static_cast<size_t>(w) * h);
@@ -1028,7 +998,7 @@ long vtkPlanarShadowPass::MarkSoftBatch(vtkOpenGLRenderWindow* window, vtkOpenGL
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::DrawSoftRest(vtkShaderProgram* program, vtkOpenGLState* state,
-  const FrameState& frame, const vsh_planar_pair& pair, const int box[4], const float weight[4])
+  const Frame& frame, const vsh_planar_pair& pair, const int box[4], const float weight[4])
 {
   // Samples 8..N-1 within the refined pixels' box (the scissor: clears,
   // casters and quads outside it are never rasterized) and, inside it, at
@@ -1055,7 +1025,7 @@ void vtkPlanarShadowPass::DrawSoftRest(vtkShaderProgram* program, vtkOpenGLState
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::DrawSoftSample(vtkShaderProgram* program, vtkOpenGLState* state,
-  const FrameState& frame, const vsh_planar_pair& pair, int sample, const float weight[4])
+  const Frame& frame, const vsh_planar_pair& pair, int sample, const float weight[4])
 {
   // One light sample's hard shadow into the stencil: bit 7 where a caster
   // triangle covers the pixel, bits 0-6 the silhouette fans' winding number
@@ -1072,7 +1042,7 @@ void vtkPlanarShadowPass::DrawSoftSample(vtkShaderProgram* program, vtkOpenGLSta
   state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   vtkActor* receiver = frame.Receivers[pair.receiver];
   const double* receiverPlane = &frame.Planes[4 * pair.receiver];
-  const double size = frame.LightSize[pair.light];
+  const double size = frame.Shared.Lights[pair.light].Size;
   std::vector<Fan> fans;
   vsh_planar_rect fanRect;
   vsh_planar_rect_init(&fanRect);
@@ -1096,12 +1066,12 @@ void vtkPlanarShadowPass::DrawSoftSample(vtkShaderProgram* program, vtkOpenGLSta
     if (geometry->GetNumberOfTriangles() == 0 ||
       vsh_soft_sample_light(frame.Lights[pair.light].homogeneous, size, centre, sample,
         this->SoftSamples, 0.0, light.homogeneous) != 0 ||
-      vsh_planar_plan_pairs(receiverPlane, 1, &light, 1, frame.Eye, &samplePair, 1) != 1)
+      vsh_planar_plan_pairs(receiverPlane, 1, &light, 1, frame.Shared.Eye, &samplePair, 1) != 1)
     {
       continue; // no triangles, a caster centred on the light, or no shadow from this sample
     }
     double shadowDC[16];
-    vsh_mat4_multiply(frame.CameraRelative, samplePair.shadow, shadowDC);
+    vsh_mat4_multiply(frame.Shared.CameraRelative, samplePair.shadow, shadowDC);
     this->DrawCaster(
       program, frame, samplePair, light.homogeneous, shadowDC, caster, *geometry, fans, fanRect);
   }
@@ -1156,7 +1126,7 @@ vtkShadowCasterGeometry* vtkPlanarShadowPass::CasterGeometry(vtkActor* actor)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState& frame,
+void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const Frame& frame,
   const vsh_planar_pair& pair, const double light[4], const double shadowDC[16],
   const vtkshadow::ShadowActor& caster, vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans,
   vsh_planar_rect& fanRect)
@@ -1164,7 +1134,7 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
   // Model (shifted) -> world -> relative to the eye, in double.
   const double* model = caster.Matrix;
   double modelRelative[16];
-  geometry.GetModelRelativeMatrix(model, frame.Eye, modelRelative);
+  geometry.GetModelRelativeMatrix(model, frame.Shared.Eye, modelRelative);
   double mcdc[16], keep0[4], keep1[4], transposed[16];
   vsh_mat4_multiply(shadowDC, modelRelative, mcdc);
   PlaneTimesMatrix(pair.clip[0], modelRelative, keep0);
@@ -1178,7 +1148,7 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
   // Clipping costs a software rasterizer a stage per triangle: skip it when
   // every corner of the caster's bounds is kept anyway.
   const double* b = caster.Bounds;
-  const bool clipNeeded = vsh_planar_bounds_clipped(pair.clip, b, frame.Eye) != 0;
+  const bool clipNeeded = vsh_planar_bounds_clipped(pair.clip, b, frame.Shared.Eye) != 0;
   double inverse[16];
   if (!clipNeeded && geometry.IsClosed() && vsh_mat4_inverse(model, inverse))
   {
@@ -1189,7 +1159,7 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
     std::copy_n(mcdcF, 16, fan.MCDC);
     vsh_mat4_transform_point4(inverse, light, fan.Light);
     fans.push_back(fan);
-    vsh_planar_rect_add_bounds(&fanRect, shadowDC, b, frame.Eye);
+    vsh_planar_rect_add_bounds(&fanRect, shadowDC, b, frame.Shared.Eye);
     return;
   }
   if (clipNeeded)
@@ -1209,20 +1179,20 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
   program->SetUniform4f("receiverSideMC", keep0F);
   program->SetUniform4f("belowLightMC", keep1F);
   geometry.Draw(program);
-  vsh_planar_rect_add_bounds(&this->Impl->Written, shadowDC, b, frame.Eye);
+  vsh_planar_rect_add_bounds(&this->Impl->Written, shadowDC, b, frame.Shared.Eye);
   this->NumberOfMaskTriangles += geometry.GetNumberOfTriangles();
 }
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::FillFans(vtkShaderProgram* program, vtkOpenGLState* state,
-  const FrameState& frame, const std::vector<Fan>& fans, const vsh_planar_rect& fanRect,
+  const Frame& frame, const std::vector<Fan>& fans, const vsh_planar_rect& fanRect,
   const unsigned int bits[4])
 {
   // Winding numbers of the silhouette fans in the stencil (front +1, back
   // -1), then the pair's bit wherever it is not zero, within the casters'
   // projected bounds.
   int box[4];
-  if (!vsh_planar_rect_pixels(&fanRect, frame.Size, box))
+  if (!vsh_planar_rect_pixels(&fanRect, frame.Shared.Size, box))
   {
     return;
   }
