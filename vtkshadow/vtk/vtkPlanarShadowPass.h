@@ -231,7 +231,8 @@ private:
   void DrawMask(vtkOpenGLRenderWindow* window, const Frame& frame,
     const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs);
   void ForgetRemovedCasters(vtkOpenGLRenderWindow* window);
-  // Sampled area lights: which pairs are soft, and their accumulation.
+  // Sampled area lights (vtkPlanarShadowSoft.cxx): which pairs are soft,
+  // and their accumulation.
   std::vector<vsh_planar_pair> SplitSoftPairs(
     const Frame& frame, std::vector<vsh_planar_pair>& pairs);
   void AllocateSoft(vtkOpenGLRenderWindow* window, const Frame& frame);
@@ -260,6 +261,9 @@ private:
 #endif
   void FillFans(vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame,
     const std::vector<Fan>& fans, const vsh_planar_rect& fanRect, const unsigned int bits[4]);
+  // Every fan's silhouette triangles, counted into the stencil as the
+  // caller's stencil state says.
+  void DrawFans(vtkShaderProgram* program, const std::vector<Fan>& fans);
   void DrawViewportQuad(vtkShaderProgram* program);
   void ClearWritten(vtkOpenGLState* state);
 };
