@@ -8,7 +8,6 @@
 #include "vtkCascadedShadowMapPass.h"
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
-#include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
@@ -24,6 +23,7 @@
 #include "vtkRenderer.h"
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
+#include "vtkShadowFrame.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkShadowTechniqueSet.h"
@@ -69,7 +69,6 @@ struct vtkAutoShadowPass::Internals
   std::vector<vtkshadow::ShadowActor> Actors;
   std::vector<vtkWeakPointer<vtkActor>> Detected; // receivers found, not marked
   std::string GeneralJSON;                        // per map light: the candidates auto weighed
-  std::vector<std::vector<double>> Lights;        // per switched-on light: homogeneous, world
   std::vector<bool> SoftLights;                   // per switched-on light: has a radius or angle
   std::string SoftJSON;                           // per light with a size: the soft candidates
   int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
@@ -176,14 +175,13 @@ vtkAutoShadowPass::~vtkAutoShadowPass()
 }
 
 //------------------------------------------------------------------------------
-void vtkAutoShadowPass::Decide(const vtkRenderState* s)
+void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
 {
-  vtkRenderer* renderer = s->GetRenderer();
-  this->GatherObjects(s);
+  vtkRenderer* renderer = frame.Renderer;
+  this->GatherObjects(frame);
   const int concave = this->FindConcaveCaster();
   Internals& impl = *this->Impl;
   impl.LightChoices.clear();
-  impl.Lights.clear();
   impl.SoftLights.clear();
   impl.SoftChoices.clear();
   impl.SoftJSON.clear();
@@ -191,15 +189,11 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
   impl.LightTiles.clear();
   this->RecallCsmSoft();
   this->LightReasons.clear();
-  for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
+  for (const vtkshadow::ShadowFrameLight& light : frame.Lights)
   {
-    double homogeneous[4];
-    vtkshadow::LightHomogeneous(light, homogeneous);
-    impl.Lights.emplace_back(homogeneous, homogeneous + 4);
-    impl.SoftLights.push_back(GetLightRadius(light) > 0.0 || GetLightAngle(light) > 0.0);
-    const vsh_auto_light_choice c =
-      vsh_auto_choose_light(impl.Objects.data(), static_cast<int>(impl.Objects.size()), homogeneous,
-        light->LightTypeIsHeadlight() ? 1 : 0, concave);
+    impl.SoftLights.push_back(light.Radius > 0.0 || light.Angle > 0.0);
+    const vsh_auto_light_choice c = vsh_auto_choose_light(impl.Objects.data(),
+      static_cast<int>(impl.Objects.size()), light.Homogeneous, light.Headlight ? 1 : 0, concave);
     this->LightReasons.push_back(this->LightReasonText(c.reason, c.a, c.b));
     impl.LightChoices.push_back(static_cast<vtkshadow::TechniqueSet>(c.technique));
     impl.LightTiles.push_back(this->EstimateCsmTiles(light, impl.LightTiles.size()));
@@ -227,11 +221,11 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
       continue;
     }
     const int index = static_cast<int>(l);
-    edgeLengths[l] = this->MapOutlinePixels(impl.Lights[l].data(), index, renderer);
+    edgeLengths[l] = this->MapOutlinePixels(frame.Lights[l].Homogeneous, index, renderer);
     edgeLength = std::max(edgeLength, edgeLengths[l]);
     stretch = std::max(stretch,
       vsh_auto_plane_stretch(
-        impl.Objects.data(), static_cast<int>(impl.Objects.size()), impl.Lights[l].data()));
+        impl.Objects.data(), static_cast<int>(impl.Objects.size()), frame.Lights[l].Homogeneous));
   }
   this->ChooseTexelTarget(renderer, edgeLength, stretch);
   this->ChooseGeneral(renderer, edgeLengths);
@@ -241,15 +235,15 @@ void vtkAutoShadowPass::Decide(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkAutoShadowPass::GatherObjects(const vtkRenderState* s)
+void vtkAutoShadowPass::GatherObjects(const vtkshadow::ShadowFrame& frame)
 {
-  vtkRenderer* renderer = s->GetRenderer();
+  vtkRenderer* renderer = frame.Renderer;
   double frustum[24];
   renderer->GetActiveCamera()->GetFrustumPlanes(renderer->GetTiledAspectRatio(), frustum);
   vtkshadow::ReceiverPlaneCache& planes = this->PlanarPass->GetReceiverPlaneCache();
   Internals& impl = *this->Impl;
   impl.Objects.clear();
-  impl.Actors = vtkshadow::ShadowActors(s);
+  impl.Actors = frame.Drawn;
   // The receivers the planar pass will use: marked, or else detected.
   const vtkshadow::ReceiverChoice receivers = this->PlanarPass->ChooseReceivers(impl.Actors);
   impl.Detected.clear();
@@ -383,9 +377,10 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
   using vtkshadow::TechniqueSet;
   const TechniqueSet previous = this->Impl->Choice;
   vtkshadow::MarkStage("setup");
-  // Decide with the lights where this frame draws them.
-  vtkshadow::UpdateLights(s->GetRenderer());
-  this->Decide(s);
+  // Decide with the lights where this frame draws them; the chosen passes
+  // draw from the same frame.
+  const vtkshadow::ShadowFrame& frame = this->BeginFrame(s);
+  this->Decide(frame);
   vtkshadow::MarkStage("auto.decide");
   const bool planar = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Planar);
   const bool csm = vtkshadow::Has(this->Impl->Choice, TechniqueSet::Cascaded);
@@ -421,10 +416,15 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
     if (used[i])
     {
       candidates[i]->SetDelegatePass(next);
+      candidates[i]->SetGivenFrame(&frame);
       next = candidates[i];
     }
   }
   next->Render(s);
+  for (vtkShadowPassBase* candidate : candidates)
+  {
+    candidate->SetGivenFrame(nullptr);
+  }
   this->NumberOfRenderedProps = next->GetNumberOfRenderedProps();
 }
 
@@ -551,8 +551,8 @@ void vtkAutoShadowPass::WeighSoft(vtkRenderer* renderer, size_t l, int technique
   in.rt_adaptive = this->RayTracedPass->GetAdaptive();
   // Volumes are exact per sample on any receiver, but draw only casters
   // with triangles and opaque ones (the hard rule, vsh_volume_predicted_error).
-  const int unsupported =
-    this->VolumeInputs(renderer, impl.Lights[l].data(), static_cast<int>(l), in.volume);
+  const int unsupported = this->VolumeInputs(
+    renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), in.volume);
   in.volume_available = unsupported == 0 ? 1 : 0;
   // csm's sampled maps: every light's planned maps, and N more per map of
   // each light with a size, in one atlas within the memory budget.
@@ -701,18 +701,18 @@ void vtkAutoShadowPass::ApplyCsmSoft()
 }
 
 //------------------------------------------------------------------------------
-int vtkAutoShadowPass::EstimateCsmTiles(vtkLight* light, size_t l) const
+int vtkAutoShadowPass::EstimateCsmTiles(const vtkshadow::ShadowFrameLight& light, size_t l) const
 {
   // What csm's plan gives a light before it has planned: a cube of 6 for a
   // point light, 1 for a spot (cone under 90 degrees, vsh_csm_map_half_angle),
   // the cascades of a directional light (the last frame's count when csm drew
   // it, else its setting, at least 1).
-  if (!light->GetPositional())
+  if (!light.Positional)
   {
     const int last = this->CascadedPass->GetNumberOfCascades(static_cast<int>(l));
     return std::max(1, last > 0 ? last : this->CascadedPass->GetCascadeCount());
   }
-  return light->GetConeAngle() < 90.0 ? 1 : 6;
+  return light.ConeAngle < 90.0 ? 1 : 6;
 }
 
 //------------------------------------------------------------------------------
@@ -787,8 +787,8 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
       this->UsedTaperErrorPct);
     w.candidates[VSH_AUTO_GENERAL_CSM] = { 1, thin > 0.0 ? thin : 0.0,
       MapLookupMsPerPixel * pixels };
-    const int notDrawn =
-      this->VolumeInputs(renderer, impl.Lights[l].data(), static_cast<int>(l), volume);
+    const int notDrawn = this->VolumeInputs(
+      renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume);
     w.candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
       vsh_volume_predicted_error(notDrawn, impl.SoftLights[l] ? 1 : 0),
       vsh_volume_cost_ms(&volume) };

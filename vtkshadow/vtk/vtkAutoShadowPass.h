@@ -44,7 +44,6 @@
 #include <string> // for std::string
 #include <vector> // for std::vector
 
-class vtkLight;
 class vtkActor;
 class vtkCascadedShadowMapPass;
 class vtkRenderer;
@@ -53,6 +52,11 @@ class vtkRayTracedShadowPass;
 class vtkShadowVolumePass;
 class vtkProp;
 struct vsh_volume_ms_input;
+namespace vtkshadow
+{
+struct ShadowFrame;
+struct ShadowFrameLight;
+}
 struct vsh_auto_candidate;
 
 class VTKSHADOW_EXPORT vtkAutoShadowPass : public vtkShadowPassBase
@@ -211,8 +215,10 @@ private:
   // in view), the first caster in view that is not convex, per light the
   // technique (vsh_auto_choose_light) and for a map light the shadow outline
   // and stretch, then the passes' light masks and the texel target.
-  void Decide(const vtkRenderState* s);
-  void GatherObjects(const vtkRenderState* s);
+#ifndef __VTK_WRAP__
+  void Decide(const vtkshadow::ShadowFrame& frame);
+  void GatherObjects(const vtkshadow::ShadowFrame& frame);
+#endif
   int FindConcaveCaster();
   std::string LightReasonText(int reason, int a, int b) const;
   void ApplyLightMasks();
@@ -235,7 +241,9 @@ private:
   // (ApplyCsmSoft); EstimateCsmTiles is the maps csm will plan for a light.
   void RecallCsmSoft();
   void ApplyCsmSoft();
-  int EstimateCsmTiles(vtkLight* light, size_t l) const;
+#ifndef __VTK_WRAP__
+  int EstimateCsmTiles(const vtkshadow::ShadowFrameLight& light, size_t l) const;
+#endif
   // For the lights given maps: keep the map when its predicted error meets
   // the target and it is the cheapest such candidate, else an exact one.
   void ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths);

@@ -4,8 +4,6 @@
 
 #include "vtkActor.h"
 #include "vtkCameraPass.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLPolyDataMapper.h"
@@ -15,7 +13,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSequencePass.h"
-#include "vtkShadowDefaultLights.h"
+#include "vtkShadowFrame.h"
 #include "vtkShadowMapBakerPass.h"
 #include "vtkShadowMapPass.h"
 #include "vtkVolumetricPass.h"
@@ -197,19 +195,15 @@ void vtkBuiltinShadowMapPass::Render(const vtkRenderState* s)
   // The attenuation is a uniform in VTK's code: no shader rebuild needed.
   static_cast<vtkShadowMapPassGuarded*>(this->Shadows)->Residual = this->ResidualLight;
   // The lights as every technique places them, before VTK's baker reads
-  // them (VTK's lights pass places them only when LightFollowCamera is on).
-  vtkshadow::UpdateLights(s->GetRenderer());
+  // them (VTK's lights pass places them only when LightFollowCamera is on):
+  // the frame updates them.
+  const vtkshadow::ShadowFrame& frame = this->BeginFrame(s, false);
   // The lights VTK's baker gives a map: switched on, not the headlight, and
   // directional or a spot (VTK's pass skips point lights).
   this->ShadowingLights = 0;
-  vtkLightCollection* collection = s->GetRenderer()->GetLights();
-  vtkCollectionSimpleIterator it;
-  collection->InitTraversal(it);
-  while (vtkLight* l = collection->GetNextLight(it))
+  for (const vtkshadow::ShadowFrameLight& l : frame.Lights)
   {
-    const bool casts =
-      !l->LightTypeIsHeadlight() && (!l->GetPositional() || l->GetConeAngle() < 90.0);
-    this->ShadowingLights += (l->GetSwitch() && casts) ? 1 : 0;
+    this->ShadowingLights += (!l.Headlight && (!l.Positional || l.ConeAngle < 90.0)) ? 1 : 0;
   }
   this->RenderDelegate(s);
 }

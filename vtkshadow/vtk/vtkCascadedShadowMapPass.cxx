@@ -3,11 +3,9 @@
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkCascadedShadowMapPassInternals.h"
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
-#include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
@@ -312,8 +310,8 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   this->SelectWorld(this->WorldKey);
   // World 0 starts each frame (a mirror's world is drawn after it).
   this->Impl->FrameMapsRendered = this->WorldKey == 0 ? 0 : this->Impl->FrameMapsRendered;
-  Frame frame;
-  this->GatherScene(s, frame);
+  Frame frame(this->BeginFrame(s));
+  this->GatherScene(frame);
   this->PlanMaps(frame);
   this->PlanSamples(frame);
   this->Impl->Screen = this->ChooseScreenResolve(frame);
@@ -379,29 +377,27 @@ unsigned long long CasterContentKey(const std::vector<vtkshadow::ShadowActor>& c
 }
 
 //------------------------------------------------------------------------------
-// Casters and receivers (every visible opaque actor receives), the camera in
-// double, the lights, and the settings: the plain inputs of the plan.
-void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame)
+// Casters and receivers (every visible opaque actor receives), the camera,
+// the lights, and the settings: the plain inputs of the plan.
+void vtkCascadedShadowMapPass::GatherScene(Frame& frame)
 {
-  vtkRenderer* renderer = s->GetRenderer();
+  const vtkshadow::ShadowFrame& shared = frame.Shared;
   vsh_csm_scene& scene = frame.Scene;
-  int size[2], origin[2];
-  GetViewport(s, size, origin);
-  scene.aspect = size[1] > 0 ? static_cast<double>(size[0]) / size[1] : 1.0;
-  scene.viewport_height = size[1];
+  scene.aspect = shared.Aspect;
+  scene.viewport_height = shared.Size[1];
 
   vsh_bounds_init_empty(&scene.casters);
   vsh_bounds_init_empty(&scene.receivers);
   // Receivers are what the frame draws (the render state's frustum-culled
   // list); casters come from the renderer's props, because a caster behind
   // the camera or beside the view still throws its shadow into it.
-  for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(s))
+  for (const vtkshadow::ShadowActor& shadowActor : shared.Drawn)
   {
     vsh_bounds ab;
     vsh_bounds_from_vtk(&ab, shadowActor.Bounds);
     vsh_bounds_merge(&scene.receivers, &ab);
   }
-  for (const vtkshadow::ShadowActor& shadowActor : vtkshadow::ShadowActors(renderer))
+  for (const vtkshadow::ShadowActor& shadowActor : shared.Actors)
   {
     if (!vtkshadow::HasFlag(shadowActor, vtkShadowPassBase::NO_CAST()))
     {
@@ -432,49 +428,39 @@ void vtkCascadedShadowMapPass::GatherScene(const vtkRenderState* s, Frame& frame
   vtkshadow::AllReduceMax(controller, &casterTime);
   frame.CasterTime = static_cast<vtkMTimeType>(casterTime);
 
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->GetPosition(scene.camera.position);
-  camera->GetFocalPoint(scene.camera.focal_point);
-  camera->GetViewUp(scene.camera.view_up);
-  scene.camera.view_angle = camera->GetViewAngle();
-  camera->GetClippingRange(scene.clip);
-  vtkMatrix4x4::DeepCopy(frame.ViewRotation, camera->GetViewTransformMatrix());
-  frame.ViewRotation[3] = frame.ViewRotation[7] = frame.ViewRotation[11] = 0.0;
+  std::copy_n(shared.Eye, 3, scene.camera.position);
+  std::copy_n(shared.FocalPoint, 3, scene.camera.focal_point);
+  std::copy_n(shared.ViewUp, 3, scene.camera.view_up);
+  scene.camera.view_angle = shared.ViewAngle;
+  std::copy_n(shared.ClippingRange, 2, scene.clip);
 
-  this->GatherLights(renderer, frame);
+  this->GatherLights(frame);
   this->GatherSettings(frame.Settings);
 }
 
 //------------------------------------------------------------------------------
-void vtkCascadedShadowMapPass::GatherLights(vtkRenderer* renderer, Frame& frame)
+void vtkCascadedShadowMapPass::GatherLights(Frame& frame)
 {
-  // Lights that follow the camera (and the automatic headlight) are updated
-  // by VTK's lights pass inside the delegate, after our shadow work: bring
-  // them up to date now, or their shadows (and the resolution they ask
-  // for) lag one frame behind.
-  vtkshadow::UpdateLights(renderer);
   int l = 0;
   Internals& impl = *this->Impl;
   impl.PCSS = false;
-  for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
+  for (const vtkshadow::ShadowFrameLight& light : frame.Shared.Lights)
   {
     vsh_csm_light plain{};
-    light->GetTransformedPosition(plain.position);
-    light->GetTransformedFocalPoint(plain.focal_point);
-    plain.positional = light->GetPositional() ? 1 : 0;
-    plain.cone_angle = light->GetConeAngle();
-    plain.casts = this->LightCasts(light, l) ? 1 : 0;
+    std::copy_n(light.Position, 3, plain.position);
+    std::copy_n(light.FocalPoint, 3, plain.focal_point);
+    plain.positional = light.Positional ? 1 : 0;
+    plain.cone_angle = light.ConeAngle;
+    plain.casts = light.Casts ? 1 : 0;
     if (l < MaxLights)
     {
       // The size only matters with PCSS on and for a light that casts; 0
       // keeps the light's lookup hard.
-      const double term =
-        vsh_pcss_light_term(plain.positional, GetLightRadius(light), GetLightAngle(light));
+      const double term = vsh_pcss_light_term(plain.positional, light.Radius, light.Angle);
       impl.SoftTerm[l] = (this->Soft == SOFT_PCSS && plain.casts) ? static_cast<float>(term) : 0.0f;
       impl.PCSS = impl.PCSS || impl.SoftTerm[l] > 0.0f;
-      impl.SampleSize[l] = (this->Soft == SOFT_SAMPLED && term > 0.0)
-        ? static_cast<float>(plain.positional ? GetLightRadius(light) : GetLightAngle(light))
-        : 0.0f;
+      impl.SampleSize[l] =
+        (this->Soft == SOFT_SAMPLED && term > 0.0) ? static_cast<float>(light.Size) : 0.0f;
     }
     ++l;
     frame.Lights.push_back(plain);
@@ -532,7 +518,7 @@ void vtkCascadedShadowMapPass::UpdateShaderState(const Frame& frame)
   Internals& impl = *this->Impl;
   const vsh_csm_plan& plan = impl.Plan;
   double viewToRelative[16]; // view coordinates -> camera-relative world
-  vsh_mat4_transpose(frame.ViewRotation, viewToRelative);
+  vsh_mat4_transpose(frame.Shared.ViewRotation, viewToRelative);
   for (int r = 0; r < 3; ++r)
   {
     for (int c = 0; c < 3; ++c)
@@ -553,7 +539,7 @@ void vtkCascadedShadowMapPass::UpdateShaderState(const Frame& frame)
     const double rel[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
     const double dir[3] = { p[0] - f[0], p[1] - f[1], p[2] - f[2] };
     double vc[3];
-    vsh_mat4_transform_direction(frame.ViewRotation, light.positional ? rel : dir, vc);
+    vsh_mat4_transform_direction(frame.Shared.ViewRotation, light.positional ? rel : dir, vc);
     for (int k = 0; k < 3; ++k)
     {
       impl.ToLightVC[l][k] = static_cast<float>(vc[k]);

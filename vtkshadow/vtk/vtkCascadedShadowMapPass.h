@@ -372,8 +372,8 @@ private:
   // VTK's state into its inputs and its plan into GL work.
   struct Frame;
   void SelectWorld(int world);
-  void GatherScene(const vtkRenderState* s, Frame& frame);
-  void GatherLights(vtkRenderer* renderer, Frame& frame);
+  void GatherScene(Frame& frame);
+  void GatherLights(Frame& frame);
   void GatherSettings(vsh_csm_settings& out) const;
   void PlanMaps(const Frame& frame);
   void UpdateShaderState(const Frame& frame);

@@ -10,6 +10,7 @@
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowClipSpaceRects.h"
+#include "vtkShadowFrame.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
@@ -93,16 +94,21 @@ std::string CascadedTileLookupCode(
   const vsh_csm_tile_plan& plan, int first, const int codes[4], const int* sampleFirst = nullptr);
 }
 
-// One frame's inputs, gathered from VTK: the plain scene the core plans
-// from, and what the bake needs (the caster actors).
+// One frame's inputs: the shared frame (vtkShadowFrame.h) and what the pass
+// derives from it: the plain scene the core plans from, and what the bake
+// needs (the caster actors).
 struct vtkCascadedShadowMapPass::Frame
 {
+  explicit Frame(const vtkshadow::ShadowFrame& shared)
+    : Shared(shared)
+  {
+  }
+  const vtkshadow::ShadowFrame& Shared;
   std::vector<vtkshadow::ShadowActor> Casters;
   vtkMTimeType CasterTime = 0;       // changes when a caster moves, changes or leaves
   std::vector<vsh_csm_light> Lights; // switched on, in the mappers' numbering
   vsh_csm_scene Scene{};             // its `lights` point into Lights
   vsh_csm_settings Settings{};
-  double ViewRotation[16]; // world -> view, rotation only
 };
 
 struct vtkCascadedShadowMapPass::Internals

@@ -134,8 +134,8 @@ void vtkCascadedShadowMapPass::PlanSamples(const Frame& frame)
       Mix(key, f.u, sizeof f.u);
       Mix(key, f.v, sizeof f.v);
       double u[3], v[3];
-      vsh_mat4_transform_direction(frame.ViewRotation, f.u, u);
-      vsh_mat4_transform_direction(frame.ViewRotation, f.v, v);
+      vsh_mat4_transform_direction(frame.Shared.ViewRotation, f.u, u);
+      vsh_mat4_transform_direction(frame.Shared.ViewRotation, f.v, v);
       for (int k = 0; k < 3; ++k)
       {
         impl.SampleU[l][k] = f.positional ? static_cast<float>(u[k]) : 0.0f;

@@ -92,7 +92,7 @@ void vtkCascadedShadowMapPass::PlanScreenTiles(const Frame& frame, const double 
     vsh_csm_screen_depth_ranges(impl.DepthRead.data(), w, h, TilePixels, impl.TileMin.data(),
       impl.TileMax.data(), &impl.CoveredPixels) == VSH_CSM_OK;
   double viewToRelative[16];
-  vsh_mat4_transpose(frame.ViewRotation, viewToRelative);
+  vsh_mat4_transpose(frame.Shared.ViewRotation, viewToRelative);
   vsh_csm_screen_params p{};
   p.plan = &impl.Plan.tiles;
   p.lights = frame.Lights.data();

@@ -2,7 +2,6 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkRenderState.h"
-#include "vtkShadowDefaultLights.h"
 #include "vtkShadowStageProfile.h"
 
 vtkStandardNewMacro(vtkNoShadowPass);
@@ -13,8 +12,8 @@ void vtkNoShadowPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   vtkshadow::MarkStage("setup");
   // The lights as every technique places them (the key light follows the
-  // camera whatever LightFollowCamera says).
-  vtkshadow::UpdateLights(s->GetRenderer());
+  // camera whatever LightFollowCamera says): the frame updates them.
+  this->BeginFrame(s, false);
   this->RenderDelegate(s);
 }
 

@@ -2,6 +2,7 @@
 #include "vtkShadowStageProfile.h"
 
 #include "vtkShadowClippingRange.h"
+#include "vtkShadowFrame.h"
 
 #include "vsh_mat4.h"
 #include "vsh_plane.h"
@@ -64,7 +65,6 @@ struct vtkPlanarReflectionPass::Internals
   // Inside the mirrored draw: every mirror drawn there shows (1 - R) of its
   // shading (its reflection is the bounce not drawn).
   bool ScaleAll = false;
-  double Eye[3] = { 0, 0, 0 };
   vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
   int Size[2] = { 0, 0 };
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
@@ -77,7 +77,6 @@ struct vtkPlanarReflectionPass::Internals
   vtkCamera* Camera = nullptr;
   vtkRenderer* Renderer = nullptr;
   vtkOpenGLState* State = nullptr;
-  int ViewSize[2] = { 0, 0 };
   float DCVC[16];
   float PlaneVC[4];
   float Viewport[4];
@@ -246,8 +245,7 @@ void vtkPlanarReflectionPass::FindMirrors(const vtkRenderState* s)
   Internals& impl = *this->Impl;
   impl.Mirrors.clear();
   impl.Found = 0;
-  vtkCamera* camera = s->GetRenderer()->GetActiveCamera();
-  camera->GetPosition(impl.Eye);
+  const double* eye = this->GetFrame().Eye;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
@@ -260,7 +258,7 @@ void vtkPlanarReflectionPass::FindMirrors(const vtkRenderState* s)
     mirror.Actor = actor;
     mirror.R = keys->Get(MIRROR());
     double size = 0;
-    if (!(mirror.R > 0 && mirror.R <= 1) || !MirrorPlane(actor, impl.Eye, mirror.Plane, size))
+    if (!(mirror.R > 0 && mirror.R <= 1) || !MirrorPlane(actor, eye, mirror.Plane, size))
     {
       continue;
     }
@@ -309,13 +307,22 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
   impl.Camera = impl.Renderer->GetActiveCamera();
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(impl.Renderer->GetRenderWindow());
   impl.State = window ? window->GetState() : nullptr;
-  int origin[2];
-  vtkShadowPassBase::GetViewport(s, impl.ViewSize, origin);
+  // The technique draws the scene from this frame too: the lights are
+  // updated and listed once.
+  const vtkshadow::ShadowFrame& frame = this->BeginFrame(s, false);
+  if (technique)
+  {
+    technique->SetGivenFrame(&frame);
+  }
   if (!this->Reflections)
   {
     impl.Mirrors.clear();
     impl.Found = 0;
     this->RenderDelegate(s);
+    if (technique)
+    {
+      technique->SetGivenFrame(nullptr);
+    }
     this->ReleaseUnusedWorlds(s);
     return;
   }
@@ -333,6 +340,10 @@ void vtkPlanarReflectionPass::Render(const vtkRenderState* s)
   // one shader for the scene and its reflection (it is off outside the
   // mirrored draw).
   this->RenderDelegateWithShaderHooks(s);
+  if (technique)
+  {
+    technique->SetGivenFrame(nullptr);
+  }
   this->ReleaseUnusedWorlds(s);
   if (impl.Mirrors.empty())
   {
@@ -448,8 +459,8 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
     return false;
   }
   vtkOpenGLState* state = win->GetState();
-  int size[2], origin[2];
-  vtkShadowPassBase::GetViewport(s, size, origin);
+  const vtkshadow::ShadowFrame& frame = this->GetFrame();
+  const int* size = frame.Size;
   if (size[0] < 1 || size[1] < 1)
   {
     return false;
@@ -476,16 +487,16 @@ bool vtkPlanarReflectionPass::RenderMirrored(const vtkRenderState* s, const Mirr
     if (s->GetPropArray()[i] != mirror.Actor)
       props.push_back(s->GetPropArray()[i]);
   MirroredWorld world;
-  world.Apply(ren, props, mirror.Plane, impl.Eye);
+  world.Apply(ren, props, mirror.Plane, frame.Eye);
 
   // The clip plane in view coordinates: the view's rotation applied to the
   // eye-relative plane (the eye is the view's origin), and the inverse
   // projection to get back from the window.
   vtkCamera* camera = ren->GetActiveCamera();
-  double clip[4], view[16], proj[16], dcvc[16];
+  double clip[4], proj[16], dcvc[16];
   const double eyeRel[3] = { 0, 0, 0 };
+  const double* view = frame.View;
   vsh_reflect_clip_plane(mirror.Plane, eyeRel, clip);
-  vtkMatrix4x4::DeepCopy(view, camera->GetViewTransformMatrix());
   for (int r = 0; r < 3; ++r)
     impl.PlaneVC[r] = static_cast<float>(
       view[4 * r] * clip[0] + view[4 * r + 1] * clip[1] + view[4 * r + 2] * clip[2]);
@@ -542,8 +553,8 @@ void vtkPlanarReflectionPass::Composite(const vtkRenderState* s, const Mirror& m
   vtkRenderer* ren = s->GetRenderer();
   auto* win = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   vtkOpenGLState* state = win->GetState();
-  int size[2], origin[2];
-  vtkShadowPassBase::GetViewport(s, size, origin);
+  const int* size = this->GetFrame().Size;
+  const int* origin = this->GetFrame().Origin;
   vtkOpenGLState::ScopedglColorMask colorMask(state);
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
@@ -713,8 +724,8 @@ bool vtkPlanarReflectionPass::IsCameraViewDraw(bool atOrigin) const
   }
   GLint viewport[4] = { -1, -1, -1, -1 };
   impl.State->vtkglGetIntegerv(GL_VIEWPORT, viewport);
-  return (!atOrigin || (viewport[0] == 0 && viewport[1] == 0)) && viewport[2] == impl.ViewSize[0] &&
-    viewport[3] == impl.ViewSize[1];
+  return (!atOrigin || (viewport[0] == 0 && viewport[1] == 0)) &&
+    viewport[2] == this->GetFrame().Size[0] && viewport[3] == this->GetFrame().Size[1];
 }
 
 //------------------------------------------------------------------------------

@@ -1,15 +1,12 @@
 #include "vtkPlanarShadowPass.h"
+#include "vtkPlanarShadowPassInternals.h"
 #include "vtkShadowSettings.h"
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkMapper.h"
-#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
@@ -28,6 +25,7 @@
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowClipSpaceQuad.h"
+#include "vtkShadowFrame.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkSmartPointer.h"
@@ -38,14 +36,11 @@
 #include "vsh_mat4.h"
 #include "vsh_planar.h"
 #include "vsh_planar_plan.h"
-#include "vsh_soft.h"
 #include "vsh_soft_adaptive.h"
 
-#include "vtkPlanarShadowAdaptiveFS.h"
 #include "vtkPlanarShadowLightFS.h"
 #include "vtkPlanarShadowMaskFS.h"
 #include "vtkPlanarShadowMaskVS.h"
-#include "vtkPlanarShadowSoftFS.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,13 +50,13 @@
 
 vtkStandardNewMacro(vtkPlanarShadowPass);
 
+using vtkshadow::planar::LiesInPlane;
+using vtkshadow::planar::MaxExplicitPlanes;
+using vtkshadow::planar::MaxPairs;
+using vtkshadow::planar::MaxSoftPairs;
+
 namespace
 {
-constexpr int MaxPairs = VSH_PLANAR_MAX_PAIRS;
-constexpr int MaxExplicitPlanes = 8;
-// Soft pairs per frame: one channel each of the RGBA16F accumulation.
-constexpr int MaxSoftPairs = 4;
-
 // Row vector (plane) times matrix: a plane acting on the matrix's input space.
 void PlaneTimesMatrix(const double plane[4], const double m[16], double out[4])
 {
@@ -79,12 +74,6 @@ void ToFloat(const double* in, float* out, int n)
   }
 }
 
-// Whether a caster's world bounds lie in the plane (within 1e-6 of their size).
-bool LiesInPlane(const vtkshadow::ShadowActor& caster, const double plane[4])
-{
-  return vsh_planar_bounds_in_plane(caster.Bounds, plane) != 0;
-}
-
 // The props the render state draws and every actor they draw through prop
 // paths (the parts of assemblies), sorted: what the mappers may ask about.
 std::vector<vtkProp*> DrawnProps(const vtkRenderState* s)
@@ -100,123 +89,6 @@ std::vector<vtkProp*> DrawnProps(const vtkRenderState* s)
 }
 
 } // namespace
-
-struct vtkPlanarShadowPass::Internals
-{
-  struct ExplicitPlane
-  {
-    double Origin[3];
-    double Normal[3];
-  };
-  struct Caster
-  {
-    vtkShadowCasterGeometry Geometry;
-    vtkMTimeType SeenFrame = 0;
-  };
-
-  std::vector<vtkWeakPointer<vtkActor>> ReceiverActors;
-  std::vector<ExplicitPlane> Planes;
-  vtkshadow::ReceiverPlaneCache ReceiverPlanes;
-  std::map<vtkActor*, std::unique_ptr<Caster>> Casters;
-  vtkMTimeType Frame = 0;
-
-  vtkTextureObject* Mask = nullptr;
-  vtkOpenGLFramebufferObject* FBO = nullptr;
-  // Stencil for silhouette fans (winding numbers), and a screen quad.
-  unsigned int Stencil = 0;
-  int StencilSize[2] = { 0, 0 };
-  vtkShadowClipSpaceQuad Quad; // over the whole viewport (DrawViewportQuad)
-  int MaskSize[2] = { 0, 0 };
-  int MaskChannels = 4; // 32-bit channels: 1 up to 32 pairs, else 4
-  int MaskOrigin[2] = { 0, 0 };
-  // Where the mask may hold bits: the pixel box written by the last frame
-  // (everything after an allocation, whose content is undefined). Only that
-  // box is cleared: on a software rasterizer a full-screen clear of the
-  // mask costs about as much as a shadow pair's fill.
-  int DirtyBox[4] = { 0, 0, 0, 0 };
-  bool DirtyAll = true;
-  vsh_planar_rect Written; // this frame's writes, in NDC
-  // Sampled area lights: the shadowed fraction of up to four soft pairs
-  // (one channel each), the pair bit of each channel (-1: none), and
-  // whether the receivers' shaders have the soft lookup compiled in.
-  vtkTextureObject* Soft = nullptr;
-  int SoftSize[2] = { 0, 0 };
-  int SoftPair[MaxSoftPairs] = { -1, -1, -1, -1 };
-  bool SoftShader = false;
-  bool SoftWarned = false;
-  // Adaptive sample counts: the sample order of SoftOrderSamples (the batch
-  // first when SoftOrderAdaptive), the batch's read-back and mark (one byte
-  // per pixel, uploaded to SoftMark), and per soft pair of the last frame
-  // its light, refined pixels and the box they were drawn in.
-  std::vector<int> SoftOrder;
-  int SoftOrderSamples = 0;
-  bool SoftOrderAdaptive = false;
-  vtkTextureObject* SoftMark = nullptr;
-  std::vector<float> SoftReadback;
-  std::vector<unsigned char> SoftMarkBytes;
-  struct PairStats
-  {
-    int Light;
-    long Refined;
-    long BoxPixels;
-  };
-  std::vector<PairStats> SoftStats;
-  bool SoftAdaptive = false; // in the last frame
-
-  // Per-frame values for SetShaderParameters.
-  std::map<vtkProp*, int> ReceiverIndex;
-  int LightCount = 0;
-  int PlaneCount = 0;
-  float PlaneVC[4 * MaxExplicitPlanes] = {};
-  int PlaneReceiver[MaxExplicitPlanes] = {};
-  float PlaneTolerance[MaxExplicitPlanes] = {};
-  std::vector<vtkProp*> Receiving; // sorted (from the map)
-  // Receivers by their property keys, and the frame's props and the actors
-  // they draw through prop paths (sorted): a prop the mapper draws that is
-  // none of them is an inner actor drawing for an outer one whose property
-  // keys it shares (vtkLODActor's and ParaView's vtkPVLODActor's Device): it
-  // receives as the outer actor does. (The parts of an assembly share its
-  // keys too, but each is known and receives as itself.)
-  std::map<vtkInformation*, vtkProp*> ReceiverByKeys;
-  std::vector<vtkProp*> FrameProps;
-  bool EveryoneReceives = false;
-  std::vector<vtkWeakPointer<vtkActor>> Detected; // in the last frame
-  int DetectedParts = 0;                          // flat parts receiving, last frame
-
-  // The actors added with AddReceiverActor() that still exist.
-  std::vector<vtkActor*> AddedActors() const
-  {
-    std::vector<vtkActor*> added;
-    for (const auto& r : this->ReceiverActors)
-    {
-      if (r)
-      {
-        added.push_back(r);
-      }
-    }
-    return added;
-  }
-
-  // The receiver an actor draws for: itself, or the outer actor of an
-  // inner one (see ReceiverByKeys).
-  vtkProp* Outer(vtkProp* prop) const
-  {
-    if (!prop || this->ReceiverIndex.count(prop) ||
-      std::binary_search(this->FrameProps.begin(), this->FrameProps.end(), prop))
-    {
-      return prop;
-    }
-    auto it = this->ReceiverByKeys.find(prop->GetPropertyKeys());
-    return it == this->ReceiverByKeys.end() ? prop : it->second;
-  }
-
-  bool CanReceive(vtkProp* prop) const
-  {
-    prop = this->Outer(prop);
-    return this->EveryoneReceives ||
-      std::binary_search(this->Receiving.begin(), this->Receiving.end(), prop);
-  }
-};
 
 //------------------------------------------------------------------------------
 vtkPlanarShadowPass::vtkPlanarShadowPass()
@@ -335,40 +207,6 @@ vtkshadow::ReceiverChoice vtkPlanarShadowPass::ChooseReceivers(
 }
 
 //------------------------------------------------------------------------------
-// The frame in plain data: what the planning stages gather and the drawing
-// stages read.
-struct vtkPlanarShadowPass::FrameState
-{
-  int Size[2] = { 0, 0 }; // the viewport, and the mask, in pixels
-  // Switched-on lights in the mappers' numbering.
-  std::vector<vsh_planar_light> Lights;
-  // Each light's size: radius (positional) or angular diameter (directional).
-  std::vector<double> LightSize;
-  // Receivers: an actor (nullptr for an explicit plane) and its plane, 4
-  // doubles per receiver.
-  std::vector<vtkActor*> Receivers;
-  std::vector<double> Planes;
-  // Per receiver, how far above its plane a caster point must be to cast
-  // onto it: 0, or for a flat part of a mesh the part's own rounding, so
-  // the mesh's points on the part do not shadow the part they make up.
-  std::vector<double> CasterLift;
-  std::vector<vtkshadow::ShadowActor> Casters;
-  // Camera: position, view rotation, and projection times view rotation
-  // (camera-relative world to clip space), in double.
-  double Eye[3] = { 0, 0, 0 };
-  double View[16];
-  double CameraRelative[16];
-};
-
-// A closed caster drawn as its silhouette fans, counted in the stencil.
-struct vtkPlanarShadowPass::Fan
-{
-  vtkShadowCasterGeometry* Geometry;
-  float MCDC[16];
-  double Light[4]; // in the caster's model coordinates
-};
-
-//------------------------------------------------------------------------------
 void vtkPlanarShadowPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
@@ -384,23 +222,28 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   }
   Internals& impl = *this->Impl;
   ++impl.Frame;
-  FrameState frame;
-  // Viewport of this renderer in the target: the mask matches it pixel for pixel.
-  GetViewport(s, frame.Size, impl.MaskOrigin);
-
-  this->GatherLights(renderer, frame);
-  renderer->GetActiveCamera()->GetPosition(frame.Eye);
+  Frame frame(this->BeginFrame(s));
+  // The mask matches the viewport pixel for pixel.
+  std::copy_n(frame.Shared.Origin, 2, impl.MaskOrigin);
+  for (const vtkshadow::ShadowFrameLight& light : frame.Shared.Lights)
+  {
+    vsh_planar_light plain;
+    std::copy_n(light.Homogeneous, 4, plain.homogeneous);
+    plain.casts = light.Casts ? 1 : 0;
+    frame.Lights.push_back(plain);
+  }
+  impl.LightCount = static_cast<int>(frame.Lights.size());
   impl.FrameProps = DrawnProps(s);
-  this->GatherReceivers(vtkshadow::ShadowActors(s), frame);
+  this->GatherReceivers(frame.Shared.Drawn, frame);
   // Casters from the renderer's props, not the frustum-culled list: a
   // caster behind the camera still shadows a receiver in view.
-  this->GatherCasters(vtkshadow::ShadowActors(renderer), frame);
-  this->SetUpCamera(renderer, frame);
+  this->GatherCasters(frame.Shared.Actors, frame);
+  this->SetUpPlanes(frame);
   // Which (receiver, light) pairs cast, with their matrices: plain planning.
   std::vector<vsh_planar_pair> pairs(MaxPairs);
   const int count = vsh_planar_plan_pairs(frame.Planes.data(),
     static_cast<int>(frame.Receivers.size()), frame.Lights.data(),
-    static_cast<int>(frame.Lights.size()), frame.Eye, pairs.data(), MaxPairs);
+    static_cast<int>(frame.Lights.size()), frame.Shared.Eye, pairs.data(), MaxPairs);
   pairs.resize(std::max(count, 0));
   for (vsh_planar_pair& pair : pairs)
   {
@@ -430,27 +273,8 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::GatherLights(vtkRenderer* renderer, FrameState& frame)
-{
-  // Lights that follow the camera (and the automatic headlight) are updated
-  // by VTK's lights pass inside the delegate, after our shadow work: bring
-  // them up to date now, or their shadows lag one frame behind.
-  vtkshadow::UpdateLights(renderer);
-  for (vtkLight* light : vtkshadow::SwitchedOnLights(renderer))
-  {
-    vsh_planar_light info;
-    vtkshadow::LightHomogeneous(light, info.homogeneous);
-    info.casts = this->LightCasts(light, static_cast<int>(frame.Lights.size())) ? 1 : 0;
-    frame.Lights.push_back(info);
-    frame.LightSize.push_back(
-      info.homogeneous[3] != 0.0 ? GetLightRadius(light) : GetLightAngle(light));
-  }
-  this->Impl->LightCount = static_cast<int>(frame.Lights.size());
-}
-
-//------------------------------------------------------------------------------
 void vtkPlanarShadowPass::GatherReceivers(
-  const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame)
+  const std::vector<vtkshadow::ShadowActor>& actors, Frame& frame)
 {
   Internals& impl = *this->Impl;
   impl.ReceiverIndex.clear();
@@ -512,7 +336,7 @@ void vtkPlanarShadowPass::GatherReceivers(
 
 //------------------------------------------------------------------------------
 int vtkPlanarShadowPass::GatherFlatParts(const std::vector<vtkshadow::ShadowActor>& actors,
-  const vtkshadow::ReceiverChoice& choice, FrameState& frame)
+  const vtkshadow::ReceiverChoice& choice, Frame& frame)
 {
   // The flat parts of the meshes that are not receivers as a whole (a box's
   // top, a slab floor), as planes every fragment on them receives on, like
@@ -557,12 +381,12 @@ int vtkPlanarShadowPass::GatherFlatParts(const std::vector<vtkshadow::ShadowActo
 }
 
 //------------------------------------------------------------------------------
-bool vtkPlanarShadowPass::PartCanShowShadow(const double plane[4], const FrameState& frame) const
+bool vtkPlanarShadowPass::PartCanShowShadow(const double plane[4], const Frame& frame) const
 {
   // Seen from the eye's side and lit from that side by a casting light
   // (either orientation of the plane: meshes are not all wound outwards).
-  const double eye =
-    plane[0] * frame.Eye[0] + plane[1] * frame.Eye[1] + plane[2] * frame.Eye[2] + plane[3];
+  const double eye = plane[0] * frame.Shared.Eye[0] + plane[1] * frame.Shared.Eye[1] +
+    plane[2] * frame.Shared.Eye[2] + plane[3];
   for (const vsh_planar_light& light : frame.Lights)
   {
     const double* l = light.homogeneous;
@@ -597,7 +421,7 @@ void vtkPlanarShadowPass::UpdateReceivingSet()
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::GatherCasters(
-  const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame)
+  const std::vector<vtkshadow::ShadowActor>& actors, Frame& frame)
 {
   for (const vtkshadow::ShadowActor& actor : actors)
   {
@@ -609,19 +433,8 @@ void vtkPlanarShadowPass::GatherCasters(
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::SetUpCamera(vtkRenderer* renderer, FrameState& frame)
+void vtkPlanarShadowPass::SetUpPlanes(const Frame& frame)
 {
-  // Projection times the eye-relative view rotation, in double.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const double aspect =
-    frame.Size[1] > 0 ? static_cast<double>(frame.Size[0]) / frame.Size[1] : 1.0;
-  camera->GetPosition(frame.Eye);
-  double projection[16];
-  vtkMatrix4x4::DeepCopy(frame.View, camera->GetViewTransformMatrix());
-  frame.View[3] = frame.View[7] = frame.View[11] = 0.0; // inputs are relative to the eye
-  vtkMatrix4x4::DeepCopy(projection, camera->GetProjectionTransformMatrix(aspect, -1, 1));
-  vsh_mat4_multiply(projection, frame.View, frame.CameraRelative);
-
   // Explicit planes in view coordinates for the receivers' fragment shaders.
   Internals& impl = *this->Impl;
   impl.PlaneCount = 0;
@@ -632,7 +445,8 @@ void vtkPlanarShadowPass::SetUpCamera(vtkRenderer* renderer, FrameState& frame)
       continue;
     }
     double planeVC[4];
-    vsh_planar_plane_to_view(&frame.Planes[4 * r], frame.View, frame.Eye, planeVC);
+    vsh_planar_plane_to_view(
+      &frame.Planes[4 * r], frame.Shared.ViewRotation, frame.Shared.Eye, planeVC);
     ToFloat(planeVC, impl.PlaneVC + 4 * impl.PlaneCount, 4);
     impl.PlaneReceiver[impl.PlaneCount] = static_cast<int>(r);
     impl.PlaneTolerance[impl.PlaneCount] = static_cast<float>(this->PlaneTolerance);
@@ -641,7 +455,7 @@ void vtkPlanarShadowPass::SetUpCamera(vtkRenderer* renderer, FrameState& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const FrameState& frame)
+void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const Frame& frame)
 {
   Internals& impl = *this->Impl;
   if (!impl.Mask)
@@ -655,7 +469,7 @@ void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const Fram
   // reading a quarter of the bytes is most of the pass's per-pixel cost on a
   // software rasterizer. Up to 128 pairs need all four channels. (The
   // lighting code reads .x for pairs 0..31 either way.)
-  const int* size = frame.Size;
+  const int* size = frame.Shared.Size;
   const int maskChannels =
     vsh_planar_mask_channels(static_cast<int>(frame.Receivers.size()), impl.LightCount);
   if (impl.MaskSize[0] != size[0] || impl.MaskSize[1] != size[1] || !impl.Mask->GetHandle() ||
@@ -677,11 +491,11 @@ void vtkPlanarShadowPass::AllocateMask(vtkOpenGLRenderWindow* window, const Fram
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::AttachStencil(const FrameState& frame)
+void vtkPlanarShadowPass::AttachStencil(const Frame& frame)
 {
   // Stencil (with depth, unused) for the fans' winding numbers.
   Internals& impl = *this->Impl;
-  const int* size = frame.Size;
+  const int* size = frame.Shared.Size;
   if (!impl.Stencil || impl.StencilSize[0] != size[0] || impl.StencilSize[1] != size[1])
   {
     if (!impl.Stencil)
@@ -699,7 +513,7 @@ void vtkPlanarShadowPass::AttachStencil(const FrameState& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const FrameState& frame,
+void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const Frame& frame,
   const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs)
 {
   Internals& impl = *this->Impl;
@@ -719,7 +533,7 @@ void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const FrameSta
     vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
     vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
     vtkOpenGLState::ScopedglColorMask colorMask(state);
-    state->vtkglViewport(0, 0, frame.Size[0], frame.Size[1]);
+    state->vtkglViewport(0, 0, frame.Shared.Size[0], frame.Shared.Size[1]);
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDisable(GL_BLEND);
     state->vtkglDisable(GL_CULL_FACE);
@@ -749,7 +563,7 @@ void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const FrameSta
       glDisable(GL_COLOR_LOGIC_OP);
     }
     impl.DirtyAll = false;
-    if (!vsh_planar_rect_pixels(&impl.Written, frame.Size, impl.DirtyBox))
+    if (!vsh_planar_rect_pixels(&impl.Written, frame.Shared.Size, impl.DirtyBox))
     {
       std::fill_n(impl.DirtyBox, 4, 0);
     }
@@ -786,12 +600,12 @@ void vtkPlanarShadowPass::ClearWritten(vtkOpenGLState* state)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawPair(vtkShaderProgram* program, vtkOpenGLState* state,
-  const FrameState& frame, const vsh_planar_pair& pair)
+void vtkPlanarShadowPass::DrawPair(
+  vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame, const vsh_planar_pair& pair)
 {
   ++this->NumberOfShadowPairs;
   double shadowDC[16];
-  vsh_mat4_multiply(frame.CameraRelative, pair.shadow, shadowDC);
+  vsh_mat4_multiply(frame.Shared.CameraRelative, pair.shadow, shadowDC);
   unsigned int bits[4];
   vsh_planar_pair_bits(pair.bit, bits);
   glUniform4uiv(glGetUniformLocation(program->GetHandle(), "pairBit"), 1, bits);
@@ -824,315 +638,6 @@ void vtkPlanarShadowPass::DrawPair(vtkShaderProgram* program, vtkOpenGLState* st
 }
 
 //------------------------------------------------------------------------------
-std::vector<vsh_planar_pair> vtkPlanarShadowPass::SplitSoftPairs(
-  const FrameState& frame, std::vector<vsh_planar_pair>& pairs)
-{
-  // A pair whose light has a size is sampled when SoftSamples > 1; the rest
-  // (and soft pairs beyond the accumulation's four channels) stay in the
-  // hard bit mask.
-  Internals& impl = *this->Impl;
-  std::vector<vsh_planar_pair> hard, soft;
-  for (const vsh_planar_pair& pair : pairs)
-  {
-    const bool sized = this->SoftSamples > 1 && frame.LightSize[pair.light] > 0.0;
-    if (sized && static_cast<int>(soft.size()) < MaxSoftPairs)
-    {
-      soft.push_back(pair);
-      continue;
-    }
-    if (sized && !impl.SoftWarned)
-    {
-      vtkWarningMacro("more than " << MaxSoftPairs
-                                   << " (receiver, light) pairs with a light size: the others "
-                                      "get the hard shadow of the light's centre");
-      impl.SoftWarned = true;
-    }
-    hard.push_back(pair);
-  }
-  pairs.swap(hard);
-  for (int k = 0; k < MaxSoftPairs; ++k)
-  {
-    impl.SoftPair[k] = k < static_cast<int>(soft.size()) ? soft[k].bit : -1;
-  }
-  // The soft lookup is compiled into the receivers' shaders only while
-  // there are soft pairs.
-  if (impl.SoftShader != !soft.empty())
-  {
-    impl.SoftShader = !soft.empty();
-    this->BumpShaderTime();
-  }
-  this->NumberOfSoftPairs = static_cast<int>(soft.size());
-  return soft;
-}
-
-//------------------------------------------------------------------------------
-void vtkPlanarShadowPass::AllocateSoft(vtkOpenGLRenderWindow* window, const FrameState& frame)
-{
-  // RGBA16F, a soft pair per channel: sums of k / N are exact for N a power
-  // of two up to 1024 (and within 1e-3 otherwise).
-  Internals& impl = *this->Impl;
-  if (!impl.Soft)
-  {
-    impl.Soft = vtkTextureObject::New();
-  }
-  impl.Soft->SetContext(window);
-  const int* size = frame.Size;
-  if (impl.SoftSize[0] != size[0] || impl.SoftSize[1] != size[1] || !impl.Soft->GetHandle())
-  {
-    impl.Soft->ReleaseGraphicsResources(window);
-    impl.Soft->SetInternalFormat(GL_RGBA16F);
-    impl.Soft->SetFormat(GL_RGBA);
-    impl.Soft->SetDataType(GL_FLOAT);
-    impl.Soft->SetMinificationFilter(vtkTextureObject::Nearest);
-    impl.Soft->SetMagnificationFilter(vtkTextureObject::Nearest);
-    impl.Soft->Allocate2D(size[0], size[1], 4, VTK_FLOAT);
-    impl.SoftSize[0] = size[0];
-    impl.SoftSize[1] = size[1];
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state,
-  const FrameState& frame, const std::vector<vsh_planar_pair>& softPairs)
-{
-  // The sampled area light: per soft pair, N hard shadows from stratified
-  // points on the light, each counted once per pixel (stencil) and added
-  // with weight 1/N to the pair's channel.
-  Internals& impl = *this->Impl;
-  this->AllocateSoft(window, frame);
-  impl.FBO->RemoveColorAttachment(0);
-  impl.FBO->AddColorAttachment(0, impl.Soft);
-  impl.FBO->ActivateDrawBuffers(1);
-  const GLfloat zero[4] = { 0, 0, 0, 0 };
-  glClearBufferfv(GL_COLOR, 0, zero);
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vtkPlanarShadowMaskVS, vtkPlanarShadowSoftFS, "");
-  if (!program)
-  {
-    return;
-  }
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-  state->vtkglBlendEquation(GL_FUNC_ADD);
-  // Adaptive: the batch (the light's centre and 7 rim points) first, then
-  // the mark, then the rest only at the marked pixels. Otherwise the spiral
-  // in order, as before.
-  const bool adaptive = this->Adaptive && this->SoftSamples > VSH_SOFT_ADAPTIVE_BATCH;
-  const std::vector<int>& order = this->SoftOrder(adaptive);
-  const int batch = adaptive ? VSH_SOFT_ADAPTIVE_BATCH : this->SoftSamples;
-  impl.SoftAdaptive = adaptive;
-  impl.SoftStats.clear();
-  this->NumberOfRefinedPixels = adaptive ? 0 : -1;
-  for (size_t k = 0; k < softPairs.size(); ++k)
-  {
-    ++this->NumberOfShadowPairs;
-    float weight[4] = { 0, 0, 0, 0 };
-    weight[k] = 1.0f / static_cast<float>(this->SoftSamples);
-    for (int j = 0; j < batch; ++j)
-    {
-      this->DrawSoftSample(program, state, frame, softPairs[k], order[j], weight);
-    }
-    if (!adaptive)
-    {
-      continue;
-    }
-    int box[4];
-    const long refined = this->MarkSoftBatch(window, state, frame, static_cast<int>(k), box);
-    impl.SoftStats.push_back({ softPairs[k].light, refined,
-      static_cast<long>(box[2] - box[0]) * static_cast<long>(box[3] - box[1]) });
-    this->NumberOfRefinedPixels += std::max(refined, 0L);
-    window->GetShaderCache()->ReadyShaderProgram(program);
-    if (refined > 0)
-    {
-      this->DrawSoftRest(program, state, frame, softPairs[k], box, weight);
-    }
-  }
-  state->vtkglStencilMask(0xff);
-  state->vtkglDisable(GL_STENCIL_TEST);
-  state->vtkglDisable(GL_BLEND);
-  glDisable(GL_CLIP_DISTANCE0);
-  glDisable(GL_CLIP_DISTANCE1);
-}
-
-//------------------------------------------------------------------------------
-const std::vector<int>& vtkPlanarShadowPass::SoftOrder(bool adaptive)
-{
-  // The spiral's indices in drawing order: 0..N-1, or the batch of
-  // vsh_soft_batch_order first (computed once per N: about 1e6 operations).
-  Internals& impl = *this->Impl;
-  if (impl.SoftOrderSamples != this->SoftSamples || impl.SoftOrderAdaptive != adaptive ||
-    impl.SoftOrder.size() != static_cast<size_t>(this->SoftSamples))
-  {
-    impl.SoftOrder.resize(this->SoftSamples);
-    vsh_soft_batch_order(
-      this->SoftSamples, adaptive ? VSH_SOFT_ADAPTIVE_BATCH : 1, impl.SoftOrder.data());
-    impl.SoftOrderSamples = this->SoftSamples;
-    impl.SoftOrderAdaptive = adaptive;
-  }
-  return impl.SoftOrder;
-}
-
-//------------------------------------------------------------------------------
-long vtkPlanarShadowPass::MarkSoftBatch(vtkOpenGLRenderWindow* window, vtkOpenGLState* state,
-  const FrameState& frame, int channel, int box[4])
-{
-  // After the batch of the pair in `channel`: read the accumulation back,
-  // mark its pixels (vsh_soft_mark_pixels: refine where the 3x3
-  // neighbourhood disagrees), upload the mark, and draw it: the pixels that
-  // keep the batch's answer get exactly 0 or 1 and depth 0; the refined ones
-  // keep their sum and depth 1 (cleared), which DrawSoftRest tests against.
-  Internals& impl = *this->Impl;
-  const int w = frame.Size[0], h = frame.Size[1];
-  std::fill_n(box, 4, 0);
-  impl.SoftReadback.resize(static_cast<size_t>(4) * w * h);
-  impl.SoftMarkBytes.resize(static_cast<size_t>(w) * h);
-  impl.FBO->ActivateReadBuffer(0);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, impl.SoftReadback.data());
-  const long refined = vsh_soft_mark_pixels(impl.SoftReadback.data() + channel, 4, w, h,
-    VSH_SOFT_ADAPTIVE_BATCH, this->SoftSamples, impl.SoftMarkBytes.data(), box);
-  if (!impl.SoftMark)
-  {
-    impl.SoftMark = vtkTextureObject::New();
-  }
-  impl.SoftMark->SetContext(window);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  impl.SoftMark->Create2DFromRaw(w, h, 1, VTK_UNSIGNED_CHAR, impl.SoftMarkBytes.data());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  vtkShaderProgram* program = window->GetShaderCache()->ReadyShaderProgram(
-    vtkPlanarShadowMaskVS, vtkPlanarShadowAdaptiveFS, "");
-  if (!program)
-  {
-    return -1;
-  }
-  vtkOpenGLState::ScopedglDepthMask depthMask(state);
-  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_STENCIL_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglDepthFunc(GL_ALWAYS);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  state->vtkglColorMask(channel == 0, channel == 1, channel == 2, channel == 3);
-  glDepthRange(0.0, 0.0);
-  impl.SoftMark->Activate();
-  program->SetUniformi("batchMark", impl.SoftMark->GetTextureUnit());
-  this->DrawViewportQuad(program);
-  impl.SoftMark->Deactivate();
-  glDepthRange(0.0, 1.0);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  return refined;
-}
-
-//------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawSoftRest(vtkShaderProgram* program, vtkOpenGLState* state,
-  const FrameState& frame, const vsh_planar_pair& pair, const int box[4], const float weight[4])
-{
-  // Samples 8..N-1 within the refined pixels' box (the scissor: clears,
-  // casters and quads outside it are never rasterized) and, inside it, at
-  // the refined pixels only: every draw at depth 0.5 passes where the mark
-  // left 1 and fails where it wrote 0 (a failing depth test keeps the
-  // stencil, so the quad adds nothing there).
-  vtkOpenGLState::ScopedglDepthMask depthMask(state);
-  vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
-  state->vtkglEnable(GL_SCISSOR_TEST);
-  state->vtkglScissor(box[0], box[1], box[2] - box[0], box[3] - box[1]);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  state->vtkglDepthFunc(GL_LESS);
-  glDepthRange(0.5, 0.5);
-  const std::vector<int>& order = this->Impl->SoftOrder;
-  for (int j = VSH_SOFT_ADAPTIVE_BATCH; j < this->SoftSamples; ++j)
-  {
-    this->DrawSoftSample(program, state, frame, pair, order[j], weight);
-  }
-  glDepthRange(0.0, 1.0);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-}
-
-//------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawSoftSample(vtkShaderProgram* program, vtkOpenGLState* state,
-  const FrameState& frame, const vsh_planar_pair& pair, int sample, const float weight[4])
-{
-  // One light sample's hard shadow into the stencil: bit 7 where a caster
-  // triangle covers the pixel, bits 0-6 the silhouette fans' winding number
-  // (mod 128); then the sample's weight wherever the stencil is not zero, so
-  // overlapping casters count once.
-  state->vtkglStencilMask(0xff);
-  glClearStencil(0);
-  state->vtkglClear(GL_STENCIL_BUFFER_BIT);
-  state->vtkglEnable(GL_STENCIL_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  state->vtkglStencilMask(0x80);
-  state->vtkglStencilFunc(GL_ALWAYS, 0x80, 0xff);
-  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-  vtkActor* receiver = frame.Receivers[pair.receiver];
-  const double* receiverPlane = &frame.Planes[4 * pair.receiver];
-  const double size = frame.LightSize[pair.light];
-  std::vector<Fan> fans;
-  vsh_planar_rect fanRect;
-  vsh_planar_rect_init(&fanRect);
-  for (const vtkshadow::ShadowActor& caster : frame.Casters)
-  {
-    if (caster.Actor == receiver || (!receiver && LiesInPlane(caster, receiverPlane)))
-    {
-      continue; // as in DrawPair
-    }
-    vtkShadowCasterGeometry* geometry = this->CasterGeometry(caster.Actor);
-    // The light's disk faces the caster's centre (docs/soft-shadows.md: the
-    // direction of its shadow's centre too); a directional light ignores it.
-    double centre[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      centre[i] = 0.5 * (caster.Bounds[2 * i] + caster.Bounds[2 * i + 1]);
-    }
-    vsh_planar_light light;
-    light.casts = 1;
-    vsh_planar_pair samplePair;
-    if (geometry->GetNumberOfTriangles() == 0 ||
-      vsh_soft_sample_light(frame.Lights[pair.light].homogeneous, size, centre, sample,
-        this->SoftSamples, 0.0, light.homogeneous) != 0 ||
-      vsh_planar_plan_pairs(receiverPlane, 1, &light, 1, frame.Eye, &samplePair, 1) != 1)
-    {
-      continue; // no triangles, a caster centred on the light, or no shadow from this sample
-    }
-    double shadowDC[16];
-    vsh_mat4_multiply(frame.CameraRelative, samplePair.shadow, shadowDC);
-    this->DrawCaster(
-      program, frame, samplePair, light.homogeneous, shadowDC, caster, *geometry, fans, fanRect);
-  }
-  glDisable(GL_CLIP_DISTANCE0);
-  glDisable(GL_CLIP_DISTANCE1);
-  const float keepAll[4] = { 0, 0, 0, 1 };
-  program->SetUniform4f("receiverSideMC", keepAll);
-  program->SetUniform4f("belowLightMC", keepAll);
-  state->vtkglStencilMask(0x7f);
-  state->vtkglStencilFunc(GL_ALWAYS, 0, 0xff);
-  state->vtkglStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-  state->vtkglStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
-  for (const Fan& fan : fans)
-  {
-    float mcdc[16];
-    std::copy_n(fan.MCDC, 16, mcdc);
-    program->SetUniformMatrix4x4("shadowMCDC", mcdc);
-    fan.Geometry->DrawSilhouetteFans(program, fan.Light);
-    this->NumberOfMaskTriangles += fan.Geometry->GetNumberOfSilhouetteTriangles();
-  }
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
-  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  float w[4];
-  std::copy_n(weight, 4, w);
-  program->SetUniform4f("sampleWeight", w);
-  this->DrawViewportQuad(program);
-}
-
-//------------------------------------------------------------------------------
 vtkShadowCasterGeometry* vtkPlanarShadowPass::CasterGeometry(vtkActor* actor)
 {
   // Built on first use in a frame, rebuilt only when the mesh changed.
@@ -1156,7 +661,7 @@ vtkShadowCasterGeometry* vtkPlanarShadowPass::CasterGeometry(vtkActor* actor)
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState& frame,
+void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const Frame& frame,
   const vsh_planar_pair& pair, const double light[4], const double shadowDC[16],
   const vtkshadow::ShadowActor& caster, vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans,
   vsh_planar_rect& fanRect)
@@ -1164,7 +669,7 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
   // Model (shifted) -> world -> relative to the eye, in double.
   const double* model = caster.Matrix;
   double modelRelative[16];
-  geometry.GetModelRelativeMatrix(model, frame.Eye, modelRelative);
+  geometry.GetModelRelativeMatrix(model, frame.Shared.Eye, modelRelative);
   double mcdc[16], keep0[4], keep1[4], transposed[16];
   vsh_mat4_multiply(shadowDC, modelRelative, mcdc);
   PlaneTimesMatrix(pair.clip[0], modelRelative, keep0);
@@ -1178,7 +683,7 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
   // Clipping costs a software rasterizer a stage per triangle: skip it when
   // every corner of the caster's bounds is kept anyway.
   const double* b = caster.Bounds;
-  const bool clipNeeded = vsh_planar_bounds_clipped(pair.clip, b, frame.Eye) != 0;
+  const bool clipNeeded = vsh_planar_bounds_clipped(pair.clip, b, frame.Shared.Eye) != 0;
   double inverse[16];
   if (!clipNeeded && geometry.IsClosed() && vsh_mat4_inverse(model, inverse))
   {
@@ -1189,7 +694,7 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
     std::copy_n(mcdcF, 16, fan.MCDC);
     vsh_mat4_transform_point4(inverse, light, fan.Light);
     fans.push_back(fan);
-    vsh_planar_rect_add_bounds(&fanRect, shadowDC, b, frame.Eye);
+    vsh_planar_rect_add_bounds(&fanRect, shadowDC, b, frame.Shared.Eye);
     return;
   }
   if (clipNeeded)
@@ -1209,20 +714,20 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const FrameState
   program->SetUniform4f("receiverSideMC", keep0F);
   program->SetUniform4f("belowLightMC", keep1F);
   geometry.Draw(program);
-  vsh_planar_rect_add_bounds(&this->Impl->Written, shadowDC, b, frame.Eye);
+  vsh_planar_rect_add_bounds(&this->Impl->Written, shadowDC, b, frame.Shared.Eye);
   this->NumberOfMaskTriangles += geometry.GetNumberOfTriangles();
 }
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::FillFans(vtkShaderProgram* program, vtkOpenGLState* state,
-  const FrameState& frame, const std::vector<Fan>& fans, const vsh_planar_rect& fanRect,
+  const Frame& frame, const std::vector<Fan>& fans, const vsh_planar_rect& fanRect,
   const unsigned int bits[4])
 {
   // Winding numbers of the silhouette fans in the stencil (front +1, back
   // -1), then the pair's bit wherever it is not zero, within the casters'
   // projected bounds.
   int box[4];
-  if (!vsh_planar_rect_pixels(&fanRect, frame.Size, box))
+  if (!vsh_planar_rect_pixels(&fanRect, frame.Shared.Size, box))
   {
     return;
   }
@@ -1256,6 +761,18 @@ void vtkPlanarShadowPass::FillFans(vtkShaderProgram* program, vtkOpenGLState* st
   const float keepAll[4] = { 0, 0, 0, 1 };
   program->SetUniform4f("receiverSideMC", keepAll);
   program->SetUniform4f("belowLightMC", keepAll);
+  this->DrawFans(program, fans);
+  glUniform4uiv(pairBitLocation, 1, bits);
+  state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
+  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  this->DrawViewportQuad(program);
+  state->vtkglDisable(GL_STENCIL_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::DrawFans(vtkShaderProgram* program, const std::vector<Fan>& fans)
+{
   for (const Fan& fan : fans)
   {
     float mcdc[16];
@@ -1264,12 +781,6 @@ void vtkPlanarShadowPass::FillFans(vtkShaderProgram* program, vtkOpenGLState* st
     fan.Geometry->DrawSilhouetteFans(program, fan.Light);
     this->NumberOfMaskTriangles += fan.Geometry->GetNumberOfSilhouetteTriangles();
   }
-  glUniform4uiv(pairBitLocation, 1, bits);
-  state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
-  state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  this->DrawViewportQuad(program);
-  state->vtkglDisable(GL_STENCIL_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
 }
 
 //------------------------------------------------------------------------------

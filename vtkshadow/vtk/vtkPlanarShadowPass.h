@@ -213,52 +213,57 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Impl;
 
-  // A frame's plain data: viewport, lights, receivers, casters, camera.
-  struct FrameState;
+  // A frame's plain data: the shared frame (vtkShadowFrame.h) and the
+  // lights, receivers and casters planar plans from it.
+  struct Frame;
   struct Fan;
   // The stages of Render(), in order.
-  void GatherLights(vtkRenderer* renderer, FrameState& frame);
 #ifndef __VTK_WRAP__
-  void GatherReceivers(const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame);
+  void GatherReceivers(const std::vector<vtkshadow::ShadowActor>& actors, Frame& frame);
   // Detected flat parts of the other meshes as plane receivers; how many.
   int GatherFlatParts(const std::vector<vtkshadow::ShadowActor>& actors,
-    const vtkshadow::ReceiverChoice& choice, FrameState& frame);
-  bool PartCanShowShadow(const double plane[4], const FrameState& frame) const;
-  void GatherCasters(const std::vector<vtkshadow::ShadowActor>& actors, FrameState& frame);
+    const vtkshadow::ReceiverChoice& choice, Frame& frame);
+  bool PartCanShowShadow(const double plane[4], const Frame& frame) const;
+  void GatherCasters(const std::vector<vtkshadow::ShadowActor>& actors, Frame& frame);
 #endif
-  void SetUpCamera(vtkRenderer* renderer, FrameState& frame);
-  void DrawMask(vtkOpenGLRenderWindow* window, const FrameState& frame,
+  // The explicit planes in view coordinates, for the receivers' shaders.
+  void SetUpPlanes(const Frame& frame);
+  void DrawMask(vtkOpenGLRenderWindow* window, const Frame& frame,
     const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs);
   void ForgetRemovedCasters(vtkOpenGLRenderWindow* window);
-  // Sampled area lights: which pairs are soft, and their accumulation.
+  // Sampled area lights (vtkPlanarShadowSoft.cxx): which pairs are soft,
+  // and their accumulation.
   std::vector<vsh_planar_pair> SplitSoftPairs(
-    const FrameState& frame, std::vector<vsh_planar_pair>& pairs);
-  void AllocateSoft(vtkOpenGLRenderWindow* window, const FrameState& frame);
-  void DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const FrameState& frame,
+    const Frame& frame, std::vector<vsh_planar_pair>& pairs);
+  void AllocateSoft(vtkOpenGLRenderWindow* window, const Frame& frame);
+  void DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const Frame& frame,
     const std::vector<vsh_planar_pair>& softPairs);
-  void DrawSoftSample(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
+  void DrawSoftSample(vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame,
     const vsh_planar_pair& pair, int sample, const float weight[4]);
   // Adaptive sample counts: the order of the samples (the batch first),
   // the mark after the batch, and the rest within it.
   const std::vector<int>& SoftOrder(bool adaptive);
-  long MarkSoftBatch(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const FrameState& frame,
+  long MarkSoftBatch(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const Frame& frame,
     int channel, int box[4]);
-  void DrawSoftRest(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
+  void DrawSoftRest(vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame,
     const vsh_planar_pair& pair, const int box[4], const float weight[4]);
   // Parts of them.
   void UpdateReceivingSet();
-  void AllocateMask(vtkOpenGLRenderWindow* window, const FrameState& frame);
-  void AttachStencil(const FrameState& frame);
-  void DrawPair(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
+  void AllocateMask(vtkOpenGLRenderWindow* window, const Frame& frame);
+  void AttachStencil(const Frame& frame);
+  void DrawPair(vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame,
     const vsh_planar_pair& pair);
   vtkShadowCasterGeometry* CasterGeometry(vtkActor* actor);
 #ifndef __VTK_WRAP__
-  void DrawCaster(vtkShaderProgram* program, const FrameState& frame, const vsh_planar_pair& pair,
+  void DrawCaster(vtkShaderProgram* program, const Frame& frame, const vsh_planar_pair& pair,
     const double light[4], const double shadowDC[16], const vtkshadow::ShadowActor& caster,
     vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans, vsh_planar_rect& fanRect);
 #endif
-  void FillFans(vtkShaderProgram* program, vtkOpenGLState* state, const FrameState& frame,
+  void FillFans(vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame,
     const std::vector<Fan>& fans, const vsh_planar_rect& fanRect, const unsigned int bits[4]);
+  // Every fan's silhouette triangles, counted into the stencil as the
+  // caller's stencil state says.
+  void DrawFans(vtkShaderProgram* program, const std::vector<Fan>& fans);
   void DrawViewportQuad(vtkShaderProgram* program);
   void ClearWritten(vtkOpenGLState* state);
 };

@@ -3,9 +3,6 @@
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
-#include "vtkCamera.h"
-#include "vtkLight.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderState.h"
@@ -13,6 +10,7 @@
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterTriangles.h"
 #include "vtkShadowEmbreeScene.h"
+#include "vtkShadowFrame.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowRayTracer.h"
 #include "vtkShadowScreenMask.h"
@@ -99,19 +97,21 @@ struct vtkRayTracedShadowPass::Internals
   }
 };
 
-// The frame in plain data: what GatherFrame collects and the stages read.
-struct vtkRayTracedShadowPass::FrameState
+// The frame: the shared inputs (vtkShadowFrame.h) and what the tracer takes
+// from them, with the key a still frame is recognised by.
+struct vtkRayTracedShadowPass::Frame
 {
-  int Size[2] = { 0, 0 };
+  explicit Frame(const vtkshadow::ShadowFrame& shared)
+    : Shared(shared)
+  {
+  }
+  const vtkshadow::ShadowFrame& Shared;
+  int Size[2] = { 1, 1 };           // the viewport, at least a pixel each way
   int LightCount = 0;               // switched-on lights (mapper numbering), <= MaxLights
   std::vector<vsh_rt_light> Lights; // the lights that cast, camera-relative
   std::vector<int> Channels;        // their mask channels
   std::vector<int> Samples;         // their rays per pixel (1 for a light without a size)
   std::vector<vtkShadowEmbreeScene::Actor> Actors;
-  double Eye[3] = { 0, 0, 0 };
-  double Near = 0; // the near clipping plane's distance: nothing visible is nearer
-  double View[16];
-  double Projection[16];
   std::vector<double> Key;
 };
 
@@ -147,8 +147,8 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
   impl.Select(this->WorldKey);
   // World 0 starts each frame (a mirror's world is drawn after it).
   impl.FrameWorldsTraced = this->WorldKey == 0 ? 0 : impl.FrameWorldsTraced;
-  FrameState frame;
-  this->GatherFrame(s, frame);
+  Frame frame(this->BeginFrame(s));
+  this->GatherFrame(frame);
   impl.Still = impl.W->HaveMask && frame.Key == impl.W->LastKey;
   this->NumberOfRaysTraced = 0;
   if (impl.Still)
@@ -185,61 +185,45 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& frame)
+void vtkRayTracedShadowPass::GatherFrame(Frame& frame)
 {
-  vtkRenderer* renderer = s->GetRenderer();
-  int origin[2];
-  GetViewport(s, frame.Size, origin);
-  frame.Size[0] = std::max(frame.Size[0], 1);
-  frame.Size[1] = std::max(frame.Size[1], 1);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->GetPosition(frame.Eye);
-  frame.Near = camera->GetClippingRange()[0];
-  vtkMatrix4x4::DeepCopy(frame.View, camera->GetViewTransformMatrix());
-  vtkMatrix4x4::DeepCopy(frame.Projection,
-    camera->GetProjectionTransformMatrix(
-      static_cast<double>(frame.Size[0]) / frame.Size[1], -1, 1));
+  const vtkshadow::ShadowFrame& shared = frame.Shared;
+  frame.Size[0] = std::max(shared.Size[0], 1);
+  frame.Size[1] = std::max(shared.Size[1], 1);
   std::vector<double>& key = frame.Key;
-  key = { double(frame.Size[0]), double(frame.Size[1]), double(origin[0]), double(origin[1]),
-    double(this->Samples), this->LightRadius, this->LightAngle, double(this->Adaptive) };
-  key.insert(key.end(), frame.Eye, frame.Eye + 3);
-  key.insert(key.end(), frame.View, frame.View + 16);
-  key.insert(key.end(), frame.Projection, frame.Projection + 16);
+  key = { double(frame.Size[0]), double(frame.Size[1]), double(shared.Origin[0]),
+    double(shared.Origin[1]), double(this->Samples), this->LightRadius, this->LightAngle,
+    double(this->Adaptive) };
+  key.insert(key.end(), shared.Eye, shared.Eye + 3);
+  key.insert(key.end(), shared.View, shared.View + 16);
+  key.insert(key.end(), shared.Projection, shared.Projection + 16);
 
-  // Lights that follow the camera must be current before the rays.
-  vtkshadow::UpdateLights(renderer);
-  const std::vector<vtkLight*> lights = vtkshadow::SwitchedOnLights(renderer);
-  frame.LightCount = std::min(static_cast<int>(lights.size()), vtkShadowScreenMask::MaxLights);
+  frame.LightCount =
+    std::min(static_cast<int>(shared.Lights.size()), vtkShadowScreenMask::MaxLights);
   const double toRadians = std::acos(-1.0) / 180.0;
   for (int i = 0; i < frame.LightCount; ++i)
   {
-    vtkLight* light = lights[i];
+    const vtkshadow::ShadowFrameLight& light = shared.Lights[i];
     double h[4], focal[3];
-    vtkshadow::LightHomogeneous(light, h);
-    light->GetTransformedFocalPoint(focal);
+    std::copy_n(light.Homogeneous, 4, h);
     for (int k = 0; k < 3; ++k)
     {
-      h[k] -= h[3] * frame.Eye[k]; // camera-relative
-      focal[k] -= frame.Eye[k];
+      h[k] -= h[3] * shared.Eye[k]; // camera-relative
+      focal[k] = light.FocalPoint[k] - shared.Eye[k];
     }
-    const bool casts = this->LightCasts(light, i);
     key.insert(key.end(),
-      { h[0], h[1], h[2], h[3], focal[0], focal[1], focal[2], light->GetConeAngle(),
-        casts ? 1.0 : 0.0 });
-    if (!casts)
+      { h[0], h[1], h[2], h[3], focal[0], focal[1], focal[2], light.ConeAngle,
+        light.Casts ? 1.0 : 0.0 });
+    if (!light.Casts)
     {
       continue;
     }
     // The light's own size (the scene's radius / angle), else the pass's.
-    const double radius = vtkShadowPassBase::GetLightRadius(light) > 0
-      ? vtkShadowPassBase::GetLightRadius(light)
-      : this->LightRadius;
-    const double angle = vtkShadowPassBase::GetLightAngle(light) > 0
-      ? vtkShadowPassBase::GetLightAngle(light)
-      : this->LightAngle;
+    const double radius = light.Radius > 0 ? light.Radius : this->LightRadius;
+    const double angle = light.Angle > 0 ? light.Angle : this->LightAngle;
     key.insert(key.end(), { radius, angle });
     vsh_rt_light rt;
-    vsh_rt_light_init(h, focal, light->GetConeAngle(), radius, angle * toRadians, &rt);
+    vsh_rt_light_init(h, focal, light.ConeAngle, radius, angle * toRadians, &rt);
     const bool sized = rt.kind == VSH_RT_DIRECTIONAL ? rt.angle > 0 : rt.radius > 0;
     frame.Lights.push_back(rt);
     frame.Samples.push_back(sized ? this->Samples : 1);
@@ -247,7 +231,7 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
   }
   // The renderer's actors, not the render state's frustum-culled ones: a
   // caster behind the camera still shadows the view.
-  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
+  for (const vtkshadow::ShadowActor& a : shared.Actors)
   {
     const bool casts = vtkshadow::CastsAsSurface(a, NO_CAST());
     vtkShadowEmbreeScene::Actor actor{ a.Actor, casts, {} };
@@ -261,7 +245,7 @@ void vtkRayTracedShadowPass::GatherFrame(const vtkRenderState* s, FrameState& fr
 }
 
 //------------------------------------------------------------------------------
-bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
+bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, Frame& frame)
 {
   Internals& impl = *this->Impl;
   impl.Counters = vtkShadowRayTracer::Counters();
@@ -272,7 +256,7 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
     return false;
   }
   vtkshadow::MarkStage("raytrace.prepass");
-  if (!impl.Scene.Update(frame.Actors, frame.Eye, frame.Near))
+  if (!impl.Scene.Update(frame.Actors, frame.Shared.Eye, frame.Shared.ClippingRange[0]))
   {
     vtkErrorMacro("ray-traced shadows: " << impl.Scene.GetError());
     return false;
@@ -285,11 +269,12 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
   vtkShadowRayTracer::Frame rays;
   rays.Depth = impl.Depth.data();
   const int* size = impl.W->Mask.GetSize();
-  if (vsh_rt_view_init(frame.Projection, frame.View, size[0], size[1], &rays.View) != VSH_RT_OK)
+  if (vsh_rt_view_init(frame.Shared.Projection, frame.Shared.View, size[0], size[1], &rays.View) !=
+    VSH_RT_OK)
   {
     return true; // a degenerate camera shows nothing to shadow
   }
-  std::copy_n(frame.Eye, 3, rays.Eye);
+  std::copy_n(frame.Shared.Eye, 3, rays.Eye);
   rays.Lights = frame.Lights;
   rays.Samples = frame.Samples;
   for (int samples : frame.Samples)
@@ -316,7 +301,7 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, FrameState& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkRayTracedShadowPass::Upload(const FrameState& frame)
+void vtkRayTracedShadowPass::Upload(const Frame& frame)
 {
   Internals& impl = *this->Impl;
   for (int l = 0; l < impl.LightsTraced; ++l)

@@ -159,11 +159,11 @@ private:
 
   struct Internals;
   std::unique_ptr<Internals> Impl;
-  struct FrameState;
+  struct Frame;
   // The stages of Render(), in order.
-  void GatherFrame(const vtkRenderState* s, FrameState& frame);
-  bool Trace(const vtkRenderState* s, FrameState& frame);
-  void Upload(const FrameState& frame);
+  void GatherFrame(Frame& frame);
+  bool Trace(const vtkRenderState* s, Frame& frame);
+  void Upload(const Frame& frame);
 };
 
 #endif

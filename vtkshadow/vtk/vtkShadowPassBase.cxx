@@ -11,6 +11,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
+#include "vtkShadowFrame.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowRendererSteps.h"
 #include "vtkShadowSettings.h"
@@ -97,6 +98,7 @@ vtkShadowPassBase::vtkShadowPassBase()
   , SkippedLights(0)
   , ShaderTime(0)
   , WorldKey(0)
+  , OwnFrame(new vtkshadow::ShadowFrame)
 {
   this->BumpShaderTime();
 }
@@ -105,6 +107,35 @@ vtkShadowPassBase::vtkShadowPassBase()
 vtkShadowPassBase::~vtkShadowPassBase()
 {
   this->SetDelegatePass(nullptr);
+}
+
+//------------------------------------------------------------------------------
+const vtkshadow::ShadowFrame& vtkShadowPassBase::BeginFrame(const vtkRenderState* s, bool actors)
+{
+  vtkshadow::ShadowFrame& frame = *this->OwnFrame;
+  if (this->GivenFrame && this->GivenFrame->State == s)
+  {
+    frame = *this->GivenFrame;
+    if (actors && !frame.HasActors)
+    {
+      vtkshadow::GatherShadowFrameActors(s, frame);
+    }
+  }
+  else
+  {
+    vtkshadow::GatherShadowFrame(s, actors, frame);
+  }
+  for (size_t l = 0; l < frame.Lights.size(); ++l)
+  {
+    frame.Lights[l].Casts = this->LightCasts(frame.Lights[l].Light, static_cast<int>(l));
+  }
+  return frame;
+}
+
+//------------------------------------------------------------------------------
+const vtkshadow::ShadowFrame& vtkShadowPassBase::GetFrame() const
+{
+  return *this->OwnFrame;
 }
 
 //------------------------------------------------------------------------------

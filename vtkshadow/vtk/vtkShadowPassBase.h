@@ -29,6 +29,7 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkshadowModule.h" // for export macro
 
+#include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
 /**
@@ -52,6 +53,7 @@ class vtkInformationDoubleKey;
 namespace vtkshadow
 {
 class Settings;
+struct ShadowFrame;
 }
 class vtkInformationIntegerKey;
 class vtkLight;
@@ -216,6 +218,20 @@ public:
    */
   static void GetViewport(const vtkRenderState* s, int size[2], int origin[2]);
 
+#ifndef __VTK_WRAP__
+  /**
+   * A frame the next Render() of this pass reads instead of gathering its
+   * own (vtkShadowFrame.h), when it was gathered for the same render state:
+   * vtkAutoShadowPass hands its frame to the passes it chains,
+   * vtkPlanarReflectionPass to its technique. The caller keeps it alive
+   * through that Render() and sets nullptr back after it.
+   */
+  void SetGivenFrame(const vtkshadow::ShadowFrame* frame)
+  {
+    this->GivenFrame = frame;
+  }
+#endif
+
 protected:
   vtkShadowPassBase();
   ~vtkShadowPassBase() override;
@@ -240,6 +256,16 @@ protected:
 
 #ifndef __VTK_WRAP__
   /**
+   * This Render()'s frame: the given frame (SetGivenFrame) when it was
+   * gathered for `s`, else one gathered now (vtkshadow::GatherShadowFrame,
+   * with the shadow actors when `actors`), with each light's Casts set by
+   * this pass's LightCasts. Valid until the next BeginFrame; GetFrame() is
+   * it.
+   */
+  const vtkshadow::ShadowFrame& BeginFrame(const vtkRenderState* s, bool actors = true);
+  const vtkshadow::ShadowFrame& GetFrame() const;
+
+  /**
    * vtkshadow::InjectLightFactors with this pass's ResidualLight: every
    * pass puts its factors into the lighting through this.
    */
@@ -262,6 +288,9 @@ protected:
   int WorldKey;
 
 private:
+  std::unique_ptr<vtkshadow::ShadowFrame> OwnFrame;
+  const vtkshadow::ShadowFrame* GivenFrame = nullptr;
+
   vtkShadowPassBase(const vtkShadowPassBase&) = delete;
   void operator=(const vtkShadowPassBase&) = delete;
 };

@@ -4,7 +4,6 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkLight.h"
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -21,6 +20,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
+#include "vtkShadowFrame.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkSmartPointer.h"
@@ -49,14 +49,14 @@ namespace
 {
 constexpr int MaxLights = vtkShadowScreenMask::MaxLights;
 
-// The renderer's actors that cast: those of vtkshadow::ShadowActors (from
-// the renderer's props, not the render state's frustum-culled ones: a
-// caster behind the camera still throws its shadow into the view) without
-// NO_CAST and drawn as surfaces (vtkshadow::CastsAsSurface).
-std::vector<vtkshadow::ShadowActor> CastingActors(vtkRenderer* renderer)
+// The renderer's actors that cast: the frame's Actors (from the renderer's
+// props, not the render state's frustum-culled ones: a caster behind the
+// camera still throws its shadow into the view) without NO_CAST and drawn
+// as surfaces (vtkshadow::CastsAsSurface).
+std::vector<vtkshadow::ShadowActor> CastingActors(const vtkshadow::ShadowFrame& frame)
 {
   std::vector<vtkshadow::ShadowActor> actors;
-  for (const vtkshadow::ShadowActor& a : vtkshadow::ShadowActors(renderer))
+  for (const vtkshadow::ShadowActor& a : frame.Actors)
   {
     if (vtkshadow::CastsAsSurface(a, vtkShadowPassBase::NO_CAST()))
     {
@@ -193,11 +193,13 @@ struct vtkShadowVolumePass::Internals
 // and casters.
 struct vtkShadowVolumePass::Frame
 {
-  int Size[2] = { 0, 0 };
-  double Eye[3] = { 0, 0, 0 };
-  double CameraRelative[16]; // projection x view rotation
-  double NearCorners[12];    // near-plane rectangle, relative to the eye
-  std::vector<vtkLight*> Lights;
+  explicit Frame(const vtkshadow::ShadowFrame& shared)
+    : Shared(shared)
+  {
+  }
+  const vtkshadow::ShadowFrame& Shared;
+  int Size[2] = { 1, 1 }; // the viewport, at least a pixel each way
+  double NearCorners[12]; // near-plane rectangle, relative to the eye
   // Per light: radius (positional) or angular diameter in degrees
   // (directional) when it is sampled (SoftSamples > 1), else 0.
   std::vector<double> LightSize;
@@ -219,23 +221,14 @@ vtkShadowVolumePass::~vtkShadowVolumePass() = default;
 //------------------------------------------------------------------------------
 void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
 {
-  vtkRenderer* renderer = s->GetRenderer();
-  int origin[2];
-  GetViewport(s, frame.Size, origin);
-  frame.Size[0] = std::max(frame.Size[0], 1);
-  frame.Size[1] = std::max(frame.Size[1], 1);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  const double aspect = static_cast<double>(frame.Size[0]) / frame.Size[1];
-  camera->GetPosition(frame.Eye);
-  double view[16], projection[16], inverse[16];
-  vtkMatrix4x4::DeepCopy(view, camera->GetViewTransformMatrix());
-  view[3] = view[7] = view[11] = 0.0; // inputs are relative to the eye
-  vtkMatrix4x4::DeepCopy(projection, camera->GetProjectionTransformMatrix(aspect, -1, 1));
-  vsh_mat4_multiply(projection, view, frame.CameraRelative);
+  const vtkshadow::ShadowFrame& shared = frame.Shared;
+  frame.Size[0] = std::max(shared.Size[0], 1);
+  frame.Size[1] = std::max(shared.Size[1], 1);
+  double inverse[16];
   // The near-plane rectangle: the clip-space corners (+-1, +-1, -1) back to
   // eye-relative world coordinates.
   std::fill(frame.NearCorners, frame.NearCorners + 12, 0.0);
-  if (vsh_mat4_inverse(frame.CameraRelative, inverse))
+  if (vsh_mat4_inverse(shared.CameraRelative, inverse))
   {
     const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
     for (int c = 0; c < 4; ++c)
@@ -249,15 +242,11 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
       }
     }
   }
-  vtkshadow::UpdateLights(renderer);
-  frame.Lights = vtkshadow::SwitchedOnLights(renderer);
-  for (vtkLight* light : frame.Lights)
+  for (const vtkshadow::ShadowFrameLight& light : shared.Lights)
   {
-    frame.LightSize.push_back(this->SoftSamples <= 1 ? 0.0
-        : light->GetPositional()                     ? GetLightRadius(light)
-                                                     : GetLightAngle(light));
+    frame.LightSize.push_back(this->SoftSamples <= 1 ? 0.0 : light.Size);
   }
-  frame.Casters = CastingActors(renderer);
+  frame.Casters = CastingActors(shared);
   frame.Drawn.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
   std::sort(frame.Drawn.begin(), frame.Drawn.end());
 }
@@ -272,8 +261,8 @@ void vtkShadowVolumePass::LightsInViewCoordinates(vtkRenderer* renderer, const F
   vtkMatrix4x4::DeepCopy(view, renderer->GetActiveCamera()->GetModelViewTransformMatrix());
   for (int light = 0; light < impl.LightCount; ++light)
   {
-    double world[4], vc[4];
-    vtkshadow::LightHomogeneous(frame.Lights[light], world);
+    double vc[4];
+    const double* world = frame.Shared.Lights[light].Homogeneous;
     vsh_mat4_transform_point4(view, world, vc);
     for (int k = 0; k < 4; ++k)
     {
@@ -293,9 +282,9 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   ++impl.FrameNumber;
   vtkshadow::MarkStage("setup");
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
-  Frame frame;
+  Frame frame(this->BeginFrame(s));
   this->SetUpFrame(s, frame);
-  impl.LightCount = std::min(static_cast<int>(frame.Lights.size()), MaxLights);
+  impl.LightCount = std::min(static_cast<int>(frame.Shared.Lights.size()), MaxLights);
   this->LightsInViewCoordinates(s->GetRenderer(), frame);
   for (auto& stats : impl.Stats)
   {
@@ -329,7 +318,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   std::fill(impl.Samples, impl.Samples + MaxLights, 0);
   for (int light = 0; light < impl.LightCount && program; ++light)
   {
-    if (this->LightCasts(frame.Lights[light], light))
+    if (frame.Shared.Lights[light].Casts)
     {
       impl.Stats[light].Casts = true;
       this->CountLight(window, program, frame, light);
@@ -639,7 +628,7 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
   Internals& impl = *this->Impl;
   LightStats& stats = impl.Stats[light];
   double lightWorld[4];
-  vtkshadow::LightHomogeneous(frame.Lights[light], lightWorld);
+  std::copy_n(frame.Shared.Lights[light].Homogeneous, 4, lightWorld);
   if (sample >= 0)
   {
     // Sample `sample` of the light's disk turned to face the caster's
@@ -667,13 +656,13 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
   std::copy_n(caster.Bounds, 6, bounds);
   for (int k = 0; k < 3; ++k)
   {
-    bounds[2 * k] -= frame.Eye[k];
-    bounds[2 * k + 1] -= frame.Eye[k];
-    lightRelative[k] -= lightWorld[3] * frame.Eye[k];
+    bounds[2 * k] -= frame.Shared.Eye[k];
+    bounds[2 * k + 1] -= frame.Shared.Eye[k];
+    lightRelative[k] -= lightWorld[3] * frame.Shared.Eye[k];
   }
   int rect[4];
   if (!vsh_volume_screen_rect(
-        frame.CameraRelative, bounds, lightRelative, frame.Size[0], frame.Size[1], rect))
+        frame.Shared.CameraRelative, bounds, lightRelative, frame.Size[0], frame.Size[1], rect))
   {
     ++stats.Culled;
     return;
@@ -701,8 +690,8 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
   // Model (shifted) -> world -> relative to the eye -> clip, in double.
   double modelRelative[16], mcdc[16], transposed[16];
   impl.Casters[{ caster.Actor, caster.Instance }]->Geometry.GetModelRelativeMatrix(
-    caster.Matrix, frame.Eye, modelRelative);
-  vsh_mat4_multiply(frame.CameraRelative, modelRelative, mcdc);
+    caster.Matrix, frame.Shared.Eye, modelRelative);
+  vsh_mat4_multiply(frame.Shared.CameraRelative, modelRelative, mcdc);
   vsh_mat4_transpose(mcdc, transposed);
   float mcdcF[16];
   for (int i = 0; i < 16; ++i)
