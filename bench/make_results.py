@@ -208,7 +208,7 @@ def main():
            "the EEVEE peer through `vtkshadow-compare`), `bench/bench_growth.py`, "
            "`bench/bench_soft.py` (lights with a size) and "
            "`bench/make_results.py`, which writes this file; nothing here is edited by hand. "
-           "Analysis and history: [performance.md](performance.md).", "",
+           "How frames are timed and where the time goes: [performance.md](performance.md).", "",
            "Run %s on %s (%s), 2 cores, no GPU: Mesa llvmpipe under Xvfb. The machine is shared, "
            "so compare techniques within a scene as ratios measured in the same run." % (
                time.strftime("%Y-%m-%d %H:%M UTC",
