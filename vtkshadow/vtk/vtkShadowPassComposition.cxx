@@ -4,11 +4,8 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkRenderPassCollection.h"
-#include "vtkRenderStepsPass.h"
 #include "vtkSequencePass.h"
 #include "vtkShadowPassBase.h"
-
-#include <cstring>
 
 namespace
 {
@@ -51,30 +48,6 @@ bool AnyStep(vtkRenderPassCollection* steps, Test test)
 bool HoldsVTKShadows(vtkRenderPass* pass)
 {
   return IsVTKShadowPass(pass) || AnyStep(SequencedSteps(pass, true), IsVTKShadowPass);
-}
-
-// A vtkCameraPass over a sequence of VTK's standard scene steps (lights,
-// opaque, translucent, depth peeling, volumes, overlays): the scene drawn as
-// a vtkRenderStepsPass would, which VTK's examples build by hand.
-bool IsSceneSteps(vtkRenderPass* pass)
-{
-  static const char* const standard[] = { "vtkLightsPass", "vtkDefaultPass", "vtkOpaquePass",
-    "vtkTranslucentPass", "vtkOrderIndependentTranslucentPass", "vtkDepthPeelingPass",
-    "vtkDualDepthPeelingPass", "vtkVolumetricPass", "vtkOverlayPass" };
-  vtkRenderPassCollection* steps = SequencedSteps(pass, false);
-  return steps &&
-    !AnyStep(steps,
-      [](vtkRenderPass* p)
-      {
-        for (const char* name : standard)
-        {
-          if (std::strcmp(p->GetClassName(), name) == 0)
-          {
-            return false;
-          }
-        }
-        return true;
-      });
 }
 
 bool IsNotOpenGLShading(vtkRenderPass* pass)
@@ -187,13 +160,6 @@ vtkshadow::PassComposition vtkshadow::ComposeShadowPass(
       ": the shadows are drawn under it" + (result.Message.empty() ? "" : "; ") + result.Message;
     return result;
   }
-  if (vtkRenderStepsPass::SafeDownCast(existing) || IsSceneSteps(existing))
-  {
-    result.Message = DrawThrough(ours, existing);
-    result.Ok = true;
-    result.Top = ours;
-    return result;
-  }
   if (HoldsVTKShadows(existing))
   {
     result.Ok = true;
@@ -213,9 +179,10 @@ vtkshadow::PassComposition vtkshadow::ComposeShadowPass(
       "it; remove it first with renderer.SetPass(None)";
     return result;
   }
-  // Any other arrangement of passes (vedo's SSAO inside a camera pass, an
-  // application's own sequence) is the scene the shadows are drawn through:
-  // the technique's shader hooks reach every mapper it draws.
+  // Any other arrangement of passes (a vtkRenderStepsPass, VTK's standard
+  // steps under a camera pass, vedo's SSAO inside a camera pass and a
+  // sequence) is the scene the shadows are drawn through: the technique's
+  // shader hooks reach every mapper it draws.
   result.Message = DrawThrough(ours, existing);
   result.Ok = true;
   result.Top = ours;

@@ -9,14 +9,14 @@
  *   vtkToneMappingPass, vtkOpenGLFXAAPass, vtkEDLShading, blur, ...): it
  *   stays on top and ours renders the scene for it (composed in its
  *   delegate chain).
- * - A vtkRenderStepsPass (an application's own steps, e.g. depth peeling or
- *   a post-process pass in them): ours renders the scene through it.
  * - VTK's own shadow passes (vtkShadowMapPass / vtkShadowMapBakerPass, alone
  *   or in a vtkCameraPass + vtkSequencePass as VTK's examples and vedo set
  *   them): replaced by ours, and said so.
- * - Any other arrangement (vedo's SSAO inside a camera pass and a sequence,
- *   an application's own sequence): the technique draws the scene through
- *   it, its shader hooks reaching every mapper the arrangement draws.
+ * - Any other arrangement (an application's vtkRenderStepsPass, e.g. with
+ *   depth peeling or a post-process pass in it; VTK's standard steps under
+ *   a camera pass; vedo's SSAO inside a camera pass and a sequence): the
+ *   technique draws the scene through it, its shader hooks reaching every
+ *   mapper the arrangement draws.
  * - Passes that do not shade with VTK's OpenGL mappers (vtkOSPRayPass,
  *   vtkValuePass), anywhere in the arrangement: refused, naming the passes
  *   found; nothing changes.
