@@ -1,6 +1,7 @@
 /* vsh_flat_parts.c - grouping a mesh's triangles by their plane. */
 #include "vsh_flat_parts.h"
 
+#include "vsh_bounds.h"
 #include "vsh_vec3.h"
 
 #include <math.h>
@@ -36,18 +37,12 @@ static int same_plane(const double a[4], const double b[4], double normal_tolera
 
 /* The diagonal of the points' bounding box; -1 for a non-finite point. */
 static double points_size(const double *points, size_t n_points) {
-  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  vsh_bounds box;
+  vsh_bounds_init_empty(&box);
   for (size_t i = 0; i < n_points; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      const double v = points[3 * i + k];
-      if (!isfinite(v)) return -1.0;
-      lo[k] = v < lo[k] ? v : lo[k];
-      hi[k] = v > hi[k] ? v : hi[k];
-    }
+    if (!vsh_bounds_add_point(&box, points + 3 * i)) return -1.0;
   }
-  if (n_points == 0) return 0.0;
-  const double d[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
-  return vsh_vec3_length(d);
+  return vsh_bounds_diagonal_length(&box);
 }
 
 /* Each triangle's plane and area, keyed by its quantized plane. Returns

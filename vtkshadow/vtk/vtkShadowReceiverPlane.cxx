@@ -14,6 +14,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 
+#include "vsh_bounds.h"
 #include "vsh_flat_parts.h"
 #include "vsh_mat4.h"
 #include "vsh_plane.h"
@@ -137,7 +138,8 @@ std::vector<FlatPart> FlatParts(vtkActor* actor, const double m[16])
   const size_t limit = 4u << 20;
   std::vector<double> world;
   std::vector<long long> triangles;
-  double largest = 0.0;
+  vsh_bounds box;
+  vsh_bounds_init_empty(&box);
   for (vtkPolyData* poly : DrawnPolyData(actor->GetMapper()))
   {
     if (!poly->GetPoints())
@@ -151,7 +153,7 @@ std::vector<FlatPart> FlatParts(vtkActor* actor, const double m[16])
       poly->GetPoint(i, p);
       vsh_mat4_transform_point(m, p, w);
       world.insert(world.end(), w, w + 3);
-      largest = std::max({ largest, std::abs(w[0]), std::abs(w[1]), std::abs(w[2]) });
+      vsh_bounds_add_point(&box, w);
     }
     if (!AppendTriangles(poly->GetPolys(), false, base, triangles, limit) ||
       !AppendTriangles(poly->GetStrips(), true, base, triangles, limit))
@@ -162,14 +164,12 @@ std::vector<FlatPart> FlatParts(vtkActor* actor, const double m[16])
   vsh_flat_part found[6];
   const int n = vsh_flat_parts(world.data(), world.size() / 3, triangles.data(),
     triangles.size() / 3, 1e-4, 1e-5, 0.05, found, 6);
-  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
-  for (size_t i = 0; i < world.size(); ++i)
+  double largest = 0.0; // the largest absolute coordinate, for float rounding
+  for (int k = 0; k < 3 && !vsh_bounds_is_empty(&box); ++k)
   {
-    lo[i % 3] = i < 3 ? world[i] : std::min(lo[i % 3], world[i]);
-    hi[i % 3] = i < 3 ? world[i] : std::max(hi[i % 3], world[i]);
+    largest = std::max({ largest, std::abs(box.min[k]), std::abs(box.max[k]) });
   }
-  const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
-    (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  const double diagonal = vsh_bounds_diagonal_length(&box);
   std::vector<FlatPart> parts;
   for (int i = 0; i < n; ++i)
   {
