@@ -173,12 +173,13 @@ def bound_for(entry, technique, defaults):
     return bounds.get(technique)
 
 
-def shadow_check(entry, technique, frame, ref, shadow_px, shares):
-    """(ok, detail) of the shadow check, or None where it does not apply."""
+def shadow_check(entry, technique, wrong, shadow_px, shares):
+    """(ok, detail) of the shadow check for a technique that differs from
+    raytrace on `wrong` pixels (None: frames of different sizes), or None
+    where it does not apply."""
     share = bound_for(entry, technique, shares)
-    if share is None or shadow_px < MIN_SHADOW_PX or frame.shape != ref.shape:
+    if share is None or shadow_px < MIN_SHADOW_PX or wrong is None:
         return None
-    wrong = int(differing_mask(frame, ref).sum())
     limit = share * shadow_px + SHADOW_ALLOWANCE_PX
     return (wrong <= limit, f"{wrong} px <= {share} x {shadow_px} shadow px + "
             f"{SHADOW_ALLOWANCE_PX}")
@@ -208,13 +209,16 @@ def judge(entry, runs, frames, defaults, shares=None):
             v = vanished_px(none_frame["fg"], frames[t]["fg"])
             checks["vanish"] = (v <= VANISH_PX, f"{v} px")
         if ok_run and ref is not None:
-            pct = differing_pct(frames[t]["rgb"], ref["rgb"])
+            # One mask for the frame bound and the shadow check.
+            wrong, pct = None, 100.0
+            if frames[t]["rgb"].shape == ref["rgb"].shape:
+                mask = differing_mask(frames[t]["rgb"], ref["rgb"])
+                wrong, pct = int(mask.sum()), 100.0 * float(mask.mean())
             run["diff_raytrace_pct"] = round(pct, 3)
             bound = bound_for(entry, t, defaults)
             if bound is not None:
                 checks["bound"] = (pct <= bound, f"{pct:.2f}% <= {bound}%")
-            shadow = shadow_check(entry, t, frames[t]["rgb"], ref["rgb"], shadow_px,
-                                  shares or {})
+            shadow = shadow_check(entry, t, wrong, shadow_px, shares or {})
             if shadow is not None:
                 checks["shadow"] = shadow
             run["shadow_px"] = shadow_px
