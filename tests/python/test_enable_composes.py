@@ -182,16 +182,23 @@ check(changed(fxaa_csm, csm_plain, 2) > 100,
       f"FXAA on with csm: {changed(fxaa_csm, csm_plain, 2)} px smoothed (> 100)")
 
 
-# A camera pass over VTK's standard steps: drawn through.
-def camera_steps(renderer):
-    sequence = vtkSequencePass()
+def camera_over(*steps):
+    """A vtkCameraPass over a vtkSequencePass of `steps`, as VTK's examples
+    and vedo build their pass arrangements."""
     passes = vtkRenderPassCollection()
-    for p in (vtkLightsPass(), vtkOpaquePass(), vtkTranslucentPass(), vtkOverlayPass()):
+    for p in steps:
         passes.AddItem(p)
+    sequence = vtkSequencePass()
     sequence.SetPasses(passes)
     camera = vtkCameraPass()
     camera.SetDelegatePass(sequence)
-    renderer.SetPass(camera)
+    return camera
+
+
+# A camera pass over VTK's standard steps: drawn through.
+def camera_steps(renderer):
+    renderer.SetPass(camera_over(vtkLightsPass(), vtkOpaquePass(), vtkTranslucentPass(),
+                                 vtkOverlayPass()))
 
 
 steps_csm, renderer, made = render("csm", camera_steps)
@@ -206,14 +213,7 @@ def vtk_shadows(renderer):
     baker = vtkShadowMapBakerPass()
     shadows = vtkShadowMapPass()
     shadows.SetShadowMapBakerPass(baker)
-    passes = vtkRenderPassCollection()
-    passes.AddItem(baker)
-    passes.AddItem(shadows)
-    sequence = vtkSequencePass()
-    sequence.SetPasses(passes)
-    camera = vtkCameraPass()
-    camera.SetDelegatePass(sequence)
-    renderer.SetPass(camera)
+    renderer.SetPass(camera_over(baker, shadows))
 
 
 _, renderer, made = render("csm", vtk_shadows)
@@ -236,14 +236,7 @@ def vedo_ssao(renderer):
     peeling = vtkDualDepthPeelingPass()
     peeling.SetTranslucentPass(vtkTranslucentPass())
     peeling.SetVolumetricPass(vtkVolumetricPass())
-    passes = vtkRenderPassCollection()
-    for p in (vtkLightsPass(), ssao, peeling, vtkOverlayPass()):
-        passes.AddItem(p)
-    sequence = vtkSequencePass()
-    sequence.SetPasses(passes)
-    camera = vtkCameraPass()
-    camera.SetDelegatePass(sequence)
-    renderer.SetPass(camera)
+    renderer.SetPass(camera_over(vtkLightsPass(), ssao, peeling, vtkOverlayPass()))
 
 
 vedo_csm, renderer, made = render("csm", vedo_ssao)
@@ -262,13 +255,7 @@ check(changed(vedo_csm, vedo_none) > 0.7 * shadow_px,
 # A pass that does not shade with VTK's mappers: refused, naming it,
 # nothing changed.
 window, renderer = scene()
-passes = vtkRenderPassCollection()
-passes.AddItem(vtkLightsPass())
-passes.AddItem(vtkValuePass())
-unknown = vtkSequencePass()
-unknown.SetPasses(passes)
-camera = vtkCameraPass()
-camera.SetDelegatePass(unknown)
+camera = camera_over(vtkLightsPass(), vtkValuePass())
 renderer.SetPass(camera)
 try:
     vtkshadow.enable_shadows(renderer, technique="csm")
