@@ -67,6 +67,13 @@ add_test(NAME python.planar_flat_parts
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_planar_flat_parts.py)
 set_tests_properties(python.planar_flat_parts PROPERTIES LABELS "render" TIMEOUT 120)
 
+# raytrace's partial shadows of translucent actors (issue 31): a sphere of
+# opacity 0.5 leaves 0.25 under it, opacity 1 gives 0, opacity 0 gives 1, a
+# slab of opacity 0.4 leaves 0.36; planar and csm still ignore them.
+add_test(NAME python.translucent_raytrace
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_translucent_raytrace.py)
+set_tests_properties(python.translucent_raytrace PROPERTIES LABELS "render" TIMEOUT 120)
+
 # vedo: enable_shadows before show(), after it, or after another technique
 # gives the same frame, with the shadow, for every technique (needs
 # python3-vedo, which scripts/install-deps.sh installs).

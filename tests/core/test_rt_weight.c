@@ -120,6 +120,34 @@ static void test_degenerate(void)
   CHECK(vsh_rt_visibility_value(&v) == 0.0);
 }
 
+/* Rays through translucent casters (vsh_transmit.h) count their
+ * transmitted fraction: two rays of weight 1 at 0.25 and 1 give 0.625; the
+ * plain fraction (every weight 0) too; 0 and 1 are blocked and free; NaN
+ * and out-of-range values clamp (NaN blocked). */
+static void test_transmitted(void)
+{
+  const double n[3] = { 0, 0, 1 }, up[3] = { 0, 0, 1 }, side[3] = { 1, 0, 0 };
+  vsh_rt_visibility v;
+  memset(&v, 0, sizeof v);
+  vsh_rt_visibility_add_transmitted(&v, vsh_rt_sample_weight(n, up), 0.25);
+  vsh_rt_visibility_add_transmitted(&v, vsh_rt_sample_weight(n, up), 1.0);
+  CHECK(v.partial == 1 && v.blocked == 0 && v.traced == 2);
+  CHECK_NEAR(vsh_rt_visibility_value(&v), 0.625, 1e-15);
+  vsh_rt_visibility_add_transmitted(&v, vsh_rt_sample_weight(n, up), 0.0);
+  CHECK(v.blocked == 1);
+  CHECK_NEAR(vsh_rt_visibility_value(&v), 1.25 / 3.0, 1e-15);
+  memset(&v, 0, sizeof v);
+  vsh_rt_visibility_add_transmitted(&v, vsh_rt_sample_weight(n, side), 0.36); /* weight 0 */
+  vsh_rt_visibility_add_transmitted(&v, vsh_rt_sample_weight(n, side), 1.0);
+  CHECK_NEAR(vsh_rt_visibility_value(&v), 0.68, 1e-15);
+  memset(&v, 0, sizeof v);
+  vsh_rt_visibility_add_transmitted(&v, 1.0, NAN);
+  vsh_rt_visibility_add_transmitted(&v, 1.0, -0.5);
+  vsh_rt_visibility_add_transmitted(&v, 1.0, 2.0);
+  CHECK(v.blocked == 2 && v.partial == 0);
+  CHECK_NEAR(vsh_rt_visibility_value(&v), 1.0 / 3.0, 1e-15);
+}
+
 int main(void)
 {
   test_far_light_over_plane();
@@ -127,5 +155,6 @@ int main(void)
   test_closed_form();
   test_below_horizon();
   test_degenerate();
+  test_transmitted();
   return vsh_check_report("rt_weight");
 }

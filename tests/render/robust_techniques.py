@@ -37,6 +37,10 @@ between techniques is written here, one Profile per technique name:
                 pass, stats, extra) adds the technique's own checks
   special       {label: function(c, ctx)}: technique-only checks of the
                 "settings" case (planar's explicit receiver plane)
+  translucent_casts  None: translucent actors cast nothing (the translucent
+                case wants the floor outside the box unchanged); a number:
+                the visibility the opacity-0.4 box's partial shadow must have
+                where it falls alone (two crossings: 0.36, docs/translucency.md)
   known         {(case, start of a check's message): why}: known failures of
                 the technique. Such a check must still FAIL (printed "xfail");
                 when it passes the test fails, so the entry goes once the
@@ -67,6 +71,7 @@ class Profile:
     settings: list = field(default_factory=list)
     special: dict = field(default_factory=dict)
     known: dict = field(default_factory=dict)
+    translucent_casts: Optional[float] = None
 
 
 def new_pass(technique, options=None):
@@ -286,7 +291,8 @@ PROFILES = {
         caching={"first": "some", "still": 0, "moved": 0, "data": 2, "light": 0, "orbit": 0},
         headlight_on=lambda p: p.SetCastHeadlightShadows(True),
         settings=[("samples 4 with a point-sized light (hard)", {"samples": 4}, None),
-                  ("threads 1", {"threads": 1}, None)]),
+                  ("threads 1", {"threads": 1}, None)],
+        translucent_casts=0.36),
 }
 DEFAULT = Profile()
 

@@ -33,7 +33,8 @@ Cases:
   viewports     800x300: two renderers side by side, each with its own pass,
                 and a layer-1 overlay; each viewport vs a single 400x300
                 renderer (float captures, and 8-bit direct renders).
-  translucent   an opacity-0.4 box: visibility outside it unchanged, the box
+  translucent   an opacity-0.4 box: visibility outside it unchanged (raytrace:
+                its partial shadow at 0.36, the rest unchanged), the box
                 renders; a translucent actor marked receiver: renders, floor
                 unchanged outside it.
   lighting-off  a caster with lighting off (it renders, the rest unchanged);
@@ -601,7 +602,21 @@ def case_translucent(run):
     c.check(box_px.sum() > 1000, f"the box covers {int(box_px.sum())} px")
     a, on_a, _, sa = run.vis(with_box)
     b, on_b, _, sb = run.vis(rs.sphere_floor)
-    c.agreement("floor with a translucent box vs without (outside the box)", a, b, box_px)
+    want = c.profile.translucent_casts
+    if want is None:
+        c.agreement("floor with a translucent box vs without (outside the box)", a, b, box_px)
+    else:
+        # The box's partial shadow (issue 31): where it darkens a floor the
+        # sphere leaves lit, the visibility is (1 - 0.4)^2; the rest agrees.
+        lit = b[1] & (b[0] > 0.99) & ~box_px
+        partial = lit & a[1] & (np.abs(a[0] - b[0]) > 0.05)
+        values = a[0][partial]
+        level = float(np.median(values)) if values.size else float("nan")
+        c.check(values.size >= 500 and abs(level - want) <= 0.03,
+                f"the translucent box casts a partial shadow: {int(values.size)} px "
+                f"(need >= 500), median visibility {level:.4f} (want {want} within 0.03)")
+        c.agreement("floor with a translucent box vs without (outside the box and its "
+                    "partial shadow)", a, b, box_px | partial)
     c.stats("translucent box", sa)
     changed = changed_pct(on_a, on_b, inner_px(covered))
     c.check(changed >= 90.0, f"the translucent box renders: {changed:.2f} % of its "

@@ -64,7 +64,7 @@ static const char *const keys[] = {
     "\"position\"", "\"focal_point\"", "\"view_up\"",    "\"radius\"",   "\"resolution\"",
     "\"size\"",     "\"lights\"",     "\"objects\"",    "\"camera\"",   "\"meshes/tri.obj\"",
     "\"meshes/nope.ply\"", "\"/\"",   "\"meshes\"",     "\"recever\"",  "\"\\u0000\"",
-    "\"mirror\""};
+    "\"mirror\"", "\"opacity\"", "\"filter\""};
 static const char punct[] = "0123456789\"[]{},:-.e \n\\";
 
 static void mutate(mm_buf *b) {
@@ -143,6 +143,9 @@ static void check_scene(const vsh_scene *s, const char *path, long iteration) {
     /* A mirror is a plane with a reflectance the renderers can blend by. */
     if (o->has_mirror) CHECK(o->kind == VSH_OBJECT_PLANE && o->mirror >= 0 && o->mirror <= 1);
     if (!o->has_mirror) CHECK(o->mirror == 0);
+    /* Translucency is a fraction; a mirror is opaque. */
+    CHECK(o->opacity >= 0 && o->opacity <= 1 && o->filter >= 0 && o->filter <= 1);
+    if (o->has_mirror) CHECK(o->opacity == 1);
     if (o->kind == VSH_OBJECT_MESH) {
       CHECK(o->mesh_path && o->mesh_resolved_path);
       continue;

@@ -158,6 +158,24 @@ static void test_meshes(void) {
 }
 
 /* "mirror": R on planes; absent means no mirror (R = 0), 0 and 1 are valid. */
+static void test_translucent(void) {
+  char err[VSH_SCENE_ERROR_MAX];
+  vsh_scene *s = NULL;
+  int rc = vsh_scene_load(data("good/translucent.json"), &s, err, sizeof err);
+  CHECK(rc == 0);
+  if (rc) {
+    fprintf(stderr, "unexpected error: %s\n", err);
+    return;
+  }
+  CHECK(s->object_count == 3);
+  if (s->object_count == 3) {
+    CHECK(s->objects[0].opacity == 1 && s->objects[0].filter == 0); /* defaults */
+    CHECK(s->objects[1].opacity == 0.5 && s->objects[1].filter == 0);
+    CHECK(s->objects[2].opacity == 0.4 && s->objects[2].filter == 1);
+  }
+  vsh_scene_free(s);
+}
+
 static void test_mirror(void) {
   char err[VSH_SCENE_ERROR_MAX];
   vsh_scene *s = NULL;
@@ -244,6 +262,11 @@ static const bad_case bad_cases[] = {
     {"mirror_bool", ": objects[0].mirror: expected a number (got true)", NULL},
     {"mirror_infinite", ": objects[0].mirror: must be a finite number (got inf)", NULL},
     {"mirror_on_sphere", ": objects[0].mirror: only a plane can be a mirror, and a sphere is not",
+     "(got 0.5)"},
+    {"opacity_range", ": objects[0].opacity: must be in [0, 1] (got 1.5)", NULL},
+    {"opacity_string", ": objects[0].opacity: expected a number (got \"0.4\")", NULL},
+    {"filter_negative", ": objects[0].filter: must be in [0, 1] (got -0.1)", NULL},
+    {"mirror_translucent", ": objects[0].opacity: a mirror must be opaque (opacity 1)",
      "(got 0.5)"},
     {"casts_string", ": objects[0].casts: expected true or false (got \"yes\")", NULL},
     {"name_number", ": objects[0].name: expected a string (got 5)", NULL},
@@ -418,6 +441,7 @@ int main(int argc, char **argv) {
   test_defaults();
   test_meshes();
   test_mirror();
+  test_translucent();
   test_bad_files();
   test_light_sizes();
   test_load_errors();

@@ -29,6 +29,21 @@ void vsh_rt_visibility_add(vsh_rt_visibility *v, double weight, int blocked)
   }
 }
 
+void vsh_rt_visibility_add_transmitted(vsh_rt_visibility *v, double weight, double transmitted)
+{
+  const double t = transmitted == transmitted ? (transmitted < 0.0 ? 0.0 : (transmitted > 1.0 ? 1.0 : transmitted)) : 0.0;
+  if (t <= 0.0 || t >= 1.0) {
+    vsh_rt_visibility_add(v, weight, t <= 0.0);
+    return;
+  }
+  const double w = isfinite(weight) && weight > 0.0 ? weight : 0.0;
+  ++v->traced;
+  ++v->partial;
+  v->weight += w;
+  v->free_weight += w * t;
+  v->partial_loss += 1.0 - t;
+}
+
 double vsh_rt_visibility_value(const vsh_rt_visibility *v)
 {
   if (v->traced <= 0) {
@@ -38,5 +53,6 @@ double vsh_rt_visibility_value(const vsh_rt_visibility *v)
     const double r = v->free_weight / v->weight;
     return r < 0.0 ? 0.0 : (r > 1.0 ? 1.0 : r);
   }
-  return 1.0 - (double)v->blocked / v->traced;
+  const double r = 1.0 - ((double)v->blocked + v->partial_loss) / v->traced;
+  return r < 0.0 ? 0.0 : (r > 1.0 ? 1.0 : r);
 }

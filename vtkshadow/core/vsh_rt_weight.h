@@ -29,6 +29,8 @@ typedef struct vsh_rt_visibility {
   double weight;      /* sum of the weights of every ray */
   int traced;         /* rays traced */
   int blocked;        /* rays blocked */
+  int partial;        /* rays that crossed translucent surfaces only, 0 < t < 1 */
+  double partial_loss; /* sum of (1 - t) over the partial rays */
 } vsh_rt_visibility;
 
 /* The weight of a ray in unit direction `dir` from a surface with normal
@@ -42,11 +44,19 @@ double vsh_rt_sample_weight(const double normal[3], const double dir[3]);
  * free. */
 void vsh_rt_visibility_add(vsh_rt_visibility *v, double weight, int blocked);
 
+/* Adds one ray of weight `weight` that reached the light with the fraction
+ * `transmitted` of its light (the product of (1 - opacity) over the
+ * translucent surfaces it crossed, vsh_transmit.h; clamped to [0, 1], NaN
+ * counts as blocked): 0 is blocked, 1 free, in between a partial ray, whose
+ * weight counts `transmitted` times as free. */
+void vsh_rt_visibility_add_transmitted(vsh_rt_visibility *v, double weight, double transmitted);
+
 /* The pair's visibility in [0, 1]: free_weight / weight when the weights
  * sum to more than 0; the plain fraction of free rays when every ray had
  * weight 0 (the whole light below the horizon of the surface's geometric
  * normal, where the mapper's interpolated normal may still face the light:
- * 0/0 has no answer, the unweighted one is the value before weighting);
+ * 0/0 has no answer, the unweighted one is the value before weighting;
+ * partial rays count their transmitted fraction);
  * 1 when nothing was traced. */
 double vsh_rt_visibility_value(const vsh_rt_visibility *v);
 

@@ -74,6 +74,12 @@ typedef struct vsh_object {
   int has_mirror;       /* plane only: "mirror" given, the plane reflects */
   double mirror;        /* reflectance in [0, 1]; 0 when absent */
   double color[3];      /* default 1 1 1 */
+  /* Translucency (docs/translucency.md): each crossing of the surface lets
+   * (1 - opacity) of the light through; of that, the fraction `filter` is
+   * tinted by the colour (POV-Ray's filter), the rest passes unchanged
+   * (POV-Ray's transmit). opacity default 1 (opaque), filter default 0. */
+  double opacity;
+  double filter;
   char *name;           /* optional; NULL when absent */
 } vsh_object;
 

@@ -22,7 +22,7 @@
 
 static const char *const object_keys[] = {"sphere",   "plane", "box",   "cylinder",  "mesh",
                                           "receiver", "casts", "color", "name", "transform",
-                                          "mirror",   NULL};
+                                          "mirror",   "opacity", "filter", NULL};
 static const char *const shape_keys[] = {"sphere", "plane", "box", "cylinder", "mesh", NULL};
 static const char *const sphere_keys[] = {"center", "radius", "resolution", NULL};
 static const char *const plane_keys[] = {"origin", "point1", "point2", NULL};
@@ -231,6 +231,40 @@ static int parse_mirror(const vsh_ctx *ctx, const cJSON *item, const char *field
   return 0;
 }
 
+/* A fraction in [0, 1] ("opacity", "filter"). */
+static int parse_fraction(const vsh_ctx *ctx, const cJSON *item, const char *field,
+                          double *out) {
+  char got[VSH_GOT_MAX];
+  if (vsh__number(ctx, item, field, out)) return -1;
+  vsh__fmt_json(item, got, sizeof got);
+  if (!(*out >= 0.0 && *out <= 1.0)) return vsh__fail(ctx, field, got, "must be in [0, 1]");
+  return 0;
+}
+
+/* "opacity" and "filter": translucency. A mirror is opaque: the reflection
+ * pass draws the mirrored scene into the mirror's pixels, which a
+ * translucent mirror would also have to show through. */
+static int parse_translucency(const vsh_ctx *ctx, const cJSON *obj, const char *f,
+                              vsh_object *o) {
+  char sub[VSH_FIELD_MAX], got[VSH_GOT_MAX];
+  const cJSON *item;
+  o->opacity = 1.0;
+  o->filter = 0.0;
+  if ((item = cJSON_GetObjectItemCaseSensitive(obj, "opacity"))) {
+    vsh__field(sub, f, "opacity");
+    if (parse_fraction(ctx, item, sub, &o->opacity)) return -1;
+    if (o->has_mirror && o->opacity < 1.0) {
+      vsh__fmt_json(item, got, sizeof got);
+      return vsh__fail(ctx, sub, got, "a mirror must be opaque (opacity 1)");
+    }
+  }
+  if ((item = cJSON_GetObjectItemCaseSensitive(obj, "filter"))) {
+    vsh__field(sub, f, "filter");
+    if (parse_fraction(ctx, item, sub, &o->filter)) return -1;
+  }
+  return 0;
+}
+
 int vsh__parse_object(const vsh_ctx *ctx, const cJSON *obj, size_t index,
                       const char *scene_path, vsh_object *o) {
   char f[VSH_FIELD_MAX], sub[VSH_FIELD_MAX], got[VSH_GOT_MAX];
@@ -308,5 +342,5 @@ int vsh__parse_object(const vsh_ctx *ctx, const cJSON *obj, size_t index,
     vsh__field(sub, f, "name");
     if (vsh__string(ctx, item, sub, &o->name)) return -1;
   }
-  return 0;
+  return parse_translucency(ctx, obj, f, o);
 }

@@ -242,6 +242,24 @@ void vtkRayTracedShadowPass::GatherFrame(Frame& frame)
     key.push_back(casts ? 1.0 : 0.0);
     key.insert(key.end(), a.Matrix, a.Matrix + 16);
   }
+  // Translucent actors cast partial shadows with their opacity (only here:
+  // the other techniques leave them out; docs/translucency.md). They do not
+  // receive: they are not in the depth pass.
+  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(shared.Renderer))
+  {
+    if (!vtkshadow::CastsAsSurface(a, NO_CAST()))
+    {
+      continue;
+    }
+    vtkShadowEmbreeScene::Actor actor{ a.Actor, true, {} };
+    std::copy_n(a.Matrix, 16, actor.Matrix);
+    actor.Opacity = vtkshadow::CasterOpacity(a.Actor);
+    frame.Actors.push_back(actor);
+    key.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(a.Actor)));
+    key.push_back(static_cast<double>(vtkshadow::CasterDataTime(a.Actor)));
+    key.push_back(actor.Opacity);
+    key.insert(key.end(), a.Matrix, a.Matrix + 16);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -41,15 +41,17 @@ void PathBounds(vtkActor* actor, const double matrix[16], double out[6])
   box.GetBounds(out);
 }
 
-// Appends the opaque actors `root` draws to `out`, numbering repeated actors
-// in `seen`.
-void AppendShadowActors(
-  vtkProp* root, std::vector<vtkshadow::ShadowActor>& out, std::map<vtkActor*, int>& seen)
+// Appends the opaque actors `root` draws to `out` (`translucent`: the
+// translucent ones whose property's opacity is below 1 instead), numbering
+// repeated actors in `seen`.
+void AppendShadowActors(vtkProp* root, std::vector<vtkshadow::ShadowActor>& out,
+  std::map<vtkActor*, int>& seen, bool translucent = false)
 {
   vtkshadow::ForEachPathActor(root,
     [&](vtkActor* actor, const double* matrix)
     {
-      if (actor->HasTranslucentPolygonalGeometry())
+      if (actor->HasTranslucentPolygonalGeometry() != translucent ||
+        (translucent && vtkshadow::CasterOpacity(actor) >= 1.0))
       {
         return;
       }
@@ -135,6 +137,33 @@ std::vector<ShadowActor> ShadowActors(vtkRenderer* renderer)
   while (vtkProp* prop = props->GetNextProp(it))
   {
     AppendShadowActors(prop, out, seen);
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+double CasterOpacity(vtkActor* actor)
+{
+  vtkProperty* property = actor ? actor->GetProperty() : nullptr;
+  const double opacity = property ? property->GetOpacity() : 1.0;
+  return opacity == opacity ? std::min(std::max(opacity, 0.0), 1.0) : 1.0;
+}
+
+//------------------------------------------------------------------------------
+std::vector<ShadowActor> TranslucentShadowActors(vtkRenderer* renderer)
+{
+  std::vector<ShadowActor> out;
+  std::map<vtkActor*, int> seen;
+  vtkPropCollection* props = renderer ? renderer->GetViewProps() : nullptr;
+  if (!props)
+  {
+    return out;
+  }
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    AppendShadowActors(prop, out, seen, true);
   }
   return out;
 }

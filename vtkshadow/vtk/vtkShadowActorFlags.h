@@ -95,6 +95,17 @@ std::vector<ShadowActor> ShadowActors(const vtkRenderState* s);
 // beside the view) still throws its shadow into the view.
 std::vector<ShadowActor> ShadowActors(vtkRenderer* renderer);
 
+// The renderer's translucent actors whose property's opacity is below 1
+// (CasterOpacity), from its props as above: what raytrace lets cast a
+// partial shadow (docs/translucency.md). Actors translucent only through a
+// texture's or their scalars' alpha (opacity 1) are in neither list. Every
+// other technique leaves translucent actors out.
+std::vector<ShadowActor> TranslucentShadowActors(vtkRenderer* renderer);
+
+// The actor's property opacity clamped to [0, 1] (1 without a property or
+// for NaN: opaque).
+double CasterOpacity(vtkActor* actor);
+
 // The property keys that decide `key` for a shadow actor: its own when they
 // carry the key, else its root prop's (VTK's assemblies hand their keys to
 // their parts while drawing them, so marking the assembly marks every part);

@@ -122,7 +122,10 @@ vtkShadowEmbreeScene::Mesh* vtkShadowEmbreeScene::UpdateMesh(vtkActor* actor)
   const size_t triangleCount = triangles.Indices.size() / 3;
   mesh.Scene = rtcNewScene(this->Device);
   // Robust: watertight edges, so no shadow ray slips between two triangles.
-  rtcSetSceneFlags(mesh.Scene, RTC_SCENE_FLAG_ROBUST);
+  // The context filter: the tracer's transmittance through translucent
+  // casters (Embree needs the flag on every instanced scene too).
+  rtcSetSceneFlags(mesh.Scene,
+    static_cast<RTCSceneFlags>(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION));
   if (triangleCount > 0)
   {
     RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -198,6 +201,7 @@ std::vector<double> vtkShadowEmbreeScene::PlacementKey(const std::vector<Actor>&
     key.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(a.Prop)));
     key.push_back(it->second->Version);
     key.push_back(a.Casts ? 1 : 0);
+    key.push_back(a.Opacity);
     key.insert(key.end(), a.Matrix, a.Matrix + 16);
   }
   return key;
@@ -218,11 +222,15 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const
     }
     *top = rtcNewScene(this->Device);
   }
+  rtcSetSceneFlags(this->Casters, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   this->Instances.clear();
+  this->CasterOpacity.clear();
+  this->TranslucentCasters = false;
   for (const Actor& a : actors)
   {
     auto it = this->Meshes.find(a.Prop);
-    if (it == this->Meshes.end() || it->second->Triangles == 0)
+    const bool translucent = a.Opacity < 1.0;
+    if (it == this->Meshes.end() || it->second->Triangles == 0 || (translucent && !a.Casts))
     {
       continue;
     }
@@ -266,7 +274,9 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const
     instance.Radius = mesh.Radius * scale;
     for (RTCScene top : { this->Visible, this->Casters })
     {
-      if (top == this->Casters && !a.Casts)
+      // A translucent actor is not in the depth pass (nothing lands on it)
+      // and casts a partial shadow only.
+      if ((top == this->Casters && !a.Casts) || (top == this->Visible && translucent))
       {
         continue;
       }
@@ -280,11 +290,16 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const
       }
       else
       {
-        rtcAttachGeometry(top, geometry);
+        rtcAttachGeometryByID(top, geometry, static_cast<unsigned int>(this->CasterOpacity.size()));
+        this->CasterOpacity.push_back(static_cast<float>(translucent ? a.Opacity : 1.0));
+        this->TranslucentCasters = this->TranslucentCasters || translucent;
       }
       rtcReleaseGeometry(geometry);
     }
-    this->Instances.push_back(instance);
+    if (!translucent)
+    {
+      this->Instances.push_back(instance);
+    }
   }
   rtcCommitScene(this->Visible);
   rtcCommitScene(this->Casters);

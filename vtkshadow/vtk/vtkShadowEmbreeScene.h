@@ -14,7 +14,11 @@
 //
 // Two top levels share the instances' meshes: "visible" (every opaque actor:
 // the primary rays that land on the rasterized surface) and "casters"
-// (actors that cast: the shadow rays).
+// (actors that cast: the shadow rays), where translucent actors (Opacity
+// below 1) are casters too, and only there: GetCasterOpacity gives each
+// caster instance's opacity by its instance id, for the tracer's context
+// filter (vtkShadowRayTracer: a ray's transmittance is the product of
+// (1 - opacity) over the translucent surfaces it crosses).
 #ifndef vtkShadowEmbreeScene_h
 #define vtkShadowEmbreeScene_h
 
@@ -37,6 +41,8 @@ public:
     vtkActor* Prop;
     bool Casts;
     double Matrix[16]; // data -> world, row major: where it is drawn (vtkshadow::ShadowActor)
+    // Below 1: a translucent caster (in "casters" only, never "visible").
+    double Opacity = 1.0;
   };
 
   // Per instance of the "visible" top level (its instance id).
@@ -78,6 +84,10 @@ public:
   const double* GetCentre() const { return this->Centre; }
   const Instance& GetInstance(unsigned int id) const { return this->Instances[id]; }
   bool IsEmpty() const { return this->Instances.empty(); }
+  // The opacity of each instance of the "casters" top level, by instance id
+  // (1 for an opaque caster), and whether any is below 1.
+  const std::vector<float>& GetCasterOpacity() const { return this->CasterOpacity; }
+  bool HasTranslucentCasters() const { return this->TranslucentCasters; }
 
   // Counters since creation.
   int GetMeshBuilds() const { return this->MeshBuilds; }
@@ -100,6 +110,8 @@ private:
   RTCScene Casters = nullptr;
   std::map<vtkActor*, std::unique_ptr<Mesh>> Meshes;
   std::vector<Instance> Instances;
+  std::vector<float> CasterOpacity;
+  bool TranslucentCasters = false;
   std::vector<double> Placement;
   double Centre[3] = { 0, 0, 0 };
   int MeshBuilds = 0;

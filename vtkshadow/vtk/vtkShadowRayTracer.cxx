@@ -2,6 +2,7 @@
 
 #include "vsh_rt_adaptive.h"
 #include "vsh_rt_weight.h"
+#include "vsh_transmit.h"
 #include "vtkShadowEmbreeScene.h"
 
 #include <algorithm>
@@ -14,6 +15,68 @@
 namespace
 {
 constexpr int TileSize = 64;
+
+// One shadow ray's query through translucent casters: the context filter
+// (Transmit) sees every hit of the ray in the "casters" top level, in no
+// particular order. A translucent one multiplies the transmittance by its
+// crossing's (vsh_transmit_accumulate, grey: no filter colour yet) and is
+// ignored, so the traversal goes on; an opaque one is kept and ends the
+// ray (transmittance 0). A triangle reported twice counts once.
+struct TransmitContext
+{
+  RTCIntersectContext Base; // first: Embree hands the filter this pointer
+  const float* Opacity;     // per caster instance id
+  unsigned int Count;
+  double Transmittance;
+  static constexpr int MaxSeen = 64;
+  unsigned int Seen[MaxSeen][2]; // (instance, primitive) already crossed
+  int SeenCount;
+};
+
+void Transmit(const RTCFilterFunctionNArguments* args)
+{
+  auto* context = reinterpret_cast<TransmitContext*>(args->context);
+  for (unsigned int i = 0; i < args->N; ++i)
+  {
+    if (args->valid[i] == 0)
+    {
+      continue;
+    }
+    const unsigned int instance = RTCHitN_instID(args->hit, args->N, i, 0);
+    const unsigned int primitive = RTCHitN_primID(args->hit, args->N, i);
+    const double opacity = instance < context->Count ? context->Opacity[instance] : 1.0;
+    if (!vsh_transmit_passes(opacity))
+    {
+      context->Transmittance = 0.0; // opaque: the hit stands, the ray stops
+      continue;
+    }
+    bool seen = false;
+    for (int k = 0; k < context->SeenCount && !seen; ++k)
+    {
+      seen = context->Seen[k][0] == instance && context->Seen[k][1] == primitive;
+    }
+    if (!seen)
+    {
+      if (context->SeenCount < TransmitContext::MaxSeen)
+      {
+        context->Seen[context->SeenCount][0] = instance;
+        context->Seen[context->SeenCount][1] = primitive;
+        ++context->SeenCount;
+      }
+      const double white[3] = { 1.0, 1.0, 1.0 };
+      double t[3] = { context->Transmittance, context->Transmittance, context->Transmittance };
+      vsh_transmit_accumulate(white, opacity, 0.0, t);
+      context->Transmittance = t[0];
+    }
+    // Below what an 8-bit mask channel holds: the ray counts as blocked.
+    if (context->Transmittance < 1.0 / 1024)
+    {
+      context->Transmittance = 0.0;
+      continue;
+    }
+    args->valid[i] = 0;
+  }
+}
 
 // A pixel's surface point in the top levels' frame (relative to the centre).
 struct Surface
@@ -305,7 +368,7 @@ void Worker::Queue(const Surface& s, int surface)
       continue;
     }
     (void)surface;
-    this->Pairs.push_back({ s, static_cast<int>(l), rotation, { 0.0, 0.0, 0, 0 } });
+    this->Pairs.push_back({ s, static_cast<int>(l), rotation, { 0.0, 0.0, 0, 0, 0, 0.0 } });
     const int pair = static_cast<int>(this->Pairs.size()) - 1;
     this->Push(pair, 0, f.First.empty() ? f.Samples[l] : f.First[l]);
   }
@@ -410,11 +473,36 @@ void Worker::Occlude()
   {
     return;
   }
+  this->Count.ShadowRays += static_cast<long long>(this->Rays.size());
+  if (this->Scene->HasTranslucentCasters())
+  {
+    // One ray at a time, each with its own transmittance (the context
+    // filter's; a stream query's filter may see rays of a packet mixed).
+    const std::vector<float>& opacity = this->Scene->GetCasterOpacity();
+    for (size_t r = 0; r < this->Rays.size(); ++r)
+    {
+      TransmitContext context;
+      rtcInitIntersectContext(&context.Base);
+      context.Base.filter = &Transmit;
+      context.Opacity = opacity.data();
+      context.Count = static_cast<unsigned int>(opacity.size());
+      context.Transmittance = 1.0;
+      context.SeenCount = 0;
+      RTCRay& ray = this->Rays[r];
+      rtcOccluded1(this->Scene->GetCasters(), &context.Base, &ray);
+      Pair& q = this->Pairs[this->RayPair[r]];
+      const double dir[3] = { ray.dir_x, ray.dir_y, ray.dir_z };
+      ++this->Count.LightRays[q.Light];
+      vsh_rt_visibility_add_transmitted(&q.Vis,
+        vsh_rt_sample_weight(q.S.HasNormal ? q.S.Normal : nullptr, dir),
+        ray.tfar < 0.0f ? 0.0 : context.Transmittance);
+    }
+    return;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rtcOccluded1M(this->Scene->GetCasters(), &context, this->Rays.data(),
     static_cast<unsigned int>(this->Rays.size()), sizeof(RTCRay));
-  this->Count.ShadowRays += static_cast<long long>(this->Rays.size());
   for (size_t r = 0; r < this->Rays.size(); ++r)
   {
     Pair& q = this->Pairs[this->RayPair[r]];
@@ -450,8 +538,11 @@ void Worker::Resolve(bool first)
     ++this->Count.LightPixels[q.Light];
     if (!f.First.empty() && f.First[q.Light] < f.Samples[q.Light])
     {
-      (*this->States)[q.Light][pixel] =
-        static_cast<unsigned char>(vsh_rt_adaptive_state(q.Vis.traced, q.Vis.blocked));
+      // A batch with partial rays (through translucent casters) is MIXED:
+      // its pixel and neighbours trace every sample.
+      (*this->States)[q.Light][pixel] = static_cast<unsigned char>(q.Vis.partial > 0
+          ? VSH_RT_BATCH_MIXED
+          : vsh_rt_adaptive_state(q.Vis.traced, q.Vis.blocked));
       if (q.Vis.traced == f.First[q.Light])
       {
         this->Pending.push_back(q);
