@@ -84,8 +84,8 @@ def read_data(path):
         pos += size
         return a
 
-    if take("<8s")[0] != b"VSHCYC03":
-        fail("%s: not a vtkshadow Cycles data file (version 03)" % path)
+    if take("<8s")[0] != b"VSHCYC04":
+        fail("%s: not a vtkshadow Cycles data file (version 04)" % path)
     width, height, samples, seed, centre, nlights, nobjects = take("<7i")
     camera = take("<10d")
     clip = take("<2d")
@@ -97,10 +97,13 @@ def read_data(path):
     for _ in range(nobjects):
         npts, ntri, casts = take("<3i")
         colour = take("<4d")
+        opacity, filt = take("<2d")
+        if not (0.0 <= opacity <= 1.0 and 0.0 <= filt <= 1.0):
+            fail("%s: bad opacity %r or filter %r" % (path, opacity, filt))
         pts = take_array("d", 3 * npts)
         nrm = take_array("d", 3 * npts)
         tri = take_array("i", 3 * ntri)
-        objects.append((npts, ntri, casts, pts, nrm, tri, colour))
+        objects.append((npts, ntri, casts, pts, nrm, tri, colour, (opacity, filt)))
     if pos != len(data):
         fail("%s: trailing bytes" % path)
     return width, height, (samples, seed, centre), camera, clip, lights, objects
@@ -158,7 +161,10 @@ def setup_cycles(scene, sampling):
     cyc.glossy_bounces = 0
     cyc.transmission_bounces = 0
     cyc.volume_bounces = 0
-    cyc.transparent_max_bounces = 0
+    # Shadow rays pass through translucent objects (their Transparent BSDF):
+    # 64 crossings, far more than any scene's nested shells. Opaque scenes
+    # have no Transparent BSDF, so this changes nothing for them.
+    cyc.transparent_max_bounces = 64
     cyc.caustics_reflective = False
     cyc.caustics_refractive = False
     cyc.light_sampling_threshold = 0.0
@@ -196,7 +202,7 @@ def visible_depth(camera, clip, objects):
     eye = Vector(camera[0:3])
     f = (Vector(camera[3:6]) - eye).normalized()
     near, far = clip[1], clip[0]
-    for (npts, _ntri, _casts, pts, _nrm, _tri, _colour) in objects:
+    for (npts, _ntri, _casts, pts, _nrm, _tri, _colour, _translucency) in objects:
         for i in range(npts):
             d = (pts[3 * i] - eye.x) * f.x + (pts[3 * i + 1] - eye.y) * f.y + (pts[3 * i + 2] - eye.z) * f.z
             if d > clip[0]:
@@ -210,7 +216,7 @@ def visible_depth(camera, clip, objects):
 def farthest_point(position, objects):
     p = Vector(position)
     best = 0.0
-    for (npts, _ntri, _casts, pts, _nrm, _tri, _colour) in objects:
+    for (npts, _ntri, _casts, pts, _nrm, _tri, _colour, _translucency) in objects:
         for i in range(npts):
             best = max(best, (Vector(pts[3 * i:3 * i + 3]) - p).length)
     return best
@@ -259,6 +265,34 @@ def colour_light(ldata, ltype):
     falloff = nodes.new("ShaderNodeLightFalloff")
     falloff.inputs["Strength"].default_value = 1.0
     ldata.node_tree.links.new(falloff.outputs["Constant"], emission.inputs["Strength"])
+
+
+def make_translucent_material(name, colour, translucency):
+    """A translucent object (docs/translucency.md): a shadow ray crossing
+    it keeps (1 - a) ((1 - f) + f c) of the light, POV-Ray's rgbft. The
+    Transparent BSDF's colour is (1 - f) + f c, its weight in the mix
+    1 - a; the rest is Lambertian in the object's colour (the camera does
+    not see it in the visibility renders)."""
+    (r, g, b, _) = colour
+    opacity, filt = translucency
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nodes = mat.node_tree.nodes
+    nodes.clear()
+    links = mat.node_tree.links
+    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Color"].default_value = (r, g, b, 1.0)
+    diffuse.inputs["Roughness"].default_value = 0.0
+    clear = nodes.new("ShaderNodeBsdfTransparent")
+    clear.inputs["Color"].default_value = tuple((1.0 - filt) + filt * c for c in (r, g, b)) + (1.0,)
+    mix = nodes.new("ShaderNodeMixShader")
+    mix.inputs["Fac"].default_value = 1.0 - opacity
+    links.new(diffuse.outputs["BSDF"], mix.inputs[1])
+    links.new(clear.outputs["BSDF"], mix.inputs[2])
+    out = nodes.new("ShaderNodeOutputMaterial")
+    links.new(mix.outputs["Shader"], out.inputs["Surface"])
+    mat.blend_method = "BLEND"  # EEVEE draws it see-through as well
+    return mat
 
 
 def make_material(name, preset, casts):
@@ -476,7 +510,7 @@ def setup_output(scene, width, height):
 def add_mesh(scene, index, obj_data, preset, colour, materials):
     """One object of the data file as a Blender mesh object, with the
     loader's normals and its material."""
-    (npts, ntri, casts, pts, nrm, tri, rgbm) = obj_data
+    (npts, ntri, casts, pts, nrm, tri, rgbm, translucency) = obj_data
     mesh = bpy.data.meshes.new("m%d" % index)
     mesh.vertices.add(npts)
     mesh.vertices.foreach_set("co", array("f", pts))
@@ -492,7 +526,10 @@ def add_mesh(scene, index, obj_data, preset, colour, materials):
     mesh.use_auto_smooth = True
     mesh.normals_split_custom_set_from_vertices(
         [tuple(nrm[3 * i:3 * i + 3]) for i in range(npts)])
-    if colour:
+    translucent = translucency[0] < 1.0
+    if translucent:
+        mesh.materials.append(make_translucent_material("t%d" % index, rgbm, translucency))
+    elif colour:
         mesh.materials.append(make_colour_material("c%d" % index, rgbm))
     else:
         if bool(casts) not in materials:
@@ -500,6 +537,9 @@ def add_mesh(scene, index, obj_data, preset, colour, materials):
         mesh.materials.append(materials[bool(casts)])
     obj = bpy.data.objects.new("o%d" % index, mesh)
     obj.visible_shadow = bool(casts)
+    # The visibility renders measure the opaque surface behind a translucent
+    # object (POV-Ray's no_image; vtkShadowScene draws it black).
+    obj.visible_camera = not (translucent and not colour)
     # No shadow-terminator tricks: shadow rays start on the true triangle.
     # (Blender 3.4 keeps these on the object's Cycles settings.)
     for holder in (obj, obj.cycles):

@@ -174,6 +174,28 @@ void PovMesh(std::string& o, const ExportObject& ob, const std::string& tail)
   o += " }\n" + tail + "}\n";
 }
 
+// A translucent object in the visibility renders: rgbft, so each crossing
+// of a shadow ray lets (1 - a) ((1 - f) + f c) through (POV-Ray's filter f
+// (1 - a), transmit (1 - f) (1 - a): docs/translucency.md), and no_image:
+// the camera sees the opaque surface behind it, whose visibility is the
+// measure (vtkShadowScene draws the object black for the same reason).
+std::string PovTranslucentTexture(const ExportObject& ob)
+{
+  const double clear = 1.0 - ob.opacity;
+  const double rgbft[5] = { ob.color[0], ob.color[1], ob.color[2], ob.filter * clear,
+    (1.0 - ob.filter) * clear };
+  std::string t = " texture { pigment { rgbft <";
+  for (int i = 0; i < 5; ++i)
+  {
+    if (i)
+      t += ",";
+    Num(t, rgbft[i]);
+  }
+  return t +
+    "> } finish { ambient 0 emission 0 diffuse 1 specular 0 phong 0 reflection 0 } }\n"
+    " no_image\n";
+}
+
 const char* const kPovHeader =
   "// Written by vtkshadow-compare: numbers only, nothing from the scene file's text.\n"
   "#version 3.7;\n";
@@ -201,7 +223,7 @@ std::string PovScene(const ExportScene& s, int grid, int seed)
        "brilliance 1 specular 0 phong 0 reflection 0 } }\n";
   for (const ExportObject& ob : s.objects)
     PovMesh(o, ob,
-      std::string(" texture { VSH_T }\n") +
+      (ob.opacity < 1 ? PovTranslucentTexture(ob) : std::string(" texture { VSH_T }\n")) +
         (ob.casts ? " #if (VSH_SHADOWS = 0) no_shadow #end\n" : " no_shadow\n"));
   return o;
 }
@@ -243,9 +265,9 @@ std::string CyclesData(const ExportScene& s, int samples, int soft_samples, int 
   const int centre = samples == 1 ? 1 : 0;
   if (centre && HasSoftLight(s))
     samples = soft_samples;
-  // Version 03: 02 of the soft lights (seed, pixel centre, a size per light)
-  // and 02 of the mirrors (a colour and reflectance per object) together.
-  o.append("VSHCYC03", 8);
+  // Version 04: 03 (soft lights' seed, pixel centre and size; a colour and
+  // reflectance per object) with each object's opacity and filter.
+  o.append("VSHCYC04", 8);
   Put<int32_t>(o, s.width);
   Put<int32_t>(o, s.height);
   Put<int32_t>(o, samples);
@@ -288,6 +310,8 @@ std::string CyclesData(const ExportScene& s, int samples, int soft_samples, int 
     for (int i = 0; i < 3; ++i)
       Put<double>(o, ob.color[i]);
     Put<double>(o, ob.mirror);
+    Put<double>(o, ob.opacity);
+    Put<double>(o, ob.filter);
     for (double v : ob.points)
       Put<double>(o, v);
     for (double v : ob.normals)

@@ -23,6 +23,8 @@ struct ExportObject
   bool casts = true;
   double color[3] = { 1, 1, 1 }; // linear RGB: only the colour renders use it
   double mirror = 0;             // reflectance R of a planar mirror, 0 = none
+  double opacity = 1;            // each crossing lets (1 - opacity) through
+  double filter = 0;             // of that, the fraction tinted by `color`
 };
 
 struct ExportLight

@@ -156,6 +156,8 @@ bool BuildExport(vtkShadowScene* vs, const vsh_scene* s, int w, int h, ExportSce
     eo.casts = vs->GetObjectCasts(o);
     vs->GetObjectColor(o, eo.color);
     eo.mirror = vs->GetObjectMirror(o);
+    eo.opacity = vs->GetObjectOpacity(o);
+    eo.filter = vs->GetObjectFilter(o);
     ex.has_mirror = ex.has_mirror || eo.mirror > 0;
     ExportPolyData(pd, ex, eo, lo, hi);
     if (!eo.triangles.empty())

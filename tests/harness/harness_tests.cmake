@@ -25,7 +25,9 @@ endif()
 
 set(_harness_src ${CMAKE_CURRENT_LIST_DIR})
 set(_library_out ${VTKSHADOW_TEST_OUT}/harness/library)
-foreach(group basic scivis cad hard mirror soft)
+# The scene groups of scripts/library-run.sh.
+set(_library_groups basic scivis cad hard mirror soft translucent)
+foreach(group ${_library_groups})
   add_test(NAME harness.library.${group}
     COMMAND ${CMAKE_COMMAND} -E env VTKSHADOW_BIN=${VTKSHADOW_BIN}
             VTKSHADOW_DISPLAY_FILE=${CMAKE_BINARY_DIR}/xvfb/display
@@ -39,7 +41,7 @@ endforeach()
 # by a hard shadow on every soft row (scenes/update_thresholds.py --verify).
 set(_library_results)
 set(_library_tests)
-foreach(group basic scivis cad hard mirror soft)
+foreach(group ${_library_groups})
   list(APPEND _library_results ${_library_out}/${group}/results.json)
   list(APPEND _library_tests harness.library.${group})
 endforeach()
@@ -60,13 +62,15 @@ set_tests_properties(harness.controls PROPERTIES TIMEOUT 300 LABELS "harness"
   FIXTURES_REQUIRED xvfb)
 
 # The shipped references against a fresh render (a sample: a scene with a
-# directional, a point and a spot light, and one with lights with a size),
+# directional, a point and a spot light, one with lights with a size, and one
+# with nested translucent shells),
 # and their faults.
 add_test(NAME harness.references_fresh
   COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_references.py fresh --bin ${VTKSHADOW_BIN}
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/references_fresh
           ${PROJECT_SOURCE_DIR}/scenes/basic/sphere-plane.json
-          ${PROJECT_SOURCE_DIR}/scenes/soft/sphere-disk.json)
+          ${PROJECT_SOURCE_DIR}/scenes/soft/sphere-disk.json
+          ${PROJECT_SOURCE_DIR}/scenes/translucent/nested-shells.json)
 set_tests_properties(harness.references_fresh PROPERTIES TIMEOUT 900 LABELS "harness")
 add_test(NAME harness.references_faults
   COMMAND ${VTKSHADOW_PY} ${_harness_src}/test_references.py faults --bin ${VTKSHADOW_BIN}

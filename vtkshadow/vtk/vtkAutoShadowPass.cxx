@@ -243,9 +243,18 @@ void vtkAutoShadowPass::GatherObjects(const vtkshadow::ShadowFrame& frame)
   vtkshadow::ReceiverPlaneCache& planes = this->PlanarPass->GetReceiverPlaneCache();
   Internals& impl = *this->Impl;
   impl.Objects.clear();
-  impl.Actors = frame.Drawn;
   // The receivers the planar pass will use: marked, or else detected.
-  const vtkshadow::ReceiverChoice receivers = this->PlanarPass->ChooseReceivers(impl.Actors);
+  const vtkshadow::ReceiverChoice receivers = this->PlanarPass->ChooseReceivers(frame.Drawn);
+  // Translucent actors cast partial shadows under every technique
+  // (docs/translucency.md), so they are casters here like opaque ones: the
+  // models weigh their outlines and thin parts, and a scene whose only
+  // caster is translucent still has something that casts. They are never
+  // planar receivers.
+  impl.Actors = frame.Drawn;
+  for (const vtkshadow::ShadowActor& translucent : vtkshadow::TranslucentShadowActors(renderer))
+  {
+    impl.Actors.push_back(translucent);
+  }
   impl.Detected.clear();
   for (const vtkshadow::ShadowActor& receiver : receivers.Receivers)
   {

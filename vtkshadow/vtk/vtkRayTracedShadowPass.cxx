@@ -39,8 +39,27 @@ struct vtkRayTracedShadowPass::Internals
   struct World
   {
     vtkShadowScreenMask Mask;
+    // The translucent layer: translucent surfaces' own visibility, traced
+    // from their depth where they are the nearest surface.
+    vtkShadowScreenMask Translucent;
     std::vector<double> LastKey;
     bool HaveMask = false;
+
+    World() { this->Translucent.SetTranslucentSurfaces(true); }
+    // The mask `prop`'s fragments read.
+    vtkShadowScreenMask& For(vtkProp* prop)
+    {
+      return this->Translucent.ReadBy(prop) ? this->Translucent : this->Mask;
+    }
+    long long GetMemoryBytes() const
+    {
+      return this->Mask.GetMemoryBytes() + this->Translucent.GetMemoryBytes();
+    }
+    void ReleaseGraphicsResources(vtkWindow* w)
+    {
+      this->Mask.ReleaseGraphicsResources(w);
+      this->Translucent.ReleaseGraphicsResources(w);
+    }
   };
   std::map<int, std::unique_ptr<World>> Worlds;
   World* W = nullptr;        // the world being drawn
@@ -55,6 +74,11 @@ struct vtkRayTracedShadowPass::Internals
   static constexpr double DefaultPenumbra = 0.25;
   std::vector<float> Depth;
   std::vector<std::vector<float>> Visibility;
+  // The translucent layer's depth (1 where the opaque surface is nearest)
+  // and visibility, when the renderer draws translucent props.
+  std::vector<float> TranslucentDepth;
+  std::vector<std::vector<float>> TranslucentVisibility;
+  bool TracedTranslucent = false;
   bool Still = false;
   vtkShadowRayTracer::Counters Counters;
   vtkShadowRayTracer::Counters LastTraced; // the last frame that traced, for its rays per pixel
@@ -65,6 +89,53 @@ struct vtkRayTracedShadowPass::Internals
   {
     vsh_rt_cost_model_default(&this->Cost);
     this->Select(0);
+  }
+
+  // Translucent surfaces receive on their own fragments: the nearest
+  // surface's depth, translucent ones included, traced where it is nearer
+  // than the opaque depth (elsewhere no translucent fragment passes the
+  // depth test, so those pixels are left out as background). The rays
+  // start on the translucent surface, offset towards the camera as for a
+  // depth point, so the surface does not shadow its own point. False when
+  // the layer's depth pass fails (W->Translucent.GetError()).
+  bool TraceTranslucentLayer(
+    const vtkRenderState* s, int lightCount, vtkShadowRayTracer::Frame& rays, int threads)
+  {
+    this->TracedTranslucent = false;
+    if (!vtkShadowScreenMask::HasTranslucentProps(s))
+    {
+      return true;
+    }
+    if (!this->W->Translucent.RenderDepth(s, lightCount))
+    {
+      return false;
+    }
+    this->W->Translucent.ReadDepth(this->TranslucentDepth);
+    if (this->TranslucentDepth.size() != this->Depth.size() || rays.Lights.empty())
+    {
+      return true;
+    }
+    bool any = false;
+    for (size_t p = 0; p < this->Depth.size(); ++p)
+    {
+      if (this->TranslucentDepth[p] >= this->Depth[p])
+      {
+        this->TranslucentDepth[p] = 1.0f;
+      }
+      any = any || this->TranslucentDepth[p] < 1.0f;
+    }
+    if (!any)
+    {
+      return true;
+    }
+    vtkShadowRayTracer::Counters counters;
+    rays.Depth = this->TranslucentDepth.data();
+    vtkShadowRayTracer::Trace(this->Scene, rays, threads, this->TranslucentVisibility, counters);
+    rays.Depth = this->Depth.data();
+    this->Counters.PrimaryRays += counters.PrimaryRays;
+    this->Counters.ShadowRays += counters.ShadowRays;
+    this->TracedTranslucent = true;
+    return true;
   }
 
   // Fold the last frame's penumbra fraction of adaptive lights into Penumbra.
@@ -180,7 +251,9 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
     return;
   }
   impl.W->Mask.Activate();
+  impl.W->Translucent.Activate();
   this->RenderDelegateWithShaderHooks(s);
+  impl.W->Translucent.Deactivate();
   impl.W->Mask.Deactivate();
 }
 
@@ -310,6 +383,11 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, Frame& frame)
   }
   vtkShadowRayTracer::Trace(impl.Scene, rays, threads, impl.Visibility, impl.Counters);
   impl.LightsTraced = static_cast<int>(frame.Lights.size());
+  if (!impl.TraceTranslucentLayer(s, frame.LightCount, rays, threads))
+  {
+    vtkErrorMacro("ray-traced shadows (translucent layer): " << impl.W->Translucent.GetError());
+    return false;
+  }
   const double traced = double(impl.Counters.PrimaryRays + impl.Counters.ShadowRays);
   this->NumberOfRaysTraced = static_cast<vtkIdType>(traced);
   vsh_rt_cost_model_observe(&impl.Cost, traced, impl.Counters.Seconds, impl.Counters.Threads);
@@ -325,8 +403,13 @@ void vtkRayTracedShadowPass::Upload(const Frame& frame)
   for (int l = 0; l < impl.LightsTraced; ++l)
   {
     impl.W->Mask.UploadLight(frame.Channels[l], impl.Visibility[l].data());
+    if (impl.TracedTranslucent)
+    {
+      impl.W->Translucent.UploadLight(frame.Channels[l], impl.TranslucentVisibility[l].data());
+    }
   }
   impl.W->Mask.FinishUploads();
+  impl.W->Translucent.FinishUploads();
 }
 
 //------------------------------------------------------------------------------
@@ -383,7 +466,7 @@ long long vtkRayTracedShadowPass::GetMemoryBytes() const
   long long bytes = 0;
   for (const auto& world : this->Impl->Worlds)
   {
-    bytes += world.second->Mask.GetMemoryBytes();
+    bytes += world.second->GetMemoryBytes();
   }
   return bytes;
 }
@@ -394,7 +477,7 @@ long long vtkRayTracedShadowPass::GetWorldsMemoryBytes() const
   long long bytes = 0;
   for (const auto& world : this->Impl->Worlds)
   {
-    bytes += world.first != 0 ? world.second->Mask.GetMemoryBytes() : 0;
+    bytes += world.first != 0 ? world.second->GetMemoryBytes() : 0;
   }
   return bytes;
 }
@@ -408,7 +491,7 @@ void vtkRayTracedShadowPass::ReleaseWorlds(vtkWindow* w, int first)
   {
     if (it->first >= first)
     {
-      it->second->Mask.ReleaseGraphicsResources(w);
+      it->second->ReleaseGraphicsResources(w);
       it = impl.Worlds.erase(it);
     }
     else
@@ -515,7 +598,7 @@ void vtkRayTracedShadowPass::ReleaseGraphicsResources(vtkWindow* w)
   // The masks' textures are gone: the next frame traces again.
   for (auto& world : this->Impl->Worlds)
   {
-    world.second->Mask.ReleaseGraphicsResources(w);
+    world.second->ReleaseGraphicsResources(w);
     world.second->HaveMask = false;
     world.second->LastKey.clear();
   }
@@ -526,21 +609,21 @@ void vtkRayTracedShadowPass::ReleaseGraphicsResources(vtkWindow* w)
 bool vtkRayTracedShadowPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
-  return this->Impl->W->Mask.PreReplaceShaderValues(fragmentShader, prop);
+  return this->Impl->W->For(prop).PreReplaceShaderValues(fragmentShader, prop);
 }
 
 //------------------------------------------------------------------------------
 bool vtkRayTracedShadowPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
-  return this->Impl->W->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
+  return this->Impl->W->For(prop).PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
 }
 
 //------------------------------------------------------------------------------
 bool vtkRayTracedShadowPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  this->Impl->W->Mask.SetShaderParameters(program);
+  this->Impl->W->For(prop).SetShaderParameters(program);
   return true;
 }
 

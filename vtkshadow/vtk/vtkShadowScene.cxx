@@ -606,6 +606,22 @@ void vtkShadowScene::GetObjectColor(int object, double color[3]) const
 }
 
 //------------------------------------------------------------------------------
+double vtkShadowScene::GetObjectOpacity(int object) const
+{
+  return object >= 0 && object < this->GetNumberOfObjects()
+    ? this->Impl->Scene->objects[object].opacity
+    : 1.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkShadowScene::GetObjectFilter(int object) const
+{
+  return object >= 0 && object < this->GetNumberOfObjects()
+    ? this->Impl->Scene->objects[object].filter
+    : 0.0;
+}
+
+//------------------------------------------------------------------------------
 const char* vtkShadowScene::GetObjectKindName(int object) const
 {
   if (object < 0 || object >= this->GetNumberOfObjects())
@@ -711,11 +727,17 @@ bool vtkShadowScene::PopulateWith(vtkRenderer* renderer, int mode, int onlyLight
     actor->SetMapper(mapper);
     vtkProperty* p = actor->GetProperty();
     p->SetInterpolationToPhong();
+    p->SetOpacity(this->GetObjectOpacity(i));
     if (lambertian)
     {
+      // A translucent object adds nothing of its own to the visibility
+      // renders, only the (1 - opacity) blend factor that cancels in
+      // I_on / I_off: the measure stays that of the opaque surface behind
+      // it, as in the references, where the camera does not see it.
+      const bool translucent = this->GetObjectOpacity(i) < 1.0;
       p->SetColor(1.0, 1.0, 1.0);
       p->SetAmbient(0.0);
-      p->SetDiffuse(1.0);
+      p->SetDiffuse(translucent ? 0.0 : 1.0);
       p->SetSpecular(0.0);
     }
     else

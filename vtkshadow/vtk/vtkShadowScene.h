@@ -114,6 +114,15 @@ public:
   bool GetObjectIsReceiver(int object) const;
   bool GetObjectCasts(int object) const;
   void GetObjectColor(int object, double color[3]) const;
+
+  /**
+   * The object's "opacity" (1 opaque) and "filter" (0 grey) of the scene
+   * format: each crossing of a ray to a light lets (1 - opacity) through,
+   * the filter fraction of it tinted by the colour (docs/translucency.md).
+   * Populate() gives the actor the opacity.
+   */
+  double GetObjectOpacity(int object) const;
+  double GetObjectFilter(int object) const;
   const char* GetObjectKindName(int object) const;
 
   /**
@@ -128,7 +137,10 @@ public:
 
   /**
    * Add one actor per object (colour from the scene, or white Lambertian when
-   * `lambertian` is true: diffuse 1, no ambient, no specular), the scene's
+   * `lambertian` is true: diffuse 1, no ambient, no specular; a translucent
+   * object is black there, so that what it adds to a pixel is the same
+   * (1 - opacity) factor with and without shadows and I_on / I_off is the
+   * visibility of the opaque surface behind it), the scene's
    * lights (all, or only `onlyLight` when it is >= 0), and the camera. The
    * renderer's automatic headlight is switched off. Returns false when
    * `onlyLight` is out of range.

@@ -1,8 +1,12 @@
 #include "vtkShadowScreenMask.h"
 
 #include "vtkActor.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkLightsPass.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
+#include "vtkOpenGLActor.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -20,6 +24,7 @@
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowPassBase.h"
 #include "vtkTextureObject.h"
+#include "vtkTranslucentPass.h"
 #include "vtk_glew.h"
 
 #include "vsh_soft_adaptive.h"
@@ -31,10 +36,63 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace
 {
 constexpr int LayerCount = 2;
+
+// The translucent layer's depth: translucent geometry drawn with depth
+// writes (VTK turns them off for translucent actors; GLDepthMaskOverride
+// turns them back on), so the depth holds the nearest surface of all.
+// Each actor's property keys are given back as they were.
+class TranslucentDepthPass : public vtkTranslucentPass
+{
+public:
+  static TranslucentDepthPass* New();
+  vtkTypeMacro(TranslucentDepthPass, vtkTranslucentPass);
+  void Render(const vtkRenderState* s) override
+  {
+    std::vector<std::pair<vtkActor*, int>> restore; // -1: the key was absent
+    for (int i = 0; i < s->GetPropArrayCount(); ++i)
+    {
+      vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+      if (!actor || !actor->HasTranslucentPolygonalGeometry())
+      {
+        continue;
+      }
+      vtkInformation* keys = actor->GetPropertyKeys();
+      if (!keys)
+      {
+        vtkNew<vtkInformation> fresh;
+        actor->SetPropertyKeys(fresh);
+        keys = fresh;
+      }
+      vtkInformationIntegerKey* key = vtkOpenGLActor::GLDepthMaskOverride();
+      restore.emplace_back(actor, keys->Has(key) ? keys->Get(key) : -1);
+      keys->Set(vtkOpenGLActor::GLDepthMaskOverride(), 1);
+    }
+    this->Superclass::Render(s);
+    for (const auto& r : restore)
+    {
+      vtkInformation* keys = r.first->GetPropertyKeys();
+      if (r.second < 0)
+      {
+        keys->Remove(vtkOpenGLActor::GLDepthMaskOverride());
+      }
+      else
+      {
+        keys->Set(vtkOpenGLActor::GLDepthMaskOverride(), r.second);
+      }
+    }
+  }
+
+protected:
+  TranslucentDepthPass() = default;
+  ~TranslucentDepthPass() override = default;
+};
+vtkStandardNewMacro(TranslucentDepthPass);
 
 int LayerOf(int light)
 {
@@ -169,6 +227,11 @@ bool vtkShadowScreenMask::RenderDepth(const vtkRenderState* s, int lightCount)
     vtkNew<vtkOpaquePass> opaque;
     passes->AddItem(lights);
     passes->AddItem(opaque);
+    if (this->TranslucentSurfaces)
+    {
+      vtkNew<TranslucentDepthPass> translucent;
+      passes->AddItem(translucent);
+    }
     impl.DepthScene = vtkSmartPointer<vtkSequencePass>::New();
     impl.DepthScene->SetPasses(passes);
   }
@@ -473,11 +536,34 @@ void vtkShadowScreenMask::FinishUploads()
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowScreenMask::ReadBy(vtkProp* prop) const
+{
+  const bool translucent =
+    prop && prop->HasTranslucentPolygonalGeometry() && !prop->HasOpaqueGeometry();
+  return translucent == this->TranslucentSurfaces;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowScreenMask::HasTranslucentProps(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 bool vtkShadowScreenMask::PreReplaceShaderValues(std::string& fragmentShader, vtkProp* prop)
 {
-  // Translucent surfaces are not in the depth pass: the mask describes
-  // whatever opaque surface lies behind them, so they keep VTK's shader.
-  if (prop && prop->HasTranslucentPolygonalGeometry() && !prop->HasOpaqueGeometry())
+  // Translucent surfaces are not in the opaque depth pass: that mask
+  // describes whatever opaque surface lies behind them, so they read the
+  // translucent layer's mask (or keep VTK's shader where there is none).
+  if (!this->ReadBy(prop))
   {
     return true;
   }

@@ -21,6 +21,12 @@
 // depth pass, so the mask says nothing about them); actors with lighting off
 // have no light terms to multiply. Lights past MaxLights stay unshadowed and
 // GetLightCount() says how many are covered.
+//
+// A second mask with SetTranslucentSurfaces(true) is the translucent layer:
+// its depth is the nearest surface, translucent ones included, and only
+// translucent actors read it. An owner computes it exactly as the opaque
+// one (so translucent surfaces receive shadows on their own fragments) and
+// forwards each prop's hooks to the mask of its kind (ReadBy).
 #ifndef vtkShadowScreenMask_h
 #define vtkShadowScreenMask_h
 
@@ -62,6 +68,27 @@ public:
    * shaders as in the main pass instead of rebuilding them twice a frame.
    */
   bool RenderDepth(const vtkRenderState* s, int lightCount);
+
+  /**
+   * The translucent layer (default false): RenderDepth() also draws the
+   * translucent actors' depth (the nearest of all surfaces), and the shader
+   * hooks go into translucent actors instead of opaque ones. Deeper
+   * translucent layers at a pixel read the nearest one's visibility.
+   */
+  void SetTranslucentSurfaces(bool translucent) { this->TranslucentSurfaces = translucent; }
+  bool GetTranslucentSurfaces() const { return this->TranslucentSurfaces; }
+
+  /**
+   * Whether `prop` reads this mask: an opaque prop the opaque mask, a prop
+   * with only translucent geometry the translucent layer.
+   */
+  bool ReadBy(vtkProp* prop) const;
+
+  /**
+   * Whether the renderer draws a prop with translucent geometry, i.e.
+   * whether a translucent layer has anything to receive shadows.
+   */
+  static bool HasTranslucentProps(const vtkRenderState* s);
 
   /**
    * Bind the mask's framebuffer (depth, stencil and the light's texture as
@@ -182,6 +209,7 @@ private:
   int Size[2] = { 0, 0 };
   int Origin[2] = { 0, 0 };
   int LightCount = 0;
+  bool TranslucentSurfaces = false;
   vtkIdType HookedShaders = 0;
   std::string Error;
 };
