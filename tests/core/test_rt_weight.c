@@ -148,6 +148,42 @@ static void test_transmitted(void)
   CHECK_NEAR(vsh_rt_visibility_value(&v), 1.0 / 3.0, 1e-15);
 }
 
+/* Coloured rays (a filter tints what gets through): the scalar counts each
+ * ray by its largest channel and the tint gives each channel back:
+ * (0.5, 0.25, 0.1) and a free ray of equal weight give 0.75 and tint
+ * (1, 0.625/0.75, 0.55/0.75); grey rays tint (1, 1, 1); a ray free in red
+ * only is partial; NaN channels count 0; nothing through tints 1. */
+static void test_coloured(void)
+{
+  vsh_rt_visibility v;
+  memset(&v, 0, sizeof v);
+  const double red[3] = { 0.5, 0.25, 0.1 }, clear[3] = { 1, 1, 1 };
+  double tint[3];
+  vsh_rt_visibility_add_coloured(&v, 1.0, red);
+  vsh_rt_visibility_add_coloured(&v, 1.0, clear);
+  CHECK_NEAR(vsh_rt_visibility_value(&v), 0.75, 1e-15);
+  vsh_rt_visibility_tint(&v, tint);
+  CHECK_NEAR(tint[0], 1.0, 1e-15);
+  CHECK_NEAR(tint[1], 0.625 / 0.75, 1e-15);
+  CHECK_NEAR(tint[2], 0.55 / 0.75, 1e-15);
+  CHECK_NEAR(vsh_rt_visibility_value(&v) * tint[1], 0.625, 1e-15);
+  memset(&v, 0, sizeof v);
+  vsh_rt_visibility_add_transmitted(&v, 1.0, 0.36);
+  vsh_rt_visibility_tint(&v, tint);
+  CHECK(tint[0] == 1.0 && tint[1] == 1.0 && tint[2] == 1.0);
+  memset(&v, 0, sizeof v);
+  const double only_red[3] = { 1.0, 0.0, NAN };
+  vsh_rt_visibility_add_coloured(&v, 1.0, only_red);
+  CHECK(v.partial == 1 && v.blocked == 0);
+  CHECK(vsh_rt_visibility_value(&v) == 1.0);
+  vsh_rt_visibility_tint(&v, tint);
+  CHECK(tint[0] == 1.0 && tint[1] == 0.0 && tint[2] == 0.0);
+  memset(&v, 0, sizeof v);
+  vsh_rt_visibility_add(&v, 1.0, 1);
+  vsh_rt_visibility_tint(&v, tint);
+  CHECK(tint[0] == 1.0 && tint[1] == 1.0 && tint[2] == 1.0);
+}
+
 int main(void)
 {
   test_far_light_over_plane();
@@ -156,5 +192,6 @@ int main(void)
   test_below_horizon();
   test_degenerate();
   test_transmitted();
+  test_coloured();
   return vsh_check_report("rt_weight");
 }

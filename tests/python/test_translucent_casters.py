@@ -17,6 +17,12 @@ casters' centre (inside the shadow, not behind the caster in the image):
 
 each within 0.03 (mean, min and max over the patch).
 
+Coloured: a red slab (colour (0.9, 0.2, 0.1), opacity 0.5, filter 0.6,
+vtkShadowPassBase.FILTER()) lets (1 - a) ((1 - f) + f c_k) through per
+crossing, so two crossings leave (0.2209, 0.0676, 0.0529) in red, green and
+blue: each channel's visibility within 0.03. `--grey` is for a technique
+that draws tinted shadows grey (it must then say so per light).
+
 Receiving: a translucent plate (opacity 0.5) under an opaque sphere, no
 floor (drawn by order-independent blending, and again by depth peeling). Over the black background a pixel of the plate is its own light
 times 0.5 in both renders, so I_on / I_off is the plate's visibility: 0
@@ -26,7 +32,7 @@ not. `--receives` says which the technique is to give.
 `--expect-none` is for a technique that draws no translucent shadow (VTK's
 own pass): every case reads 1 except the opaque control.
 
-Usage: test_translucent_casters.py TECHNIQUE [--receives yes|no] [--expect-none]"""
+Usage: test_translucent_casters.py TECHNIQUE [--receives yes|no] [--expect-none] [--grey]"""
 import argparse
 import os
 import sys
@@ -39,6 +45,7 @@ from checks import check, finish  # noqa: E402
 import numpy as np  # noqa: E402
 import float_render as fr  # noqa: E402
 import robust_scenes as rs  # noqa: E402
+import vtkshadow  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkCubeSource  # noqa: E402
 
 W, H = 320, 240
@@ -70,6 +77,18 @@ def slab(side, thickness, z):
 
 def plate(z):
     return rs.floor_poly(half=1.5, z=z)
+
+
+RED = (0.9, 0.2, 0.1)
+RED_FILTER = 0.6
+
+
+def red_slab_scene(renderer):
+    add(renderer, rs.floor_poly(half=5.0))
+    slab_actor = add(renderer, slab(1.6, 0.1, HEIGHT), 0.5)
+    slab_actor.GetProperty().SetColor(*RED)
+    fr.set_key(slab_actor, vtkshadow.vtkShadowPassBase.FILTER(), RED_FILTER)
+    straight_down(renderer)
 
 
 def straight_down(renderer):
@@ -110,11 +129,11 @@ def patch_pixels(renderer, z, centre=(0.0, 0.0)):
     return np.array(rows), np.array(cols)
 
 
-def render(build, technique, z, centre=(0.0, 0.0)):
+def render(build, technique, z, centre=(0.0, 0.0), rgb=False):
     """(float image, patch pixels at height z around `centre`) of `build`
     with technique (None: no shadows)."""
     return fr.render_technique(build, technique, W, H,
-                               lambda renderer, _: patch_pixels(renderer, z, centre))
+                               lambda renderer, _: patch_pixels(renderer, z, centre), rgb=rgb)
 
 
 def patch_visibility(build, technique, z=0.0, centre=(0.0, 0.0)):
@@ -158,6 +177,26 @@ def peeled_receiver_scene(renderer):
     receiver_scene(renderer)
 
 
+def check_tint(technique, grey):
+    """The red filter slab's shadow per colour channel."""
+    off, pixels = render(red_slab_scene, None, 0.0, rgb=True)
+    on, _ = render(red_slab_scene, technique, 0.0, rgb=True)
+    rows, cols = pixels
+    crossing = [0.5 * ((1 - RED_FILTER) + RED_FILTER * c) for c in RED]
+    want = [t * t for t in crossing]
+    if grey:
+        want = [0.25] * 3
+    for k, name in enumerate(("red", "green", "blue")):
+        v, valid = fr.visibility(on[:, :, k], off[:, :, k])
+        ok = valid[rows, cols]
+        values = v[rows, cols][ok]
+        mean = float(values.mean()) if values.size else float("nan")
+        print(f"{technique}, red filter slab, {name}: visibility {mean:.4f} "
+              f"({int(ok.sum())} of {len(rows)} px valid); expected {want[k]:.4f}")
+        check(values.size == len(rows) and abs(mean - want[k]) <= TOLERANCE,
+              f"{name}: {technique}'s visibility {mean:.4f} is {want[k]:.4f} within {TOLERANCE}")
+
+
 def check_receiving(technique, receives):
     want = 0.0 if receives else 1.0
     # Depth peeling as well as the default order-independent blending.
@@ -188,8 +227,11 @@ def main():
     parser.add_argument("technique")
     parser.add_argument("--receives", choices=("yes", "no"), default="yes")
     parser.add_argument("--expect-none", action="store_true")
+    parser.add_argument("--grey", action="store_true")
     args = parser.parse_args()
     check_casting(args.technique, args.expect_none)
+    if not args.expect_none:
+        check_tint(args.technique, args.grey)
     check_receiving(args.technique, args.receives == "yes")
     finish()
 

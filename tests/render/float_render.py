@@ -30,7 +30,7 @@ def lambertian(actor, color=(1.0, 1.0, 1.0)):
 
 
 def set_key(actor, key, value=1):
-    """Set an integer property key, keeping the actor's other keys."""
+    """Set a property key (integer or double), keeping the actor's other keys."""
     info = actor.GetPropertyKeys()
     if info is None:
         info = vtkInformation()
@@ -98,6 +98,11 @@ class FloatCapture:
         renderer.SetPass(self.capture)
 
     def read(self):
+        """Summed RGB (H, W), row 0 on top."""
+        return self.read_rgb().sum(axis=2)
+
+    def read_rgb(self):
+        """(H, W, 3) float RGB, row 0 on top."""
         window = self.renderer.GetRenderWindow()
         tex = self.capture.GetColorTexture()
         if tex is None or not tex.GetHandle():
@@ -108,7 +113,7 @@ class FloatCapture:
         rgba = np.zeros((h, w, 4), np.float32)
         if not pbo.Download2D(VTK_FLOAT, rgba, [w, h], 4, [0, 0]):
             raise RuntimeError("could not download the float colour texture")
-        return rgba[::-1, :, :3].astype(np.float64).sum(axis=2)
+        return rgba[::-1, :, :3].astype(np.float64)
 
     def release(self):
         window = self.renderer.GetRenderWindow()
@@ -160,11 +165,12 @@ def render_once(build, width, height, shadows, frames=1, configure=None):
     return image, stats
 
 
-def render_technique(build, technique, width, height, inspect=None):
+def render_technique(build, technique, width, height, inspect=None, rgb=False):
     """A fresh window with one renderer populated by build(renderer),
     rendered once through the registry's `technique` (None: a plain
-    vtkRenderStepsPass, no shadows). Returns (float image, what
-    inspect(renderer, pass) returned before the window went away)."""
+    vtkRenderStepsPass, no shadows). Returns (float image: summed RGB, or
+    (H, W, 3) with `rgb`, what inspect(renderer, pass) returned before the
+    window went away)."""
     window = new_window(width, height)
     renderer = new_renderer(window)
     build(renderer)
@@ -172,7 +178,7 @@ def render_technique(build, technique, width, height, inspect=None):
              else vtkRenderStepsPass())
     capture = FloatCapture(renderer, inner)
     window.Render()
-    image = capture.read()
+    image = capture.read_rgb() if rgb else capture.read()
     extra = inspect(renderer, inner) if inspect else None
     capture.release()
     window.Finalize()

@@ -17,31 +17,70 @@ double vsh_rt_sample_weight(const double normal[3], const double dir[3])
   return d > 0.0 ? d / sqrt(n2) : 0.0;
 }
 
-void vsh_rt_visibility_add(vsh_rt_visibility *v, double weight, int blocked)
+static double clamp01(double x)
 {
-  const double w = isfinite(weight) && weight > 0.0 ? weight : 0.0;
+  return x == x ? (x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x)) : 0.0;
+}
+
+static double usable_weight(double weight)
+{
+  return isfinite(weight) && weight > 0.0 ? weight : 0.0;
+}
+
+/* The scalar part of one ray that let `t` (clamped) of its light through. */
+static void add_scalar(vsh_rt_visibility *v, double w, double t)
+{
   ++v->traced;
   v->weight += w;
-  if (blocked) {
+  if (t <= 0.0) {
     ++v->blocked;
-  } else {
+  } else if (t >= 1.0) {
     v->free_weight += w;
+  } else {
+    ++v->partial;
+    v->free_weight += w * t;
+    v->partial_loss += 1.0 - t;
   }
+}
+
+void vsh_rt_visibility_add(vsh_rt_visibility *v, double weight, int blocked)
+{
+  vsh_rt_visibility_add_transmitted(v, weight, blocked ? 0.0 : 1.0);
 }
 
 void vsh_rt_visibility_add_transmitted(vsh_rt_visibility *v, double weight, double transmitted)
 {
-  const double t = transmitted == transmitted ? (transmitted < 0.0 ? 0.0 : (transmitted > 1.0 ? 1.0 : transmitted)) : 0.0;
-  if (t <= 0.0 || t >= 1.0) {
-    vsh_rt_visibility_add(v, weight, t <= 0.0);
-    return;
+  const double grey[3] = { transmitted, transmitted, transmitted };
+  vsh_rt_visibility_add_coloured(v, weight, grey);
+}
+
+void vsh_rt_visibility_add_coloured(vsh_rt_visibility *v, double weight,
+                                    const double transmitted[3])
+{
+  const double w = usable_weight(weight);
+  double largest = 0.0, smallest = 1.0;
+  for (int k = 0; k < 3; ++k) {
+    const double t = clamp01(transmitted[k]);
+    v->channel_weight[k] += w * t;
+    largest = t > largest ? t : largest;
+    smallest = t < smallest ? t : smallest;
   }
-  const double w = isfinite(weight) && weight > 0.0 ? weight : 0.0;
-  ++v->traced;
-  ++v->partial;
-  v->weight += w;
-  v->free_weight += w * t;
-  v->partial_loss += 1.0 - t;
+  add_scalar(v, w, largest);
+  /* Free in its largest channel but tinted: still a partial ray for the
+   * adaptive batches (its neighbours are not all alike). */
+  if (largest >= 1.0 && smallest < 1.0) {
+    ++v->partial;
+  }
+}
+
+void vsh_rt_visibility_tint(const vsh_rt_visibility *v, double tint[3])
+{
+  for (int k = 0; k < 3; ++k) {
+    const double ratio = v->free_weight > 0.0 && isfinite(v->free_weight)
+                             ? v->channel_weight[k] / v->free_weight
+                             : 1.0;
+    tint[k] = clamp01(ratio == ratio ? ratio : 1.0);
+  }
 }
 
 double vsh_rt_visibility_value(const vsh_rt_visibility *v)

@@ -31,6 +31,11 @@ typedef struct vsh_rt_visibility {
   int blocked;        /* rays blocked */
   int partial;        /* rays that crossed translucent surfaces only, 0 < t < 1 */
   double partial_loss; /* sum of (1 - t) over the partial rays */
+  /* Per colour channel, the sum of weight x the ray's transmittance in
+   * that channel (a grey ray adds the same to all three). The scalar
+   * counts a coloured ray by its largest channel, so that channel / scalar
+   * is the tint in [0, 1] (vsh_rt_visibility_tint). */
+  double channel_weight[3];
 } vsh_rt_visibility;
 
 /* The weight of a ray in unit direction `dir` from a surface with normal
@@ -50,6 +55,21 @@ void vsh_rt_visibility_add(vsh_rt_visibility *v, double weight, int blocked);
  * counts as blocked): 0 is blocked, 1 free, in between a partial ray, whose
  * weight counts `transmitted` times as free. */
 void vsh_rt_visibility_add_transmitted(vsh_rt_visibility *v, double weight, double transmitted);
+
+/* Adds one ray of weight `weight` that reached the light with the fraction
+ * `transmitted[k]` of it in colour channel k (tinted by filtering surfaces,
+ * vsh_transmit.h). The scalar visibility counts it as
+ * vsh_rt_visibility_add_transmitted with its largest channel; the channels
+ * keep each fraction. Non-finite values count as 0, values clamp to
+ * [0, 1]. */
+void vsh_rt_visibility_add_coloured(vsh_rt_visibility *v, double weight,
+                                    const double transmitted[3]);
+
+/* The pair's tint: tint[k] = the visibility of channel k over the scalar
+ * visibility (vsh_rt_visibility_value), in [0, 1], so value x tint[k] is
+ * channel k's visibility. (1, 1, 1) for grey rays, when nothing got
+ * through, and when every ray had weight 0. */
+void vsh_rt_visibility_tint(const vsh_rt_visibility *v, double tint[3]);
 
 /* The pair's visibility in [0, 1]: free_weight / weight when the weights
  * sum to more than 0; the plain fraction of free rays when every ray had

@@ -74,6 +74,9 @@ struct vtkRayTracedShadowPass::Internals
   static constexpr double DefaultPenumbra = 0.25;
   std::vector<float> Depth;
   std::vector<std::vector<float>> Visibility;
+  // Each light's tint, 3 per pixel, where filtering casters colour it.
+  std::vector<std::vector<float>> Tint;
+  std::vector<std::vector<float>> TranslucentTint;
   // The translucent layer's depth (1 where the opaque surface is nearest)
   // and visibility, when the renderer draws translucent props.
   std::vector<float> TranslucentDepth;
@@ -130,7 +133,8 @@ struct vtkRayTracedShadowPass::Internals
     }
     vtkShadowRayTracer::Counters counters;
     rays.Depth = this->TranslucentDepth.data();
-    vtkShadowRayTracer::Trace(this->Scene, rays, threads, this->TranslucentVisibility, counters);
+    vtkShadowRayTracer::Trace(this->Scene, rays, threads, this->TranslucentVisibility, counters,
+      this->Scene.HasTintedCasters() ? &this->TranslucentTint : nullptr);
     rays.Depth = this->Depth.data();
     this->Counters.PrimaryRays += counters.PrimaryRays;
     this->Counters.ShadowRays += counters.ShadowRays;
@@ -327,10 +331,12 @@ void vtkRayTracedShadowPass::GatherFrame(Frame& frame)
     vtkShadowEmbreeScene::Actor actor{ a.Actor, true, {} };
     std::copy_n(a.Matrix, 16, actor.Matrix);
     actor.Opacity = vtkshadow::CasterOpacity(a.Actor);
+    actor.Tinted = vtkshadow::CasterTransmit(a, actor.Transmit);
     frame.Actors.push_back(actor);
     key.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(a.Actor)));
     key.push_back(static_cast<double>(vtkshadow::CasterDataTime(a.Actor)));
     key.push_back(actor.Opacity);
+    key.insert(key.end(), actor.Transmit, actor.Transmit + 3);
     key.insert(key.end(), a.Matrix, a.Matrix + 16);
   }
 }
@@ -381,7 +387,8 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, Frame& frame)
   {
     threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   }
-  vtkShadowRayTracer::Trace(impl.Scene, rays, threads, impl.Visibility, impl.Counters);
+  vtkShadowRayTracer::Trace(impl.Scene, rays, threads, impl.Visibility, impl.Counters,
+    impl.Scene.HasTintedCasters() ? &impl.Tint : nullptr);
   impl.LightsTraced = static_cast<int>(frame.Lights.size());
   if (!impl.TraceTranslucentLayer(s, frame.LightCount, rays, threads))
   {
@@ -400,12 +407,21 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, Frame& frame)
 void vtkRayTracedShadowPass::Upload(const Frame& frame)
 {
   Internals& impl = *this->Impl;
+  const bool tinted = impl.Scene.HasTintedCasters();
   for (int l = 0; l < impl.LightsTraced; ++l)
   {
     impl.W->Mask.UploadLight(frame.Channels[l], impl.Visibility[l].data());
+    if (tinted)
+    {
+      impl.W->Mask.UploadTint(frame.Channels[l], impl.Tint[l].data());
+    }
     if (impl.TracedTranslucent)
     {
       impl.W->Translucent.UploadLight(frame.Channels[l], impl.TranslucentVisibility[l].data());
+      if (tinted)
+      {
+        impl.W->Translucent.UploadTint(frame.Channels[l], impl.TranslucentTint[l].data());
+      }
     }
   }
   impl.W->Mask.FinishUploads();

@@ -2,16 +2,21 @@
 // the actors that cast and receive (see the header).
 #include "vtkShadowActorFlags.h"
 
+#include "vsh_transmit.h"
+
 #include "vtkProperty.h"
 
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
 #include "vtkBoundingBox.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkShadowPassBase.h"
 
 #include "vsh_mat4.h"
 
@@ -147,6 +152,29 @@ double CasterOpacity(vtkActor* actor)
   vtkProperty* property = actor ? actor->GetProperty() : nullptr;
   const double opacity = property ? property->GetOpacity() : 1.0;
   return opacity == opacity ? std::min(std::max(opacity, 0.0), 1.0) : 1.0;
+}
+
+//------------------------------------------------------------------------------
+bool CasterTransmit(const ShadowActor& a, double transmit[3])
+{
+  double filter = 0.0;
+  for (vtkProp* prop : { static_cast<vtkProp*>(a.Actor), a.Root })
+  {
+    vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+    if (keys && keys->Has(vtkShadowPassBase::FILTER()))
+    {
+      filter = keys->Get(vtkShadowPassBase::FILTER());
+      break;
+    }
+  }
+  filter = filter == filter ? std::min(std::max(filter, 0.0), 1.0) : 0.0;
+  double colour[3] = { 1.0, 1.0, 1.0 };
+  if (vtkProperty* property = a.Actor ? a.Actor->GetProperty() : nullptr)
+  {
+    property->GetDiffuseColor(colour);
+  }
+  vsh_transmit_crossing(colour, CasterOpacity(a.Actor), filter, transmit);
+  return filter > 0.0 && (transmit[0] != transmit[1] || transmit[1] != transmit[2]);
 }
 
 //------------------------------------------------------------------------------

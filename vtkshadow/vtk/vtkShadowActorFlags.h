@@ -106,6 +106,14 @@ std::vector<ShadowActor> TranslucentShadowActors(vtkRenderer* renderer);
 // for NaN: opaque).
 double CasterOpacity(vtkActor* actor);
 
+// What one crossing of a translucent actor's surface lets through per
+// colour channel, the core's rule (vsh_transmit_crossing): its opacity,
+// vtkShadowPassBase::FILTER() (own keys, else its root prop's; clamped to
+// [0, 1], 0 when absent or NaN) and its property's diffuse colour. Returns
+// whether the crossing is tinted (a filter above 0 and channels that
+// differ), i.e. whether grey visibility would be wrong for it.
+bool CasterTransmit(const ShadowActor& actor, double transmit[3]);
+
 // The property keys that decide `key` for a shadow actor: its own when they
 // carry the key, else its root prop's (VTK's assemblies hand their keys to
 // their parts while drawing them, so marking the assembly marks every part);

@@ -202,6 +202,7 @@ std::vector<double> vtkShadowEmbreeScene::PlacementKey(const std::vector<Actor>&
     key.push_back(it->second->Version);
     key.push_back(a.Casts ? 1 : 0);
     key.push_back(a.Opacity);
+    key.insert(key.end(), a.Transmit, a.Transmit + 3);
     key.insert(key.end(), a.Matrix, a.Matrix + 16);
   }
   return key;
@@ -225,7 +226,9 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const
   rtcSetSceneFlags(this->Casters, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   this->Instances.clear();
   this->CasterOpacity.clear();
+  this->CasterTransmit.clear();
   this->TranslucentCasters = false;
+  this->TintedCasters = false;
   for (const Actor& a : actors)
   {
     auto it = this->Meshes.find(a.Prop);
@@ -292,7 +295,12 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const
       {
         rtcAttachGeometryByID(top, geometry, static_cast<unsigned int>(this->CasterOpacity.size()));
         this->CasterOpacity.push_back(static_cast<float>(translucent ? a.Opacity : 1.0));
+        for (int k = 0; k < 3; ++k)
+        {
+          this->CasterTransmit.push_back(static_cast<float>(translucent ? a.Transmit[k] : 0.0));
+        }
         this->TranslucentCasters = this->TranslucentCasters || translucent;
+        this->TintedCasters = this->TintedCasters || (translucent && a.Tinted);
       }
       rtcReleaseGeometry(geometry);
     }

@@ -43,6 +43,10 @@ public:
     double Matrix[16]; // data -> world, row major: where it is drawn (vtkshadow::ShadowActor)
     // Below 1: a translucent caster (in "casters" only, never "visible").
     double Opacity = 1.0;
+    // A translucent caster's crossing, per colour channel
+    // (vtkshadow::CasterTransmit); grey (1 - Opacity) unless a filter tints it.
+    double Transmit[3] = { 0.0, 0.0, 0.0 };
+    bool Tinted = false;
   };
 
   // Per instance of the "visible" top level (its instance id).
@@ -88,6 +92,10 @@ public:
   // (1 for an opaque caster), and whether any is below 1.
   const std::vector<float>& GetCasterOpacity() const { return this->CasterOpacity; }
   bool HasTranslucentCasters() const { return this->TranslucentCasters; }
+  // What one crossing of each instance lets through per colour channel, 3
+  // per instance id (0 for an opaque caster), and whether any is tinted.
+  const std::vector<float>& GetCasterTransmit() const { return this->CasterTransmit; }
+  bool HasTintedCasters() const { return this->TintedCasters; }
 
   // Counters since creation.
   int GetMeshBuilds() const { return this->MeshBuilds; }
@@ -111,7 +119,9 @@ private:
   std::map<vtkActor*, std::unique_ptr<Mesh>> Meshes;
   std::vector<Instance> Instances;
   std::vector<float> CasterOpacity;
+  std::vector<float> CasterTransmit;
   bool TranslucentCasters = false;
+  bool TintedCasters = false;
   std::vector<double> Placement;
   double Centre[3] = { 0, 0, 0 };
   int MeshBuilds = 0;

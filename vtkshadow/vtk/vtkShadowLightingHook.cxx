@@ -54,7 +54,8 @@ std::string ResidualFactor(const std::string& factor, double residual)
   {
     literal += ".0"; // GLSL: "1" is an int, mix() wants floats
   }
-  return "mix(" + literal + ", 1.0, float(" + factor + "))";
+  // vec3: a factor may be a colour (a tinted screen mask) or a float.
+  return "mix(vec3(" + literal + "), vec3(1.0), vec3(" + factor + "))";
 }
 
 bool InjectLightFactors(std::string& fs, const std::string& factorExpression,

@@ -38,8 +38,9 @@ void LightHomogeneous(vtkLight* light, double out[4]);
  * for actors with lighting off.
  *
  * `residual` (0..1) is how much of a light remains in its shadow: with
- * residual > 0 the factor goes in as mix(residual, 1.0, factor), a
- * constant in the code (0: the factor as given, the hard shadow).
+ * residual > 0 the factor goes in as mix(residual, 1.0, factor) per colour
+ * channel, a constant in the code (0: the factor as given, the hard
+ * shadow). A factor may be a float or a vec3 (a tinted shadow).
  */
 bool InjectLightFactors(std::string& fragmentShader, const std::string& factor,
   const std::string& prepare, int maxLights = 16, double residual = 0.0);

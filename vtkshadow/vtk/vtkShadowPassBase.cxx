@@ -22,6 +22,7 @@
 
 vtkInformationKeyMacro(vtkShadowPassBase, RECEIVER, Integer);
 vtkInformationKeyMacro(vtkShadowPassBase, NO_CAST, Integer);
+vtkInformationKeyMacro(vtkShadowPassBase, FILTER, Double);
 vtkInformationKeyMacro(vtkShadowPassBase, LIGHT_RADIUS, Double);
 vtkInformationKeyMacro(vtkShadowPassBase, LIGHT_ANGLE, Double);
 

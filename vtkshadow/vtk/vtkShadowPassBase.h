@@ -76,6 +76,15 @@ public:
    */
   static vtkInformationIntegerKey* NO_CAST();
 
+  /**
+   * Property key: of the light a translucent actor (property opacity a < 1)
+   * lets through, (1 - a) per crossing, the fraction FILTER() (0..1) is
+   * tinted by the property's diffuse colour, as POV-Ray's filter: channel
+   * k keeps (1 - a) ((1 - f) + f c_k) (docs/translucency.md). Absent or 0:
+   * grey partial shadows. vtkShadowScene sets it from the scene's "filter".
+   */
+  static vtkInformationDoubleKey* FILTER();
+
   ///@{
   /**
    * A light's size, kept in the vtkLight's information

@@ -18,16 +18,19 @@ constexpr int TileSize = 64;
 
 // One shadow ray's query through translucent casters: the context filter
 // (Transmit) sees every hit of the ray in the "casters" top level, in no
-// particular order. A translucent one multiplies the transmittance by its
-// crossing's (vsh_transmit_accumulate, grey: no filter colour yet) and is
-// ignored, so the traversal goes on; an opaque one is kept and ends the
-// ray (transmittance 0). A triangle reported twice counts once.
+// particular order. A translucent one multiplies the transmittance, per
+// colour channel, by its crossing's (vtkShadowEmbreeScene's
+// GetCasterTransmit, the core's vsh_transmit_crossing: tinted where a
+// filter colours it) and is ignored, so the traversal goes on; an opaque
+// one is kept and ends the ray (transmittance 0). A triangle reported
+// twice counts once.
 struct TransmitContext
 {
   RTCIntersectContext Base; // first: Embree hands the filter this pointer
   const float* Opacity;     // per caster instance id
+  const float* Transmit;    // 3 per caster instance id
   unsigned int Count;
-  double Transmittance;
+  double Transmittance[3];
   static constexpr int MaxSeen = 64;
   unsigned int Seen[MaxSeen][2]; // (instance, primitive) already crossed
   int SeenCount;
@@ -47,7 +50,7 @@ void Transmit(const RTCFilterFunctionNArguments* args)
     const double opacity = instance < context->Count ? context->Opacity[instance] : 1.0;
     if (!vsh_transmit_passes(opacity))
     {
-      context->Transmittance = 0.0; // opaque: the hit stands, the ray stops
+      std::fill_n(context->Transmittance, 3, 0.0); // opaque: the hit stands, the ray stops
       continue;
     }
     bool seen = false;
@@ -63,15 +66,15 @@ void Transmit(const RTCFilterFunctionNArguments* args)
         context->Seen[context->SeenCount][1] = primitive;
         ++context->SeenCount;
       }
-      const double white[3] = { 1.0, 1.0, 1.0 };
-      double t[3] = { context->Transmittance, context->Transmittance, context->Transmittance };
-      vsh_transmit_accumulate(white, opacity, 0.0, t);
-      context->Transmittance = t[0];
+      for (int k = 0; k < 3; ++k)
+      {
+        context->Transmittance[k] *= context->Transmit[3 * instance + k];
+      }
     }
     // Below what an 8-bit mask channel holds: the ray counts as blocked.
-    if (context->Transmittance < 1.0 / 1024)
+    if (*std::max_element(context->Transmittance, context->Transmittance + 3) < 1.0 / 1024)
     {
-      context->Transmittance = 0.0;
+      std::fill_n(context->Transmittance, 3, 0.0);
       continue;
     }
     args->valid[i] = 0;
@@ -105,7 +108,8 @@ struct Worker
   const vtkShadowEmbreeScene* Scene;
   const vtkShadowRayTracer::Frame* Frame;
   std::vector<std::vector<float>>* Out;
-  double EyeToCentre[3]; // eye - centre: camera-relative -> the top levels' frame
+  std::vector<std::vector<float>>* Tint; // 3 per pixel per light, or null
+  double EyeToCentre[3];                 // eye - centre: camera-relative -> the top levels' frame
   std::vector<RTCRayHit> Hits;
   std::vector<float> Limits; // the refinement rays' intervals
   std::vector<vsh_rt_pixel_ray> Pixels;
@@ -368,7 +372,8 @@ void Worker::Queue(const Surface& s, int surface)
       continue;
     }
     (void)surface;
-    this->Pairs.push_back({ s, static_cast<int>(l), rotation, { 0.0, 0.0, 0, 0, 0, 0.0 } });
+    this->Pairs.push_back(
+      { s, static_cast<int>(l), rotation, { 0.0, 0.0, 0, 0, 0, 0.0, { 0.0, 0.0, 0.0 } } });
     const int pair = static_cast<int>(this->Pairs.size()) - 1;
     this->Push(pair, 0, f.First.empty() ? f.Samples[l] : f.First[l]);
   }
@@ -479,23 +484,28 @@ void Worker::Occlude()
     // One ray at a time, each with its own transmittance (the context
     // filter's; a stream query's filter may see rays of a packet mixed).
     const std::vector<float>& opacity = this->Scene->GetCasterOpacity();
+    const std::vector<float>& transmit = this->Scene->GetCasterTransmit();
     for (size_t r = 0; r < this->Rays.size(); ++r)
     {
       TransmitContext context;
       rtcInitIntersectContext(&context.Base);
       context.Base.filter = &Transmit;
       context.Opacity = opacity.data();
+      context.Transmit = transmit.data();
       context.Count = static_cast<unsigned int>(opacity.size());
-      context.Transmittance = 1.0;
+      std::fill_n(context.Transmittance, 3, 1.0);
       context.SeenCount = 0;
       RTCRay& ray = this->Rays[r];
       rtcOccluded1(this->Scene->GetCasters(), &context.Base, &ray);
       Pair& q = this->Pairs[this->RayPair[r]];
       const double dir[3] = { ray.dir_x, ray.dir_y, ray.dir_z };
       ++this->Count.LightRays[q.Light];
-      vsh_rt_visibility_add_transmitted(&q.Vis,
-        vsh_rt_sample_weight(q.S.HasNormal ? q.S.Normal : nullptr, dir),
-        ray.tfar < 0.0f ? 0.0 : context.Transmittance);
+      if (ray.tfar < 0.0f)
+      {
+        std::fill_n(context.Transmittance, 3, 0.0);
+      }
+      vsh_rt_visibility_add_coloured(&q.Vis,
+        vsh_rt_sample_weight(q.S.HasNormal ? q.S.Normal : nullptr, dir), context.Transmittance);
     }
     return;
   }
@@ -530,6 +540,12 @@ void Worker::Resolve(bool first)
     if (q.Vis.traced > 0)
     {
       (*this->Out)[q.Light][pixel] = static_cast<float>(vsh_rt_visibility_value(&q.Vis));
+      if (this->Tint)
+      {
+        double tint[3];
+        vsh_rt_visibility_tint(&q.Vis, tint);
+        std::copy_n(tint, 3, &(*this->Tint)[q.Light][3 * static_cast<size_t>(pixel)]);
+      }
     }
     if (!first)
     {
@@ -569,7 +585,7 @@ void Worker::Tile(int begin, int end)
 
 //------------------------------------------------------------------------------
 void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& frame, int threads,
-  std::vector<std::vector<float>>& out, Counters& counters)
+  std::vector<std::vector<float>>& out, Counters& counters, std::vector<std::vector<float>>* tint)
 {
   const auto start = std::chrono::steady_clock::now();
   const int pixels = frame.View.width * frame.View.height;
@@ -577,6 +593,14 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
   for (auto& light : out)
   {
     light.assign(static_cast<size_t>(pixels), 1.0f);
+  }
+  if (tint)
+  {
+    tint->resize(frame.Lights.size());
+    for (auto& light : *tint)
+    {
+      light.assign(3 * static_cast<size_t>(pixels), 1.0f);
+    }
   }
   counters = Counters();
   counters.Pixels = pixels;
@@ -617,6 +641,7 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
     w.Scene = &scene;
     w.Frame = &frame;
     w.Out = &out;
+    w.Tint = tint;
     w.States = &states;
     w.Count.LightPixels.assign(lights, 0);
     w.Count.LightRays.assign(lights, 0);

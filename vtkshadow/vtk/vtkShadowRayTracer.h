@@ -62,10 +62,13 @@ public:
 
   /**
    * Visibility in [0, 1] of every light at every pixel: `out[l]` gets
-   * width * height values (1 where nothing was traced).
+   * width * height values (1 where nothing was traced). With `tint`, also
+   * each pixel's tint, 3 values per pixel (vsh_rt_visibility_tint: channel
+   * k's visibility is out x tint[k]; (1, 1, 1) where nothing filters).
    */
   static void Trace(const vtkShadowEmbreeScene& scene, const Frame& frame, int threads,
-    std::vector<std::vector<float>>& out, Counters& counters);
+    std::vector<std::vector<float>>& out, Counters& counters,
+    std::vector<std::vector<float>>* tint = nullptr);
 };
 
 #endif

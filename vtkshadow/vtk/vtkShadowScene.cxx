@@ -754,6 +754,10 @@ bool vtkShadowScene::PopulateWith(vtkRenderer* renderer, int mode, int onlyLight
     vtkNew<vtkInformation> keys;
     keys->Set(vtkShadowPassBase::RECEIVER(), this->GetObjectIsReceiver(i) ? 1 : 0);
     keys->Set(vtkShadowPassBase::NO_CAST(), this->GetObjectCasts(i) ? 0 : 1);
+    if (this->GetObjectFilter(i) > 0.0)
+    {
+      keys->Set(vtkShadowPassBase::FILTER(), this->GetObjectFilter(i));
+    }
     if (this->GetObjectMirror(i) > 0)
     {
       keys->Set(vtkPlanarReflectionPass::MIRROR(), this->GetObjectMirror(i));

@@ -113,6 +113,33 @@ struct vtkShadowScreenMask::Internals
   // CPU copies for UploadLight: RGBA8 per layer, and which layers changed.
   std::vector<unsigned char> Staged[LayerCount];
   bool Dirty[LayerCount] = { false, false };
+  // Lights' tints (UploadTint): RGBA8, light I's rows from I x height; 1x1
+  // while no light of the frame is tinted (a sampler the hooked shaders
+  // name must always have a unit of its own).
+  vtkSmartPointer<vtkTextureObject> Tint;
+  std::vector<unsigned char> TintStaged;
+  bool Tinted = false;
+  bool TintDirty = false;
+
+  // The tint texture at `width` x `height` RGBA8 (reallocated on a change).
+  bool SizeTint(vtkOpenGLRenderWindow* window, int width, int height)
+  {
+    this->Tint->SetContext(window);
+    if (this->Tint->GetWidth() == static_cast<unsigned int>(width) &&
+      this->Tint->GetHeight() == static_cast<unsigned int>(height) && this->Tint->GetHandle())
+    {
+      return true;
+    }
+    this->Tint->ReleaseGraphicsResources(window);
+    this->Tint->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Tint->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Tint->SetInternalFormat(GL_RGBA8);
+    this->Tint->SetFormat(GL_RGBA);
+    this->Tint->SetDataType(GL_UNSIGNED_BYTE);
+    const std::vector<unsigned char> white(4 * static_cast<size_t>(width) * height, 255);
+    return this->Tint->Create2DFromRaw(
+      width, height, 4, VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(white.data()));
+  }
   bool Drawing = false;
   int SavedViewport[4] = { 0, 0, 0, 0 };
   int SavedScissor[4] = { 0, 0, 0, 0 };
@@ -138,8 +165,11 @@ long long vtkShadowScreenMask::GetMemoryBytes() const
     return 0;
   }
   const long long pixels = static_cast<long long>(this->Size[0]) * this->Size[1];
-  // Depth-stencil (4 bytes) plus 4 bytes per layer in use.
-  return pixels * 4 * (1 + (this->LightCount > 4 ? 2 : 1));
+  // Depth-stencil (4 bytes) plus 4 bytes per layer in use, and a tinted
+  // frame's 4 bytes per pixel and light.
+  vtkTextureObject* tint = this->Impl->Tint;
+  return pixels * 4 * (1 + (this->LightCount > 4 ? 2 : 1)) +
+    4LL * tint->GetWidth() * tint->GetHeight();
 }
 
 //------------------------------------------------------------------------------
@@ -159,6 +189,12 @@ bool vtkShadowScreenMask::Allocate(vtkOpenGLRenderWindow* window)
     {
       layer = vtkSmartPointer<vtkTextureObject>::New();
     }
+    impl.Tint = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  if (!impl.Tint->GetHandle() && !impl.SizeTint(window, 1, 1))
+  {
+    this->Error = "cannot allocate the tint texture";
+    return false;
   }
   impl.FBO->SetContext(window);
   impl.DepthStencil->SetContext(window);
@@ -282,6 +318,9 @@ bool vtkShadowScreenMask::RenderDepth(const vtkRenderState* s, int lightCount)
     glClearBufferfv(GL_COLOR, 0, one);
   }
   this->EndDraw();
+  // No light tinted until a technique uploads a tint this frame.
+  impl.Tinted = false;
+  impl.TintDirty = false;
   return this->Error.empty();
 }
 
@@ -518,9 +557,46 @@ void vtkShadowScreenMask::UploadLight(int light, const float* visibility)
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowScreenMask::UploadTint(int light, const float* tint)
+{
+  if (light < 0 || light >= this->LightCount || !tint)
+  {
+    return;
+  }
+  Internals& impl = *this->Impl;
+  const size_t pixels = static_cast<size_t>(this->Size[0]) * this->Size[1];
+  if (!impl.Tinted)
+  {
+    impl.TintStaged.assign(4 * pixels * static_cast<size_t>(this->LightCount), 255);
+    impl.Tinted = true;
+  }
+  unsigned char* rows = impl.TintStaged.data() + 4 * pixels * static_cast<size_t>(light);
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const float t = std::min(1.0f, std::max(0.0f, tint[3 * p + k]));
+      rows[4 * p + k] = static_cast<unsigned char>(std::lround(t * 255.0f));
+    }
+  }
+  impl.TintDirty = true;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowScreenMask::FinishUploads()
 {
   Internals& impl = *this->Impl;
+  if (impl.TintDirty)
+  {
+    if (impl.SizeTint(impl.Window, this->Size[0], this->Size[1] * this->LightCount))
+    {
+      impl.Tint->Bind();
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, this->Size[0], this->Size[1] * this->LightCount,
+        GL_RGBA, GL_UNSIGNED_BYTE, impl.TintStaged.data());
+    }
+    impl.TintDirty = false;
+  }
   for (int layer = 0; layer < LayerCount; ++layer)
   {
     if (!impl.Dirty[layer] || !impl.Layers[layer])
@@ -609,6 +685,12 @@ void vtkShadowScreenMask::SetShaderParameters(vtkShaderProgram* program)
     "vshScreenMask1", impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
   program->SetUniform2i("vshScreenMaskOrigin", this->Origin);
   program->SetUniformi("vshScreenMaskLights", this->LightCount);
+  if (impl.Tint->GetTextureUnit() >= 0)
+  {
+    program->SetUniformi("vshScreenTint", impl.Tint->GetTextureUnit());
+    program->SetUniformi("vshScreenTinted", impl.Tinted ? 1 : 0);
+    program->SetUniformi("vshScreenMaskHeight", this->Size[1]);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -623,6 +705,10 @@ void vtkShadowScreenMask::Activate()
   if (this->LightCount > 4)
   {
     impl.Layers[1]->Activate();
+  }
+  if (impl.Tint->GetHandle())
+  {
+    impl.Tint->Activate();
   }
 }
 
@@ -639,6 +725,10 @@ void vtkShadowScreenMask::Deactivate()
   {
     impl.Layers[1]->Deactivate();
   }
+  if (impl.Tint->GetHandle())
+  {
+    impl.Tint->Deactivate();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -653,6 +743,7 @@ void vtkShadowScreenMask::ReleaseGraphicsResources(vtkWindow* w)
     {
       layer->ReleaseGraphicsResources(w);
     }
+    impl.Tint->ReleaseGraphicsResources(w);
   }
   if (impl.DepthScene)
   {

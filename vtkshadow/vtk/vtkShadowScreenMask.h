@@ -153,6 +153,15 @@ public:
   void FinishUploads();
 
   /**
+   * A light's tint from the CPU, after its UploadLight: 3 values per pixel
+   * in [0,1] (row 0 at the bottom), channel k's visibility being the
+   * light's visibility times tint k (coloured shadows of filtering
+   * translucent casters, vsh_rt_visibility_tint). Lights without a tint
+   * this frame stay white; a frame without any costs nothing.
+   */
+  void UploadTint(int light, const float* tint);
+
+  /**
    * Inside BeginDraw: draw a quad over the whole mask with `program`, whose
    * vertex shader takes the clip-space corner as `vec4 vertexMC` (e.g.
    * vtkShadowScreenQuadVS). The caller sets the state and uniforms.
@@ -172,7 +181,7 @@ public:
   // `factor` and `prepare` (vtkshadow::InjectLightFactors) let the owner
   // multiply its own per-light term into the mask's.
   bool PostReplaceShaderValues(std::string& fragmentShader, double residual = 0.0,
-    const std::string& factor = "vshScreenLit(%d)",
+    const std::string& factor = "vshScreenLight(%d)",
     const std::string& prepare = "vshScreenPrepare();");
   void SetShaderParameters(vtkShaderProgram* program);
 
