@@ -19,8 +19,8 @@ Rules (docs/harness.md, "--check, thresholds and known failures"):
   A pixels expressed in the metric's own denominator: A = ALLOW_PX (16) where
   the reference has no shadow, else min(16, max(1, shadow / 5)) with shadow
   the reference's shadow pixels, so that a lost shadow, however small, is
-  more than the allowance. Rounded up to 0.01 (1e-4 for pen_mae and
-  reflection_mae).
+  more than the allowance. Rounded up to 0.01 (1e-4 for pen_mae,
+  reflection_mae and colour_mae).
 - Rows of our techniques (every vtk/<technique> but the controls vtk/none
   and vtk/vtk, variants included) bound wrong_pct, false_shadow_pct,
   wrong_of_shadow_pct (wrong pixels per pixel of the reference's shadow)
@@ -28,11 +28,16 @@ Rules (docs/harness.md, "--check, thresholds and known failures"):
   Where the reference has a penumbra (pen_pixels > 0, a light with a size)
   they also bound pen_mae (+ 0.01) and the 0.1 / 0.5 / 0.9 contour distances
   (+ 0.5 px), so that a hard shadow fails a soft row.
+- On a tinted scene (an object with a coloured filter: the rows have
+  colour_mae) they also bound colour_mae, the green and blue channels'
+  mean error: GEN_FACTOR x measured + COLOUR_ALLOW (0.005).
 - The controls vtk/none and vtk/vtk, and the EEVEE presets, bound wrong_pct
   and false_shadow_pct (regressions of VTK's own render).
 - Rows of "cycles" (POV-Ray against Cycles) are bounded by the file's
   default (0.1% wrong), except where the reference has a penumbra, where
   both renderers sample the light and the row gets a generated wrong_pct.
+  On a tinted scene the cycles row also gets a generated colour_mae (the
+  check that both references tint the shadow alike).
 - Exact techniques (EXACT: volume and raytrace, and their variants) also
   get, on every row of a hard light, the fixed 0.05% bound on
   wrong_band_pct (issues 12 and 13), not a generated limit.
@@ -83,6 +88,9 @@ DEFAULT = {"cycles": {"wrong_pct": 0.1}}
 # one-pixel band, on every scene whose lights are points (no penumbra).
 EXACT = {"vtk/volume": 0.05, "vtk/raytrace": 0.05}
 EXACT_METRIC = "wrong_band_pct"
+# Tinted scenes: the green and blue channels' mean error, and its allowance.
+COLOUR = "colour_mae"
+COLOUR_ALLOW = 0.005
 
 
 def load_known(path):
@@ -139,6 +147,8 @@ def allowance(r, metric):
         return PENUMBRA[metric]
     if metric == "reflection_mae":
         return 0.005
+    if metric == COLOUR:
+        return COLOUR_ALLOW
     denominator = {"wrong_of_shadow_pct": r.get("ref_shadow_pixels"),
                    "wrong_of_test_shadow_pct": r.get("test_shadow_pixels")}.get(
                        metric, r.get("compared_pixels"))
@@ -146,17 +156,26 @@ def allowance(r, metric):
 
 
 def generated(r, metric):
-    step = 1e4 if metric in ("pen_mae", "reflection_mae") else 1e2
+    step = 1e4 if metric in ("pen_mae", "reflection_mae", COLOUR) else 1e2
     return math.ceil((r[metric] * GEN_FACTOR + allowance(r, metric)) * step - 1e-9) / step
 
 
+def tinted(r):
+    """A row of a tinted scene: it has colour_mae."""
+    return r.get(COLOUR) is not None
+
+
 def limited_metrics(r):
-    """The generated metrics of a row."""
+    """The generated metrics of a row (of "cycles": beyond the default)."""
+    if r["test"] == "cycles":
+        return ["wrong_pct"] * soft(r) + [COLOUR] * tinted(r)
     if not ours(r["test"]):
         return list(FRAME_PCT)
     metrics = list(FRAME_PCT + SHADOW_PCT)
     if soft(r):
         metrics += sorted(PENUMBRA)
+    if tinted(r):
+        metrics.append(COLOUR)
     return metrics
 
 
@@ -276,14 +295,16 @@ def verify(thresholds, rows, known, require_controls=False):
             problems.append("%s: %s limit %s, but an exact technique on a hard light is bound "
                             "by %g" % (where(scene, r), EXACT_METRIC, limits.get(EXACT_METRIC),
                                        exact_bound(r)))
-        for metric in limited_metrics(r) if r["test"] != "cycles" else []:
+        for metric in limited_metrics(r):
             if metric not in limits:
                 problems.append("%s: no %s limit" % (where(scene, r), metric))
         # The default trust limit of POV-Ray against Cycles is a stated
-        # bound, not a measurement's: no margin to keep to.
+        # bound, not a measurement's: no margin to keep to (its generated
+        # limits have one).
         trusted = r["test"] == "cycles" and not soft(r)
-        for metric, limit in sorted(limits.items()) if not trusted else []:
-            problems += margin_problems(scene, r, metric, limit)
+        for metric, limit in sorted(limits.items()):
+            if not trusted or metric == COLOUR:
+                problems += margin_problems(scene, r, metric, limit)
         why = bounds_nothing(limits, scene, r, by_key, require_controls)
         if why:
             problems.append("%s: the limits bound nothing: %s; fix the technique or list the "
@@ -336,9 +357,10 @@ def generate(base, rows, known):
             # POV-Ray against Cycles: the file's default bounds it, except
             # where the reference has a penumbra (a light with a size): both
             # renderers sample the light there, so their agreement gets a
-            # limit from its measurement like every other row.
-            if r["status"] == "ok" and soft(r):
-                set_limit(entry, r, lights, "wrong_pct", generated(r, "wrong_pct"))
+            # limit from its measurement like every other row; and on a
+            # tinted scene their colour_mae.
+            for metric in limited_metrics(r) if r["status"] == "ok" else []:
+                set_limit(entry, r, lights, metric, generated(r, metric))
             continue
         if key in known:
             if r["status"] == "ok":

@@ -47,6 +47,7 @@ const char* RenderUsage()
   return "usage: vtkshadow-render SCENE --technique T --image OUT.png\n"
          "       vtkshadow-render --list-techniques | --list-settings\n"
          "         [--visibility V.png] [--mask M.png] [--light K] [--stats S.json]\n"
+         "         [--visibility-red V.png] [--visibility-green V.png] [--visibility-blue V.png]\n"
          "         [--frames N] [--rounds R] [--warmup W] [--profile-frames P]\n"
          "         [--time-also SPEC]...\n"
          "         [--noise-tolerance T] [--fail-if-noisy]\n"
@@ -58,6 +59,9 @@ const char* RenderUsage()
          "  --technique T        one of the known techniques (required)\n"
          "  --image OUT.png      colour image with every light (required)\n"
          "  --visibility V.png   16-bit visibility of light K (65535 lit, 0 blocked)\n"
+         "  --visibility-red V.png, --visibility-green V.png, --visibility-blue V.png\n"
+         "                       16-bit visibility of light K in one colour channel\n"
+         "                       (I_on / I_off of that channel; --visibility sums R+G+B)\n"
          "  --mask M.png         8-bit mask, 255 where light K reaches a visible surface\n"
          "  --light K            light index for --visibility and --mask (default 0)\n"
          "  --stats S.json       interleaved timing and shadow-map memory: T, none and\n"
@@ -286,7 +290,8 @@ int ParseValueOption(const std::string& arg, const char* v, RenderOptions& optio
     state.TechniqueGiven = true;
     return 0;
   }
-  if (arg == "--image" || arg == "--visibility" || arg == "--mask" || arg == "--stats")
+  if (arg == "--image" || arg == "--visibility" || arg == "--mask" || arg == "--stats" ||
+    arg == "--visibility-red" || arg == "--visibility-green" || arg == "--visibility-blue")
   {
     if (!*v)
     {
@@ -295,6 +300,9 @@ int ParseValueOption(const std::string& arg, const char* v, RenderOptions& optio
     }
     std::string& target = arg == "--image" ? options.Image
       : arg == "--visibility"              ? options.Visibility
+      : arg == "--visibility-red"          ? options.ChannelVisibility[0]
+      : arg == "--visibility-green"        ? options.ChannelVisibility[1]
+      : arg == "--visibility-blue"         ? options.ChannelVisibility[2]
       : arg == "--mask"                    ? options.Mask
                                            : options.Stats;
     target = v;
@@ -352,10 +360,10 @@ int ParseValueOption(const std::string& arg, const char* v, RenderOptions& optio
 
 bool TakesValue(const std::string& arg)
 {
-  static const char* const withValue[] = { "--technique", "--image", "--visibility", "--mask",
-    "--stats", "--light", "--frames", "--rounds", "--warmup", "--profile-frames",
-    "--map-resolution", "--size", "--set", "--max-error", "--time-also", "--noise-tolerance",
-    "--reflections", "--image-light" };
+  static const char* const withValue[] = { "--technique", "--image", "--visibility",
+    "--visibility-red", "--visibility-green", "--visibility-blue", "--mask", "--stats", "--light",
+    "--frames", "--rounds", "--warmup", "--profile-frames", "--map-resolution", "--size", "--set",
+    "--max-error", "--time-also", "--noise-tolerance", "--reflections", "--image-light" };
   for (const char* name : withValue)
   {
     if (arg == name)

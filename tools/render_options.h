@@ -22,6 +22,8 @@ struct RenderOptions
   std::string Technique = "none";
   std::string Image;
   std::string Visibility;
+  // --visibility-red/-green/-blue: one colour channel's visibility each.
+  std::string ChannelVisibility[3];
   std::string Mask;
   std::string Stats;
   int Light = 0;

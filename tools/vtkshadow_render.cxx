@@ -110,7 +110,8 @@ int Prepare(Run& run)
 int ComputeVisibility(const Run& run, vtkShadowVisibility* visibility)
 {
   const RenderOptions& options = run.Options;
-  if (options.Visibility.empty() && options.Mask.empty())
+  if (options.Visibility.empty() && options.Mask.empty() && options.ChannelVisibility[0].empty() &&
+    options.ChannelVisibility[1].empty() && options.ChannelVisibility[2].empty())
   {
     return 0;
   }
@@ -293,9 +294,14 @@ int WriteOutputs(const Run& run, vtkImageData* image, vtkShadowVisibility* visib
     written.Paths.push_back(path);
     return true;
   };
-  if (!writePNG(image, options.Image) ||
-    !writePNG(visibility->GetVisibility16(), options.Visibility) ||
-    !writePNG(visibility->GetMask(), options.Mask))
+  bool ok = writePNG(image, options.Image) &&
+    writePNG(visibility->GetVisibility16(), options.Visibility) &&
+    writePNG(visibility->GetMask(), options.Mask);
+  for (int c = 0; ok && c < 3; ++c)
+  {
+    ok = writePNG(visibility->GetChannelVisibility16(c), options.ChannelVisibility[c]);
+  }
+  if (!ok)
   {
     return Fail(1, error);
   }

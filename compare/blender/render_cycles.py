@@ -22,12 +22,15 @@
 # only that light (shadows on, shadows off) and writes
 #   OUTDIR/light<K>_on.f32, OUTDIR/light<K>_off.f32
 # as raw little-endian float32, width*height values of the red channel,
-# BOTTOM row first (Blender's order); the harness flips the rows. It also
+# BOTTOM row first (Blender's order); the harness flips the rows. A tinted
+# scene (an object with opacity < 1 and filter > 0) also gets the green and
+# blue channels, light<K>_on_g.f32, light<K>_on_b.f32, light<K>_off_g.f32
+# and light<K>_off_b.f32 (the same renders). It also
 # writes OUTDIR/frame_seconds.txt: one line per render (light, on|off,
 # seconds of bpy.ops.render.render, i.e. one frame without Blender start-up).
 #
 # DATAFILE layout (little-endian):
-#   8 bytes   magic b"VSHCYC03"
+#   8 bytes   magic b"VSHCYC04"
 #   int32 x7  width, height, samples (Cycles only), seed (Cycles only),
 #             pixel_centre (1: Gaussian filter 0.01, every sample at the pixel
 #             centre; 0: BOX filter 1.0 over the pixel), light_count, object_count
@@ -39,6 +42,7 @@
 #               directional: angular diameter in degrees, Blender's sun angle; 0 hard)
 #   per object: int32 x3  point_count, triangle_count, casts
 #               float64 x4  colour (linear R, G, B), mirror reflectance (0: none)
+#               float64 x2  opacity, filter (docs/translucency.md)
 #               float64 x 3*point_count  points
 #               float64 x 3*point_count  normals
 #               int32   x 3*triangle_count  triangles
@@ -222,18 +226,24 @@ def farthest_point(position, objects):
     return best
 
 
-def make_colour_material(name, colour):
-    """POV-Ray's finish { diffuse 1-R reflection { R } } with pigment c:
-    (1-R) Lambert(c) + R perfect mirror (white, no fresnel)."""
-    (r, g, b, mirror) = colour
+def new_lambert_material(name, rgb):
+    """A new material whose node tree holds only a Lambertian Diffuse BSDF
+    (roughness 0) of colour `rgb`: (material, nodes, links, diffuse)."""
     mat = bpy.data.materials.new(name)
     mat.use_nodes = True
     nodes = mat.node_tree.nodes
     nodes.clear()
-    links = mat.node_tree.links
     diffuse = nodes.new("ShaderNodeBsdfDiffuse")
-    diffuse.inputs["Color"].default_value = (r, g, b, 1.0)
+    diffuse.inputs["Color"].default_value = tuple(rgb) + (1.0,)
     diffuse.inputs["Roughness"].default_value = 0.0
+    return mat, nodes, mat.node_tree.links, diffuse
+
+
+def make_colour_material(name, colour):
+    """POV-Ray's finish { diffuse 1-R reflection { R } } with pigment c:
+    (1-R) Lambert(c) + R perfect mirror (white, no fresnel)."""
+    (r, g, b, mirror) = colour
+    mat, nodes, links, diffuse = new_lambert_material(name, (r, g, b))
     out = nodes.new("ShaderNodeOutputMaterial")
     if mirror <= 0:
         links.new(diffuse.outputs["BSDF"], out.inputs["Surface"])
@@ -275,14 +285,7 @@ def make_translucent_material(name, colour, translucency):
     not see it in the visibility renders)."""
     (r, g, b, _) = colour
     opacity, filt = translucency
-    mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
-    nodes = mat.node_tree.nodes
-    nodes.clear()
-    links = mat.node_tree.links
-    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
-    diffuse.inputs["Color"].default_value = (r, g, b, 1.0)
-    diffuse.inputs["Roughness"].default_value = 0.0
+    mat, nodes, links, diffuse = new_lambert_material(name, (r, g, b))
     clear = nodes.new("ShaderNodeBsdfTransparent")
     clear.inputs["Color"].default_value = tuple((1.0 - filt) + filt * c for c in (r, g, b)) + (1.0,)
     mix = nodes.new("ShaderNodeMixShader")
@@ -297,15 +300,9 @@ def make_translucent_material(name, colour, translucency):
 
 def make_material(name, preset, casts):
     # White Lambertian: a Diffuse BSDF (roughness 0 = Lambert), colour 1.
-    mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
-    nodes = mat.node_tree.nodes
-    nodes.clear()
-    bsdf = nodes.new("ShaderNodeBsdfDiffuse")
-    bsdf.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
-    bsdf.inputs["Roughness"].default_value = 0.0
+    mat, nodes, links, bsdf = new_lambert_material(name, (1.0, 1.0, 1.0))
     out = nodes.new("ShaderNodeOutputMaterial")
-    mat.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
+    links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
     if preset != "cycles" and not casts:
         mat.shadow_method = "NONE"  # EEVEE: objects with "casts": false
     return mat
@@ -426,7 +423,10 @@ def render_colour(scene, lights, objects, depth, exr, outdir, width, height):
 
 def render_lights(scene, lights, objects, depth, preset, exr, outdir, width, height):
     """Each light alone, shadows on then off: light<K>_on.f32 and
-    light<K>_off.f32 (red channel) and frame_seconds.txt."""
+    light<K>_off.f32 (red channel; a tinted scene's green and blue as
+    light<K>_on_g.f32 ... too) and frame_seconds.txt."""
+    tinted = any(obj[7][0] < 1.0 and obj[7][1] > 0.0 for obj in objects)
+    channels = (("", 0), ("_g", 1), ("_b", 2)) if tinted else (("", 0),)
     frame_log = []
     for k, light in enumerate(lights):
         (ltype, px, py, pz, _ax, _ay, _az, cone, size) = light
@@ -436,7 +436,9 @@ def render_lights(scene, lights, objects, depth, preset, exr, outdir, width, hei
             set_shadows(ldata, preset, state == "on")
             img, px4, seconds = render_pixels(scene, exr, width, height)
             frame_log.append("%d %s %.4f\n" % (k, state, seconds))
-            write_floats(os.path.join(outdir, "light%d_%s.f32" % (k, state)), px4[0::4])
+            for suffix, c in channels:
+                name = "light%d_%s%s.f32" % (k, state, suffix)
+                write_floats(os.path.join(outdir, name), px4[c::4])
             bpy.data.images.remove(img)
             sys.stderr.write("%s: light %d shadows %s done\n" % (preset, k, state))
         bpy.data.objects.remove(lobj, do_unlink=True)

@@ -59,17 +59,21 @@ double MeanFrameSeconds(const std::string& work)
 bool BlenderRenderer::ReadLight(const RenderJob& job, int k, LightPair& p, std::string& err) const
 {
   const size_t n = static_cast<size_t>(job.ex.width) * job.ex.height;
-  for (int shadows = 0; shadows < 2; ++shadows)
+  // light<K>_on.f32 / _off.f32 (red); a tinted scene's _on_g, _on_b, ... too.
+  static const char* const kChannel[] = { "", "_g", "_b" };
+  std::vector<float>* imgs[2][3] = { { &p.off, &p.off_g, &p.off_b }, { &p.on, &p.on_g, &p.on_b } };
+  for (int i = 0; i < 2 * (job.ex.tinted ? 3 : 1); ++i)
   {
+    const int shadows = i % 2, c = i / 2;
     std::string raw;
     const std::string f =
-      job.work + "/light" + std::to_string(k) + (shadows ? "_on" : "_off") + ".f32";
+      job.work + "/light" + std::to_string(k) + (shadows ? "_on" : "_off") + kChannel[c] + ".f32";
     if (!ReadFile(f, raw) || raw.size() != 4 * n)
     {
       err = "missing or short output " + f + "; log: " + job.log;
       return false;
     }
-    std::vector<float>& img = shadows ? p.on : p.off;
+    std::vector<float>& img = *imgs[shadows][c];
     img.resize(n);
     // Blender's rows are bottom-up: flip to row 0 on top.
     for (int y = 0; y < job.ex.height; ++y)

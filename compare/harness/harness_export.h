@@ -57,6 +57,9 @@ struct ExportScene
   std::vector<ExportLight> lights;
   std::vector<ExportObject> objects;
   bool has_mirror = false; // some object has mirror > 0: the colour renders run
+  // Some object has opacity < 1 and filter > 0: its shadow is tinted, so
+  // every renderer also gives the green and blue channels' visibility.
+  bool tinted = false;
 };
 
 // POV-Ray 3.7 scene. Light K and shadows on/off are chosen on the command

@@ -1,4 +1,4 @@
-// harness_png.cxx - first channel of a PNG as floats (harness_png.h).
+// harness_png.cxx - one channel of a PNG as floats (harness_png.h).
 #include "harness_png.h"
 
 #include <png.h>
@@ -11,7 +11,7 @@ namespace vsh_harness
 {
 
 bool ReadPNGChannel(
-  const std::string& path, std::vector<float>& v, int& w, int& h, std::string& err)
+  const std::string& path, std::vector<float>& v, int& w, int& h, std::string& err, int channel)
 {
   FILE* f = fopen(path.c_str(), "rb");
   if (!f)
@@ -42,14 +42,20 @@ bool ReadPNGChannel(
   int depth = png_get_bit_depth(png, info);
   int channels = png_get_channels(png, info);
   png_bytepp rows = png_get_rows(png, info);
+  if (channel < 0 || channel >= channels)
+  {
+    png_destroy_read_struct(&png, &info, nullptr);
+    fclose(f);
+    err = path + ": no channel " + std::to_string(channel);
+    return false;
+  }
   v.assign(static_cast<size_t>(w) * h, 0.0f);
   const double maxv = depth == 16 ? 65535.0 : 255.0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
     {
-      unsigned s = depth == 16
-        ? (unsigned(rows[y][2 * channels * x]) << 8) | rows[y][2 * channels * x + 1]
-        : rows[y][channels * x];
+      const size_t i = static_cast<size_t>(channels) * x + channel;
+      unsigned s = depth == 16 ? (unsigned(rows[y][2 * i]) << 8) | rows[y][2 * i + 1] : rows[y][i];
       v[static_cast<size_t>(y) * w + x] = static_cast<float>(s / maxv);
     }
   png_destroy_read_struct(&png, &info, nullptr);

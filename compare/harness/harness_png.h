@@ -8,11 +8,12 @@
 namespace vsh_harness
 {
 
-// A 16-bit (or 8-bit) PNG as floats in [0,1], first channel, row 0 on top:
-// POV-Ray's RGB output too (the metrics' reader, vshm_png.h, takes
-// grayscale only, on purpose).
-bool ReadPNGChannel(
-  const std::string& path, std::vector<float>& v, int& w, int& h, std::string& err);
+// A 16-bit (or 8-bit) PNG as floats in [0,1], channel `channel` (0 first),
+// row 0 on top: POV-Ray's RGB output too (the metrics' reader, vshm_png.h,
+// takes grayscale only, on purpose). A channel the image does not have is
+// an error.
+bool ReadPNGChannel(const std::string& path, std::vector<float>& v, int& w, int& h,
+  std::string& err, int channel = 0);
 
 } // namespace vsh_harness
 

@@ -34,6 +34,10 @@ struct Row
   // boundary (vshm_boundary_band, radius 1): the measure issues 12 and 13
   // bound exact techniques by. NaN when not measured.
   double wrong_band_pct = std::nan("");
+  // Tinted scenes: the mean over the green and blue channels of the mean
+  // |v_test - v_ref| over the reference's valid pixels (docs/metrics.md).
+  // NaN on other scenes.
+  double colour_mae = std::nan("");
   // Set by --check: "" (not checked), "ok", "FAILED: why", "known failure: reason".
   std::string check;
 };
@@ -54,6 +58,9 @@ struct SceneResult
   // scripts/update-references.sh keeps exactly the entries a run used.
   std::map<std::string, std::string> reference_keys;
   std::string mirror_image; // POV-Ray's mirror pixels, when the scene has mirrors
+  // Some object has a coloured filter (ExportScene::tinted): every renderer
+  // also writes the green and blue visibility, and rows get colour_mae.
+  bool tinted = false;
 };
 
 // A metric of a row by name (vis_mae, wrong_pct, edge_px, false_shadow_pct,
@@ -62,8 +69,8 @@ struct SceneResult
 double RowMetric(const vshm_metrics& m, const std::string& name, bool& known);
 
 // RowMetric, and also reflection_mae (NaN on rows without mirrors, which
-// then fails any limit on it), wrong_band_pct, pen_mae and
-// pen_contour_{01,05,09}_px.
+// then fails any limit on it), colour_mae (NaN on untinted scenes, the
+// same), wrong_band_pct, pen_mae and pen_contour_{01,05,09}_px.
 double RowMetric(const Row& r, const std::string& name, bool& known);
 
 } // namespace vsh_harness

@@ -73,13 +73,19 @@ private:
       err = "light " + std::to_string(k) + ": " + r.error;
       return false;
     }
-    int w = 0, h = 0;
-    std::vector<float>& img = shadows ? out.lights[k].on : out.lights[k].off;
-    if (!ReadPNGChannel(job.work + "/" + name, img, w, h, err) || w != job.ex.width ||
-      h != job.ex.height)
+    // The red channel; a tinted scene's green and blue too (POV-Ray's PNG is RGB).
+    LightPair& p = out.lights[k];
+    std::vector<float>* img[3] = { shadows ? &p.on : &p.off, shadows ? &p.on_g : &p.off_g,
+      shadows ? &p.on_b : &p.off_b };
+    for (int c = 0; c < (job.ex.tinted ? 3 : 1); ++c)
     {
-      err = "light " + std::to_string(k) + ": bad output " + (err.empty() ? "size" : err);
-      return false;
+      int w = 0, h = 0;
+      if (!ReadPNGChannel(job.work + "/" + name, *img[c], w, h, err, c) || w != job.ex.width ||
+        h != job.ex.height)
+      {
+        err = "light " + std::to_string(k) + ": bad output " + (err.empty() ? "size" : err);
+        return false;
+      }
     }
     return true;
   }

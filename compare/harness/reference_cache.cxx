@@ -32,8 +32,8 @@ bool ReadManifest(const std::string& path, std::map<std::string, std::string>& m
 }
 } // namespace
 
-CacheLoadResult CacheLoad(
-  const std::string& cdir, const std::string& outdir, int lights, std::string& why, bool read_only)
+CacheLoadResult CacheLoad(const std::string& cdir, const std::string& outdir, int lights,
+  bool tinted, std::string& why, bool read_only)
 {
   const std::string marker = cdir + "/complete";
   if (!FileExists(marker))
@@ -44,7 +44,7 @@ CacheLoadResult CacheLoad(
   if (!good)
     why = marker + ": not a cache manifest";
   for (int k = 0; k < lights && good; ++k)
-    for (const std::string& name : LightFileNames(k))
+    for (const std::string& name : LightFileNames(k, tinted))
     {
       std::string bytes;
       if (!ReadFile(cdir + "/" + name, bytes) || !md5.count(name) || MD5Hex(bytes) != md5[name])
@@ -70,7 +70,7 @@ CacheLoadResult CacheLoad(
   return CacheLoadResult::Hit;
 }
 
-bool CacheStore(const std::string& cdir, const std::string& outdir, int lights,
+bool CacheStore(const std::string& cdir, const std::string& outdir, int lights, bool tinted,
   const std::string& keytext, std::string& why)
 {
   if (!MakeDirs(cdir, why))
@@ -80,7 +80,7 @@ bool CacheStore(const std::string& cdir, const std::string& outdir, int lights,
   }
   std::string manifest = std::string(kManifestHeader) + "\n";
   for (int k = 0; k < lights; ++k)
-    for (const std::string& name : LightFileNames(k))
+    for (const std::string& name : LightFileNames(k, tinted))
     {
       std::string bytes;
       if (!ReadFile(outdir + "/" + name, bytes))

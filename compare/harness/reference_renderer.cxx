@@ -37,6 +37,26 @@ struct DriverState
   }
 };
 
+// Writes light k's visibility and mask from its on/off renders; a tinted
+// scene's green and blue visibility too (valid where the red channel is).
+bool WriteLight(const DriverState& s, int k, const LightPair& p, std::string& err)
+{
+  std::vector<float> v, gb[2];
+  std::vector<unsigned char> mask, unused;
+  OnOff(p.on, p.off, p.eps, v, mask);
+  if (!s.ex.tinted)
+    return WriteVisibility(s.outdir, k, v, mask, s.ex.width, s.ex.height, err);
+  const size_t n = p.on.size();
+  if (p.on_g.size() != n || p.off_g.size() != n || p.on_b.size() != n || p.off_b.size() != n)
+  {
+    err = "light " + std::to_string(k) + ": no green and blue renders of a tinted scene";
+    return false;
+  }
+  OnOff(p.on_g, p.off_g, p.eps, gb[0], unused);
+  OnOff(p.on_b, p.off_b, p.eps, gb[1], unused);
+  return WriteVisibility(s.outdir, k, v, mask, s.ex.width, s.ex.height, err, gb);
+}
+
 // Renders in a fresh work folder and writes the visibility of every light.
 bool RenderFresh(DriverState& s, const std::string& exported)
 {
@@ -59,13 +79,7 @@ bool RenderFresh(DriverState& s, const std::string& exported)
       "rendered " + std::to_string(out.lights.size()) + " light(s) of " + std::to_string(s.lights);
   }
   for (int k = 0; ok && k < s.lights; ++k)
-  {
-    std::vector<float> v;
-    std::vector<unsigned char> mask;
-    const LightPair& p = out.lights[k];
-    OnOff(p.on, p.off, p.eps, v, mask);
-    ok = WriteVisibility(s.outdir, k, v, mask, s.ex.width, s.ex.height, err);
-  }
+    ok = WriteLight(s, k, out.lights[k], err);
   if (!ok || !s.opt.keep_work)
     RemoveTree(work);
   if (!ok)
@@ -102,8 +116,9 @@ Shipped LoadShipped(DriverState& s, const std::string& key)
   const std::string name = s.r.Name();
   const std::string entry = folder + "/" + name + "/" + key;
   std::string why;
-  switch (folder.empty() ? CacheLoadResult::Miss
-                         : CacheLoad(entry, s.outdir, s.lights, why, /*read_only=*/true))
+  switch (folder.empty()
+      ? CacheLoadResult::Miss
+      : CacheLoad(entry, s.outdir, s.lights, s.ex.tinted, why, /*read_only=*/true))
   {
     case CacheLoadResult::Hit:
       Progress(s.e.id + ": " + name + " shipped reference " + key);
@@ -144,8 +159,11 @@ bool RunReference(const ReferenceRenderer& r, const Options& opt, const SceneEnt
   if (!r.GetUnusable().empty())
     return s.Fail(r.GetUnusable());
   const std::string exported = r.ExportBytes(ex);
+  // A tinted scene's entries hold the green and blue channels too: a line of
+  // its own, so the keys of every other scene stay what they were.
   const std::string keytext = std::string(kFormatVersion) + "\nrenderer " + r.GetVersion() + "\n" +
-    r.KeySettings(ex) + content_key + "export " + MD5Hex(exported) + "\n";
+    r.KeySettings(ex) + content_key + "export " + MD5Hex(exported) + "\n" +
+    (ex.tinted ? "channels red green blue\n" : "");
   const std::string key = MD5Hex(keytext);
   res.reference_keys[name] = key;
   const Shipped shipped = LoadShipped(s, key);
@@ -153,7 +171,7 @@ bool RunReference(const ReferenceRenderer& r, const Options& opt, const SceneEnt
     return shipped == Shipped::Used;
   const std::string cdir = opt.cache + "/" + name + "/" + key;
   if (!opt.no_cache)
-    switch (CacheLoad(cdir, s.outdir, s.lights, why))
+    switch (CacheLoad(cdir, s.outdir, s.lights, ex.tinted, why))
     {
       case CacheLoadResult::Hit:
         Progress(e.id + ": " + name + " from cache " + key);
@@ -170,7 +188,7 @@ bool RunReference(const ReferenceRenderer& r, const Options& opt, const SceneEnt
     }
   if (!RenderFresh(s, exported))
     return false;
-  if (!CacheStore(cdir, s.outdir, s.lights, keytext, why))
+  if (!CacheStore(cdir, s.outdir, s.lights, ex.tinted, keytext, why))
     Progress("WARNING " + e.id + ": " + name + " not cached: " + why);
   return true;
 }

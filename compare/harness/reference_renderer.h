@@ -24,9 +24,12 @@ namespace vsh_harness
 
 // One light's renders: intensities with shadows on and off (width * height,
 // row 0 on top), and the threshold of off above which a pixel is valid.
+// on and off are the red channel; a tinted scene's renders also give the
+// green and blue ones (the valid mask is the red channel's).
 struct LightPair
 {
   std::vector<float> on, off;
+  std::vector<float> on_g, off_g, on_b, off_b; // tinted scenes only
   double eps = 0;
 };
 

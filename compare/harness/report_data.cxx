@@ -44,9 +44,9 @@ std::string CsvRow(const Row& r)
     r.height, r.m.valid_pixels, r.m.compared_pixels, r.m.vis_mae, r.m.wrong_pct, r.m.edge_px,
     r.m.false_shadow_pct, r.m.false_light_pct, Fmt(r.m.wrong_of_shadow_pct, "%.9g").c_str(),
     r.status.c_str());
-  // reflection_mae last: the columns up to the penumbra ones keep their places.
+  // Columns added later go last, so every earlier column keeps its place.
   return buf + PenumbraFields(r.pen, ",", false) + "," + Num(r.reflection_mae, false) + "," +
-    Num(r.wrong_band_pct, false) + "\n";
+    Num(r.wrong_band_pct, false) + "," + Num(r.colour_mae, false) + "\n";
 }
 
 std::string JsonRow(const Row& r)
@@ -67,7 +67,8 @@ std::string JsonRow(const Row& r)
     Num(r.reflection_mae, true).c_str(), r.status.c_str(), JsonEscape(r.check).c_str(),
     JsonEscape(r.heatmap).c_str(), JsonEscape(r.mirror_heatmap).c_str());
   return buf + PenumbraFields(r.pen, ", ", true) +
-    ", \"wrong_band_pct\": " + Num(r.wrong_band_pct, true) + ", \"pen_heatmap\": \"" +
+    ", \"wrong_band_pct\": " + Num(r.wrong_band_pct, true) +
+    ", \"colour_mae\": " + Num(r.colour_mae, true) + ", \"pen_heatmap\": \"" +
     JsonEscape(r.pen_heatmap) + "\"}";
 }
 
@@ -118,7 +119,7 @@ bool WriteResults(const Options& opt, const std::vector<SceneResult>& all)
                     "compared_pixels,vis_mae,wrong_pct,edge_px,false_shadow_pct,false_light_pct,"
                     "wrong_of_shadow_pct,status,pen_pixels,pen_mae,pen_bias,pen_leak_pct,"
                     "pen_false_shadow_pct,pen_width_ratio,pen_contour_01_px,pen_contour_05_px,"
-                    "pen_contour_09_px,reflection_mae,wrong_band_pct\n";
+                    "pen_contour_09_px,reflection_mae,wrong_band_pct,colour_mae\n";
   std::string json = "{\n  \"scenes\": [\n";
   for (size_t si = 0; si < all.size(); ++si)
   {

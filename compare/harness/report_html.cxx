@@ -123,8 +123,8 @@ std::string RowTable(const SceneResult& sr, int k)
   std::string h =
     "<table><tr><th>test</th><th>valid px</th><th>vis_mae</th><th>wrong_pct</th>"
     "<th>wrong_band_pct</th><th>edge_px</th><th>false_shadow_pct</th><th>false_light_pct</th>"
-    "<th>wrong_of_shadow_pct</th><th>reflection_mae</th><th>status</th>"
-    "<th>check</th></tr>";
+    "<th>wrong_of_shadow_pct</th><th>reflection_mae</th>" +
+    std::string(sr.tinted ? "<th>colour_mae</th>" : "") + "<th>status</th><th>check</th></tr>";
   for (const Row& r : sr.rows)
   {
     if (r.light != k)
@@ -140,7 +140,11 @@ std::string RowTable(const SceneResult& sr, int k)
     const char* cls = r.check.rfind("FAILED", 0) == 0 ? " class=\"err\""
       : r.check.rfind("known failure", 0) == 0        ? " class=\"known\""
                                                       : "";
-    h += std::string("<tr") + cls + "><td>" + HtmlEscape(r.test) + "</td>" + buf + "<td>" +
+    // colour_mae: a column of tinted scenes only.
+    const std::string colour = !sr.tinted ? ""
+      : std::isfinite(r.colour_mae)       ? "<td>" + Fmt(r.colour_mae, "%.4f") + "</td>"
+                                          : "<td></td>";
+    h += std::string("<tr") + cls + "><td>" + HtmlEscape(r.test) + "</td>" + buf + colour + "<td>" +
       HtmlEscape(r.status) + "</td><td>" + HtmlEscape(r.check) + "</td></tr>";
   }
   return h + "</table>\n";

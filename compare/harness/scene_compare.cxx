@@ -3,6 +3,7 @@
 
 #include "harness_files.h"
 #include "harness_png.h"
+#include "visibility_io.h"
 
 #include "vshm_metrics.h"
 #include "vshm_penumbra.h"
@@ -70,6 +71,37 @@ double WrongOutsideBand(const std::vector<float>& tv, const std::vector<float>& 
     return std::nan("");
   return banded.wrong_pct;
 }
+
+// colour_mae of a tinted scene: the mean over the green and blue channels
+// of the mean |v_test - v_ref| over the reference's valid pixels. NaN with
+// `err` set when a channel file cannot be read; NaN when nothing is valid.
+double ColourMae(const std::string& base, const std::string& testdir, int k,
+  const std::vector<unsigned char>& valid, int w, int h, std::string& err)
+{
+  double sum = 0;
+  long n = 0;
+  for (int c = 1; c < 3; ++c)
+  {
+    const std::string name = "/" + ChannelFileName(k, c);
+    std::vector<float> ref, tv;
+    int w1 = 0, h1 = 0, w2 = 0, h2 = 0;
+    if (!ReadPNGChannel(base + "/povray" + name, ref, w1, h1, err) ||
+      !ReadPNGChannel(base + "/" + testdir + name, tv, w2, h2, err))
+      return std::nan("");
+    if (w1 != w || w2 != w || h1 != h || h2 != h)
+    {
+      err = "colour: image sizes differ";
+      return std::nan("");
+    }
+    for (size_t i = 0; i < valid.size(); ++i)
+      if (valid[i])
+      {
+        sum += std::fabs(double(tv[i]) - ref[i]);
+        ++n;
+      }
+  }
+  return n ? sum / n : std::nan("");
+}
 } // namespace
 
 double RowMetric(const Row& r, const std::string& name, bool& known)
@@ -78,6 +110,11 @@ double RowMetric(const Row& r, const std::string& name, bool& known)
   {
     known = true;
     return r.reflection_mae;
+  }
+  if (name == "colour_mae")
+  {
+    known = true;
+    return r.colour_mae;
   }
   if (name == "wrong_band_pct")
   {
@@ -103,7 +140,7 @@ double RowMetric(const Row& r, const std::string& name, bool& known)
 }
 
 Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const std::string& test,
-  const std::string& testdir, const std::string& light_type)
+  const std::string& testdir, const std::string& light_type, bool tinted)
 {
   Row row;
   row.scene = e.id;
@@ -137,6 +174,12 @@ Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const s
   row.height = h;
   row.wrong_band_pct = WrongOutsideBand(tv, ref, valid, w, h);
   row.status = rc == VSHM_METRICS_EMPTY ? "empty" : "ok";
+  if (tinted)
+  {
+    row.colour_mae = ColourMae(base, testdir, k, valid, w, h, err);
+    if (!err.empty())
+      row.error = "colour_mae: " + err; // the other metrics stand
+  }
   std::vector<unsigned char> rgb(3 * static_cast<size_t>(w) * h);
   vshm_error_heatmap_rgb(tv.data(), ref.data(), valid.data(), w, h, rgb.data());
   std::string tname = test;

@@ -12,8 +12,10 @@ namespace vsh_harness
 {
 
 // `testdir`: the test's folder under OUT/<scene>/ (e.g. "vtk/csm", "cycles").
+// `tinted`: the scene has green and blue visibility files; colour_mae is
+// measured from them.
 Row CompareWithReference(const Options& opt, const SceneEntry& e, int k, const std::string& test,
-  const std::string& testdir, const std::string& light_type);
+  const std::string& testdir, const std::string& light_type, bool tinted = false);
 
 } // namespace vsh_harness
 

@@ -159,6 +159,7 @@ bool BuildExport(vtkShadowScene* vs, const vsh_scene* s, int w, int h, ExportSce
     eo.opacity = vs->GetObjectOpacity(o);
     eo.filter = vs->GetObjectFilter(o);
     ex.has_mirror = ex.has_mirror || eo.mirror > 0;
+    ex.tinted = ex.tinted || (eo.opacity < 1 && eo.filter > 0);
     ExportPolyData(pd, ex, eo, lo, hi);
     if (!eo.triangles.empty())
       ex.objects.push_back(std::move(eo));

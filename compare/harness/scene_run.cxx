@@ -56,6 +56,7 @@ bool LoadScene(const Options& opt, const SceneEntry& e, SceneResult& res, Export
   std::string kerr;
   have_export =
     ContentKey(s, e.path, content_key, kerr) && BuildExport(vs, s, res.width, res.height, ex);
+  res.tinted = ex.tinted;
   if (!have_export)
     res.errors.push_back(
       "export: " + (kerr.empty() ? std::string("cannot build the scene") : kerr));
@@ -93,9 +94,9 @@ SceneResult RunScene(const Options& opt,
     for (const std::string& t : opt.techniques)
       if (ok_t.count(t))
         res.rows.push_back(
-          CompareWithReference(opt, e, k, "vtk/" + t, "vtk/" + t, res.light_types[k]));
+          CompareWithReference(opt, e, k, "vtk/" + t, "vtk/" + t, res.light_types[k], res.tinted));
     for (const std::string& b : peers_ok)
-      res.rows.push_back(CompareWithReference(opt, e, k, b, b, res.light_types[k]));
+      res.rows.push_back(CompareWithReference(opt, e, k, b, b, res.light_types[k], res.tinted));
   }
   if (have_export && pov_ok)
     RunReflections(opt, e, ex, ok_t, res);

@@ -9,31 +9,43 @@
 namespace vsh_harness
 {
 
-std::vector<std::string> LightFileNames(int k)
+std::string ChannelFileName(int k, int c)
 {
-  const std::string lk = "light" + std::to_string(k);
-  return { lk + "_visibility.png", lk + "_mask.png" };
+  static const char* const kSuffix[] = { "", "_g", "_b" };
+  return "light" + std::to_string(k) + "_visibility" + kSuffix[c] + ".png";
+}
+
+std::vector<std::string> LightFileNames(int k, bool tinted)
+{
+  std::vector<std::string> names{ ChannelFileName(k, 0),
+    "light" + std::to_string(k) + "_mask.png" };
+  if (tinted)
+    for (int c = 1; c < 3; ++c)
+      names.push_back(ChannelFileName(k, c));
+  return names;
 }
 
 bool WriteVisibility(const std::string& dir, int k, const std::vector<float>& v,
-  const std::vector<unsigned char>& mask, int w, int h, std::string& err)
+  const std::vector<unsigned char>& mask, int w, int h, std::string& err,
+  const std::vector<float>* gb)
 {
   char e[1024] = "";
-  const std::vector<std::string> names = LightFileNames(k);
-  if (vshm_png_write_gray16_float((dir + "/" + names[0]).c_str(), v.data(), w, h, e, sizeof e) !=
-      0 ||
-    vshm_png_write_gray8((dir + "/" + names[1]).c_str(), mask.data(), w, h, e, sizeof e) != 0)
-  {
+  const std::vector<std::string> names = LightFileNames(k, gb != nullptr);
+  bool ok =
+    vshm_png_write_gray16_float((dir + "/" + names[0]).c_str(), v.data(), w, h, e, sizeof e) == 0 &&
+    vshm_png_write_gray8((dir + "/" + names[1]).c_str(), mask.data(), w, h, e, sizeof e) == 0;
+  for (int c = 1; ok && gb && c < 3; ++c)
+    ok = vshm_png_write_gray16_float(
+           (dir + "/" + names[c + 1]).c_str(), gb[c - 1].data(), w, h, e, sizeof e) == 0;
+  if (!ok)
     err = e;
-    return false;
-  }
-  return true;
+  return ok;
 }
 
 void RemoveLightFiles(const std::string& dir, int lights)
 {
   for (int k = 0; k < lights; ++k)
-    for (const std::string& n : LightFileNames(k))
+    for (const std::string& n : LightFileNames(k, true))
       unlink((dir + "/" + n).c_str());
 }
 

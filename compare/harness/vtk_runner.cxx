@@ -30,11 +30,21 @@ bool RenderTechnique(const Options& opt, const SceneEntry& e, const std::string&
   double total = 0;
   for (int k = 0; k < lights; ++k)
   {
-    const std::vector<std::string> names = LightFileNames(k);
+    const std::vector<std::string> names = LightFileNames(k, res.tinted);
     std::vector<std::string> argv{ opt.render_bin, AbsPath(e.path), "--image",
-      AbsPath(outdir + "/image.png"), "--light", std::to_string(k), "--visibility",
-      AbsPath(outdir + "/" + names[0]), "--mask", AbsPath(outdir + "/" + names[1]), "--size",
-      std::to_string(w) + "x" + std::to_string(h), "--quiet" };
+      AbsPath(outdir + "/image.png"), "--light", std::to_string(k) };
+    // A tinted scene: light<K>_visibility.png is the red channel, as the
+    // references' (else the sum of R, G and B: the same for white light).
+    const std::vector<std::string> vis = res.tinted
+      ? std::vector<std::string>{ "--visibility-red", AbsPath(outdir + "/" + names[0]),
+          "--visibility-green", AbsPath(outdir + "/" + names[2]), "--visibility-blue",
+          AbsPath(outdir + "/" + names[3]) }
+      : std::vector<std::string>{ "--visibility", AbsPath(outdir + "/" + names[0]) };
+    argv.insert(argv.end(), vis.begin(), vis.end());
+    for (const std::string& a :
+      { std::string("--mask"), AbsPath(outdir + "/" + names[1]), std::string("--size"),
+        std::to_string(w) + "x" + std::to_string(h), std::string("--quiet") })
+      argv.push_back(a);
     // --technique NAME and a variant's --set KEY=VALUE (technique_variant.h).
     const std::vector<std::string> tech = RenderArguments(t);
     argv.insert(argv.begin() + 2, tech.begin(), tech.end());

@@ -93,6 +93,15 @@ add_test(NAME harness.eevee
           --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/eevee)
 set_tests_properties(harness.eevee PROPERTIES TIMEOUT 600 LABELS "harness" FIXTURES_REQUIRED xvfb)
 
+# Tinted shadows (a red filter slab, scenes/translucent/coloured-filter.json):
+# every renderer writes the green and blue channels' visibility, POV-Ray and
+# Cycles agree on colour_mae, vtk/none (no shadow) and a POV-Ray export
+# without the filter are caught by it (test_tinted.py, about 20 s).
+add_test(NAME harness.tinted
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_tinted.py --bin ${VTKSHADOW_BIN}
+          --source ${PROJECT_SOURCE_DIR} --out ${VTKSHADOW_TEST_OUT}/harness/tinted)
+set_tests_properties(harness.tinted PROPERTIES TIMEOUT 120 LABELS "harness" FIXTURES_REQUIRED xvfb)
+
 # --check itself (issue 18): renders VTK techniques, so it needs the display.
 add_test(NAME harness.check
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_harness.py check --bin ${VTKSHADOW_BIN}

@@ -242,10 +242,10 @@ HOSTILE = [
 
 def cycles_layout(data):
     """Walks the exported Cycles data file by the layout documented in
-    compare/blender/render_cycles.py (version 03): None when it matches to
+    compare/blender/render_cycles.py (version 04): None when it matches to
     the last byte, else what is wrong."""
-    if data[:8] != b"VSHCYC03":
-        return "magic %r, expected VSHCYC03" % data[:8]
+    if data[:8] != b"VSHCYC04":
+        return "magic %r, expected VSHCYC04" % data[:8]
     try:
         pos = 8
         width, height, _samples, _seed, centre, nlights, nobjects = struct.unpack_from("<7i", data, pos)
@@ -257,10 +257,10 @@ def cycles_layout(data):
         for _ in range(nobjects):
             npts, ntri, casts = struct.unpack_from("<3i", data, pos)
             pos += 3 * 4
-            rgbm = struct.unpack_from("<4d", data, pos)
-            pos += 4 * 8 + 2 * 3 * 8 * npts + 3 * 4 * ntri
+            rgbm = struct.unpack_from("<6d", data, pos)  # colour, mirror, opacity, filter
+            pos += 6 * 8 + 2 * 3 * 8 * npts + 3 * 4 * ntri
             if casts not in (0, 1) or not all(0.0 <= c <= 1.0 for c in rgbm):
-                return "object fields casts=%r colour/mirror=%r" % (casts, rgbm)
+                return "object fields casts=%r colour/mirror/opacity/filter=%r" % (casts, rgbm)
     except struct.error as e:
         return "short file: %s" % e
     if pos != len(data):

@@ -39,10 +39,10 @@ vtkImageData* NewImage(int w, int h, int type)
 }
 
 // Render the renderer's window through `pass` wrapped in a float framebuffer
-// and return the summed RGB of every pixel (row 0 at the bottom). Float
-// targets keep the dim, grazing-angle pixels as exact as the bright ones.
-bool RenderFloatIntensity(vtkRenderWindow* window, vtkOpenGLRenderer* renderer, vtkRenderPass* pass,
-  int w, int h, std::vector<float>& intensity)
+// and return the RGBA of every pixel (row 0 at the bottom). Float targets
+// keep the dim, grazing-angle pixels as exact as the bright ones.
+bool RenderFloatRGBA(vtkRenderWindow* window, vtkOpenGLRenderer* renderer, vtkRenderPass* pass,
+  int w, int h, std::vector<float>& rgba)
 {
   vtkNew<vtkFramebufferPass> capture;
   capture->SetColorFormat(vtkTextureObject::Float32);
@@ -63,21 +63,42 @@ bool RenderFloatIntensity(vtkRenderWindow* window, vtkOpenGLRenderer* renderer, 
   while (glGetError() != GL_NO_ERROR)
   {
   }
-  std::vector<float> rgba(static_cast<size_t>(w) * h * 4);
+  rgba.assign(static_cast<size_t>(w) * h * 4, 0.0f);
   color->Activate();
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, rgba.data());
   color->Deactivate();
   const bool ok = glGetError() == GL_NO_ERROR;
-  intensity.resize(static_cast<size_t>(w) * h);
-  for (size_t i = 0; i < intensity.size(); ++i)
-  {
-    intensity[i] = rgba[4 * i] + rgba[4 * i + 1] + rgba[4 * i + 2];
-  }
   // Release the pass (and its GL resources) while the context is current.
   capture->ReleaseGraphicsResources(window);
   renderer->SetPass(nullptr);
   return ok;
+}
+
+// The summed RGB of every pixel of an RGBA image.
+std::vector<float> SumRGB(const std::vector<float>& rgba)
+{
+  std::vector<float> intensity(rgba.size() / 4);
+  for (size_t i = 0; i < intensity.size(); ++i)
+  {
+    intensity[i] = rgba[4 * i] + rgba[4 * i + 1] + rgba[4 * i + 2];
+  }
+  return intensity;
+}
+
+// 16-bit visibility of channel c: on_c / off_c where the mask is valid.
+vtkImageData* ChannelImage(const std::vector<float>& on, const std::vector<float>& off,
+  const unsigned char* mask, int c, int w, int h)
+{
+  vtkImageData* image = NewImage(w, h, VTK_UNSIGNED_SHORT);
+  auto* out = static_cast<unsigned short*>(image->GetScalarPointer());
+  for (size_t i = 0; i < off.size() / 4; ++i)
+  {
+    const float a = on[4 * i + c], b = off[4 * i + c];
+    const float v = mask[i] && b > 0 ? std::min(1.0f, std::max(0.0f, a / b)) : 0.0f;
+    out[i] = static_cast<unsigned short>(std::lround(v * 65535.0f));
+  }
+  return image;
 }
 } // namespace
 
@@ -94,6 +115,7 @@ vtkShadowVisibility::vtkShadowVisibility()
   , Shadowed(nullptr)
   , Mask(nullptr)
   , Visibility16(nullptr)
+  , ChannelVisibility16{ nullptr, nullptr, nullptr }
 {
 }
 
@@ -103,12 +125,20 @@ vtkShadowVisibility::~vtkShadowVisibility()
   this->SetScene(nullptr);
   this->SetTechnique(nullptr);
   this->SetErrorMessage(nullptr);
-  for (vtkImageData* image :
-    { this->Visibility, this->Unshadowed, this->Shadowed, this->Mask, this->Visibility16 })
+  this->ReleaseImages();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVisibility::ReleaseImages()
+{
+  for (vtkImageData** image :
+    { &this->Visibility, &this->Unshadowed, &this->Shadowed, &this->Mask, &this->Visibility16,
+      &this->ChannelVisibility16[0], &this->ChannelVisibility16[1], &this->ChannelVisibility16[2] })
   {
-    if (image)
+    if (*image)
     {
-      image->Delete();
+      (*image)->Delete();
+      *image = nullptr;
     }
   }
 }
@@ -159,22 +189,16 @@ bool vtkShadowVisibility::Compute()
   vtkSmartPointer<vtkRenderPass> unshadowed;
   unshadowed.TakeReference(none->CreatePass());
 
-  std::vector<float> on, off;
-  if (!RenderFloatIntensity(window, renderer, unshadowed, w, h, off) ||
-    !RenderFloatIntensity(window, renderer, shadowed, w, h, on))
+  std::vector<float> onRGBA, offRGBA;
+  if (!RenderFloatRGBA(window, renderer, unshadowed, w, h, offRGBA) ||
+    !RenderFloatRGBA(window, renderer, shadowed, w, h, onRGBA))
   {
     this->SetErrorMessage("could not read back the float render target");
     return false;
   }
+  const std::vector<float> on = SumRGB(onRGBA), off = SumRGB(offRGBA);
 
-  for (vtkImageData** image :
-    { &this->Visibility, &this->Unshadowed, &this->Shadowed, &this->Mask, &this->Visibility16 })
-  {
-    if (*image)
-    {
-      (*image)->Delete();
-    }
-  }
+  this->ReleaseImages();
   this->Visibility = NewImage(w, h, VTK_FLOAT);
   this->Unshadowed = NewImage(w, h, VTK_FLOAT);
   this->Shadowed = NewImage(w, h, VTK_FLOAT);
@@ -194,6 +218,10 @@ bool vtkShadowVisibility::Compute()
     vis[i] = v;
     mask[i] = valid ? 255 : 0;
     vis16[i] = static_cast<unsigned short>(std::lround(v * 65535.0f));
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    this->ChannelVisibility16[c] = ChannelImage(onRGBA, offRGBA, mask, c, w, h);
   }
   return true;
 }
@@ -218,6 +246,10 @@ vtkImageData* vtkShadowVisibility::GetMask()
 vtkImageData* vtkShadowVisibility::GetVisibility16()
 {
   return this->Visibility16;
+}
+vtkImageData* vtkShadowVisibility::GetChannelVisibility16(int channel)
+{
+  return channel >= 0 && channel < 3 ? this->ChannelVisibility16[channel] : nullptr;
 }
 
 //------------------------------------------------------------------------------

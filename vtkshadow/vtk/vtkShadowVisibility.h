@@ -80,11 +80,22 @@ public:
    */
   vtkImageData* GetVisibility16();
 
+  /**
+   * The visibility of one colour channel (0 red, 1 green, 2 blue) as 16-bit
+   * grayscale: I_on / I_off of that channel alone, over the same mask. A
+   * shadow through a coloured filter (docs/translucency.md) differs per
+   * channel; GetVisibility16() is that of the summed RGB. nullptr for
+   * another channel or before Compute().
+   */
+  vtkImageData* GetChannelVisibility16(int channel);
+
 protected:
   vtkShadowVisibility();
   ~vtkShadowVisibility() override;
 
   vtkSetStringMacro(ErrorMessage);
+  // Deletes every result image.
+  void ReleaseImages();
 
   vtkShadowScene* Scene;
   vtkShadowTechnique* Technique;
@@ -97,6 +108,7 @@ protected:
   vtkImageData* Shadowed;
   vtkImageData* Mask;
   vtkImageData* Visibility16;
+  vtkImageData* ChannelVisibility16[3];
 
 private:
   vtkShadowVisibility(const vtkShadowVisibility&) = delete;
