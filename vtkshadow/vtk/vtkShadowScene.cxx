@@ -734,8 +734,14 @@ bool vtkShadowScene::PopulateWith(vtkRenderer* renderer, int mode, int onlyLight
       // renders, only the (1 - opacity) blend factor that cancels in
       // I_on / I_off: the measure stays that of the opaque surface behind
       // it, as in the references, where the camera does not see it.
+      // Its colour stays: a filter tints what it lets through by it.
       const bool translucent = this->GetObjectOpacity(i) < 1.0;
-      p->SetColor(1.0, 1.0, 1.0);
+      double color[3] = { 1.0, 1.0, 1.0 };
+      if (translucent)
+      {
+        this->GetObjectColor(i, color);
+      }
+      p->SetColor(color);
       p->SetAmbient(0.0);
       p->SetDiffuse(translucent ? 0.0 : 1.0);
       p->SetSpecular(0.0);
