@@ -81,6 +81,13 @@ foreach(_translucent raytrace)
   set_tests_properties(python.translucent.${_translucent} PROPERTIES LABELS "render" TIMEOUT 120)
 endforeach()
 
+# csm's partial shadows of translucent actors through its transmittance maps:
+# the same scene and expectations as raytrace's, with the default settings,
+# the screen resolve, PCF and Poisson.
+add_test(NAME python.translucent_csm
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_translucent_csm.py)
+set_tests_properties(python.translucent_csm PROPERTIES LABELS "render" TIMEOUT 120)
+
 # vedo: enable_shadows before show(), after it, or after another technique
 # gives the same frame, with the shadow, for every technique (needs
 # python3-vedo, which scripts/install-deps.sh installs).

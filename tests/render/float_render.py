@@ -167,15 +167,17 @@ def render_once(build, width, height, shadows, frames=1, configure=None):
 
 def render_technique(build, technique, width, height, inspect=None, rgb=False):
     """A fresh window with one renderer populated by build(renderer),
-    rendered once through the registry's `technique` (None: a plain
-    vtkRenderStepsPass, no shadows). Returns (float image: summed RGB, or
-    (H, W, 3) with `rgb`, what inspect(renderer, pass) returned before the
-    window went away)."""
+    rendered once through `technique`: a registry name, a pass, or None (a
+    plain vtkRenderStepsPass, no shadows). Returns (float image: summed RGB,
+    or (H, W, 3) with `rgb`, what inspect(renderer, pass) returned before
+    the window went away)."""
     window = new_window(width, height)
     renderer = new_renderer(window)
     build(renderer)
-    inner = (vtkshadow.vtkShadowTechniqueRegistry.CreatePass(technique) if technique
-             else vtkRenderStepsPass())
+    if isinstance(technique, str):
+        inner = vtkshadow.vtkShadowTechniqueRegistry.CreatePass(technique)
+    else:
+        inner = technique if technique is not None else vtkRenderStepsPass()
     capture = FloatCapture(renderer, inner)
     window.Render()
     image = capture.read_rgb() if rgb else capture.read()

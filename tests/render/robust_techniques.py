@@ -254,7 +254,8 @@ PROFILES = {
         work=csm_work, caching={"first": "some", "still": 0, "moved": "some", "data": "some", "light": "some",
                                 "orbit": "some", "small orbit reuses": True},
         headlight_on=lambda p: p.SetCastHeadlightShadows(True),
-        settings=csm_settings(), special={"debug-cascades": csm_debug_cascades}),
+        settings=csm_settings(), special={"debug-cascades": csm_debug_cascades},
+        translucent_casts=0.36),
     # Per light planar, csm or nothing, by an error target. Its choice may
     # differ between a set-up and its equivalent plain scene (it depends on how
     # the actors are split): planar and csm then differ on shadow-edge pixels.

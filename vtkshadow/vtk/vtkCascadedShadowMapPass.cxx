@@ -66,12 +66,44 @@ void ReleaseHeld(vtkshadow::CascadedHeldMaps& held, vtkWindow* w)
   {
     held.FBO->ReleaseGraphicsResources(w);
   }
+  for (vtkTextureObject* texture : { held.TranslucentDepth.Get(), held.Transmit.Get() })
+  {
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(w);
+    }
+  }
+  held.TransmitAllocated = false;
   held.AtlasSize[0] = held.AtlasSize[1] = 0;
   held.Rendered.clear();
 }
 
 constexpr int MaxLights = VSH_CSM_MAX_LIGHTS;
 constexpr int MaxTiles = VSH_CSM_MAX_TILES;
+}
+
+namespace vtkshadow
+{
+// (vtkCascadedShadowMapPassInternals.h)
+void AllocateDepthAtlas(
+  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width, int height)
+{
+  texture->SetContext(window);
+  texture->ReleaseGraphicsResources(window);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetDepthTextureCompare(true);
+  texture->SetDepthTextureCompareFunction(vtkTextureObject::Lequal);
+  texture->AllocateDepth(width, height, vtkTextureObject::Float32);
+  // The setters above change nothing the second time, so the texture
+  // object's time is older than its last SendParameters and the new GL
+  // texture would never get the depth compare mode: every lookup would
+  // then read as shadowed (found by the robustness suite: auto re-sizing
+  // its maps after a window resize).
+  texture->Modified();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -335,6 +367,11 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   // The scene, with every receiver's lighting reading the maps (forward) or
   // the mask the resolve wrote from them (screen).
   this->Impl->Held.Atlas->Activate();
+  if (this->Impl->Transmit)
+  {
+    this->Impl->Held.TranslucentDepth->Activate();
+    this->Impl->Held.Transmit->Activate();
+  }
   this->BindRawAtlas(window);
   if (this->Impl->Screen)
   {
@@ -345,14 +382,21 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
     this->RenderDelegateWithShaderHooks(s);
   }
   this->UnbindRawAtlas(window);
+  if (this->Impl->Transmit)
+  {
+    this->Impl->Held.Transmit->Deactivate();
+    this->Impl->Held.TranslucentDepth->Deactivate();
+  }
   this->Impl->Held.Atlas->Deactivate();
 }
 
 namespace
 {
 // FNV-1a over the casters' identity, matrix values and mesh times, in
-// order: equal for an unchanged set of casters (a caster leaving changes it).
-unsigned long long CasterContentKey(const std::vector<vtkshadow::ShadowActor>& casters)
+// order, and the translucent ones' opacities: equal for an unchanged set of
+// casters (a caster leaving changes it).
+unsigned long long CasterContentKey(const std::vector<vtkshadow::ShadowActor>& casters,
+  const std::vector<vtkshadow::ShadowActor>& translucent)
 {
   unsigned long long h = 1469598103934665603ULL;
   auto mix = [&h](const void* data, size_t n)
@@ -363,15 +407,27 @@ unsigned long long CasterContentKey(const std::vector<vtkshadow::ShadowActor>& c
       h = (h ^ b[i]) * 1099511628211ULL;
     }
   };
-  for (const vtkshadow::ShadowActor& caster : casters)
+  // Each list with its count; a translucent caster with its opacity (its
+  // transmittance maps change with it).
+  auto mixList = [&mix](const std::vector<vtkshadow::ShadowActor>& list, bool opacities)
   {
-    const vtkMTimeType mesh = vtkshadow::MeshTime(caster.Actor);
-    mix(&caster.Actor, sizeof(caster.Actor));
-    mix(caster.Matrix, sizeof(caster.Matrix));
-    mix(&mesh, sizeof(mesh));
-  }
-  const size_t count = casters.size();
-  mix(&count, sizeof(count));
+    for (const vtkshadow::ShadowActor& caster : list)
+    {
+      const vtkMTimeType mesh = vtkshadow::MeshTime(caster.Actor);
+      mix(&caster.Actor, sizeof(caster.Actor));
+      mix(caster.Matrix, sizeof(caster.Matrix));
+      mix(&mesh, sizeof(mesh));
+      if (opacities)
+      {
+        const double opacity = vtkshadow::CasterOpacity(caster.Actor);
+        mix(&opacity, sizeof(opacity));
+      }
+    }
+    const size_t count = list.size();
+    mix(&count, sizeof(count));
+  };
+  mixList(casters, false);
+  mixList(translucent, true);
   return h;
 }
 }
@@ -407,17 +463,35 @@ void vtkCascadedShadowMapPass::GatherScene(Frame& frame)
       vsh_bounds_merge(&scene.casters, &ab);
     }
   }
+  // Translucent casters are casters to the plan too (the maps' depth range
+  // reaches them, and a screen tile near one is not lit for certain); only
+  // those drawn as surfaces cast, as under raytrace. Every translucent
+  // actor receives on its own fragments (the forward lookups), so the maps
+  // cover it as a receiver.
+  for (const vtkshadow::ShadowActor& shadowActor :
+    vtkshadow::TranslucentShadowActors(shared.Renderer))
+  {
+    vsh_bounds ab;
+    vsh_bounds_from_vtk(&ab, shadowActor.Bounds);
+    vsh_bounds_merge(&scene.receivers, &ab);
+    if (vtkshadow::CastsAsSurface(shadowActor, vtkShadowPassBase::NO_CAST()))
+    {
+      frame.Translucent.push_back(shadowActor);
+      vsh_bounds_merge(&scene.casters, &ab);
+    }
+  }
+  this->Impl->Transmit = !frame.Translucent.empty();
   // The actors' placement by value, not their own MTime (VTK's pass
   // machinery gives actors property keys during the first frame, which
   // bumps it) nor their matrices' (set back to equal values by a mirror).
-  const unsigned long long key = CasterContentKey(frame.Casters);
+  const unsigned long long key = CasterContentKey(frame.Casters, frame.Translucent);
   if (key != this->Impl->Held.CasterKey || this->Impl->Held.CasterStamp.GetMTime() == 0)
   {
     this->Impl->Held.CasterKey = key;
     this->Impl->Held.CasterStamp.Modified();
   }
   frame.CasterTime = this->Impl->Held.CasterStamp.GetMTime();
-  scene.caster_count = static_cast<int>(frame.Casters.size());
+  scene.caster_count = static_cast<int>(frame.Casters.size() + frame.Translucent.size());
   // Across ranks: every rank plans from everyone's casters and receivers, so
   // the light matrices, the tiles and the reuse decisions agree.
   vtkMultiProcessController* controller = this->Impl->Controller;
@@ -598,24 +672,12 @@ int vtkCascadedShadowMapPass::AllocateAtlas(vtkOpenGLRenderWindow* window)
   if (!impl.Held.Atlas->GetHandle() || impl.Held.AtlasSize[0] != layout.width ||
     impl.Held.AtlasSize[1] != layout.height)
   {
-    impl.Held.Atlas->ReleaseGraphicsResources(window);
-    impl.Held.Atlas->SetWrapS(vtkTextureObject::ClampToEdge);
-    impl.Held.Atlas->SetWrapT(vtkTextureObject::ClampToEdge);
-    impl.Held.Atlas->SetMinificationFilter(vtkTextureObject::Linear);
-    impl.Held.Atlas->SetMagnificationFilter(vtkTextureObject::Linear);
-    impl.Held.Atlas->SetDepthTextureCompare(true);
-    impl.Held.Atlas->SetDepthTextureCompareFunction(vtkTextureObject::Lequal);
-    impl.Held.Atlas->AllocateDepth(layout.width, layout.height, vtkTextureObject::Float32);
-    // The setters above change nothing the second time, so the texture
-    // object's time is older than its last SendParameters and the new GL
-    // texture would never get the depth compare mode: every lookup would
-    // then read as shadowed (found by the robustness suite: auto re-sizing
-    // its maps after a window resize).
-    impl.Held.Atlas->Modified();
+    vtkshadow::AllocateDepthAtlas(impl.Held.Atlas, window, layout.width, layout.height);
     impl.Held.AtlasSize[0] = layout.width;
     impl.Held.AtlasSize[1] = layout.height;
     impl.Held.Rendered.clear(); // nothing held survives a new texture
   }
+  this->AllocateTransmit(window);
   // A held map is only reusable in the slot and at the texel size it was
   // rendered with: a new grid or resolution (auto's texel target follows the
   // window size and the casters) can keep the atlas size but not its layout.
@@ -706,14 +768,17 @@ void vtkCascadedShadowMapPass::BakeMaps(
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(
       1.5f * static_cast<float>(this->BiasScale), 2.0f * static_cast<float>(this->BiasScale));
-    for (const vtkshadow::ShadowActor& caster : frame.Casters)
+    for (const auto* casters : { &frame.Casters, &frame.Translucent })
     {
-      auto& geometry = impl.Casters[caster.Actor];
-      if (!geometry)
+      for (const vtkshadow::ShadowActor& caster : *casters)
       {
-        geometry.reset(new vtkShadowCasterGeometry);
+        auto& geometry = impl.Casters[caster.Actor];
+        if (!geometry)
+        {
+          geometry.reset(new vtkShadowCasterGeometry);
+        }
+        geometry->Update(caster.Actor);
       }
-      geometry->Update(caster.Actor);
     }
     const int columns = impl.Held.TileGrid[0];
     for (int t : bake)
@@ -724,10 +789,14 @@ void vtkCascadedShadowMapPass::BakeMaps(
       state->vtkglClearDepth(1.0);
       state->vtkglClear(GL_DEPTH_BUFFER_BIT);
       ++this->NumberOfMapsRendered;
-      this->DrawCasters(program, frame, this->BakeTile(t));
+      this->DrawCasters(program, frame.Casters, frame, this->BakeTile(t));
       // Each rank drew its own casters: the nearest depth of all is the map.
       vtkshadow::AllReduceDepthRegion(
         impl.Controller, impl.Held.Atlas, x, y, resolution, resolution, impl.ReduceScratch);
+    }
+    if (impl.Transmit)
+    {
+      this->BakeTranslucent(window, frame, bake, resolution);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
@@ -738,15 +807,18 @@ void vtkCascadedShadowMapPass::BakeMaps(
 }
 
 //------------------------------------------------------------------------------
-// Every caster's depth into the current tile (an empty map stays cleared).
-void vtkCascadedShadowMapPass::DrawCasters(
-  vtkShaderProgram* program, const Frame& frame, const vsh_csm_tile& tile)
+// Each of `casters` into the current tile (an empty map stays cleared); a
+// program reading vshCrossing (the transmittance maps') gets each caster's
+// 1 - opacity.
+void vtkCascadedShadowMapPass::DrawCasters(vtkShaderProgram* program,
+  const std::vector<vtkshadow::ShadowActor>& casters, const Frame& frame, const vsh_csm_tile& tile)
 {
   if (tile.view.texel_world <= 0.0)
   {
     return;
   }
-  for (const vtkshadow::ShadowActor& caster : frame.Casters)
+  const bool crossing = program->IsUniformUsed("vshCrossing");
+  for (const vtkshadow::ShadowActor& caster : casters)
   {
     vtkShadowCasterGeometry* geometry = this->Impl->Casters[caster.Actor].get();
     if (geometry->GetNumberOfTriangles() == 0)
@@ -760,6 +832,11 @@ void vtkCascadedShadowMapPass::DrawCasters(
     float mcdcF[16];
     ToFloatTransposed(mcdc, mcdcF);
     program->SetUniformMatrix4x4("mapMCDC", mcdcF);
+    if (crossing)
+    {
+      program->SetUniformf(
+        "vshCrossing", static_cast<float>(1.0 - vtkshadow::CasterOpacity(caster.Actor)));
+    }
     geometry->Draw(program);
   }
 }
@@ -772,8 +849,10 @@ void vtkCascadedShadowMapPass::ReleaseRemovedCasters(
   Internals& impl = *this->Impl;
   for (auto it = impl.Casters.begin(); it != impl.Casters.end();)
   {
-    if (std::none_of(frame.Casters.begin(), frame.Casters.end(),
-          [&](const vtkshadow::ShadowActor& caster) { return caster.Actor == it->first; }))
+    const auto same = [&](const vtkshadow::ShadowActor& caster)
+    { return caster.Actor == it->first; };
+    if (std::none_of(frame.Casters.begin(), frame.Casters.end(), same) &&
+      std::none_of(frame.Translucent.begin(), frame.Translucent.end(), same))
     {
       it->second->ReleaseGraphicsResources(window);
       it = impl.Casters.erase(it);
@@ -872,6 +951,11 @@ void vtkCascadedShadowMapPass::SetLookupUniforms(vtkShaderProgram* program)
   vsh_csm_tile_plan& plan = impl.Plan.tiles;
   const int tiles = std::min<int>(plan.tile_count, MaxTiles);
   program->SetUniformi("vshShadowAtlas", impl.Held.Atlas->GetTextureUnit());
+  if (impl.Transmit)
+  {
+    program->SetUniformi("vshTranslucentAtlas", impl.Held.TranslucentDepth->GetTextureUnit());
+    program->SetUniformi("vshTransmitAtlas", impl.Held.Transmit->GetTextureUnit());
+  }
   const float texel[2] = { 1.0f / std::max(impl.Held.AtlasSize[0], 1),
     1.0f / std::max(impl.Held.AtlasSize[1], 1) };
   program->SetUniform2f("vshAtlasTexel", texel);
@@ -967,6 +1051,10 @@ std::string vtkCascadedShadowMapPass::LookupDefines() const
       std::to_string(this->PCSSBlockerTaps) + "\n#define VSH_PCSS_FILTER_TAPS " +
       std::to_string(this->PCSSFilterTaps) + "\n#define VSH_PCSS_MAX_TEXELS " +
       std::to_string(this->PCSSMaxTexels) + "\n";
+  }
+  if (this->Impl->Transmit)
+  {
+    out += "#define VSH_TRANSMIT 1\n";
   }
   if (this->Impl->Sampled)
   {

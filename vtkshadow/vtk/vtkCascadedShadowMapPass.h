@@ -44,6 +44,10 @@ class vtkOpenGLRenderWindow;
 class vtkRenderer;
 struct vsh_csm_settings;
 struct vsh_csm_tile;
+namespace vtkshadow
+{
+struct ShadowActor;
+}
 
 class VTKSHADOW_EXPORT vtkCascadedShadowMapPass : public vtkShadowPassBase
 {
@@ -382,7 +386,14 @@ private:
   double LookupReachTexels() const;
   void BakeMaps(vtkOpenGLRenderWindow* window, const Frame& frame, const std::vector<int>& bake,
     int resolution);
-  void DrawCasters(vtkShaderProgram* program, const Frame& frame, const vsh_csm_tile& tile);
+  void DrawCasters(vtkShaderProgram* program, const std::vector<vtkshadow::ShadowActor>& casters,
+    const Frame& frame, const vsh_csm_tile& tile);
+  // Translucent casters (vtkCascadedShadowMapTranslucent.cxx): their
+  // nearest-depth and transmittance atlases, allocated only while the scene
+  // has one, and their bake into the tiles BakeMaps renders.
+  void AllocateTransmit(vtkOpenGLRenderWindow* window);
+  void BakeTranslucent(vtkOpenGLRenderWindow* window, const Frame& frame,
+    const std::vector<int>& bake, int resolution);
   void ReleaseRemovedCasters(vtkOpenGLRenderWindow* window, const Frame& frame);
   // The screen-space resolve (vtkCascadedShadowMapResolve.cxx).
   bool ChooseScreenResolve(const Frame& frame) const;

@@ -27,6 +27,7 @@
 
 class vtkActor;
 class vtkMultiProcessController;
+class vtkOpenGLRenderWindow;
 
 namespace vtkshadow
 {
@@ -67,9 +68,27 @@ struct CascadedHeldMaps
   // SOFT_SAMPLED: what the sample slots hold (the lights' sample frames and
   // slots); when it changes every slot is baked again.
   unsigned long long SampleKey = 0;
+  // Translucent casters (docs/translucency.md), in the atlas's layout and
+  // allocated only while the scene has one: per texel their nearest depth
+  // (32-bit float depth) and the product of (1 - opacity) over their
+  // surfaces in front of the opaque map (16-bit float).
+  vtkSmartPointer<vtkTextureObject> TranslucentDepth;
+  vtkSmartPointer<vtkTextureObject> Transmit;
+  bool TransmitAllocated = false;
 
-  long long Bytes() const { return 4LL * this->AtlasSize[0] * this->AtlasSize[1]; }
+  long long Bytes() const
+  {
+    return (this->TransmitAllocated ? 10LL : 4LL) * this->AtlasSize[0] * this->AtlasSize[1];
+  }
 };
+
+/**
+ * (Re)allocate `texture` as a depth atlas of width x height, compared with
+ * LEQUAL and filtered linearly (the hardware 2x2 comparison): the maps'
+ * atlas and the translucent casters' nearest depths.
+ */
+void AllocateDepthAtlas(
+  vtkTextureObject* texture, vtkOpenGLRenderWindow* window, int width, int height);
 
 /**
  * GLSL statements that set `target(I)` ("%d" stands for I) to the shadow
@@ -105,6 +124,9 @@ struct vtkCascadedShadowMapPass::Frame
   }
   const vtkshadow::ShadowFrame& Shared;
   std::vector<vtkshadow::ShadowActor> Casters;
+  // Translucent actors that cast (TranslucentShadowActors, CastsAsSurface):
+  // drawn into the transmittance maps, not the depth maps.
+  std::vector<vtkshadow::ShadowActor> Translucent;
   vtkMTimeType CasterTime = 0;       // changes when a caster moves, changes or leaves
   std::vector<vsh_csm_light> Lights; // switched on, in the mappers' numbering
   vsh_csm_scene Scene{};             // its `lights` point into Lights
@@ -161,6 +183,9 @@ struct vtkCascadedShadowMapPass::Internals
   float FadeStart = 0.0f;
   float MaxDistance = 0.0f;
   std::string ShaderSignature; // kinds, filter: what the generated code depends on
+  // This frame has translucent casters: their maps are baked and read
+  // (VSH_TRANSMIT).
+  bool Transmit = false;
   // The screen-space resolve: the mask, whether this frame uses it, the
   // resolve shader per mask texture (lights 0-3, 4-7), and whether the
   // depth pre-pass is running (the mask's textures are not bound then).

@@ -319,9 +319,9 @@ void vtkRayTracedShadowPass::GatherFrame(Frame& frame)
     key.push_back(casts ? 1.0 : 0.0);
     key.insert(key.end(), a.Matrix, a.Matrix + 16);
   }
-  // Translucent actors cast partial shadows with their opacity (only here:
-  // the other techniques leave them out; docs/translucency.md). They do not
-  // receive: they are not in the depth pass.
+  // Translucent actors cast partial shadows with their opacity (as under
+  // csm; docs/translucency.md). They do not receive: they are not in the
+  // depth pass.
   for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(shared.Renderer))
   {
     if (!vtkshadow::CastsAsSurface(a, NO_CAST()))

@@ -96,8 +96,8 @@ std::vector<ShadowActor> ShadowActors(const vtkRenderState* s);
 std::vector<ShadowActor> ShadowActors(vtkRenderer* renderer);
 
 // The renderer's translucent actors whose property's opacity is below 1
-// (CasterOpacity), from its props as above: what raytrace lets cast a
-// partial shadow (docs/translucency.md). Actors translucent only through a
+// (CasterOpacity), from its props as above: what raytrace and csm let cast
+// a partial shadow (docs/translucency.md). Actors translucent only through a
 // texture's or their scalars' alpha (opacity 1) are in neither list. Every
 // other technique leaves translucent actors out.
 std::vector<ShadowActor> TranslucentShadowActors(vtkRenderer* renderer);

@@ -2,7 +2,8 @@
 // Inserted after VTK's lighting declarations, after the pass's #defines
 // (VSH_FILTER: 0 hardware 2x2, 1 NxN PCF, 2 Poisson; VSH_PCF_HALF; VSH_PCSS
 // with VSH_PCSS_BLOCKER_TAPS, VSH_PCSS_FILTER_TAPS, VSH_PCSS_MAX_TEXELS in
-// frames where a casting light has a size) and
+// frames where a casting light has a size; VSH_TRANSMIT in frames with a
+// translucent caster) and
 // followed by a generated vshShadowPrepare() that calls vshShadowCascades,
 // vshShadowSpot or vshShadowPoint for each light that casts, with the
 // light's atlas tiles as literals. The filter and
@@ -41,6 +42,13 @@ uniform vec3 vshSampleV[8];
 uniform vec4 vshTileShear[24];       // directional: clip shear per unit of disk sample
 uniform int vshAtlasColumns;         // the atlas grid (sample slots have no uniforms)
 uniform vec2 vshAtlasTile;           // one tile's size in texture coordinates
+#endif
+#ifdef VSH_TRANSMIT
+// The translucent casters, beside the atlas in the same layout: their
+// nearest depth (compared like the atlas) and the product of (1 - opacity)
+// over their surfaces in front of the opaque map (linear filtering).
+uniform sampler2DShadow vshTranslucentAtlas;
+uniform sampler2D vshTransmitAtlas;
 #endif
 float vshShadowFactor[8];
 int vshShadowCascadeShown = -1;
@@ -167,6 +175,25 @@ float vshShadowPCSS(int tile, vec3 p, vec3 normalVC, vec2 uv, vec2 lo, vec2 hi, 
 }
 #endif
 
+// What the translucent casters let through to a receiver at atlas `uv`
+// (inside its tile), biased reference depth `ref`: 1 where the receiver is
+// nearer the light than every translucent surface of the texel (the same
+// comparison, bias and 2x2 filtering as the opaque map's), else the texel's
+// product of (1 - opacity), read bilinearly. A receiver between two
+// translucent surfaces gets the whole product.
+float vshTransmittance(vec2 uv, float ref)
+{
+#ifdef VSH_TRANSMIT
+  float front = texture(vshTranslucentAtlas, vec3(uv, ref));
+  return mix(texture(vshTransmitAtlas, uv).r, 1.0, front);
+#else
+  return 1.0;
+#endif
+}
+
+float vshShadowFiltered(int tile, vec3 posVC, vec3 p, vec3 normalVC, vec2 uv, vec2 lo, vec2 hi,
+  float ref, float w, bool perspective, float reach);
+
 // Fraction of the light reaching the fragment according to map `tile`
 // (perspective: a spot or point-light map, whose texels grow with distance).
 float vshShadowSample(int tile, vec3 posVC, vec3 normalVC, bool perspective)
@@ -204,10 +231,20 @@ float vshShadowSample(int tile, vec3 posVC, vec3 normalVC, bool perspective)
   {
     ref = clamp(ndc.z * 0.5 + 0.5 - bias.x, 0.0, 1.0);
   }
+  return vshShadowFiltered(tile, posVC, p, normalVC, uv, lo, hi, ref, clip.w, perspective, reach) *
+    vshTransmittance(clamp(uv, lo, hi), ref);
+}
+
+// The opaque map's filtered comparison for vshShadowSample: the receiver at
+// posVC (p: moved by the normal offset) is at atlas `uv` (inside lo..hi),
+// biased reference depth `ref`, clip w `w`.
+float vshShadowFiltered(int tile, vec3 posVC, vec3 p, vec3 normalVC, vec2 uv, vec2 lo, vec2 hi,
+  float ref, float w, bool perspective, float reach)
+{
 #ifdef VSH_PCSS
   if (vshTileSoft[tile].x > 0.0)
   {
-    float dr = perspective ? clip.w : ref * vshTileSoft[tile].y;
+    float dr = perspective ? w : ref * vshTileSoft[tile].y;
     return vshShadowPCSS(tile, p, normalVC, uv, lo, hi, ref, dr, perspective, reach);
   }
 #endif
@@ -337,7 +374,8 @@ float vshSampleMap(int tile, int slot, vec3 offsetVC, vec2 shear, vec3 posVC, ve
   {
     ref = clamp(ndc.z * 0.5 + 0.5 - bias.x, 0.0, 1.0);
   }
-  return texture(vshShadowAtlas, vec3(clamp(uv, lo, hi), ref));
+  vec2 at = clamp(uv, lo, hi);
+  return texture(vshShadowAtlas, vec3(at, ref)) * vshTransmittance(at, ref);
 }
 
 // Adaptive counts (VSH_SAMPLE_BATCH > 0): range holds the lowest and highest
