@@ -31,7 +31,6 @@ import vtkshadow  # noqa: E402
 from vtkmodules.vtkFiltersSources import (vtkCubeSource, vtkCylinderSource,  # noqa: E402
                                           vtkPlaneSource, vtkSphereSource)
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper  # noqa: E402
-from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass  # noqa: E402
 
 W, H = 320, 240
 
@@ -107,18 +106,10 @@ def cylinder(renderer):
 
 def render(build, technique):
     """(float image, stats) of `build` with technique (None: no shadows)."""
-    window = fr.new_window(W, H)
-    renderer = fr.new_renderer(window)
-    build(renderer)
-    inner = (vtkshadow.vtkShadowTechniqueRegistry.CreatePass(technique) if technique
-             else vtkRenderStepsPass())
-    capture = fr.FloatCapture(renderer, inner)
-    window.Render()
-    image = capture.read()
-    stats = json.loads("{" + inner.GetStatsJSON(renderer) + "}") if technique else {}
-    capture.release()
-    window.Finalize()
-    return image, stats
+    return fr.render_technique(
+        build, W, H, technique,
+        lambda renderer, inner:
+        json.loads("{" + inner.GetStatsJSON(renderer) + "}") if technique else {})
 
 
 def compare(name, build, expect_parts):

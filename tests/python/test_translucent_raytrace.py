@@ -27,11 +27,9 @@ from checks import check, finish  # noqa: E402
 
 import numpy as np  # noqa: E402
 import float_render as fr  # noqa: E402
-import vtkshadow  # noqa: E402
 from vtkmodules.vtkFiltersSources import (vtkCubeSource, vtkPlaneSource,  # noqa: E402
                                           vtkSphereSource)
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper  # noqa: E402
-from vtkmodules.vtkRenderingOpenGL2 import vtkRenderStepsPass  # noqa: E402
 
 W, H = 320, 240
 TOLERANCE = 0.03
@@ -100,18 +98,8 @@ def patch_pixels(renderer):
 
 def render(build, technique):
     """(float image, patch pixels) of `build` with technique (None: no shadows)."""
-    window = fr.new_window(W, H)
-    renderer = fr.new_renderer(window)
-    build(renderer)
-    inner = (vtkshadow.vtkShadowTechniqueRegistry.CreatePass(technique) if technique
-             else vtkRenderStepsPass())
-    capture = fr.FloatCapture(renderer, inner)
-    window.Render()
-    image = capture.read()
-    pixels = patch_pixels(renderer)
-    capture.release()
-    window.Finalize()
-    return image, pixels
+    return fr.render_technique(build, W, H, technique,
+                               lambda renderer, _: patch_pixels(renderer))
 
 
 def patch_visibility(caster, opacity, technique="raytrace"):

@@ -160,6 +160,26 @@ def render_once(build, width, height, shadows, frames=1, configure=None):
     return image, stats
 
 
+def render_technique(build, width, height, technique, after=None):
+    """A fresh window with one renderer populated by build(renderer),
+    rendered once through the registry's `technique` (None: a plain
+    vtkRenderStepsPass, no shadows). Returns the float image, or (image,
+    after(renderer, pass)) when `after` is given (read before the window
+    goes)."""
+    window = new_window(width, height)
+    renderer = new_renderer(window)
+    build(renderer)
+    inner = (vtkshadow.vtkShadowTechniqueRegistry.CreatePass(technique) if technique
+             else vtkRenderStepsPass())
+    capture = FloatCapture(renderer, inner)
+    window.Render()
+    image = capture.read()
+    extra = after(renderer, inner) if after else None
+    capture.release()
+    window.Finalize()
+    return (image, extra) if after else image
+
+
 def visibility(i_on, i_off, eps=EPSILON):
     """(v, valid): v = I_on / I_off clamped to [0, 1] where I_off > eps."""
     valid = i_off > eps
