@@ -21,7 +21,9 @@ An opaque floor, a directional light straight down, an oblique camera,
 (float renders, float_render.py) that neither scene's casters cover (a
 pixel is covered where the unshadowed render differs from the floor
 alone). Passes when the impostors' area is 0.6-1.6x the control's (the
-issue's acceptance); the none technique shows no shadow at all. Measured:
+issue's acceptance); the none technique shows no shadow at all, nor do
+the casters marked NO_CAST; the pass's stats count 20 spheres and 47
+segments. Measured:
 points 1882 px against 1867 (1.008), tubes 2993 against 2875 (1.041);
 before raytrace cast impostors, 0 px in both cases.
 
@@ -30,6 +32,7 @@ before raytrace cast impostors, 0 px in both cases.
     20 degrees (1912 px both; with the first frame's radii kept, 4963).
 
 Usage: test_impostor_casters.py"""
+import json
 import math
 import os
 import sys
@@ -164,15 +167,23 @@ def scene(caster=None, view_angle=VIEW_ANGLE):
 
 
 def spheres_as_points(renderer):
-    prop = add(renderer, poly_data(cloud(), "verts")).GetProperty()
-    prop.SetRenderPointsAsSpheres(True)
-    prop.SetPointSize(POINT_SIZE)
+    actor = add(renderer, poly_data(cloud(), "verts"))
+    actor.GetProperty().SetRenderPointsAsSpheres(True)
+    actor.GetProperty().SetPointSize(POINT_SIZE)
+    return actor
 
 
 def lines_as_tubes(renderer):
-    prop = add(renderer, poly_data(polyline(), "line")).GetProperty()
-    prop.SetRenderLinesAsTubes(True)
-    prop.SetLineWidth(LINE_WIDTH)
+    actor = add(renderer, poly_data(polyline(), "line"))
+    actor.GetProperty().SetRenderLinesAsTubes(True)
+    actor.GetProperty().SetLineWidth(LINE_WIDTH)
+    return actor
+
+
+def no_cast(caster):
+    """`caster` marked NO_CAST."""
+    return lambda renderer: fr.set_key(caster(renderer),
+                                       vtkshadow.vtkRayTracedShadowPass.NO_CAST())
 
 
 def render(build, technique):
@@ -202,30 +213,44 @@ def covered(off, floor_alone):
     return np.abs(off - floor_alone) > 1e-3 * max(1e-6, float(floor_alone.max()))
 
 
-def shadow_area(build, technique, mask_out, off):
-    on = render(build, technique)
+def shadow_area(build, technique, mask_out, off, stats=None):
+    """Shadowed floor pixels outside `mask_out`; the pass's stats go into
+    `stats` (a dict) if given."""
+    on, read = fr.render_technique(
+        build, W, H, technique,
+        lambda renderer, inner: json.loads("{" + inner.GetStatsJSON(renderer) + "}"))
+    if stats is not None:
+        stats.update(read)
     v, valid = fr.visibility(on, off)
     return int((valid & (v < 0.5) & ~mask_out).sum())
 
 
 floor_alone = render(scene(), None)
-for name, impostors, control_data in (
-        ("points as spheres (size 18)", spheres_as_points, lambda: sphere_meshes(cloud())),
-        ("lines as tubes (width 16)", lines_as_tubes, lambda: tube_mesh(polyline()))):
+for name, impostors, control_data, count in (
+        ("points as spheres (size 18)", spheres_as_points, lambda: sphere_meshes(cloud()),
+         len(cloud())),
+        ("lines as tubes (width 16)", lines_as_tubes, lambda: tube_mesh(polyline()),
+         len(polyline()) - 1)):
     control = scene(lambda renderer: add(renderer, control_data()))
     tested = scene(impostors)
     off_tested, off_control = render(tested, None), render(control, None)
     mask = covered(off_tested, floor_alone) | covered(off_control, floor_alone)
-    area = shadow_area(tested, "raytrace", mask, off_tested)
+    stats = {}
+    area = shadow_area(tested, "raytrace", mask, off_tested, stats)
     reference = shadow_area(control, "raytrace", mask, off_control)
     none = shadow_area(tested, "none", mask, off_tested)
+    unmarked = shadow_area(scene(no_cast(impostors)), "raytrace", mask, off_tested)
     ratio = area / reference if reference else float("nan")
     print(f"{name}: raytrace shadow area {area} px, control (meshes) {reference} px, "
-          f"ratio {ratio:.3f}; none {none} px; casters cover {int(mask.sum())} px")
+          f"ratio {ratio:.3f}; none {none} px; NO_CAST {unmarked} px; "
+          f"casters cover {int(mask.sum())} px")
     check(reference > 500, f"{name}: the control casts a shadow ({reference} px > 500)")
     check(RATIO[0] <= ratio <= RATIO[1],
           f"{name}: impostor shadow area / control's = {ratio:.3f} in {RATIO}")
     check(none == 0, f"{name}: the none technique shows no shadow ({none} px)")
+    check(unmarked == 0, f"{name}: marked NO_CAST, they cast nothing ({unmarked} px)")
+    check(stats.get("impostors") == count,
+          f"{name}: raytrace holds {stats.get('impostors')} spheres / segments ({count})")
 
 # The radii follow the camera: zoomed in after a first frame (the eye stays,
 # so the top levels' origin does too), the spheres' shadow is the one a

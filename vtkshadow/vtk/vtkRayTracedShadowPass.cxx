@@ -517,6 +517,7 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"other_worlds_bytes\": " << this->GetWorldsMemoryBytes()
       << ", \"meshes\": " << impl.Scene.GetNumberOfMeshes()
       << ", \"triangles\": " << impl.Scene.GetNumberOfTriangles()
+      << ", \"impostors\": " << impl.Scene.GetNumberOfImpostors()
       << ", \"mesh_builds\": " << impl.Scene.GetMeshBuilds()
       << ", \"mesh_build_ms\": " << 1e3 * impl.Scene.GetMeshBuildSeconds()
       << ", \"top_level_commits\": " << impl.Scene.GetTopLevelCommits()
