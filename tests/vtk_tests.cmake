@@ -77,7 +77,7 @@ set_tests_properties(python.translucent_raytrace PROPERTIES LABELS "render" TIME
 # raytrace's shadows of points drawn as spheres (size 18) and lines drawn as
 # tubes (width 16) (issue 32): Embree spheres and round curves of half the
 # pixel width at their depth cast 0.6-1.6x the shadow area of world-sized
-# meshes of that radius (1.008 and 1.041; 0 before); the none technique and
+# meshes of that radius (1.008, 1.041, parallel 1.009; 0 before); none and
 # NO_CAST cast nothing; a zoom after the first frame resizes them.
 add_test(NAME python.impostor_casters
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_impostor_casters.py)

@@ -14,7 +14,8 @@ independently of the library:
     (vtkSphereSource, 32 x 32) of the radius at each point;
 (b) a polyline of 48 points, RenderLinesAsTubes, line width 16, against a
     vtkTubeFilter (24 sides) whose radius follows the same rule point by
-    point (VaryRadiusByAbsoluteScalar).
+    point (VaryRadiusByAbsoluteScalar);
+(a') (a) with a parallel camera (scale 3.5): radius = size * scale / height.
 
 An opaque floor, a directional light straight down, an oblique camera,
 400x300. The shadow area: floor pixels with visibility I_on / I_off < 0.5
@@ -24,8 +25,9 @@ alone). Passes when the impostors' area is 0.6-1.6x the control's (the
 issue's acceptance); the none technique shows no shadow at all, nor do
 the casters marked NO_CAST; the pass's stats count 20 spheres and 47
 segments. Measured:
-points 1882 px against 1867 (1.008), tubes 2993 against 2875 (1.041);
-before raytrace cast impostors, 0 px in both cases.
+points 1882 px against 1867 (1.008), tubes 2993 against 2875 (1.041),
+parallel points 2085 against 2066 (1.009); before raytrace cast
+impostors, 0 px in every case.
 
 (c) The radii follow the camera: the points zoomed to a 20 degree view
     angle after a first frame cast exactly the shadow of a fresh window at
@@ -55,6 +57,7 @@ W, H = 400, 300
 EYE, FOCAL, VIEW_ANGLE = (7.0, -7.0, 6.0), (0.0, 0.0, 0.6), 30.0
 POINT_SIZE, LINE_WIDTH = 18.0, 16.0
 RATIO = (0.6, 1.6)
+PARALLEL_SCALE = 3.5
 
 
 def view_distance(p):
@@ -64,8 +67,11 @@ def view_distance(p):
     return float(np.dot(np.subtract(p, EYE), direction))
 
 
-def impostor_radius(p, pixels):
-    """Half the pixel width at p's depth, in world units (the rule)."""
+def impostor_radius(p, pixels, parallel_scale=None):
+    """Half the pixel width at p's depth, in world units (the rule): with a
+    parallel camera the same everywhere."""
+    if parallel_scale:
+        return pixels * parallel_scale / H
     return pixels * view_distance(p) * math.tan(math.radians(VIEW_ANGLE) / 2) / H
 
 
@@ -107,12 +113,12 @@ def poly_data(points, cell):
     return data
 
 
-def sphere_meshes(points):
+def sphere_meshes(points, parallel_scale=None):
     append = vtkAppendPolyData()
     for p in points:
         s = vtkSphereSource()
         s.SetCenter(*p)
-        s.SetRadius(impostor_radius(p, POINT_SIZE))
+        s.SetRadius(impostor_radius(p, POINT_SIZE, parallel_scale))
         s.SetThetaResolution(32)
         s.SetPhiResolution(32)
         s.Update()
@@ -154,15 +160,20 @@ def floor():
     return p.GetOutput()
 
 
-def scene(caster=None, view_angle=VIEW_ANGLE):
-    """build(renderer): the floor, the light, the camera (with `view_angle`)
-    and `caster` (renderer -> None) if any."""
+def scene(caster=None, view_angle=VIEW_ANGLE, parallel_scale=None):
+    """build(renderer): the floor, the light, the camera (with `view_angle`,
+    or parallel with `parallel_scale`) and `caster` (renderer -> None) if
+    any."""
     def build(renderer):
         add(renderer, floor())
         if caster:
             caster(renderer)
         renderer.AddLight(fr.scene_light((0.0, 0.0, 10.0), (0.0, 0.0, 0.0)))
-        fr.set_camera(renderer, EYE, FOCAL, view_angle=view_angle, clipping=(1.0, 40.0))
+        camera = fr.set_camera(renderer, EYE, FOCAL, view_angle=view_angle,
+                               clipping=(1.0, 40.0))
+        if parallel_scale:
+            camera.ParallelProjectionOn()
+            camera.SetParallelScale(parallel_scale)
     return build
 
 
@@ -225,21 +236,20 @@ def shadow_area(build, technique, mask_out, off, stats=None):
     return int((valid & (v < 0.5) & ~mask_out).sum())
 
 
-floor_alone = render(scene(), None)
-for name, impostors, control_data, count in (
-        ("points as spheres (size 18)", spheres_as_points, lambda: sphere_meshes(cloud()),
-         len(cloud())),
-        ("lines as tubes (width 16)", lines_as_tubes, lambda: tube_mesh(polyline()),
-         len(polyline()) - 1)):
-    control = scene(lambda renderer: add(renderer, control_data()))
-    tested = scene(impostors)
+def compare(name, impostors, control_data, count, parallel_scale=None):
+    """Case `name`: the impostors against their control, none and NO_CAST."""
+    floor_alone = render(scene(parallel_scale=parallel_scale), None)
+    control = scene(lambda renderer: add(renderer, control_data()),
+                    parallel_scale=parallel_scale)
+    tested = scene(impostors, parallel_scale=parallel_scale)
     off_tested, off_control = render(tested, None), render(control, None)
     mask = covered(off_tested, floor_alone) | covered(off_control, floor_alone)
     stats = {}
     area = shadow_area(tested, "raytrace", mask, off_tested, stats)
     reference = shadow_area(control, "raytrace", mask, off_control)
     none = shadow_area(tested, "none", mask, off_tested)
-    unmarked = shadow_area(scene(no_cast(impostors)), "raytrace", mask, off_tested)
+    unmarked = shadow_area(scene(no_cast(impostors), parallel_scale=parallel_scale),
+                           "raytrace", mask, off_tested)
     ratio = area / reference if reference else float("nan")
     print(f"{name}: raytrace shadow area {area} px, control (meshes) {reference} px, "
           f"ratio {ratio:.3f}; none {none} px; NO_CAST {unmarked} px; "
@@ -251,6 +261,14 @@ for name, impostors, control_data, count in (
     check(unmarked == 0, f"{name}: marked NO_CAST, they cast nothing ({unmarked} px)")
     check(stats.get("impostors") == count,
           f"{name}: raytrace holds {stats.get('impostors')} spheres / segments ({count})")
+
+
+compare("points as spheres (size 18)", spheres_as_points, lambda: sphere_meshes(cloud()),
+        len(cloud()))
+compare("lines as tubes (width 16)", lines_as_tubes, lambda: tube_mesh(polyline()),
+        len(polyline()) - 1)
+compare(f"points as spheres, parallel (scale {PARALLEL_SCALE})", spheres_as_points,
+        lambda: sphere_meshes(cloud(), PARALLEL_SCALE), len(cloud()), PARALLEL_SCALE)
 
 # The radii follow the camera: zoomed in after a first frame (the eye stays,
 # so the top levels' origin does too), the spheres' shadow is the one a
