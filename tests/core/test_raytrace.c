@@ -377,6 +377,30 @@ static void test_cost(void)
   CHECK(m.rays_per_second_per_thread == kept);
 }
 
+/* The impostor radius: half the pixel width at the point's depth, the same
+ * whichever pixel the point projects to, in perspective (tan(15 deg) d /
+ * height per pixel) and parallel (parallel scale / height per pixel). */
+static void test_impostor_radius(void)
+{
+  double view_m[16], p[16];
+  vsh_mat4_identity(view_m);
+  view_m[11] = -2.0; /* the eye at world z = 2, looking down -z */
+  CHECK(vsh_camera_projection_matrix(30, 640.0 / 480.0, 0.1, 100, p) == 0);
+  const double centre[3] = { 0, 0, -8 }, aside[3] = { 3, -2, -8 }, behind[3] = { 0, 0, 12 };
+  const double expected = 18 * 10 * tan(15 * PI / 180) / 480; /* d = 10 */
+  CHECK_NEAR(vsh_rt_impostor_radius(p, view_m, 640, 18, centre), expected, 1e-12);
+  CHECK_NEAR(vsh_rt_impostor_radius(p, view_m, 640, 18, aside), expected, 1e-12);
+  CHECK_NEAR(vsh_rt_impostor_radius(p, view_m, 640, 18, behind), expected, 1e-12);
+  double ortho[16];
+  vsh_mat4_identity(ortho);
+  ortho[0] = 1.0 / (3.0 * 640 / 480), ortho[5] = 1.0 / 3, ortho[10] = -2.0 / 9; /* scale 3 */
+  CHECK_NEAR(vsh_rt_impostor_radius(ortho, view_m, 640, 16, aside), 16 * 3.0 / 480, 1e-12);
+  CHECK(vsh_rt_impostor_radius(ortho, view_m, 0, 16, aside) == 0);
+  CHECK(vsh_rt_impostor_radius(ortho, view_m, 640, NAN, aside) == 0);
+  const double far_away[3] = { NAN, 0, 0 };
+  CHECK(vsh_rt_impostor_radius(p, view_m, 640, 18, far_away) == 0);
+}
+
 int main(void)
 {
   test_unproject(0, 1, 640, 480);
@@ -395,5 +419,6 @@ int main(void)
   test_light_samples();
   test_rotation();
   test_cost();
+  test_impostor_radius();
   return vsh_check_report("core.raytrace");
 }

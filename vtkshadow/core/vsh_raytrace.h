@@ -101,6 +101,28 @@ void vsh_rt_offset_origin(const double point[3], const double normal[3], double 
  * is the eye. */
 int vsh_rt_frame_usable(const double origin_to_eye[3], double near_distance);
 
+/* The world radius of what VTK 9.1's vtkOpenGLPolyDataMapper draws
+ * `pixels` wide at world point `p` (row-major `projection` eye -> clip and
+ * `view` world -> eye as for vsh_rt_view_init, viewport `width` pixels
+ * wide): a point of size `pixels` (a sprite `pixels` across; with
+ * RenderPointsAsSpheres a sphere impostor) or a line of width `pixels` (with
+ * RenderLinesAsTubes a tube impostor; its geometry shader widens each
+ * segment by pixels / 2 either side). Half the width, turned from pixels to
+ * world units at p's clip w exactly as the mapper's depth correction does
+ * (its ZCalcR uniform is pixels / (width * P00), the impostor radius per
+ * unit of w):
+ *
+ *   radius = pixels * |w| / (width * projection[0][0]),
+ *
+ * i.e. for a perspective camera pixels * d * tan(view angle / 2) / height
+ * (d: p's distance along the view direction, w = d) and for a parallel one
+ * pixels * parallel scale / height (w = 1), with VTK's vertical view angle.
+ * |w|: a point behind the eye, which VTK does not draw, casts at the size
+ * it would have in front (it can still shadow the view). 0 when the input
+ * is degenerate (width < 1, P00 == 0, non-finite). */
+double vsh_rt_impostor_radius(const double projection[16], const double view[16], int width,
+                              double pixels, const double p[3]);
+
 typedef enum vsh_rt_light_kind {
   VSH_RT_DIRECTIONAL = 0,
   VSH_RT_POINT = 1,

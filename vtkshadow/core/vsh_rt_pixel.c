@@ -128,3 +128,20 @@ void vsh_rt_offset_origin(const double point[3], const double normal[3], double 
     out[k] = point[k] + e * normal[k];
   }
 }
+
+double vsh_rt_impostor_radius(const double projection[16], const double view[16], int width,
+                              double pixels, const double p[3])
+{
+  /* w = (projection row 3) . (view p): the clip w at p. */
+  double eye[4];
+  for (int r = 0; r < 4; ++r) {
+    eye[r] = view[4 * r] * p[0] + view[4 * r + 1] * p[1] + view[4 * r + 2] * p[2] + view[4 * r + 3];
+  }
+  double w = 0.0;
+  for (int c = 0; c < 4; ++c) {
+    w += projection[12 + c] * eye[c];
+  }
+  const double scale = (double)width * projection[0];
+  const double r = pixels * fabs(w) / fabs(scale);
+  return width >= 1 && scale != 0.0 && isfinite(r) && pixels > 0 ? r : 0.0;
+}

@@ -11,6 +11,7 @@
 #include "vtkShadowCasterTriangles.h"
 #include "vtkShadowEmbreeScene.h"
 #include "vtkShadowFrame.h"
+#include "vtkShadowImpostors.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowRayTracer.h"
 #include "vtkShadowScreenMask.h"
@@ -27,6 +28,33 @@
 #include <memory>
 #include <sstream>
 #include <thread>
+
+namespace
+{
+// One actor of the frame for the Embree scene, with what a still frame's
+// key holds of it appended to `key`.
+vtkShadowEmbreeScene::Actor FrameActor(
+  const vtkshadow::ShadowActor& a, double opacity, std::vector<double>& key)
+{
+  vtkShadowEmbreeScene::Actor actor{ a.Actor,
+    vtkshadow::CastsAsSurface(a, vtkShadowPassBase::NO_CAST()), {} };
+  std::copy_n(a.Matrix, 16, actor.Matrix);
+  actor.Opacity = opacity;
+  if (opacity < 1.0)
+  {
+    actor.Tinted = vtkshadow::CasterTransmit(a, actor.Transmit);
+  }
+  actor.CastsImpostors = !vtkshadow::HasFlag(a, vtkShadowPassBase::NO_CAST());
+  key.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(a.Actor)));
+  key.push_back(static_cast<double>(vtkshadow::ImpostorTime(a.Actor)));
+  key.push_back(actor.Casts ? 1.0 : 0.0);
+  key.push_back(actor.CastsImpostors ? 1.0 : 0.0);
+  key.push_back(actor.Opacity);
+  key.insert(key.end(), actor.Transmit, actor.Transmit + 3);
+  key.insert(key.end(), a.Matrix, a.Matrix + 16);
+  return actor;
+}
+}
 
 vtkStandardNewMacro(vtkRayTracedShadowPass);
 
@@ -308,36 +336,22 @@ void vtkRayTracedShadowPass::GatherFrame(Frame& frame)
   }
   // The renderer's actors, not the render state's frustum-culled ones: a
   // caster behind the camera still shadows the view.
+  // Points drawn as spheres and lines drawn as tubes cast too (Embree
+  // solids of their pixel width, vtkShadowEmbreeScene) unless NO_CAST; the
+  // property's time keys their sizes and representation.
   for (const vtkshadow::ShadowActor& a : shared.Actors)
   {
-    const bool casts = vtkshadow::CastsAsSurface(a, NO_CAST());
-    vtkShadowEmbreeScene::Actor actor{ a.Actor, casts, {} };
-    std::copy_n(a.Matrix, 16, actor.Matrix);
-    frame.Actors.push_back(actor);
-    key.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(a.Actor)));
-    key.push_back(static_cast<double>(vtkshadow::CasterDataTime(a.Actor)));
-    key.push_back(casts ? 1.0 : 0.0);
-    key.insert(key.end(), a.Matrix, a.Matrix + 16);
+    frame.Actors.push_back(FrameActor(a, 1.0, key));
   }
-  // Translucent actors cast partial shadows with their opacity (as under
-  // csm; docs/translucency.md). They do not receive: they are not in the
-  // depth pass.
+  // Translucent actors cast partial shadows with their opacity, tinted by
+  // their filter (docs/translucency.md); they receive on the translucent
+  // layer (TraceTranslucentLayer).
   for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(shared.Renderer))
   {
-    if (!vtkshadow::CastsAsSurface(a, NO_CAST()))
+    if (!vtkshadow::HasFlag(a, NO_CAST()))
     {
-      continue;
+      frame.Actors.push_back(FrameActor(a, vtkshadow::CasterOpacity(a.Actor), key));
     }
-    vtkShadowEmbreeScene::Actor actor{ a.Actor, true, {} };
-    std::copy_n(a.Matrix, 16, actor.Matrix);
-    actor.Opacity = vtkshadow::CasterOpacity(a.Actor);
-    actor.Tinted = vtkshadow::CasterTransmit(a, actor.Transmit);
-    frame.Actors.push_back(actor);
-    key.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(a.Actor)));
-    key.push_back(static_cast<double>(vtkshadow::CasterDataTime(a.Actor)));
-    key.push_back(actor.Opacity);
-    key.insert(key.end(), actor.Transmit, actor.Transmit + 3);
-    key.insert(key.end(), a.Matrix, a.Matrix + 16);
   }
 }
 
@@ -353,7 +367,11 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, Frame& frame)
     return false;
   }
   vtkshadow::MarkStage("raytrace.prepass");
-  if (!impl.Scene.Update(frame.Actors, frame.Shared.Eye, frame.Shared.ClippingRange[0]))
+  vtkShadowEmbreeScene::Camera camera;
+  std::copy_n(frame.Shared.Projection, 16, camera.Projection);
+  std::copy_n(frame.Shared.View, 16, camera.View);
+  camera.Width = frame.Size[0];
+  if (!impl.Scene.Update(frame.Actors, frame.Shared.Eye, frame.Shared.ClippingRange[0], camera))
   {
     vtkErrorMacro("ray-traced shadows: " << impl.Scene.GetError());
     return false;
@@ -601,6 +619,7 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"other_worlds_bytes\": " << this->GetWorldsMemoryBytes()
       << ", \"meshes\": " << impl.Scene.GetNumberOfMeshes()
       << ", \"triangles\": " << impl.Scene.GetNumberOfTriangles()
+      << ", \"impostors\": " << impl.Scene.GetNumberOfImpostors()
       << ", \"mesh_builds\": " << impl.Scene.GetMeshBuilds()
       << ", \"mesh_build_ms\": " << 1e3 * impl.Scene.GetMeshBuildSeconds()
       << ", \"top_level_commits\": " << impl.Scene.GetTopLevelCommits()

@@ -1,8 +1,10 @@
 #include "vtkShadowEmbreeScene.h"
 
+#include "vsh_mat4.h"
 #include "vsh_raytrace.h"
 #include "vtkActor.h"
 #include "vtkShadowCasterTriangles.h"
+#include "vtkShadowImpostors.h"
 
 #include <algorithm>
 #include <chrono>
@@ -38,6 +40,33 @@ void Cofactors(const double m[16], double out[9])
     }
   }
 }
+
+// What an impostor instance points its triangle lookup at: nothing.
+const std::vector<float> NoVertices;
+const std::vector<unsigned int> NoIndices;
+
+// Fills a FLOAT4 (x y z radius) vertex buffer of `count` vertices from
+// data-coordinate positions: placed by `matrix`, relative to `centre`, each
+// with the world radius of `pixels` at its place. Returns the largest radius.
+double FillImpostorVertices(const double* data, size_t count, const double matrix[16],
+  const double centre[3], const vtkShadowEmbreeScene::Camera& camera, double pixels, float* out)
+{
+  double largest = 0;
+  for (size_t i = 0; i < count; ++i)
+  {
+    double world[3];
+    vsh_mat4_transform_point(matrix, data + 3 * i, world);
+    const double radius =
+      vsh_rt_impostor_radius(camera.Projection, camera.View, camera.Width, pixels, world);
+    largest = std::max(largest, radius);
+    for (int r = 0; r < 3; ++r)
+    {
+      out[4 * i + r] = static_cast<float>(world[r] - centre[r]);
+    }
+    out[4 * i + 3] = static_cast<float>(radius);
+  }
+  return largest;
+}
 }
 
 struct vtkShadowEmbreeScene::Mesh
@@ -49,8 +78,15 @@ struct vtkShadowEmbreeScene::Mesh
   long long Triangles = 0;
   std::vector<float> Vertices; // kept for the tracer's double-precision landing
   std::vector<unsigned int> Indices;
+  // Its spheres and tubes (vtkShadowImpostors), in data coordinates: the
+  // top levels size and place them (AddImpostors).
+  vtkshadow::Impostors Drawn;
+  vtkMTimeType ImpostorTime = 0;
   int Version = 0;
   bool Seen = false;
+
+  // Whether it puts anything in the top levels.
+  bool Used() const { return this->Triangles > 0 || !this->Drawn.Empty(); }
 
   ~Mesh()
   {
@@ -68,6 +104,10 @@ vtkShadowEmbreeScene::vtkShadowEmbreeScene() = default;
 vtkShadowEmbreeScene::~vtkShadowEmbreeScene()
 {
   this->Meshes.clear();
+  for (RTCScene scene : this->ImpostorScenes)
+  {
+    rtcReleaseScene(scene);
+  }
   if (this->Visible)
   {
     rtcReleaseScene(this->Visible);
@@ -103,10 +143,19 @@ vtkShadowEmbreeScene::Mesh* vtkShadowEmbreeScene::UpdateMesh(vtkActor* actor)
   }
   Mesh& mesh = *slot;
   mesh.Seen = true;
+  const vtkMTimeType impostorTime = vtkshadow::ImpostorTime(actor);
+  if (!mesh.Scene || impostorTime != mesh.ImpostorTime)
+  {
+    // Spheres and tubes: a copy of the data, sized per frame (cheap to
+    // redo; the property's point size and representation count too).
+    vtkshadow::ExtractImpostors(actor, mesh.Drawn);
+    mesh.ImpostorTime = impostorTime;
+    ++mesh.Version;
+  }
   const vtkMTimeType dataTime = vtkshadow::CasterDataTime(actor);
   if (mesh.Scene && dataTime == mesh.DataTime)
   {
-    return mesh.Triangles > 0 ? &mesh : nullptr;
+    return mesh.Used() ? &mesh : nullptr;
   }
   const auto start = std::chrono::steady_clock::now();
   mesh.DataTime = dataTime;
@@ -157,7 +206,7 @@ vtkShadowEmbreeScene::Mesh* vtkShadowEmbreeScene::UpdateMesh(vtkActor* actor)
   ++mesh.Version;
   ++this->MeshBuilds;
   this->MeshBuildSeconds += SecondsSince(start);
-  return mesh.Triangles > 0 ? &mesh : nullptr;
+  return mesh.Used() ? &mesh : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -186,30 +235,185 @@ bool vtkShadowEmbreeScene::GetTriangle(
 }
 
 //------------------------------------------------------------------------------
-std::vector<double> vtkShadowEmbreeScene::PlacementKey(const std::vector<Actor>& actors) const
+std::vector<double> vtkShadowEmbreeScene::PlacementKey(
+  const std::vector<Actor>& actors, const Camera& camera) const
 {
   // What the top levels depend on: which meshes (and their versions), where,
-  // and who casts.
+  // and who casts; with points or lines, the camera their radii are for.
   std::vector<double> key;
+  bool impostors = false;
   for (const Actor& a : actors)
   {
     auto it = this->Meshes.find(a.Prop);
-    if (it == this->Meshes.end() || it->second->Triangles == 0)
+    if (it == this->Meshes.end() || !it->second->Used())
     {
       continue;
     }
     key.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(a.Prop)));
     key.push_back(it->second->Version);
     key.push_back(a.Casts ? 1 : 0);
+    key.push_back(a.CastsImpostors ? 1 : 0);
     key.push_back(a.Opacity);
     key.insert(key.end(), a.Transmit, a.Transmit + 3);
     key.insert(key.end(), a.Matrix, a.Matrix + 16);
+    impostors = impostors || !it->second->Drawn.Empty();
+  }
+  if (impostors)
+  {
+    key.insert(key.end(), camera.Projection, camera.Projection + 16);
+    key.insert(key.end(), camera.View, camera.View + 16);
+    key.push_back(camera.Width);
   }
   return key;
 }
 
 //------------------------------------------------------------------------------
-bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const double eye[3])
+void vtkShadowEmbreeScene::Attach(
+  const Actor& a, bool casts, RTCScene scene, const float transform[12], const Instance& instance)
+{
+  const bool translucent = a.Opacity < 1.0;
+  for (RTCScene top : { this->Visible, this->Casters })
+  {
+    // A translucent actor is not in the depth pass (nothing lands on it)
+    // and casts a partial shadow only.
+    if ((top == this->Casters && !casts) || (top == this->Visible && translucent))
+    {
+      continue;
+    }
+    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geometry, scene);
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, transform);
+    rtcCommitGeometry(geometry);
+    if (top == this->Visible)
+    {
+      rtcAttachGeometryByID(top, geometry, static_cast<unsigned int>(this->Instances.size()));
+    }
+    else
+    {
+      rtcAttachGeometryByID(top, geometry, static_cast<unsigned int>(this->CasterOpacity.size()));
+      this->CasterOpacity.push_back(static_cast<float>(translucent ? a.Opacity : 1.0));
+      for (int k = 0; k < 3; ++k)
+      {
+        this->CasterTransmit.push_back(static_cast<float>(translucent ? a.Transmit[k] : 0.0));
+      }
+      this->TranslucentCasters = this->TranslucentCasters || translucent;
+      this->TintedCasters = this->TintedCasters || (translucent && a.Tinted);
+    }
+    rtcReleaseGeometry(geometry);
+  }
+  if (!translucent)
+  {
+    this->Instances.push_back(instance);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowEmbreeScene::AddMeshInstance(const Actor& a, const Mesh& mesh)
+{
+  // Stored positions (data - Shift) -> world -> relative to the centre,
+  // composed in double and rounded to float once.
+  const double* m = a.Matrix;
+  float xfm[12];
+  Instance instance;
+  for (int r = 0; r < 3; ++r)
+  {
+    // The same placement in double, unrounded: the tracer computes the
+    // surface point on it (a far floor seen at a grazing angle moves by
+    // thousands of units for the float rounding of its translation).
+    double t = m[4 * r + 3] - this->Centre[r];
+    for (int c = 0; c < 3; ++c)
+    {
+      t += m[4 * r + c] * mesh.Shift[c];
+      xfm[4 * r + c] = static_cast<float>(m[4 * r + c]);
+      instance.Transform[4 * r + c] = m[4 * r + c];
+    }
+    xfm[4 * r + 3] = static_cast<float>(t);
+    instance.Transform[4 * r + 3] = t;
+  }
+  instance.Vertices = &mesh.Vertices;
+  instance.Indices = &mesh.Indices;
+  Cofactors(m, instance.Normal);
+  double scale = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    scale = std::max(scale, std::hypot(m[c], m[4 + c], m[8 + c]));
+  }
+  instance.Radius = mesh.Radius * scale;
+  this->Attach(a, a.Casts, mesh.Scene, xfm, instance);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowEmbreeScene::AddImpostors(const Actor& a, const Mesh& mesh, const Camera& camera)
+{
+  // In world units relative to the centre, not instanced from data
+  // coordinates: VTK draws a sphere round and its size in pixels whatever
+  // the actor's scale, so the radius cannot go through the actor's matrix.
+  const vtkshadow::Impostors& drawn = mesh.Drawn;
+  RTCScene scene = rtcNewScene(this->Device);
+  rtcSetSceneFlags(scene,
+    static_cast<RTCSceneFlags>(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION));
+  double largest = 0;
+  const size_t points = drawn.Points.size() / 3;
+  if (points > 0)
+  {
+    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), points));
+    if (vertices)
+    {
+      largest = FillImpostorVertices(
+        drawn.Points.data(), points, a.Matrix, this->Centre, camera, drawn.PointSize, vertices);
+    }
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(scene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  const size_t lineVertices = drawn.LineVertices.size() / 3;
+  if (!drawn.Segments.empty())
+  {
+    // Round: cones between spheres at the vertices, a tube whose joints
+    // close (VTK's own wide-line tubes leave wedges at sharp bends).
+    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), lineVertices));
+    auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
+      RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned int), drawn.Segments.size()));
+    if (vertices && indices)
+    {
+      largest = std::max(largest,
+        FillImpostorVertices(drawn.LineVertices.data(), lineVertices, a.Matrix, this->Centre,
+          camera, drawn.LineWidth, vertices));
+      std::copy(drawn.Segments.begin(), drawn.Segments.end(), indices);
+    }
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(scene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(scene);
+  this->ImpostorScenes.push_back(scene);
+  this->ImpostorCount += static_cast<long long>(points + drawn.Segments.size());
+  // An identity placement: the positions already are in the frame.
+  Instance instance;
+  const float xfm[12] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0 };
+  for (int k = 0; k < 12; ++k)
+  {
+    instance.Transform[k] = xfm[k];
+  }
+  for (int k = 0; k < 9; ++k)
+  {
+    instance.Normal[k] = k % 4 == 0 ? 1.0 : 0.0;
+  }
+  instance.Radius = largest;
+  instance.Vertices = &NoVertices;
+  instance.Indices = &NoIndices;
+  instance.Impostors = scene;
+  instance.Slack = largest;
+  this->Attach(a, a.CastsImpostors, scene, xfm, instance);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowEmbreeScene::BuildTopLevel(
+  const std::vector<Actor>& actors, const double eye[3], const Camera& camera)
 {
   const auto start = std::chrono::steady_clock::now();
   // The top levels' origin: the eye (see Update), so a visible point's
@@ -223,6 +427,12 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const
     }
     *top = rtcNewScene(this->Device);
   }
+  for (RTCScene scene : this->ImpostorScenes)
+  {
+    rtcReleaseScene(scene);
+  }
+  this->ImpostorScenes.clear();
+  this->ImpostorCount = 0;
   rtcSetSceneFlags(this->Casters, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   this->Instances.clear();
   this->CasterOpacity.clear();
@@ -232,81 +442,19 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const
   for (const Actor& a : actors)
   {
     auto it = this->Meshes.find(a.Prop);
-    const bool translucent = a.Opacity < 1.0;
-    if (it == this->Meshes.end() || it->second->Triangles == 0 || (translucent && !a.Casts))
+    if (it == this->Meshes.end())
     {
       continue;
     }
     const Mesh& mesh = *it->second;
-    // Stored positions (data - Shift) -> world -> relative to the centre,
-    // composed in double and rounded to float once.
-    const double* m = a.Matrix;
-    float xfm[12];
-    for (int r = 0; r < 3; ++r)
+    const bool translucent = a.Opacity < 1.0;
+    if (mesh.Triangles > 0 && !(translucent && !a.Casts))
     {
-      double t = m[4 * r + 3] - this->Centre[r];
-      for (int c = 0; c < 3; ++c)
-      {
-        t += m[4 * r + c] * mesh.Shift[c];
-        xfm[4 * r + c] = static_cast<float>(m[4 * r + c]);
-      }
-      xfm[4 * r + 3] = static_cast<float>(t);
+      this->AddMeshInstance(a, mesh);
     }
-    Instance instance;
-    for (int r = 0; r < 3; ++r)
+    if (!mesh.Drawn.Empty() && !(translucent && !a.CastsImpostors))
     {
-      // The same placement in double, unrounded: the tracer computes the
-      // surface point on it (a far floor seen at a grazing angle moves by
-      // thousands of units for the float rounding of its translation).
-      double t = m[4 * r + 3] - this->Centre[r];
-      for (int c = 0; c < 3; ++c)
-      {
-        t += m[4 * r + c] * mesh.Shift[c];
-        instance.Transform[4 * r + c] = m[4 * r + c];
-      }
-      instance.Transform[4 * r + 3] = t;
-    }
-    instance.Vertices = &mesh.Vertices;
-    instance.Indices = &mesh.Indices;
-    Cofactors(m, instance.Normal);
-    double scale = 0;
-    for (int c = 0; c < 3; ++c)
-    {
-      scale = std::max(scale, std::hypot(m[c], m[4 + c], m[8 + c]));
-    }
-    instance.Radius = mesh.Radius * scale;
-    for (RTCScene top : { this->Visible, this->Casters })
-    {
-      // A translucent actor is not in the depth pass (nothing lands on it)
-      // and casts a partial shadow only.
-      if ((top == this->Casters && !a.Casts) || (top == this->Visible && translucent))
-      {
-        continue;
-      }
-      RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_INSTANCE);
-      rtcSetGeometryInstancedScene(geometry, mesh.Scene);
-      rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, xfm);
-      rtcCommitGeometry(geometry);
-      if (top == this->Visible)
-      {
-        rtcAttachGeometryByID(top, geometry, static_cast<unsigned int>(this->Instances.size()));
-      }
-      else
-      {
-        rtcAttachGeometryByID(top, geometry, static_cast<unsigned int>(this->CasterOpacity.size()));
-        this->CasterOpacity.push_back(static_cast<float>(translucent ? a.Opacity : 1.0));
-        for (int k = 0; k < 3; ++k)
-        {
-          this->CasterTransmit.push_back(static_cast<float>(translucent ? a.Transmit[k] : 0.0));
-        }
-        this->TranslucentCasters = this->TranslucentCasters || translucent;
-        this->TintedCasters = this->TintedCasters || (translucent && a.Tinted);
-      }
-      rtcReleaseGeometry(geometry);
-    }
-    if (!translucent)
-    {
-      this->Instances.push_back(instance);
+      this->AddImpostors(a, mesh, camera);
     }
   }
   rtcCommitScene(this->Visible);
@@ -318,7 +466,7 @@ bool vtkShadowEmbreeScene::BuildTopLevel(const std::vector<Actor>& actors, const
 
 //------------------------------------------------------------------------------
 bool vtkShadowEmbreeScene::Update(
-  const std::vector<Actor>& actors, const double eye[3], double nearDistance)
+  const std::vector<Actor>& actors, const double eye[3], double nearDistance, const Camera& camera)
 {
   this->Error.clear();
   if (!this->Device)
@@ -348,14 +496,15 @@ bool vtkShadowEmbreeScene::Update(
   // A camera move keeps the top levels while their origin stays within the
   // near distance of the eye (vsh_rt_frame_usable); further away, points
   // near the camera would lose float precision (and their shadow rays start
-  // too far off the surface), so the origin moves to the eye.
-  std::vector<double> placement = this->PlacementKey(actors);
+  // too far off the surface), so the origin moves to the eye. With points
+  // or lines, every camera change rebuilds them (PlacementKey).
+  std::vector<double> placement = this->PlacementKey(actors, camera);
   const double toEye[3] = { eye[0] - this->Centre[0], eye[1] - this->Centre[1],
     eye[2] - this->Centre[2] };
   if (!this->Visible || placement != this->Placement || !vsh_rt_frame_usable(toEye, nearDistance))
   {
     this->Placement.swap(placement);
-    this->BuildTopLevel(actors, eye);
+    this->BuildTopLevel(actors, eye, camera);
   }
   return this->Error.empty();
 }

@@ -19,6 +19,14 @@
 // caster instance's opacity by its instance id, for the tracer's context
 // filter (vtkShadowRayTracer: a ray's transmittance is the product of
 // (1 - opacity) over the translucent surfaces it crosses).
+//
+// Points drawn as spheres and lines drawn as tubes (RenderPointsAsSpheres,
+// RenderLinesAsTubes: vtkShadowImpostors) are Embree spheres (RTC_GEOMETRY_TYPE_SPHERE_POINT) and
+// round linear curves (RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE: cones between spheres) whose radius is
+// half their pixel width at their depth (vsh_rt_impostor_radius): the solid VTK's impostor shows
+// from the camera. That radius depends on the camera, so they are not instanced meshes but one
+// scene per actor placement in the top levels' frame, rebuilt with the top levels whenever the
+// camera or the viewport changes.
 #ifndef vtkShadowEmbreeScene_h
 #define vtkShadowEmbreeScene_h
 
@@ -47,6 +55,17 @@ public:
     // (vtkshadow::CasterTransmit); grey (1 - Opacity) unless a filter tints it.
     double Transmit[3] = { 0.0, 0.0, 0.0 };
     bool Tinted = false;
+    // Whether its spheres and tubes (vtkShadowImpostors) cast: not NO_CAST.
+    // They are in "visible" either way (when opaque), as they are drawn.
+    bool CastsImpostors = false;
+  };
+
+  // The camera the impostors are sized for (vsh_rt_impostor_radius).
+  struct Camera
+  {
+    double Projection[16]; // eye -> clip, row major
+    double View[16];       // world -> eye, row major
+    int Width;             // the viewport in pixels
   };
 
   // Per instance of the "visible" top level (its instance id).
@@ -57,6 +76,13 @@ public:
     double Transform[12]; // stored positions -> relative to the centre, in double (row major 3x4)
     const std::vector<float>* Vertices;       // the mesh's stored positions (x, y, z)
     const std::vector<unsigned int>* Indices; // three per triangle (Embree's primID)
+    // An actor's spheres and tubes (Embree spheres and round curves, no triangles:
+    // GetTriangle fails), in the top levels' frame with an identity
+    // placement: its own scene, for the tracer to land a pixel on it again
+    // from in front (vtkShadowRayTracer: VTK's impostor depth is only near
+    // the sphere's), within Slack (the largest radius) of the depth point.
+    RTCScene Impostors = nullptr;
+    double Slack = 0;
   };
 
   /**
@@ -78,9 +104,11 @@ public:
    * clipping plane). False (with GetError()) when Embree fails; actors
    * without triangles are left out. The top levels are re-committed when an
    * actor moves, a mesh changes, or the eye is further than nearDistance
-   * from their origin (which then moves to the eye).
+   * from their origin (which then moves to the eye), and, when an actor
+   * draws points or lines, when `camera` changes (their radii).
    */
-  bool Update(const std::vector<Actor>& actors, const double eye[3], double nearDistance);
+  bool Update(const std::vector<Actor>& actors, const double eye[3], double nearDistance,
+    const Camera& camera);
 
   RTCScene GetVisible() const { return this->Visible; }
   RTCScene GetCasters() const { return this->Casters; }
@@ -105,19 +133,27 @@ public:
   // The current scene.
   int GetNumberOfMeshes() const { return static_cast<int>(this->Meshes.size()); }
   long long GetNumberOfTriangles() const;
+  // Spheres and curve segments in the top levels (every placement counted).
+  long long GetNumberOfImpostors() const { return this->ImpostorCount; }
   const std::string& GetError() const { return this->Error; }
 
 private:
   struct Mesh;
   Mesh* UpdateMesh(vtkActor* actor);
-  bool BuildTopLevel(const std::vector<Actor>& actors, const double eye[3]);
-  std::vector<double> PlacementKey(const std::vector<Actor>& actors) const;
+  bool BuildTopLevel(const std::vector<Actor>& actors, const double eye[3], const Camera& camera);
+  void AddMeshInstance(const Actor& a, const Mesh& mesh);
+  void AddImpostors(const Actor& a, const Mesh& mesh, const Camera& camera);
+  void Attach(const Actor& a, bool casts, RTCScene scene, const float transform[12],
+    const Instance& instance);
+  std::vector<double> PlacementKey(const std::vector<Actor>& actors, const Camera& camera) const;
 
   RTCDevice Device = nullptr;
   RTCScene Visible = nullptr;
   RTCScene Casters = nullptr;
   std::map<vtkActor*, std::unique_ptr<Mesh>> Meshes;
   std::vector<Instance> Instances;
+  std::vector<RTCScene> ImpostorScenes; // this top level's, released with it
+  long long ImpostorCount = 0;
   std::vector<float> CasterOpacity;
   std::vector<float> CasterTransmit;
   bool TranslucentCasters = false;

@@ -127,6 +127,7 @@ struct Worker
   double Tolerance(int x, int y) const;
   void Refine(int begin, int end);
   void Land(int k);
+  bool Reland(int k, const vtkShadowEmbreeScene::Instance& inst);
   bool Exact(int k, double n[3], double& len2, double& side);
   void Miss(int k);
   void Queue(const Surface& s, int surface);
@@ -226,10 +227,14 @@ void Worker::Land(int k)
   const double dir[3] = { rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z };
   if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID && rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID)
   {
-    const bool inside = rh.ray.tfar <= this->Limits[k];
+    const vtkShadowEmbreeScene::Instance& inst = this->Scene->GetInstance(rh.hit.instID[0]);
+    bool inside = rh.ray.tfar <= this->Limits[k];
+    if (!inside && inst.Impostors)
+    {
+      inside = this->Reland(k, inst);
+    }
     const double org[3] = { rh.ray.org_x, rh.ray.org_y, rh.ray.org_z };
     const double t = rh.ray.tfar;
-    const vtkShadowEmbreeScene::Instance& inst = this->Scene->GetInstance(rh.hit.instID[0]);
     const double ng[3] = { rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z };
     double n[3], len2 = 0, side = 0;
     for (int r = 0; r < 3; ++r)
@@ -258,6 +263,41 @@ void Worker::Land(int k)
     return;
   }
   this->Miss(k);
+}
+
+// A pixel on a sphere or tube (an impostor instance): VTK's impostor depth
+// is near the Embree solid, not on it (the mapper moves the sprite's depth
+// by the radius times the sprite's own normal), so the refinement ray,
+// which starts at the depth point, may start inside the solid and meet its
+// far side, or pass in front of it. Trace the impostor's own scene again
+// (an identity placement: the same frame) from twice its largest radius
+// before the depth point: a hit up to the interval's end is the pixel's
+// surface, with its normal. False (no change) when that misses.
+bool Worker::Reland(int k, const vtkShadowEmbreeScene::Instance& inst)
+{
+  RTCRayHit& rh = this->Hits[k];
+  const float back = static_cast<float>(2 * inst.Slack);
+  RTCRayHit again = rh;
+  again.ray.org_x = rh.ray.org_x - back * rh.ray.dir_x;
+  again.ray.org_y = rh.ray.org_y - back * rh.ray.dir_y;
+  again.ray.org_z = rh.ray.org_z - back * rh.ray.dir_z;
+  again.ray.tnear = 0.0f;
+  again.ray.tfar = 2 * back + this->Limits[k];
+  again.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  again.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcIntersect1(inst.Impostors, &context, &again);
+  ++this->Count.PrimaryRays;
+  if (again.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+  {
+    return false;
+  }
+  const unsigned int instance = rh.hit.instID[0];
+  rh.hit = again.hit;
+  rh.hit.instID[0] = instance;
+  rh.ray.tfar = again.ray.tfar - back; // from the refinement ray's origin
+  return true;
 }
 
 // No triangle at the pixel: the depth point pulled towards the camera by
