@@ -1,4 +1,5 @@
 #include "vtkBuiltinShadowMapPass.h"
+#include "vtkShadowActorFlags.h"
 #include "vtkShadowSettings.h"
 #include "vtkShadowStageProfile.h"
 
@@ -204,6 +205,15 @@ void vtkBuiltinShadowMapPass::Render(const vtkRenderState* s)
   for (const vtkshadow::ShadowFrameLight& l : frame.Lights)
   {
     this->ShadowingLights += (!l.Headlight && (!l.Positional || l.ConeAngle < 90.0)) ? 1 : 0;
+  }
+  // VTK's baker draws opaque geometry only.
+  if (!vtkshadow::TranslucentShadowActors(frame.Renderer).empty())
+  {
+    for (size_t l = 0; l < frame.Lights.size(); ++l)
+    {
+      this->AddLightNote(static_cast<int>(l),
+        "translucent actors cast no shadow (VTK's vtkShadowMapPass draws opaque casters only)");
+    }
   }
   this->RenderDelegate(s);
 }

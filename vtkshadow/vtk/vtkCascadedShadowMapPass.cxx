@@ -343,6 +343,8 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   // World 0 starts each frame (a mirror's world is drawn after it).
   this->Impl->FrameMapsRendered = this->WorldKey == 0 ? 0 : this->Impl->FrameMapsRendered;
   Frame frame(this->BeginFrame(s));
+  // One transmittance per texel: a filter's colour comes out grey.
+  this->NoteGreyFilters(frame.Shared);
   this->GatherScene(frame);
   this->PlanMaps(frame);
   this->PlanSamples(frame);

@@ -1,4 +1,5 @@
 #include "vtkShadowPassBase.h"
+#include "vtkShadowActorFlags.h"
 #include "vtkShadowStageProfile.h"
 
 #include "vtkActor.h"
@@ -130,7 +131,49 @@ const vtkshadow::ShadowFrame& vtkShadowPassBase::BeginFrame(const vtkRenderState
   {
     frame.Lights[l].Casts = this->LightCasts(frame.Lights[l].Light, static_cast<int>(l));
   }
+  this->LightNotes.assign(frame.Lights.size(), std::string());
   return frame;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkShadowPassBase::GetLightNote(int light) const
+{
+  return light >= 0 && light < this->GetNumberOfLightNotes() ? this->LightNotes[light].c_str()
+                                                             : "";
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::AddLightNote(int light, const std::string& note)
+{
+  if (light < 0 || light >= this->GetNumberOfLightNotes())
+  {
+    return;
+  }
+  std::string& text = this->LightNotes[light];
+  if (text.find(note) == std::string::npos)
+  {
+    text += (text.empty() ? "" : "; ") + note;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::NoteGreyFilters(const vtkshadow::ShadowFrame& frame)
+{
+  bool tinted = false;
+  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(frame.Renderer))
+  {
+    double transmit[3];
+    tinted = tinted ||
+      (vtkshadow::CastsAsSurface(a, NO_CAST()) && vtkshadow::CasterTransmit(a, transmit));
+  }
+  for (size_t l = 0; tinted && l < frame.Lights.size(); ++l)
+  {
+    if (frame.Lights[l].Casts)
+    {
+      this->AddLightNote(static_cast<int>(l),
+        "the filter colour of translucent casters is drawn grey (raytrace draws it)");
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

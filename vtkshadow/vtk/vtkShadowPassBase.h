@@ -31,6 +31,7 @@
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 /**
  * In a pass's class: its settings table (SettingsTable(), defined in the
@@ -75,6 +76,16 @@ public:
    * Property key: an actor with NO_CAST() = 1 casts no shadow.
    */
   static vtkInformationIntegerKey* NO_CAST();
+
+  /**
+   * What this pass leaves out of a light's shadow in the last frame, per
+   * light (mapper numbering), "" where it draws everything: a technique
+   * that cannot render some caster says so per light rather than silently,
+   * e.g. "the filter colour of translucent casters is drawn grey (raytrace
+   * draws it)". GetNumberOfLightNotes() is the frame's light count.
+   */
+  int GetNumberOfLightNotes() const { return static_cast<int>(this->LightNotes.size()); }
+  const char* GetLightNote(int light) const;
 
   /**
    * Property key: of the light a translucent actor (property opacity a < 1)
@@ -287,6 +298,18 @@ protected:
    * renderer's actor list, "[]" for none.
    */
   std::string DetectedReceiversJSON(vtkRenderer* renderer) const;
+
+  /**
+   * Append `note` to light `light`'s note (GetLightNote) for this frame;
+   * BeginFrame clears them. NoteGreyFilters notes, on every casting light,
+   * that a translucent caster's filter colour is drawn grey, when the
+   * frame has such a caster (the techniques with one value per light).
+   */
+  void AddLightNote(int light, const std::string& note);
+#ifndef __VTK_WRAP__
+  void NoteGreyFilters(const vtkshadow::ShadowFrame& frame);
+#endif
+  std::vector<std::string> LightNotes;
 
   vtkRenderPass* DelegatePass;
   bool DelegateIsApplicationScene = false;
