@@ -281,7 +281,8 @@ PROFILES = {
         settings=[("force_zfail 1", {"force_zfail": 1}, None),
                   ("depth_bias 16, slope_bias 0.01", {"depth_bias": 16, "slope_bias": 0.01},
                    None),
-                  ("soft_samples 64 with point-sized lights (hard)", {"soft_samples": 64}, None)]),
+                  ("soft_samples 64 with point-sized lights (hard)", {"soft_samples": 64}, None)],
+        translucent_casts=0.36),
     # Exact shadows of every caster on every surface, by Embree rays. work =
     # meshes (re)built: moving a caster, the light or the camera rebuilds
     # none (the top level is re-committed), changing 2 casters' data rebuilds
