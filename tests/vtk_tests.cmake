@@ -69,10 +69,17 @@ set_tests_properties(python.planar_flat_parts PROPERTIES LABELS "render" TIMEOUT
 
 # raytrace's partial shadows of translucent actors (issue 31): a sphere of
 # opacity 0.5 leaves 0.25 under it, opacity 1 gives 0, opacity 0 gives 1, a
-# slab of opacity 0.4 leaves 0.36; planar and csm still ignore them.
+# slab of opacity 0.4 leaves 0.36; csm still ignores them.
 add_test(NAME python.translucent_raytrace
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_translucent_raytrace.py)
 set_tests_properties(python.translucent_raytrace PROPERTIES LABELS "render" TIMEOUT 120)
+
+# The same cases under planar (projected translucent triangles multiplied
+# into a transmittance channel) and volume (each translucent caster's
+# crossings counted, the mask multiplied by (1 - opacity) per crossing).
+add_test(NAME python.translucent_planar_volume
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_translucent_planar_volume.py)
+set_tests_properties(python.translucent_planar_volume PROPERTIES LABELS "render" TIMEOUT 120)
 
 # vedo: enable_shadows before show(), after it, or after another technique
 # gives the same frame, with the shadow, for every technique (needs
