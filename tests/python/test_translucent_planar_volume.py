@@ -22,9 +22,35 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import finish  # noqa: E402
+from checks import check, finish  # noqa: E402
 import translucent_patch as tp  # noqa: E402
+from vtkmodules.vtkFiltersSources import vtkPlaneSource  # noqa: E402
 
-for technique in sys.argv[1:] or ("planar", "volume"):
+
+def shelves(renderer):
+    """Five small flat actors 3 above the floor, behind the sphere as the
+    camera sees it: detected receivers ahead of the floor, the sphere below
+    all of them (it casts nothing on them)."""
+    for x in (-4, -2, 0, 2, 4):
+        p = vtkPlaneSource()
+        p.SetOrigin(x - 0.3, 4.0, 3.0)
+        p.SetPoint1(x + 0.3, 4.0, 3.0)
+        p.SetPoint2(x - 0.3, 4.6, 3.0)
+        tp.add(renderer, p)
+
+
+techniques = sys.argv[1:] or ("planar", "volume")
+for technique in techniques:
     tp.check_technique(technique)
+
+# planar's transmittance has four channels, one per (receiver, light) pair:
+# the pairs that take them are those a translucent caster can shadow, so
+# the floor (the sixth receiver here) keeps its partial shadow.
+if "planar" in techniques:
+    mean, lo, hi, n, total = tp.patch_visibility(tp.sphere, 0.5, "planar", shelves)
+    print(f"planar, sphere 0.5 after five other receivers: {mean:.4f} (min {lo:.4f}, max {hi:.4f})")
+    check(n == total and abs(mean - 0.25) <= tp.TOLERANCE and lo >= 0.25 - tp.TOLERANCE
+          and hi <= 0.25 + tp.TOLERANCE,
+          f"planar, the floor after five receivers the sphere cannot shadow: {mean:.4f} "
+          f"({lo:.4f}..{hi:.4f}) is 0.25 within {tp.TOLERANCE}")
 finish()

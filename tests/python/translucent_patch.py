@@ -75,8 +75,12 @@ CASES = (("sphere 0.5", sphere, 0.5, 0.25),
          ("slab 0.4", slab, 0.4, 0.36))
 
 
-def scene(caster, opacity):
+def scene(caster, opacity, before=None):
+    """The scene's build; before(renderer), when given, adds actors ahead of
+    the floor."""
     def build(renderer):
+        if before:
+            before(renderer)
         add(renderer, floor())
         add(renderer, caster(), opacity)
         # Straight down; the camera sees the floor under the caster beside it.
@@ -114,9 +118,9 @@ def render(build, technique):
     return image, pixels
 
 
-def patch_visibility(caster, opacity, technique):
+def patch_visibility(caster, opacity, technique, before=None):
     """(mean, min, max, valid pixels, pixels) of the patch's visibility."""
-    build = scene(caster, opacity)
+    build = scene(caster, opacity, before)
     off, pixels = render(build, None)
     on, _ = render(build, technique)
     v, valid = fr.visibility(on, off)

@@ -264,6 +264,7 @@ private:
 #ifndef __VTK_WRAP__
   void GatherTranslucentCasters(Frame& frame);
 #endif
+  bool TransmitReachesView(const Frame& frame, const vsh_planar_pair& pair) const;
   std::vector<vsh_planar_pair> TransmitPairs(const Frame& frame,
     const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs);
   void DrawTransmitPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const Frame& frame,

@@ -32,6 +32,7 @@
 #include "vtkPlanarShadowSoftFS.h"
 
 #include <algorithm>
+#include <iterator>
 #include <vector>
 
 using vtkshadow::planar::LiesInPlane;
@@ -56,19 +57,44 @@ void vtkPlanarShadowPass::GatherTranslucentCasters(Frame& frame)
 }
 
 //------------------------------------------------------------------------------
+bool vtkPlanarShadowPass::TransmitReachesView(const Frame& frame, const vsh_planar_pair& pair) const
+{
+  // Whether some translucent caster's projection onto the pair's plane may
+  // cover a pixel (its bounds' projected rectangle, as the mask's dirty box
+  // is found; nothing of a caster wholly behind the receiver or beyond the
+  // light): only such pairs take one of the four channels.
+  double shadowDC[16];
+  vsh_mat4_multiply(frame.Shared.CameraRelative, pair.shadow, shadowDC);
+  const double* receiverPlane = &frame.Planes[4 * pair.receiver];
+  const bool explicitPlane = frame.Receivers[pair.receiver] == nullptr;
+  vsh_planar_rect rect;
+  vsh_planar_rect_init(&rect);
+  for (const vtkshadow::ShadowActor& caster : frame.Translucent)
+  {
+    if (!(explicitPlane && LiesInPlane(caster, receiverPlane)) &&
+      !vsh_planar_bounds_culled(pair.clip, caster.Bounds, frame.Shared.Eye))
+    {
+      vsh_planar_rect_add_bounds(&rect, shadowDC, caster.Bounds, frame.Shared.Eye);
+    }
+  }
+  int box[4];
+  return vsh_planar_rect_pixels(&rect, frame.Shared.Size, box) != 0;
+}
+
+//------------------------------------------------------------------------------
 std::vector<vsh_planar_pair> vtkPlanarShadowPass::TransmitPairs(const Frame& frame,
   const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs)
 {
-  // Every pair, hard or soft (a soft pair's transmittance is its light
-  // centre's), while translucent casters cast this frame, up to the
-  // texture's four channels; none without translucent casters, so such a
-  // frame draws, clears and samples nothing more.
+  // The pairs, hard or soft (a soft pair's transmittance is its light
+  // centre's), on which a translucent caster's shadow may be seen, up to
+  // the texture's four channels; none without translucent casters, so such
+  // a frame draws, clears and samples nothing more.
   Internals& impl = *this->Impl;
   std::vector<vsh_planar_pair> chosen;
-  if (!frame.Translucent.empty())
+  for (const std::vector<vsh_planar_pair>* list : { &pairs, &softPairs })
   {
-    chosen = pairs;
-    chosen.insert(chosen.end(), softPairs.begin(), softPairs.end());
+    std::copy_if(list->begin(), list->end(), std::back_inserter(chosen),
+      [&](const vsh_planar_pair& pair) { return this->TransmitReachesView(frame, pair); });
   }
   if (static_cast<int>(chosen.size()) > MaxTransmitPairs)
   {
