@@ -161,10 +161,13 @@ private:
   void SetUpFrame(const vtkRenderState* s, Frame& frame);
   void CountLight(
     vtkOpenGLRenderWindow* window, vtkShaderProgram* program, const Frame& frame, int light);
+#ifndef __VTK_WRAP__
   // Counts one light (sample < 0) or one of its SoftSamples samples; with
-  // `refining`, only at the pixels MarkRefined marked (stencil bit 7).
+  // `refining`, only at the pixels MarkRefined marked (stencil bit 7); with
+  // `translucent`, only that caster's crossings volume.
   void CountVolumes(vtkShaderProgram* program, const Frame& frame, int light, int sample,
     bool refining = false, const vtkshadow::ShadowActor* translucent = nullptr);
+#endif
   // After a light's opaque count: each translucent caster's crossings
   // counted and multiplied into the light's channel as (1 - opacity)^count.
   void CountTranslucent(vtkShaderProgram* program, const Frame& frame, int light);
