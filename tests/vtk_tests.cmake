@@ -74,10 +74,18 @@ set_tests_properties(python.planar_flat_parts PROPERTIES LABELS "render" TIMEOUT
 # plate receiving an opaque sphere's shadow on its own fragments (with
 # blending and with depth peeling). `vtk` (VTK's own pass) draws no
 # translucent shadow.
-foreach(_translucent raytrace)
+# Techniques with one value per light draw a filter's colour grey (--grey:
+# they say so per light, GetLightNote).
+set(_translucent_raytrace "")
+set(_translucent_csm --grey)
+set(_translucent_planar --grey --receives no)
+set(_translucent_volume --grey --receives no)
+set(_translucent_vtk --expect-none --receives no)
+foreach(_translucent raytrace csm planar volume vtk)
   add_test(NAME python.translucent.${_translucent}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY}
-            ${CMAKE_CURRENT_SOURCE_DIR}/python/test_translucent_casters.py ${_translucent})
+            ${CMAKE_CURRENT_SOURCE_DIR}/python/test_translucent_casters.py ${_translucent}
+            ${_translucent_${_translucent}})
   set_tests_properties(python.translucent.${_translucent} PROPERTIES LABELS "render" TIMEOUT 120)
 endforeach()
 
@@ -96,6 +104,12 @@ set_tests_properties(python.translucent_csm PROPERTIES LABELS "render" TIMEOUT 1
 add_test(NAME python.impostor_casters
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_impostor_casters.py)
 set_tests_properties(python.impostor_casters PROPERTIES LABELS "render" TIMEOUT 180)
+
+# planar's four transmittance channels go to the pairs a translucent caster
+# can shadow: the floor keeps its partial shadow behind five other receivers.
+add_test(NAME python.translucent_planar
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_translucent_planar.py)
+set_tests_properties(python.translucent_planar PROPERTIES LABELS "render" TIMEOUT 120)
 
 # vedo: enable_shadows before show(), after it, or after another technique
 # gives the same frame, with the shadow, for every technique (needs

@@ -131,6 +131,12 @@ static void test_caster_tests(void)
   CHECK(vsh_planar_bounds_clipped(clip, (double[6]){-1, 1, -1, 1, -1, 1}, eye) == 1); /* below */
   CHECK(vsh_planar_bounds_clipped(clip, (double[6]){-1, 1, -1, 1, 4, 6}, eye) == 1); /* above */
   CHECK(vsh_planar_bounds_clipped(clip, (double[6]){-1, 1, -1, 1, 0, 1}, eye) == 1); /* touches */
+  /* Culled only when a whole box is on the wrong side of one plane. */
+  CHECK(vsh_planar_bounds_culled(clip, (double[6]){-1, 1, -1, 1, 1, 2}, eye) == 0);
+  CHECK(vsh_planar_bounds_culled(clip, (double[6]){-1, 1, -1, 1, -1, 1}, eye) == 0);
+  CHECK(vsh_planar_bounds_culled(clip, (double[6]){-1, 1, -1, 1, -3, -1}, eye) == 1); /* below */
+  CHECK(vsh_planar_bounds_culled(clip, (double[6]){-1, 1, -1, 1, 6, 8}, eye) == 1);   /* above */
+  CHECK(vsh_planar_bounds_culled(clip, (double[6]){-1, 1, -1, 1, 4, 6}, eye) == 0);
 }
 
 static void test_fan_rect(void)

@@ -53,8 +53,21 @@ static void test_degenerate(void) {
   CHECK(vsh_transmit_passes(0.0));
 }
 
+/* Crossings that matter to an 8-bit value: 0.5^9 = 1/512 is the first
+ * power of 0.5 below 1/510. */
+static void test_steps(void) {
+  CHECK(vsh_transmit_steps(0.5) == 9);
+  CHECK(vsh_transmit_steps(0.6) == 13); /* 0.6^12 = 0.0022 >= 1/510, 0.6^13 = 0.0013 */
+  CHECK(vsh_transmit_steps(0.0) == 1);
+  CHECK(vsh_transmit_steps(NAN) == 1);
+  CHECK(vsh_transmit_steps(-1.0) == 1);
+  CHECK(vsh_transmit_steps(1.0) == 255);
+  CHECK(vsh_transmit_steps(0.999) == 255);
+}
+
 int main(void) {
   test_basic();
   test_degenerate();
+  test_steps();
   return vsh_check_report("test_transmit");
 }

@@ -88,13 +88,17 @@ static int crosses(const vsh_mesh_topology *t, size_t f, const double q[3], cons
   return u > 0 && w > 0 && u + w < 1 && tt > 0 && tt < tmax;
 }
 
-/* The count the volume must give at q: faces crossed (open meshes) or
- * faces that do not face the light crossed (closed meshes: entries). */
-static long expected(const vsh_mesh_topology *t, const double q[3], const double light[4]) {
+/* The count the volume must give at q: faces crossed (open meshes, and
+ * every mesh's crossings volume) or faces that do not face the light
+ * crossed (closed meshes: entries). */
+static long expected(const vsh_mesh_topology *t, const double q[3], const double light[4],
+                     int crossings) {
   long n = 0;
   for (size_t f = 0; f < t->triangle_count; ++f) {
     if (!crosses(t, f, q, light)) continue;
-    if (!t->closed || !vsh_triangle_faces_light(t->positions, t->triangles + 3 * f, light)) ++n;
+    if (crossings || !t->closed ||
+        !vsh_triangle_faces_light(t->positions, t->triangles + 3 * f, light))
+      ++n;
   }
   return n;
 }
@@ -102,11 +106,14 @@ static long expected(const vsh_mesh_topology *t, const double q[3], const double
 /* Random points around the mesh: the volume's winding number equals the
  * brute-force count wherever it is clearly an integer (points within
  * rounding of a face are skipped). Returns how many points were compared. */
-static int check_counts(const char *name, const double light[4], double spread) {
+static int check_counts(const char *name, const double light[4], double spread,
+                        int crossings) {
   vsh_mesh_topology t;
   CHECK(vsh_mesh_topology_build(mesh.p, mesh.nv, mesh.t, mesh.nt, 0.0, &t) == VSH_MESH_OK);
   vsh_volume v;
-  CHECK(vsh_volume_build(&t, light, &v) == VSH_MESH_OK);
+  CHECK((crossings ? vsh_volume_build_crossings(&t, light, &v) : vsh_volume_build(&t, light, &v)) ==
+        VSH_MESH_OK);
+  CHECK(!crossings || v.dark_caps == 0);
   const double far = 1e4;
   finite_copy(&v, light, far);
   int compared = 0, wrong = 0, shadowed = 0;
@@ -115,7 +122,7 @@ static int check_counts(const char *name, const double light[4], double spread) 
                          vsh_test_rnd(-spread, spread)};
     const double w = winding(&v, q);
     if (fabs(w - round(w)) > 1e-3) continue; /* on a face: not meaningful */
-    const long e = expected(&t, q, light);
+    const long e = expected(&t, q, light, crossings);
     ++compared;
     shadowed += e != 0;
     if ((long)round(w) != e) {
@@ -139,7 +146,10 @@ static double bumpy(int ring, int segment, void *user) {
 
 static void counts_for_all_lights(const char *name, double spread) {
   const double lights[3][4] = {{0.3, 0.4, 1.0, 0.0}, {0.5, -0.7, 3.0, 1.0}, {-6, 2, 3, 2}};
-  for (int k = 0; k < 3; ++k) check_counts(name, lights[k], spread);
+  for (int k = 0; k < 3; ++k) {
+    check_counts(name, lights[k], spread, 0);
+    check_counts(name, lights[k], spread, 1); /* every crossing (translucent casters) */
+  }
 }
 
 static void test_counts(void) {

@@ -248,7 +248,8 @@ PROFILES = {
         work=lambda p: p.GetNumberOfGeometryBuilds(),
         caching={"first": 3, "still": 0, "data": 2, "light": 0, "orbit": 0},
         headlight_on=lambda p: p.SetCastHeadlightShadows(True),
-        special={"explicit-plane": planar_explicit_plane}),
+        special={"explicit-plane": planar_explicit_plane},
+        translucent_casts=0.36),
     "csm": Profile(
         stats=csm_stats, expect={"viewport": {"cascades": ">=1"}},
         work=csm_work, caching={"first": "some", "still": 0, "moved": "some", "data": "some", "light": "some",
@@ -263,7 +264,9 @@ PROFILES = {
         stats=auto_stats, work=auto_work, agreement=99.5,
         caching={"first": "some", "still": 0, "data": "some"},
         settings=[("max_error 0.2", {"max_error": 0.2}, None),
-                  ("max_texel_px 1.5", {"max_texel_px": 1.5}, None)]),
+                  ("max_texel_px 1.5", {"max_texel_px": 1.5}, None)],
+        # This scene's light goes to planar, which casts translucent actors.
+        translucent_casts=0.36),
     # Stencil shadow volumes: exact on every surface; a volume is rebuilt only
     # when the light moves relative to its caster or the mesh changes, never
     # for the camera. The caching case translates a caster under a
@@ -279,7 +282,8 @@ PROFILES = {
         settings=[("force_zfail 1", {"force_zfail": 1}, None),
                   ("depth_bias 16, slope_bias 0.01", {"depth_bias": 16, "slope_bias": 0.01},
                    None),
-                  ("soft_samples 64 with point-sized lights (hard)", {"soft_samples": 64}, None)]),
+                  ("soft_samples 64 with point-sized lights (hard)", {"soft_samples": 64}, None)],
+        translucent_casts=0.36),
     # Exact shadows of every caster on every surface, by Embree rays. work =
     # meshes (re)built: moving a caster, the light or the camera rebuilds
     # none (the top level is re-committed), changing 2 casters' data rebuilds

@@ -102,6 +102,22 @@ int vsh_planar_bounds_clipped(const double clip[2][4], const double bounds[6],
   return 0;
 }
 
+int vsh_planar_bounds_culled(const double clip[2][4], const double bounds[6],
+                             const double eye[3])
+{
+  for (int c = 0; c < 2; ++c) {
+    const double *plane = clip[c];
+    int cut = 0;
+    for (int k = 0; k < 8; ++k) {
+      double p[3];
+      corner(bounds, k, eye, p);
+      cut += plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3] <= 0.0;
+    }
+    if (cut == 8) return 1;
+  }
+  return 0;
+}
+
 void vsh_planar_rect_init(vsh_planar_rect *rect)
 {
   rect->ndc[0] = rect->ndc[1] = 1e300;

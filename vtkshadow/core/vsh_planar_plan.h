@@ -69,6 +69,11 @@ int vsh_planar_bounds_in_plane(const double bounds[6], const double plane[4]);
 int vsh_planar_bounds_clipped(const double clip[2][4], const double bounds[6],
                               const double eye[3]);
 
+/* Whether every corner of the box is cut by the same clip plane: all of it
+ * behind the receiver or beyond the light, so it casts nothing on the pair. */
+int vsh_planar_bounds_culled(const double clip[2][4], const double bounds[6],
+                             const double eye[3]);
+
 /* The screen rectangle of a pair's fans in normalized device coordinates, and
  * whether it is the whole viewport (a corner at or behind the camera). */
 typedef struct vsh_planar_rect {

@@ -22,3 +22,14 @@ void vsh_transmit_accumulate(const double color[3], double opacity, double filte
 }
 
 int vsh_transmit_passes(double opacity) { return clamp01(opacity, 1.0) < 1.0; }
+
+int vsh_transmit_steps(double transmit) {
+  const double t = clamp01(transmit, 0.0);
+  double left = t;
+  int k = 1;
+  while (left >= 1.0 / 510.0 && k < 255) {
+    left *= t;
+    ++k;
+  }
+  return k;
+}

@@ -31,6 +31,14 @@ void vsh_transmit_accumulate(const double color[3], double opacity, double filte
  * so a ray must look past it; 0 for an opaque surface (the ray stops). */
 int vsh_transmit_passes(double opacity);
 
+/* How many crossings of transmittance `transmit` (one crossing, clamped to
+ * [0, 1]) matter to an 8-bit visibility: the smallest k >= 1 with
+ * transmit^k below half a step (1/510), at most 255 (an 8-bit stencil
+ * count). A technique that multiplies once per crossing stops there: more
+ * crossings change no stored value. 1 for an opaque crossing (or NaN), 255
+ * for one that lets nearly everything through. */
+int vsh_transmit_steps(double transmit);
+
 #ifdef __cplusplus
 }
 #endif

@@ -63,12 +63,13 @@ void vsh_volume_free(vsh_volume *v) {
   memset(v, 0, sizeof(*v));
 }
 
-vsh_mesh_status vsh_volume_build(const vsh_mesh_topology *t, const double light[4],
-                                 vsh_volume *out) {
+/* The volume with dark caps (closed meshes) or of every face turned to face
+ * the light (dark_caps 0: any mesh). */
+static vsh_mesh_status build(const vsh_mesh_topology *t, const double light[4], int dark_caps,
+                             vsh_volume *out) {
   if (out) memset(out, 0, sizeof(*out));
   double l[4];
   if (!t || !out || !usable_light(light, l)) return VSH_MESH_INVALID;
-  const int dark_caps = t->closed;
   vsh_silhouette s;
   vsh_mesh_status status = vsh_silhouette_build(
       t, l, dark_caps ? VSH_SILHOUETTE_LIT_FACES : VSH_SILHOUETTE_BOTH_SIDES, &s);
@@ -114,6 +115,16 @@ vsh_mesh_status vsh_volume_build(const vsh_mesh_topology *t, const double light[
   free(facing);
   vsh_silhouette_free(&s);
   return VSH_MESH_OK;
+}
+
+vsh_mesh_status vsh_volume_build(const vsh_mesh_topology *t, const double light[4],
+                                 vsh_volume *out) {
+  return build(t, light, t ? t->closed : 0, out);
+}
+
+vsh_mesh_status vsh_volume_build_crossings(const vsh_mesh_topology *t, const double light[4],
+                                           vsh_volume *out) {
+  return build(t, light, 0, out);
 }
 
 /* ---- z-pass safety: separating axes between two convex point sets ------ */

@@ -65,6 +65,15 @@ typedef struct vsh_volume {
 vsh_mesh_status vsh_volume_build(const vsh_mesh_topology *topology, const double light[4],
                                  vsh_volume *out);
 
+/* The volume of every face turned to face the light, closed mesh or not
+ * (the open meshes' volume above): its winding number around p is the
+ * number of faces the segment p -> light crosses, which a translucent caster
+ * needs (each crossing lets 1 - opacity through, docs/translucency.md)
+ * where the dark caps count only the entries. dark_caps is 0; the same
+ * errors as vsh_volume_build. */
+vsh_mesh_status vsh_volume_build_crossings(const vsh_mesh_topology *topology,
+                                           const double light[4], vsh_volume *out);
+
 /* Frees the vertices and zeroes *volume. NULL and zeroed are fine. */
 void vsh_volume_free(vsh_volume *volume);
 

@@ -124,6 +124,10 @@ vtkPlanarShadowPass::~vtkPlanarShadowPass()
   {
     this->Impl->SoftMark->Delete();
   }
+  if (this->Impl->Transmit)
+  {
+    this->Impl->Transmit->Delete();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -179,6 +183,7 @@ long long vtkPlanarShadowPass::GetMemoryBytes() const
   long long bytes = static_cast<long long>(this->Impl->MaskSize[0]) * this->Impl->MaskSize[1] * 4 *
     this->Impl->MaskChannels;
   bytes += static_cast<long long>(this->Impl->SoftSize[0]) * this->Impl->SoftSize[1] * 8;
+  bytes += static_cast<long long>(this->Impl->TransmitSize[0]) * this->Impl->TransmitSize[1] * 8;
   if (this->Impl->SoftMark)
   {
     bytes +=
@@ -238,6 +243,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   // Casters from the renderer's props, not the frustum-culled list: a
   // caster behind the camera still shadows a receiver in view.
   this->GatherCasters(frame.Shared.Actors, frame);
+  this->GatherTranslucentCasters(frame);
   this->SetUpPlanes(frame);
   // Which (receiver, light) pairs cast, with their matrices: plain planning.
   std::vector<vsh_planar_pair> pairs(MaxPairs);
@@ -253,8 +259,10 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   }
   // Pairs whose light has a size are sampled (SoftSamples hard shadows).
   const std::vector<vsh_planar_pair> softPairs = this->SplitSoftPairs(frame, pairs);
+  // Pairs that get the translucent casters' transmittance (none without them).
+  const std::vector<vsh_planar_pair> transmitPairs = this->TransmitPairs(frame, pairs, softPairs);
   vtkshadow::MarkStage("planar.plan");
-  this->DrawMask(window, frame, pairs, softPairs);
+  this->DrawMask(window, frame, pairs, softPairs, transmitPairs);
   this->ForgetRemovedCasters(window);
   vtkshadow::MarkStage("planar.mask");
 
@@ -264,7 +272,15 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   {
     impl.Soft->Activate();
   }
+  if (!transmitPairs.empty())
+  {
+    impl.Transmit->Activate();
+  }
   this->RenderDelegateWithShaderHooks(s);
+  if (!transmitPairs.empty())
+  {
+    impl.Transmit->Deactivate();
+  }
   if (!softPairs.empty())
   {
     impl.Soft->Deactivate();
@@ -514,7 +530,8 @@ void vtkPlanarShadowPass::AttachStencil(const Frame& frame)
 
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const Frame& frame,
-  const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs)
+  const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs,
+  const std::vector<vsh_planar_pair>& transmitPairs)
 {
   Internals& impl = *this->Impl;
   this->AllocateMask(window, frame);
@@ -570,6 +587,10 @@ void vtkPlanarShadowPass::DrawMask(vtkOpenGLRenderWindow* window, const Frame& f
     if (!softPairs.empty())
     {
       this->DrawSoftPairs(window, state, frame, softPairs);
+    }
+    if (!transmitPairs.empty())
+    {
+      this->DrawTransmitPairs(window, state, frame, transmitPairs);
     }
   }
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);
@@ -628,7 +649,7 @@ void vtkPlanarShadowPass::DrawPair(
     if (geometry->GetNumberOfTriangles() > 0)
     {
       this->DrawCaster(program, frame, pair, frame.Lights[pair.light].homogeneous, shadowDC, caster,
-        *geometry, fans, fanRect);
+        *geometry, &fans, &fanRect);
     }
   }
   if (!fans.empty())
@@ -663,8 +684,8 @@ vtkShadowCasterGeometry* vtkPlanarShadowPass::CasterGeometry(vtkActor* actor)
 //------------------------------------------------------------------------------
 void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const Frame& frame,
   const vsh_planar_pair& pair, const double light[4], const double shadowDC[16],
-  const vtkshadow::ShadowActor& caster, vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans,
-  vsh_planar_rect& fanRect)
+  const vtkshadow::ShadowActor& caster, vtkShadowCasterGeometry& geometry, std::vector<Fan>* fans,
+  vsh_planar_rect* fanRect)
 {
   // Model (shifted) -> world -> relative to the eye, in double.
   const double* model = caster.Matrix;
@@ -685,16 +706,17 @@ void vtkPlanarShadowPass::DrawCaster(vtkShaderProgram* program, const Frame& fra
   const double* b = caster.Bounds;
   const bool clipNeeded = vsh_planar_bounds_clipped(pair.clip, b, frame.Shared.Eye) != 0;
   double inverse[16];
-  if (!clipNeeded && geometry.IsClosed() && vsh_mat4_inverse(model, inverse))
+  if (fans && !clipNeeded && geometry.IsClosed() && vsh_mat4_inverse(model, inverse))
   {
     // Closed and unclipped: its silhouette fans, counted in the stencil,
-    // cover exactly what its triangles would.
+    // cover exactly what its triangles would (without `fans`, every
+    // triangle is drawn: a translucent caster's transmittance).
     Fan fan;
     fan.Geometry = &geometry;
     std::copy_n(mcdcF, 16, fan.MCDC);
     vsh_mat4_transform_point4(inverse, light, fan.Light);
-    fans.push_back(fan);
-    vsh_planar_rect_add_bounds(&fanRect, shadowDC, b, frame.Shared.Eye);
+    fans->push_back(fan);
+    vsh_planar_rect_add_bounds(fanRect, shadowDC, b, frame.Shared.Eye);
     return;
   }
   if (clipNeeded)
@@ -829,7 +851,9 @@ bool vtkPlanarShadowPass::PreReplaceShaderValues(
     // hard shader, byte for byte.
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
       std::string("//VTK::Light::Dec\n") +
-        (this->Impl->SoftShader ? "#define VSH_PLANAR_SOFT 1\n" : "") + vtkPlanarShadowLightFS,
+        (this->Impl->SoftShader ? "#define VSH_PLANAR_SOFT 1\n" : "") +
+        (this->Impl->TransmitShader ? "#define VSH_PLANAR_TRANSMIT 1\n" : "") +
+        vtkPlanarShadowLightFS,
       false);
   }
   return true;
@@ -876,6 +900,12 @@ bool vtkPlanarShadowPass::SetShaderParameters(
     program->SetUniformi("vshPlanarSoft", impl.Soft->GetTextureUnit());
     program->SetUniform1iv("vshPlanarSoftPair", MaxSoftPairs, impl.SoftPair);
   }
+  if (impl.Transmit && program->IsUniformUsed("vshPlanarTransmit"))
+  {
+    program->SetUniformi("vshPlanarTransmit", impl.Transmit->GetTextureUnit());
+    program->SetUniform1iv(
+      "vshPlanarTransmitPair", vtkshadow::planar::MaxTransmitPairs, impl.TransmitPair);
+  }
   return true;
 }
 
@@ -896,6 +926,11 @@ void vtkPlanarShadowPass::ReleaseGraphicsResources(vtkWindow* w)
     impl.SoftMark->ReleaseGraphicsResources(w);
   }
   impl.SoftSize[0] = impl.SoftSize[1] = 0;
+  if (impl.Transmit)
+  {
+    impl.Transmit->ReleaseGraphicsResources(w);
+  }
+  impl.TransmitSize[0] = impl.TransmitSize[1] = 0;
   if (impl.FBO)
   {
     impl.FBO->ReleaseGraphicsResources(w);
@@ -967,7 +1002,9 @@ std::string vtkPlanarShadowPass::GetStatsJSON(vtkRenderer* renderer) const
   return "\"shadow_pairs\": " + std::to_string(this->NumberOfShadowPairs) +
     ", \"mask_triangles\": " + std::to_string(this->NumberOfMaskTriangles) +
     ", \"geometry_builds\": " + std::to_string(this->NumberOfGeometryBuilds) +
-    ", \"soft_pairs\": " + std::to_string(this->NumberOfSoftPairs) +
+    ", \"soft_pairs\": " + std::to_string(this->NumberOfSoftPairs) + ", \"transmit_pairs\": " +
+    std::to_string(std::count_if(std::begin(this->Impl->TransmitPair),
+      std::end(this->Impl->TransmitPair), [](int bit) { return bit >= 0; })) +
     ", \"soft_samples\": " + std::to_string(this->SoftSamples) +
     ", \"soft_batch\": " + std::to_string(this->Impl->SoftAdaptive ? VSH_SOFT_ADAPTIVE_BATCH : 0) +
     ", \"soft_adaptive\": " + adaptive +

@@ -28,7 +28,10 @@
  * points on a part do not shadow it. The stats count them
  * (detected_flat_parts).
  * Casters: every visible opaque actor except receivers onto themselves and
- * actors marked with NO_CAST(). Lights: every switched-on scene light
+ * actors marked with NO_CAST(). A translucent actor (property opacity a < 1)
+ * casts a partial shadow: its projected triangles multiply the light by
+ * (1 - a) each, so the receiver keeps (1 - a) per crossing of the ray to the
+ * light (docs/translucency.md), for up to 4 pairs a frame. Lights: every switched-on scene light
  * (directional, point, spot); the headlight only with CastHeadlightShadowsOn().
  * At most 128 (receiver, light) pairs.
  *
@@ -229,13 +232,13 @@ private:
   // The explicit planes in view coordinates, for the receivers' shaders.
   void SetUpPlanes(const Frame& frame);
   void DrawMask(vtkOpenGLRenderWindow* window, const Frame& frame,
-    const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs);
+    const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs,
+    const std::vector<vsh_planar_pair>& transmitPairs);
   void ForgetRemovedCasters(vtkOpenGLRenderWindow* window);
   // Sampled area lights (vtkPlanarShadowSoft.cxx): which pairs are soft,
   // and their accumulation.
   std::vector<vsh_planar_pair> SplitSoftPairs(
     const Frame& frame, std::vector<vsh_planar_pair>& pairs);
-  void AllocateSoft(vtkOpenGLRenderWindow* window, const Frame& frame);
   void DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const Frame& frame,
     const std::vector<vsh_planar_pair>& softPairs);
   void DrawSoftSample(vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame,
@@ -247,6 +250,25 @@ private:
     int channel, int box[4]);
   void DrawSoftRest(vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame,
     const vsh_planar_pair& pair, const int box[4], const float weight[4]);
+  // Pair bits of a four-channel texture's channels (soft, transmittance),
+  // and whether the receivers' shaders look them up.
+  void SetPairChannels(const std::vector<vsh_planar_pair>& pairs, int channelPair[4], bool& lookup);
+  // RGBA16F, a pair per channel, at the viewport's size (the soft
+  // accumulation, the translucent casters' transmittance): allocated when
+  // needed, attached as the mask framebuffer's colour and cleared to
+  // clearValue.
+  void AttachPairChannels(vtkTextureObject*& texture, int textureSize[2],
+    vtkOpenGLRenderWindow* window, const Frame& frame, float clearValue);
+  // Translucent casters (vtkPlanarShadowTranslucent.cxx): which ones cast,
+  // the pairs that get a transmittance channel, and its drawing.
+#ifndef __VTK_WRAP__
+  void GatherTranslucentCasters(Frame& frame);
+#endif
+  bool TransmitReachesView(const Frame& frame, const vsh_planar_pair& pair) const;
+  std::vector<vsh_planar_pair> TransmitPairs(const Frame& frame,
+    const std::vector<vsh_planar_pair>& pairs, const std::vector<vsh_planar_pair>& softPairs);
+  void DrawTransmitPairs(vtkOpenGLRenderWindow* window, vtkOpenGLState* state, const Frame& frame,
+    const std::vector<vsh_planar_pair>& transmitPairs);
   // Parts of them.
   void UpdateReceivingSet();
   void AllocateMask(vtkOpenGLRenderWindow* window, const Frame& frame);
@@ -257,7 +279,7 @@ private:
 #ifndef __VTK_WRAP__
   void DrawCaster(vtkShaderProgram* program, const Frame& frame, const vsh_planar_pair& pair,
     const double light[4], const double shadowDC[16], const vtkshadow::ShadowActor& caster,
-    vtkShadowCasterGeometry& geometry, std::vector<Fan>& fans, vsh_planar_rect& fanRect);
+    vtkShadowCasterGeometry& geometry, std::vector<Fan>* fans, vsh_planar_rect* fanRect);
 #endif
   void FillFans(vtkShaderProgram* program, vtkOpenGLState* state, const Frame& frame,
     const std::vector<Fan>& fans, const vsh_planar_rect& fanRect, const unsigned int bits[4]);

@@ -36,6 +36,9 @@ constexpr int MaxPairs = VSH_PLANAR_MAX_PAIRS;
 constexpr int MaxExplicitPlanes = 8;
 // Soft pairs per frame: one channel each of the RGBA16F accumulation.
 constexpr int MaxSoftPairs = 4;
+// Pairs per frame with a transmittance channel (translucent casters): one
+// channel each of another RGBA16F texture.
+constexpr int MaxTransmitPairs = 4;
 
 // Whether a caster's world bounds lie in the plane (within 1e-6 of their size).
 inline bool LiesInPlane(const vtkshadow::ShadowActor& caster, const double plane[4])
@@ -106,6 +109,15 @@ struct vtkPlanarShadowPass::Internals
   };
   std::vector<PairStats> SoftStats;
   bool SoftAdaptive = false; // in the last frame
+  // Translucent casters: per pair with a channel, the product of (1 -
+  // opacity) over the projected translucent triangles covering each pixel
+  // (1 elsewhere), the pair bit of each channel (-1: none), and whether the
+  // receivers' shaders have the transmittance lookup compiled in.
+  vtkTextureObject* Transmit = nullptr;
+  int TransmitSize[2] = { 0, 0 };
+  int TransmitPair[vtkshadow::planar::MaxTransmitPairs] = { -1, -1, -1, -1 };
+  bool TransmitShader = false;
+  bool TransmitWarned = false;
 
   // Per-frame values for SetShaderParameters.
   std::map<vtkProp*, int> ReceiverIndex;
@@ -182,6 +194,9 @@ struct vtkPlanarShadowPass::Frame
   // the mesh's points on the part do not shadow the part they make up.
   std::vector<double> CasterLift;
   std::vector<vtkshadow::ShadowActor> Casters;
+  // Translucent casters (opacity strictly between 0 and 1) and their opacity.
+  std::vector<vtkshadow::ShadowActor> Translucent;
+  std::vector<double> TranslucentOpacity;
 };
 
 // A closed caster drawn as its silhouette fans, counted in the stencil.

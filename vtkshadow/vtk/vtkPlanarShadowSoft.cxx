@@ -55,45 +55,61 @@ std::vector<vsh_planar_pair> vtkPlanarShadowPass::SplitSoftPairs(
     hard.push_back(pair);
   }
   pairs.swap(hard);
-  for (int k = 0; k < MaxSoftPairs; ++k)
-  {
-    impl.SoftPair[k] = k < static_cast<int>(soft.size()) ? soft[k].bit : -1;
-  }
-  // The soft lookup is compiled into the receivers' shaders only while
-  // there are soft pairs.
-  if (impl.SoftShader != !soft.empty())
-  {
-    impl.SoftShader = !soft.empty();
-    this->BumpShaderTime();
-  }
+  this->SetPairChannels(soft, impl.SoftPair, impl.SoftShader);
   this->NumberOfSoftPairs = static_cast<int>(soft.size());
   return soft;
 }
 
 //------------------------------------------------------------------------------
-void vtkPlanarShadowPass::AllocateSoft(vtkOpenGLRenderWindow* window, const Frame& frame)
+void vtkPlanarShadowPass::SetPairChannels(
+  const std::vector<vsh_planar_pair>& pairs, int channelPair[4], bool& lookup)
 {
-  // RGBA16F, a soft pair per channel: sums of k / N are exact for N a power
-  // of two up to 1024 (and within 1e-3 otherwise).
-  Internals& impl = *this->Impl;
-  if (!impl.Soft)
+  // Channel k holds pairs[k] (-1: no pair). The lookup is compiled into the
+  // receivers' shaders only while some channel is used: a frame without
+  // such pairs keeps the shader without it.
+  for (int k = 0; k < 4; ++k)
   {
-    impl.Soft = vtkTextureObject::New();
+    channelPair[k] = k < static_cast<int>(pairs.size()) ? pairs[k].bit : -1;
   }
-  impl.Soft->SetContext(window);
+  if (lookup != !pairs.empty())
+  {
+    lookup = !pairs.empty();
+    this->BumpShaderTime();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::AttachPairChannels(vtkTextureObject*& texture, int textureSize[2],
+  vtkOpenGLRenderWindow* window, const Frame& frame, float clearValue)
+{
+  // RGBA16F, a pair per channel: sums of k / N are exact for N a power of
+  // two up to 1024 (and within 1e-3 otherwise), and so are products of
+  // transmittances like 0.5 x 0.5.
+  if (!texture)
+  {
+    texture = vtkTextureObject::New();
+  }
+  texture->SetContext(window);
   const int* size = frame.Shared.Size;
-  if (impl.SoftSize[0] != size[0] || impl.SoftSize[1] != size[1] || !impl.Soft->GetHandle())
+  if (textureSize[0] != size[0] || textureSize[1] != size[1] || !texture->GetHandle())
   {
-    impl.Soft->ReleaseGraphicsResources(window);
-    impl.Soft->SetInternalFormat(GL_RGBA16F);
-    impl.Soft->SetFormat(GL_RGBA);
-    impl.Soft->SetDataType(GL_FLOAT);
-    impl.Soft->SetMinificationFilter(vtkTextureObject::Nearest);
-    impl.Soft->SetMagnificationFilter(vtkTextureObject::Nearest);
-    impl.Soft->Allocate2D(size[0], size[1], 4, VTK_FLOAT);
-    impl.SoftSize[0] = size[0];
-    impl.SoftSize[1] = size[1];
+    texture->ReleaseGraphicsResources(window);
+    texture->SetInternalFormat(GL_RGBA16F);
+    texture->SetFormat(GL_RGBA);
+    texture->SetDataType(GL_FLOAT);
+    texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    texture->Allocate2D(size[0], size[1], 4, VTK_FLOAT);
+    textureSize[0] = size[0];
+    textureSize[1] = size[1];
   }
+  // In place of the mask as the mask framebuffer's colour attachment.
+  Internals& impl = *this->Impl;
+  impl.FBO->RemoveColorAttachment(0);
+  impl.FBO->AddColorAttachment(0, texture);
+  impl.FBO->ActivateDrawBuffers(1);
+  const GLfloat value[4] = { clearValue, clearValue, clearValue, clearValue };
+  glClearBufferfv(GL_COLOR, 0, value);
 }
 
 //------------------------------------------------------------------------------
@@ -104,12 +120,7 @@ void vtkPlanarShadowPass::DrawSoftPairs(vtkOpenGLRenderWindow* window, vtkOpenGL
   // points on the light, each counted once per pixel (stencil) and added
   // with weight 1/N to the pair's channel.
   Internals& impl = *this->Impl;
-  this->AllocateSoft(window, frame);
-  impl.FBO->RemoveColorAttachment(0);
-  impl.FBO->AddColorAttachment(0, impl.Soft);
-  impl.FBO->ActivateDrawBuffers(1);
-  const GLfloat zero[4] = { 0, 0, 0, 0 };
-  glClearBufferfv(GL_COLOR, 0, zero);
+  this->AttachPairChannels(impl.Soft, impl.SoftSize, window, frame, 0.0f);
   vtkShaderProgram* program =
     window->GetShaderCache()->ReadyShaderProgram(vtkPlanarShadowMaskVS, vtkPlanarShadowSoftFS, "");
   if (!program)
@@ -308,7 +319,7 @@ void vtkPlanarShadowPass::DrawSoftSample(vtkShaderProgram* program, vtkOpenGLSta
     double shadowDC[16];
     vsh_mat4_multiply(frame.Shared.CameraRelative, samplePair.shadow, shadowDC);
     this->DrawCaster(
-      program, frame, samplePair, light.homogeneous, shadowDC, caster, *geometry, fans, fanRect);
+      program, frame, samplePair, light.homogeneous, shadowDC, caster, *geometry, &fans, &fanRect);
   }
   glDisable(GL_CLIP_DISTANCE0);
   glDisable(GL_CLIP_DISTANCE1);

@@ -399,6 +399,30 @@ void vtkShadowScreenMask::AccumulateStencil(int light, int levels, int ref)
 }
 
 //------------------------------------------------------------------------------
+int vtkShadowScreenMask::MultiplyStencilCount(int light, float transmit, int maxSteps)
+{
+  Internals& impl = *this->Impl;
+  if (!impl.Drawing || light < 0 || light >= this->LightCount)
+  {
+    return 0;
+  }
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  int steps = 0;
+  for (GLuint passed = 1; passed && steps < maxSteps; ++steps)
+  {
+    // Waits for the step: a count is a handful of steps (2 under a closed
+    // convex caster), drawn only for translucent casters.
+    glBeginQuery(GL_ANY_SAMPLES_PASSED, query);
+    this->DrawChannel(light, transmit, Where::StencilCount, false);
+    glEndQuery(GL_ANY_SAMPLES_PASSED);
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &passed);
+  }
+  glDeleteQueries(1, &query);
+  return steps;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowScreenMask::MarkBatch(int light, int batchLevels, bool refine, int ref)
 {
   Internals& impl = *this->Impl;
@@ -480,11 +504,12 @@ void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool 
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_CULL_FACE);
-  if (add)
+  if (add || where == Where::StencilCount)
   {
+    // Added, or multiplied (dst * src) for a count.
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendEquation(GL_FUNC_ADD);
-    state->vtkglBlendFunc(GL_ONE, GL_ONE);
+    state->vtkglBlendFunc(add ? GL_ONE : GL_ZERO, add ? GL_ONE : GL_SRC_COLOR);
   }
   else
   {
@@ -493,6 +518,13 @@ void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool 
   if (where == Where::Everywhere)
   {
     state->vtkglDisable(GL_STENCIL_TEST);
+  }
+  else if (where == Where::StencilCount)
+  {
+    state->vtkglEnable(GL_STENCIL_TEST);
+    state->vtkglStencilMask(0xff);
+    state->vtkglStencilFunc(GL_NOTEQUAL, 0, 0xff);
+    state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_DECR);
   }
   else
   {

@@ -126,6 +126,18 @@ public:
   static int AccumulationLevels(int sample, int samples);
 
   /**
+   * Inside BeginDraw(light), after a count in the stencil of the triangles
+   * of one translucent caster the ray to the light crosses (its crossings
+   * volumes, z-fail): multiply the light's channel by `transmit` once per
+   * unit of the count, giving transmit^count, and take the stencil back to
+   * 0 (each step multiplies where the stencil is not 0 and decrements it
+   * there; an occlusion query stops the steps when no pixel is left). At
+   * most `maxSteps` steps: later ones change no 8-bit value. Returns the
+   * steps drawn; the stencil is 0 everywhere unless that is maxSteps.
+   */
+  int MultiplyStencilCount(int light, float transmit, int maxSteps);
+
+  /**
    * Inside BeginDraw(light), for adaptive sample counts (vtkShadowVolumePass's
    * adaptive): the light's channel holds its first batch of samples, whose
    * levels sum to `batchLevels` (vsh_soft_batch_levels). Sets the stencil
@@ -204,12 +216,14 @@ public:
 private:
   bool Allocate(vtkOpenGLRenderWindow* window);
   // One value into the light's channel: over the pixels whose stencil is
-  // not 0 (ResolveStencil), is 0 (AccumulateStencil, added) or everywhere.
+  // not 0 (ResolveStencil; StencilCount: multiplied, decrementing the
+  // stencil there), is 0 (AccumulateStencil, added) or everywhere.
   enum class Where
   {
     StencilSet,
     StencilZero,
-    Everywhere
+    Everywhere,
+    StencilCount
   };
   void DrawChannel(int light, float value, Where where, bool add, int ref = 0);
 

@@ -30,6 +30,7 @@
 #include "vsh_rt_adaptive.h"
 #include "vsh_soft.h"
 #include "vsh_soft_adaptive.h"
+#include "vsh_transmit.h"
 #include "vsh_volume.h"
 
 #include "vtkShadowVolumeFS.h"
@@ -133,6 +134,7 @@ struct vtkShadowVolumePass::Volume
   vtkMTimeType GeometryTime = 0;
   bool Valid = false;
   bool DarkCaps = false;    // closed caster: its facets facing away are dark
+  bool Crossings = false;   // every face's prism: a translucent caster's count
   long long UsedFrame = -1; // the last frame this volume was counted
   size_t SideTriangles = 0, CapTriangles = 0;
   size_t SilhouetteEdges = 0, Quads = 0;
@@ -204,6 +206,9 @@ struct vtkShadowVolumePass::Frame
   // (directional) when it is sampled (SoftSamples > 1), else 0.
   std::vector<double> LightSize;
   std::vector<vtkshadow::ShadowActor> Casters;
+  // Translucent casters (opacity strictly between 0 and 1) and their opacity.
+  std::vector<vtkshadow::ShadowActor> Translucent;
+  std::vector<double> TranslucentOpacity;
   // The props this render state draws, sorted: z-pass counting needs the
   // caster's own surface in the depth buffer (see DrawCaster).
   std::vector<vtkProp*> Drawn;
@@ -247,6 +252,17 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
     frame.LightSize.push_back(this->SoftSamples <= 1 ? 0.0 : light.Size);
   }
   frame.Casters = CastingActors(shared);
+  // Translucent actors cast as the opaque ones do (not NO_CAST, drawn as
+  // surfaces); opacity 0 lets all the light through.
+  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(shared.Renderer))
+  {
+    const double opacity = vtkshadow::CasterOpacity(a.Actor);
+    if (opacity > 0.0 && vtkshadow::CastsAsSurface(a, vtkShadowPassBase::NO_CAST()))
+    {
+      frame.Translucent.push_back(a);
+      frame.TranslucentOpacity.push_back(opacity);
+    }
+  }
   frame.Drawn.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
   std::sort(frame.Drawn.begin(), frame.Drawn.end());
 }
@@ -420,19 +436,23 @@ void vtkShadowVolumePass::CountLight(
       }
     }
     impl.Stats[light].SamplesPassed = query.Last;
-    glDisable(GL_DEPTH_CLAMP);
-    glFrontFace(static_cast<GLenum>(frontFace));
     if (samples == 1)
     {
       impl.Mask.ResolveStencil(light);
     }
+    if (!frame.Translucent.empty())
+    {
+      this->CountTranslucent(program, frame, light);
+    }
+    glDisable(GL_DEPTH_CLAMP);
+    glFrontFace(static_cast<GLenum>(frontFace));
   }
   impl.Mask.EndDraw();
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowVolumePass::CountVolumes(
-  vtkShaderProgram* program, const Frame& frame, int light, int sample, bool refining)
+void vtkShadowVolumePass::CountVolumes(vtkShaderProgram* program, const Frame& frame, int light,
+  int sample, bool refining, const vtkshadow::ShadowActor* translucent)
 {
   // The state of CountLight; the mask's accumulation between two samples
   // changed the stencil function and the bound program. Refining: the
@@ -454,9 +474,46 @@ void vtkShadowVolumePass::CountVolumes(
   program->SetUniformf("depthBias", static_cast<float>(this->DepthBias * std::ldexp(1.0, -24)));
   program->SetUniformf("slopeBias", static_cast<float>(this->SlopeBias));
   program->SetUniformf("maxSlopeBias", static_cast<float>(std::ldexp(1.0, -12)));
+  if (translucent)
+  {
+    this->DrawCaster(program, frame, light, sample, *translucent, true);
+    return;
+  }
   for (const vtkshadow::ShadowActor& caster : frame.Casters)
   {
     this->DrawCaster(program, frame, light, sample, caster);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::CountTranslucent(vtkShaderProgram* program, const Frame& frame, int light)
+{
+  // After the opaque casters' channel is final: per translucent caster, the
+  // crossings volume (every face's prism, z-fail: the caster is not in the
+  // depth) counts at each pixel the caster's triangles between the surface
+  // and the light (the light's centre for a sampled light), and the channel
+  // is multiplied by (1 - opacity) per unit of that count
+  // (docs/translucency.md). Each count starts from a zero stencil: the
+  // opaque count is cleared once, and each multiplication takes its count
+  // back to 0 (cleared again if it stopped early).
+  vtkOpenGLState* state = this->Impl->State;
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglStencilMask(0xff);
+  state->vtkglClear(GL_STENCIL_BUFFER_BIT);
+  for (size_t c = 0; c < frame.Translucent.size(); ++c)
+  {
+    this->CountVolumes(program, frame, light, -1, false, &frame.Translucent[c]);
+    // The draws keep the caster's scissor rectangle: the multiplication
+    // touches only it.
+    const double transmit = 1.0 - frame.TranslucentOpacity[c];
+    const int maxSteps = vsh_transmit_steps(transmit);
+    if (this->Impl->Mask.MultiplyStencilCount(light, static_cast<float>(transmit), maxSteps) >=
+      maxSteps)
+    {
+      state->vtkglDisable(GL_SCISSOR_TEST);
+      state->vtkglStencilMask(0xff);
+      state->vtkglClear(GL_STENCIL_BUFFER_BIT);
+    }
   }
 }
 
@@ -542,7 +599,8 @@ void vtkShadowVolumePass::ReleaseUnusedVolumes(vtkOpenGLRenderWindow* window)
 
 //------------------------------------------------------------------------------
 vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
-  const vtkshadow::ShadowActor& shadowActor, int light, int sample, const double lightWorld[4])
+  const vtkshadow::ShadowActor& shadowActor, int light, int sample, const double lightWorld[4],
+  bool crossings)
 {
   Internals& impl = *this->Impl;
   vtkActor* actor = shadowActor.Actor;
@@ -577,14 +635,15 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
   }
   Volume& volume = sample >= 0 ? soft[static_cast<size_t>(sample)] : caster->Volumes[light];
   if (volume.Valid && volume.GeometryTime == geometry.GetBuildTime() &&
-    std::equal(lightStored, lightStored + 4, volume.Light))
+    volume.Crossings == crossings && std::equal(lightStored, lightStored + 4, volume.Light))
   {
     volume.UsedFrame = impl.FrameNumber;
     caster->ClosedFrame[light] = volume.DarkCaps ? impl.FrameNumber : caster->ClosedFrame[light];
     return &volume;
   }
   vsh_volume built;
-  if (vsh_volume_build(topology, lightStored, &built) != VSH_MESH_OK)
+  if ((crossings ? vsh_volume_build_crossings(topology, lightStored, &built)
+                 : vsh_volume_build(topology, lightStored, &built)) != VSH_MESH_OK)
   {
     return nullptr;
   }
@@ -600,6 +659,7 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
   volume.SilhouetteEdges = built.silhouette_edges;
   volume.Quads = built.silhouette_quads;
   volume.DarkCaps = built.dark_caps != 0;
+  volume.Crossings = crossings;
   volume.UsedFrame = impl.FrameNumber;
   caster->ClosedFrame[light] = volume.DarkCaps ? impl.FrameNumber : caster->ClosedFrame[light];
   vsh_volume_free(&built);
@@ -623,7 +683,7 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
 
 //------------------------------------------------------------------------------
 void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& frame, int light,
-  int sample, const vtkshadow::ShadowActor& caster)
+  int sample, const vtkshadow::ShadowActor& caster, bool crossings)
 {
   Internals& impl = *this->Impl;
   LightStats& stats = impl.Stats[light];
@@ -645,7 +705,7 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
       std::copy_n(point, 4, lightWorld);
     }
   }
-  Volume* volume = this->UpdateVolume(caster, light, sample, lightWorld);
+  Volume* volume = this->UpdateVolume(caster, light, sample, lightWorld, crossings);
   if (!volume || volume->SideTriangles + volume->CapTriangles == 0)
   {
     return;
@@ -685,7 +745,9 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
   // 15.6 % of the pixels off in z-pass, 0.07 % in z-fail).
   const bool drawn = std::binary_search(frame.Drawn.begin(), frame.Drawn.end(), caster.Root) &&
     SurfaceInDepth(caster.Actor);
-  const bool zpass = !this->ForceZFail && drawn &&
+  // A translucent caster's crossings are always counted z-fail: it is not in
+  // the depth pre-pass.
+  const bool zpass = !this->ForceZFail && drawn && !crossings &&
     vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
   // Model (shifted) -> world -> relative to the eye -> clip, in double.
   double modelRelative[16], mcdc[16], transposed[16];

@@ -16,7 +16,10 @@
  * near-plane region lies outside the caster's shadow (vsh_volume_zpass_safe)
  * and z-fail (Carmack's reverse, far cap at infinity via depth clamping)
  * elsewhere; each volume is scissored to its projected bounds and culled
- * when it cannot reach the view. docs/shadow-volumes.md has the details.
+ * when it cannot reach the view. A translucent caster (opacity a < 1)
+ * counts its crossings with the volumes of all its faces (z-fail), and the
+ * light's channel is multiplied by (1 - a) per crossing.
+ * docs/shadow-volumes.md has the details.
  */
 #ifndef vtkShadowVolumePass_h
 #define vtkShadowVolumePass_h
@@ -158,10 +161,16 @@ private:
   void SetUpFrame(const vtkRenderState* s, Frame& frame);
   void CountLight(
     vtkOpenGLRenderWindow* window, vtkShaderProgram* program, const Frame& frame, int light);
+#ifndef __VTK_WRAP__
   // Counts one light (sample < 0) or one of its SoftSamples samples; with
-  // `refining`, only at the pixels MarkRefined marked (stencil bit 7).
-  void CountVolumes(
-    vtkShaderProgram* program, const Frame& frame, int light, int sample, bool refining = false);
+  // `refining`, only at the pixels MarkRefined marked (stencil bit 7); with
+  // `translucent`, only that caster's crossings volume.
+  void CountVolumes(vtkShaderProgram* program, const Frame& frame, int light, int sample,
+    bool refining = false, const vtkshadow::ShadowActor* translucent = nullptr);
+#endif
+  // After a light's opaque count: each translucent caster's crossings
+  // counted and multiplied into the light's channel as (1 - opacity)^count.
+  void CountTranslucent(vtkShaderProgram* program, const Frame& frame, int light);
   // After an adaptive light's first batch: the batch's all-lit pixels to 1,
   // and stencil bit 7 at the pixels to refine.
   void MarkRefined(int light, int batchLevels);
@@ -169,10 +178,11 @@ private:
   // batch >= samples.
   const std::vector<int>& SampleOrder(int samples, int batch);
 #ifndef __VTK_WRAP__
+  // `crossings`: the volume of every face (a translucent caster), z-fail.
   void DrawCaster(vtkShaderProgram* program, const Frame& frame, int light, int sample,
-    const vtkshadow::ShadowActor& caster);
-  Volume* UpdateVolume(
-    const vtkshadow::ShadowActor& caster, int light, int sample, const double lightWorld[4]);
+    const vtkshadow::ShadowActor& caster, bool crossings = false);
+  Volume* UpdateVolume(const vtkshadow::ShadowActor& caster, int light, int sample,
+    const double lightWorld[4], bool crossings);
 #endif
   // Soft volumes of lights counted hard this frame, and of casters gone.
   void ReleaseUnusedVolumes(vtkOpenGLRenderWindow* window);

@@ -27,6 +27,14 @@ uniform sampler2D vshPlanarSoft;
 uniform int vshPlanarSoftPair[4];
 vec4 vshPlanarSoftShadow = vec4(0.0);
 #endif
+#ifdef VSH_PLANAR_TRANSMIT
+// Translucent casters (defined only in frames with translucent casters):
+// channel k of vshPlanarTransmit holds the light the translucent casters
+// let through to the pair whose bit is vshPlanarTransmitPair[k] (-1: none).
+uniform sampler2D vshPlanarTransmit;
+uniform int vshPlanarTransmitPair[4];
+vec4 vshPlanarTransmitted = vec4(1.0);
+#endif
 void vshPlanarPrepare(vec3 positionVC)
 {
   int receiver = vshPlanarReceiver;
@@ -46,13 +54,17 @@ void vshPlanarPrepare(vec3 positionVC)
     vshPlanarSoftShadow =
       texelFetch(vshPlanarSoft, ivec2(gl_FragCoord.xy) - vshPlanarMaskOrigin, 0);
 #endif
+#ifdef VSH_PLANAR_TRANSMIT
+    vshPlanarTransmitted =
+      texelFetch(vshPlanarTransmit, ivec2(gl_FragCoord.xy) - vshPlanarMaskOrigin, 0);
+#endif
   }
 }
-// 0 where light `light` is blocked at this fragment, 1 elsewhere. The pass
-// keeps receiver * light count + light below 128.
-float vshPlanarLit(int light)
+// The opaque casters' part: 0 where light `light` is blocked at this
+// fragment, 1 elsewhere (a soft pair: the lit fraction). The pass keeps
+// receiver * light count + light below 128.
+float vshPlanarOpaqueLit(uint pair)
 {
-  uint pair = vshPlanarBase + uint(light);
 #ifdef VSH_PLANAR_SOFT
   for (int k = 0; k < 4; ++k)
   {
@@ -64,4 +76,21 @@ float vshPlanarLit(int light)
 #endif
   uint word = vshPlanarBits[min(pair >> 5u, 3u)];
   return float(((word >> (pair & 31u)) & 1u) ^ 1u);
+}
+// The light's factor: the opaque casters' part times what the translucent
+// ones let through.
+float vshPlanarLit(int light)
+{
+  uint pair = vshPlanarBase + uint(light);
+  float lit = vshPlanarOpaqueLit(pair);
+#ifdef VSH_PLANAR_TRANSMIT
+  for (int k = 0; k < 4; ++k)
+  {
+    if (int(pair) == vshPlanarTransmitPair[k])
+    {
+      lit *= clamp(vshPlanarTransmitted[k], 0.0, 1.0);
+    }
+  }
+#endif
+  return lit;
 }
