@@ -77,11 +77,12 @@ set_tests_properties(python.planar_flat_parts PROPERTIES LABELS "render" TIMEOUT
 # Techniques with one value per light draw a filter's colour grey (--grey:
 # they say so per light, GetLightNote).
 set(_translucent_raytrace "")
+set(_translucent_auto "")
 set(_translucent_csm --grey)
-set(_translucent_planar --grey --receives no)
-set(_translucent_volume --grey --receives no)
-set(_translucent_vtk --expect-none --receives no)
-foreach(_translucent raytrace csm planar volume vtk)
+set(_translucent_planar --grey)
+set(_translucent_volume --grey)
+set(_translucent_vtk --expect-none)
+foreach(_translucent raytrace csm planar volume auto vtk)
   add_test(NAME python.translucent.${_translucent}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY}
             ${CMAKE_CURRENT_SOURCE_DIR}/python/test_translucent_casters.py ${_translucent}

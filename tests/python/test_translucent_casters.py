@@ -30,7 +30,8 @@ where the sphere's shadow falls when the plate receives it, 1 when it does
 not. `--receives` says which the technique is to give.
 
 `--expect-none` is for a technique that draws no translucent shadow (VTK's
-own pass): every case reads 1 except the opaque control.
+own pass, which does not draw translucent actors at all): every case reads
+1 except the opaque control, and it says so per light (GetLightNote).
 
 Usage: test_translucent_casters.py TECHNIQUE [--receives yes|no] [--expect-none] [--grey]"""
 
@@ -82,6 +83,25 @@ def check_tint(technique, grey):
               f"{ts.TOLERANCE}")
 
 
+def light_note(build, technique):
+    """The pass's GetLightNote(0) after a frame of `build`."""
+    return fr.render_technique(build, technique, ts.W, ts.H,
+                               lambda renderer, inner: inner.GetLightNote(0))[1]
+
+
+def check_note(technique, grey, expect_none):
+    """What a technique leaves out, it says per light: grey filters, or
+    (VTK's pass) no translucent shadow at all; nothing where it draws it."""
+    note = light_note(red_slab_scene, technique)
+    print(f"{technique}, red filter slab: light 0's note {note!r}")
+    if expect_none:
+        check("cast no shadow" in note, f"{technique} says translucent actors cast nothing")
+    elif grey:
+        check("grey" in note, f"{technique} says the filter colour is drawn grey")
+    else:
+        check(note == "", f"{technique} leaves nothing out: no note")
+
+
 def check_receiving(technique, receives):
     want = 0.0 if receives else 1.0
     verb = "receives" if receives else "does not receive"
@@ -105,7 +125,9 @@ def main():
     ts.check_cases(check, args.technique, args.technique, expect_none=args.expect_none)
     if not args.expect_none:
         check_tint(args.technique, args.grey)
-    check_receiving(args.technique, args.receives == "yes")
+    check_note(args.technique, args.grey, args.expect_none)
+    if not args.expect_none:  # VTK's own pass does not draw translucent actors at all
+        check_receiving(args.technique, args.receives == "yes")
     finish()
 
 

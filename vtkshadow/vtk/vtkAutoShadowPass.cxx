@@ -229,9 +229,42 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
   }
   this->ChooseTexelTarget(renderer, edgeLength, stretch);
   this->ChooseGeneral(renderer, edgeLengths);
+  this->ChooseForTint(frame);
   this->ApplySoftSamples();
   this->ApplyLightMasks();
   this->DescribeChoice();
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ChooseForTint(const vtkshadow::ShadowFrame& frame)
+{
+  // A translucent caster whose filter tints its shadow: csm, planar and
+  // volume hold one value per light and draw it grey (their GetLightNote
+  // says so), so its colour error is the tint itself, over any target;
+  // raytrace draws it. Every casting light goes to raytrace (one pass for
+  // them all also keeps the volume/raytrace mask clash away).
+  bool tinted = false;
+  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(frame.Renderer))
+  {
+    double transmit[3];
+    tinted =
+      tinted || (vtkshadow::CastsAsSurface(a, NO_CAST()) && vtkshadow::CasterTransmit(a, transmit));
+  }
+  Internals& impl = *this->Impl;
+  for (size_t l = 0; tinted && l < impl.LightChoices.size(); ++l)
+  {
+    vtkshadow::TechniqueSet& choice = impl.LightChoices[l];
+    if (choice != vtkshadow::TechniqueSet::None && choice != vtkshadow::TechniqueSet::RayTraced)
+    {
+      choice = vtkshadow::TechniqueSet::RayTraced;
+      this->LightReasons[l] += "; raytrace: a translucent caster's filter tints the shadow, "
+                               "which only raytrace draws in colour";
+      if (impl.SoftLights[l])
+      {
+        impl.RaySamples = std::max(impl.RaySamples, this->RayTracedPass->GetSamples());
+      }
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

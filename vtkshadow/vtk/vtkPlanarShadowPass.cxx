@@ -228,6 +228,8 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   Internals& impl = *this->Impl;
   ++impl.Frame;
   Frame frame(this->BeginFrame(s));
+  // One value per light: a filter's colour comes out grey.
+  this->NoteGreyFilters(frame.Shared);
   // The mask matches the viewport pixel for pixel.
   std::copy_n(frame.Shared.Origin, 2, impl.MaskOrigin);
   for (const vtkshadow::ShadowFrameLight& light : frame.Shared.Lights)
@@ -239,7 +241,14 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   }
   impl.LightCount = static_cast<int>(frame.Lights.size());
   impl.FrameProps = DrawnProps(s);
-  this->GatherReceivers(frame.Shared.Drawn, frame);
+  // Translucent actors receive on their own fragments too: a flat one is a
+  // receiver like an opaque one (marked, or detected).
+  std::vector<vtkshadow::ShadowActor> receivers = frame.Shared.Drawn;
+  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(renderer))
+  {
+    receivers.push_back(a);
+  }
+  this->GatherReceivers(receivers, frame);
   // Casters from the renderer's props, not the frustum-culled list: a
   // caster behind the camera still shadows a receiver in view.
   this->GatherCasters(frame.Shared.Actors, frame);

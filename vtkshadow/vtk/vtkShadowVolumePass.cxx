@@ -155,7 +155,17 @@ struct vtkShadowVolumePass::Volume
 
 struct vtkShadowVolumePass::Internals
 {
-  vtkShadowScreenMask Mask;
+  vtkShadowScreenMask Opaque;
+  // The translucent layer: translucent actors' own fragments, counted like
+  // the opaque surfaces where they are the nearest (vtkShadowScreenMask).
+  vtkShadowScreenMask Translucent;
+  vtkShadowScreenMask* Counted = &this->Opaque; // the layer being counted
+  vtkShadowScreenMask& Mask() { return *this->Counted; }
+  // The mask `prop`'s fragments read.
+  vtkShadowScreenMask& For(vtkProp* prop)
+  {
+    return this->Translucent.ReadBy(prop) ? this->Translucent : this->Opaque;
+  }
   struct Caster
   {
     vtkShadowCasterGeometry Geometry;
@@ -218,6 +228,7 @@ struct vtkShadowVolumePass::Frame
 vtkShadowVolumePass::vtkShadowVolumePass()
   : Impl(new Internals)
 {
+  this->Impl->Translucent.SetTranslucentSurfaces(true);
 }
 
 //------------------------------------------------------------------------------
@@ -299,6 +310,8 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   vtkshadow::MarkStage("setup");
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow());
   Frame frame(this->BeginFrame(s));
+  // One value per light: a filter's colour comes out grey.
+  this->NoteGreyFilters(frame.Shared);
   this->SetUpFrame(s, frame);
   impl.LightCount = std::min(static_cast<int>(frame.Shared.Lights.size()), MaxLights);
   this->LightsInViewCoordinates(s->GetRenderer(), frame);
@@ -306,30 +319,53 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   {
     stats = LightStats();
   }
-  // The depth pass draws with this pass's hooks registered too: a mapper
-  // that first compiled its shader there without them would otherwise see
-  // no newer shader stage in the main pass and keep the unhooked shader.
-  bool depthOk = false;
-  if (window)
-  {
-    this->PreRender(s);
-    depthOk = impl.Mask.RenderDepth(s, impl.LightCount);
-    this->PostRender(s);
-  }
-  vtkshadow::MarkStage("volume.prepass");
-  if (!depthOk)
+  if (!this->CountLayer(s, window, frame, impl.Opaque))
   {
     if (!impl.Reported)
     {
       vtkErrorMacro("shadow volumes are off: "
-        << (window ? impl.Mask.GetError() : std::string("not an OpenGL render window")));
+        << (window ? impl.Opaque.GetError() : std::string("not an OpenGL render window")));
       impl.Reported = true;
     }
     this->RenderDelegate(s);
     return;
   }
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vtkShadowVolumeVS, vtkShadowVolumeFS, "");
+  // Translucent surfaces receive on their own fragments: the same counts
+  // against the nearest surface's depth, translucent ones included.
+  const bool translucent = vtkShadowScreenMask::HasTranslucentProps(s);
+  if (translucent && !this->CountLayer(s, window, frame, impl.Translucent))
+  {
+    vtkErrorMacro("shadow volumes (translucent layer): " << impl.Translucent.GetError());
+  }
+  this->ReleaseUnusedVolumes(window);
+  vtkshadow::MarkStage("volume.stencil");
+  impl.Opaque.Activate();
+  impl.Translucent.Activate();
+  this->RenderDelegateWithShaderHooks(s);
+  impl.Translucent.Deactivate();
+  impl.Opaque.Deactivate();
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowVolumePass::CountLayer(const vtkRenderState* s, vtkOpenGLRenderWindow* window,
+  const Frame& frame, vtkShadowScreenMask& layer)
+{
+  Internals& impl = *this->Impl;
+  if (!window)
+  {
+    return false;
+  }
+  impl.Counted = &layer;
+  // The depth pass draws with this pass's hooks registered too: a mapper
+  // that first compiled its shader there without them would otherwise see
+  // no newer shader stage in the main pass and keep the unhooked shader.
+  this->PreRender(s);
+  const bool depthOk = layer.RenderDepth(s, impl.LightCount);
+  this->PostRender(s);
+  vtkshadow::MarkStage("volume.prepass");
+  vtkShaderProgram* program = depthOk
+    ? window->GetShaderCache()->ReadyShaderProgram(vtkShadowVolumeVS, vtkShadowVolumeFS, "")
+    : nullptr;
   impl.Instances = 0;
   std::fill(impl.Samples, impl.Samples + MaxLights, 0);
   for (int light = 0; light < impl.LightCount && program; ++light)
@@ -340,11 +376,8 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
       this->CountLight(window, program, frame, light);
     }
   }
-  this->ReleaseUnusedVolumes(window);
-  vtkshadow::MarkStage("volume.stencil");
-  impl.Mask.Activate();
-  this->RenderDelegateWithShaderHooks(s);
-  impl.Mask.Deactivate();
+  impl.Counted = &impl.Opaque;
+  return depthOk;
 }
 
 //------------------------------------------------------------------------------
@@ -365,7 +398,7 @@ void vtkShadowVolumePass::CountLight(
   // lighting flips every normal of the mirrored scene.
   GLint frontFace = GL_CCW;
   glGetIntegerv(GL_FRONT_FACE, &frontFace);
-  impl.Mask.BeginDraw(light);
+  impl.Mask().BeginDraw(light);
   {
     vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
@@ -378,7 +411,7 @@ void vtkShadowVolumePass::CountLight(
     state->vtkglDisable(GL_SCISSOR_TEST);
     if (samples > 1)
     {
-      impl.Mask.FillLight(light, 0.0f);
+      impl.Mask().FillLight(light, 0.0f);
     }
     state->vtkglStencilMask(0xff);
     glClearStencil(0);
@@ -431,14 +464,14 @@ void vtkShadowVolumePass::CountLight(
       state->vtkglDisable(GL_SCISSOR_TEST);
       if (samples > 1)
       {
-        impl.Mask.AccumulateStencil(
+        impl.Mask().AccumulateStencil(
           light, vtkShadowScreenMask::AccumulationLevels(sample, samples), refining ? 0x80 : 0);
       }
     }
     impl.Stats[light].SamplesPassed = query.Last;
     if (samples == 1)
     {
-      impl.Mask.ResolveStencil(light);
+      impl.Mask().ResolveStencil(light);
     }
     if (!frame.Translucent.empty())
     {
@@ -447,7 +480,7 @@ void vtkShadowVolumePass::CountLight(
     glDisable(GL_DEPTH_CLAMP);
     glFrontFace(static_cast<GLenum>(frontFace));
   }
-  impl.Mask.EndDraw();
+  impl.Mask().EndDraw();
 }
 
 //------------------------------------------------------------------------------
@@ -507,7 +540,7 @@ void vtkShadowVolumePass::CountTranslucent(vtkShaderProgram* program, const Fram
     // touches only it.
     const double transmit = 1.0 - frame.TranslucentOpacity[c];
     const int maxSteps = vsh_transmit_steps(transmit);
-    if (this->Impl->Mask.MultiplyStencilCount(light, static_cast<float>(transmit), maxSteps) >=
+    if (this->Impl->Mask().MultiplyStencilCount(light, static_cast<float>(transmit), maxSteps) >=
       maxSteps)
     {
       state->vtkglDisable(GL_SCISSOR_TEST);
@@ -543,8 +576,8 @@ void vtkShadowVolumePass::MarkRefined(int light, int batchLevels)
   state->vtkglDisable(GL_SCISSOR_TEST);
   state->vtkglStencilMask(0xff);
   state->vtkglClear(GL_STENCIL_BUFFER_BIT);
-  impl.Mask.MarkBatch(light, batchLevels, false, 0x40);
-  impl.Mask.AccumulateStencil(light, 255 - batchLevels, 0x40);
+  impl.Mask().MarkBatch(light, batchLevels, false, 0x40);
+  impl.Mask().AccumulateStencil(light, 255 - batchLevels, 0x40);
   state->vtkglClear(GL_STENCIL_BUFFER_BIT);
   // Then the pixels to refine: stencil bit 7, counted once (the result is
   // read a frame later, when available, for --stats).
@@ -555,7 +588,7 @@ void vtkShadowVolumePass::MarkRefined(int light, int batchLevels)
   {
     glBeginQuery(GL_SAMPLES_PASSED, query.Id);
   }
-  impl.Mask.MarkBatch(light, batchLevels, true, 0x80);
+  impl.Mask().MarkBatch(light, batchLevels, true, 0x80);
   if (measure)
   {
     glEndQuery(GL_SAMPLES_PASSED);
@@ -804,7 +837,7 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
 bool vtkShadowVolumePass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
-  const bool ok = this->Impl->Mask.PreReplaceShaderValues(fragmentShader, prop);
+  const bool ok = this->Impl->For(prop).PreReplaceShaderValues(fragmentShader, prop);
   if (fragmentShader.find("vshScreenPrepare") != std::string::npos)
   {
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
@@ -815,13 +848,14 @@ bool vtkShadowVolumePass::PreReplaceShaderValues(
 
 //------------------------------------------------------------------------------
 bool vtkShadowVolumePass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
+  vtkShadowScreenMask& mask = this->Impl->For(prop);
   if (fragmentShader.find("vshFacingPrepare") == std::string::npos)
   {
-    return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
+    return mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
   }
-  return this->Impl->Mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight(),
+  return mask.PostReplaceShaderValues(fragmentShader, this->GetResidualLight(),
     "vshFacingCombine(%d, vertexVC.xyz, vshScreenLit(%d))",
     "vshScreenPrepare(); vshFacingPrepare(vertexVC.xyz);");
 }
@@ -831,7 +865,7 @@ bool vtkShadowVolumePass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   Internals& impl = *this->Impl;
-  impl.Mask.SetShaderParameters(program);
+  impl.For(prop).SetShaderParameters(program);
   if (program->IsUniformUsed("vshFacingLights"))
   {
     program->SetUniformi("vshFacingLights", this->ClosedCasterLights(prop));
@@ -886,7 +920,7 @@ vtkIdType vtkShadowVolumePass::GetNumberOfVolumeBuilds() const
 //------------------------------------------------------------------------------
 long long vtkShadowVolumePass::GetMemoryBytes() const
 {
-  long long bytes = this->Impl->Mask.GetMemoryBytes();
+  long long bytes = this->Impl->Opaque.GetMemoryBytes() + this->Impl->Translucent.GetMemoryBytes();
   for (const auto& entry : this->Impl->Casters)
   {
     bytes += entry.second->Geometry.GetNumberOfBytes();
@@ -957,7 +991,8 @@ const vtkshadow::Settings& vtkShadowVolumePass::SettingsTable()
 void vtkShadowVolumePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& impl = *this->Impl;
-  impl.Mask.ReleaseGraphicsResources(w);
+  impl.Opaque.ReleaseGraphicsResources(w);
+  impl.Translucent.ReleaseGraphicsResources(w);
   for (FillQuery& query : impl.RefineQueries)
   {
     if (query.Id && w)

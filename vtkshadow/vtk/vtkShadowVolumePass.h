@@ -33,6 +33,7 @@
 class vtkActor;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
+class vtkShadowScreenMask;
 #ifndef __VTK_WRAP__
 namespace vtkshadow
 {
@@ -159,6 +160,11 @@ private:
   std::unique_ptr<Internals> Impl;
 
   void SetUpFrame(const vtkRenderState* s, Frame& frame);
+  // One layer of the screen mask (the opaque surfaces, or translucent ones
+  // where they are nearest): its depth, then every casting light counted.
+  // False when its depth pass fails.
+  bool CountLayer(const vtkRenderState* s, vtkOpenGLRenderWindow* window, const Frame& frame,
+    vtkShadowScreenMask& layer);
   void CountLight(
     vtkOpenGLRenderWindow* window, vtkShaderProgram* program, const Frame& frame, int light);
 #ifndef __VTK_WRAP__
