@@ -100,9 +100,10 @@ set_tests_properties(python.impostor_casters PROPERTIES LABELS "render" TIMEOUT 
 # raytrace's shadows of vtkVolumes (issue 32): the light through a volume is
 # its scalar opacity's transmittance with VTK's opacity correction,
 # (1 - a)^(ds / u) per step: a constant 20^3 box reads 0.94^19 = 0.309 and
-# 0.94^9.5 = 0.556 under it (within 0.03); opacity 0, VisibilityOff and none
-# read 1; cell scalars are skipped with the reason in the stats; a still frame
-# does not trace and a changed opacity function does.
+# 0.94^9.5 = 0.556 under it (within 0.03), also placed by its matrix; a box
+# opaque in its top 6 layers reads the integral's 0.294; opacity 0,
+# VisibilityOff and none read 1; cell scalars are skipped with the reason in
+# the stats; a still frame does not trace and a changed opacity function does.
 add_test(NAME python.volume_casters
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_volume_casters.py)
 set_tests_properties(python.volume_casters PROPERTIES LABELS "render" TIMEOUT 180)

@@ -15,6 +15,12 @@ float, 320x240, on the 9 x 9 patch of floor points under its centre, within
   case                                   expected visibility
   opacity 0.06 at unit distance 0.1      (1 - 0.06)^(1.9 / 0.1) = 0.3086
   the same at unit distance 0.2          (1 - 0.06)^(1.9 / 0.2) = 0.5555
+  the first, its data at the origin,     0.3086 (ignoring the matrix: 0.5555)
+    turned 30 degrees about z and moved
+    up 2 by the volume's matrix
+  scalar 1 on the top 6 layers of        0.2943: exp(integral of ln(1 - a(h)) / u),
+    points, 0 below; opacity 0.2 x      the scalar interpolated between layers,
+    scalar, unit 0.1                     then classified (a wrong axis order: 1)
   opacity 0 (control)                    1
   the volume VisibilityOff               1
   the `none` technique                   1
@@ -26,6 +32,7 @@ function traces again and gives its visibility.
 
 Usage: test_volume_casters.py"""
 import json
+import math
 import os
 import sys
 
@@ -53,9 +60,10 @@ def expected(alpha, unit, length=SIDE):
     return (1.0 - alpha) ** (length / unit)
 
 
-def image(cells=False, z=ts.HEIGHT):
+def image(cells=False, z=ts.HEIGHT, top=None):
     """The box of constant scalar 0.5, centred at (0, 0, z); with `cells`
-    the scalar is on the cells (not supported: skipped)."""
+    the scalar is on the cells (not supported: skipped); with `top` it is 1
+    on the layers of points from `top` up and 0 below."""
     data = vtkImageData()
     data.SetDimensions(POINTS, POINTS, POINTS)
     data.SetSpacing(SPACING, SPACING, SPACING)
@@ -66,17 +74,22 @@ def image(cells=False, z=ts.HEIGHT):
     count = (POINTS - 1) ** 3 if cells else POINTS ** 3
     scalars.SetNumberOfTuples(count)
     scalars.Fill(0.5)
+    if top is not None:
+        # 1 on the layers of points from `top` up, 0 below (x fastest).
+        for index in range(count):
+            scalars.SetValue(index, 1.0 if index // (POINTS * POINTS) >= top else 0.0)
     (data.GetCellData() if cells else data.GetPointData()).SetScalars(scalars)
     return data
 
 
-def volume(alpha=ALPHA, unit=UNIT, cells=False, visible=True, moved=False):
+def volume(alpha=ALPHA, unit=UNIT, cells=False, visible=True, moved=False, top=None):
     """A vtkVolume of image() whose opacity function is `alpha` everywhere
-    in [0, 1], at unit distance `unit`; `moved`: its data centred at the
+    in [0, 1] (with `top`: from 0 at scalar 0 to `alpha` at 1), at unit
+    distance `unit`; `moved`: its data centred at the
     origin, placed by the volume's matrix (turned 30 degrees about z, moved
     up by HEIGHT): the same vertical crossing."""
     opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(0.0, alpha)
+    opacity.AddPoint(0.0, 0.0 if top is not None else alpha)
     opacity.AddPoint(1.0, alpha)
     colour = vtkColorTransferFunction()
     colour.AddRGBPoint(0.0, 0.8, 0.5, 0.2)
@@ -87,7 +100,7 @@ def volume(alpha=ALPHA, unit=UNIT, cells=False, visible=True, moved=False):
     prop.SetScalarOpacityUnitDistance(unit)
     prop.SetInterpolationTypeToLinear()
     mapper = vtkSmartVolumeMapper()
-    mapper.SetInputData(image(cells, 0.0 if moved else ts.HEIGHT))
+    mapper.SetInputData(image(cells, 0.0 if moved else ts.HEIGHT, top))
     v = vtkVolume()
     if moved:
         v.RotateZ(30.0)
@@ -96,6 +109,19 @@ def volume(alpha=ALPHA, unit=UNIT, cells=False, visible=True, moved=False):
     v.SetProperty(prop)
     v.SetVisibility(visible)
     return v
+
+
+def expected_top(alpha, unit, top, steps=100000):
+    """The transmittance up through the volume whose scalar is 1 from layer
+    `top` up: the scalar interpolated linearly between layers (0 to 1 from
+    layer top - 1 to top), then classified (opacity alpha x scalar):
+    exp(integral of ln(1 - a(h)) / u dh) over the box's height."""
+    total = 0.0
+    for k in range(steps):
+        layer = (k + 0.5) / steps * (POINTS - 1)
+        scalar = min(1.0, max(0.0, layer - (top - 1)))
+        total += math.log(1.0 - alpha * scalar) * SIDE / steps / unit
+    return math.exp(total)
 
 
 def scene(**kw):
@@ -149,6 +175,8 @@ for label, build, technique, want in (
         (f"opacity {ALPHA} at unit {UNIT}", scene(), "raytrace", expected(ALPHA, UNIT)),
         (f"opacity {ALPHA} at unit 0.2", scene(unit=0.2), "raytrace", expected(ALPHA, 0.2)),
         ("placed by its matrix", scene(moved=True), "raytrace", expected(ALPHA, UNIT)),
+        ("opacity 0.2 in the top 6 layers", scene(alpha=0.2, top=14), "raytrace",
+         expected_top(0.2, UNIT, 14)),
         ("opacity 0 (control)", scene(alpha=0.0), "raytrace", 1.0),
         ("the volume VisibilityOff", scene(visible=False), "raytrace", 1.0),
         (f"opacity {ALPHA}, technique none", scene(), "none", 1.0)):
