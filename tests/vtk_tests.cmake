@@ -101,7 +101,8 @@ set_tests_properties(python.impostor_casters PROPERTIES LABELS "render" TIMEOUT 
 # its scalar opacity's transmittance with VTK's opacity correction,
 # (1 - a)^(ds / u) per step: a constant 20^3 box reads 0.94^19 = 0.309 and
 # 0.94^9.5 = 0.556 under it (within 0.03), also placed by its matrix; a box
-# opaque in its top 6 layers reads the integral's 0.294; opacity 0,
+# opaque in its top 6 layers reads the integral's 0.294, one under a
+# translucent slab 0.25 x 0.556; opacity 0,
 # VisibilityOff and none read 1; cell scalars are skipped with the reason in
 # the stats; a still frame does not trace and a changed opacity function does.
 add_test(NAME python.volume_casters

@@ -21,6 +21,8 @@ float, 320x240, on the 9 x 9 patch of floor points under its centre, within
   scalar 1 on the top 6 layers of        0.2943: exp(integral of ln(1 - a(h)) / u),
     points, 0 below; opacity 0.2 x      the scalar interpolated between layers,
     scalar, unit 0.1                     then classified (a wrong axis order: 1)
+  the second under a translucent slab    0.25 x 0.5555 = 0.1389 (the translucent
+    of opacity 0.5 (0.25)                casters' rays march the volume too)
   opacity 0 (control)                    1
   the volume VisibilityOff               1
   the `none` technique                   1
@@ -53,6 +55,7 @@ from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkSmartVolumeMapper  # noqa: E
 POINTS, SPACING = 20, 0.1
 SIDE = (POINTS - 1) * SPACING  # the box's side: the vertical crossing's length
 ALPHA, UNIT = 0.06, 0.1
+SLAB_Z = 3.5  # above the volume, out of the camera's line to the patch
 
 
 def expected(alpha, unit, length=SIDE):
@@ -124,9 +127,12 @@ def expected_top(alpha, unit, top, steps=100000):
     return math.exp(total)
 
 
-def scene(**kw):
-    """The floor and light of translucent_scene.py with volume(**kw)."""
-    return ts.caster_scene([], lambda renderer: renderer.AddVolume(volume(**kw)))
+def scene(slab=False, **kw):
+    """The floor and light of translucent_scene.py with volume(**kw); with
+    `slab`, a translucent slab (opacity 0.5, two crossings: 0.25) above the
+    volume too."""
+    casters = [(ts.slab(z=SLAB_Z), 0.5)] if slab else []
+    return ts.caster_scene(casters, lambda renderer: renderer.AddVolume(volume(**kw)))
 
 
 def stats_of(build, technique):
@@ -177,6 +183,8 @@ for label, build, technique, want in (
         ("placed by its matrix", scene(moved=True), "raytrace", expected(ALPHA, UNIT)),
         ("opacity 0.2 in the top 6 layers", scene(alpha=0.2, top=14), "raytrace",
          expected_top(0.2, UNIT, 14)),
+        ("under a translucent slab (0.25) too, unit 0.2", scene(slab=True, unit=0.2),
+         "raytrace", 0.25 * expected(ALPHA, 0.2)),
         ("opacity 0 (control)", scene(alpha=0.0), "raytrace", 1.0),
         ("the volume VisibilityOff", scene(visible=False), "raytrace", 1.0),
         (f"opacity {ALPHA}, technique none", scene(), "none", 1.0)):
