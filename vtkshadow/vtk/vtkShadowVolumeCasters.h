@@ -8,7 +8,8 @@
 // caster, what fraction of its light the volumes keep, and multiplies the
 // ray's transmittance by it.
 //
-// Supported: a visible vtkVolume (not a vtkMultiVolume) whose mapper is a
+// Supported: a visible vtkVolume among the renderer's props (not inside an
+// assembly; not a vtkMultiVolume) whose mapper is a
 // vtkVolumeMapper in composite blend mode without cropping or clipping
 // planes, on a vtkImageData with an identity direction matrix and
 // single-component point scalars (the mapper's scalar selection), through
