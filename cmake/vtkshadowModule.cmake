@@ -3,7 +3,7 @@
 set(VTKSHADOW_VTK_COMPONENTS
   CommonCore CommonDataModel CommonMath CommonSystem CommonTransforms
   FiltersCore IOGeometry IOImage IOPLY IOXML ParallelCore
-  RenderingCore RenderingOpenGL2 RenderingUI
+  RenderingCore RenderingOpenGL2 RenderingUI RenderingVolume
   InteractionStyle RenderingFreeType)
 find_package(VTK 9.1 REQUIRED COMPONENTS ${VTKSHADOW_VTK_COMPONENTS} WrappingPythonCore Python)
 string(REPLACE ";" " " VTKSHADOW_VTK_COMPONENTS "${VTKSHADOW_VTK_COMPONENTS}")

@@ -15,6 +15,7 @@
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowRayTracer.h"
 #include "vtkShadowScreenMask.h"
+#include "vtkShadowVolumeCasters.h"
 
 #include "vsh_raytrace.h"
 #include "vsh_rt_adaptive.h"
@@ -93,6 +94,9 @@ struct vtkRayTracedShadowPass::Internals
   World* W = nullptr;        // the world being drawn
   int FrameWorldsTraced = 0; // worlds traced since world 0 was last drawn
   vtkShadowEmbreeScene Scene;
+  // The renderer's vtkVolumes that cast: the shadow rays Embree leaves free
+  // march them (empty, and free of cost, without volumes).
+  vtkShadowVolumeCasters Volumes;
   vsh_rt_cost_model Cost;
   // The fraction of a sized light's traced pixels whose first batch
   // disagreed (adaptive counts: they trace all Samples), for the cost
@@ -166,6 +170,7 @@ struct vtkRayTracedShadowPass::Internals
     rays.Depth = this->Depth.data();
     this->Counters.PrimaryRays += counters.PrimaryRays;
     this->Counters.ShadowRays += counters.ShadowRays;
+    this->Counters.VolumeSamples += counters.VolumeSamples;
     this->TracedTranslucent = true;
     return true;
   }
@@ -353,6 +358,10 @@ void vtkRayTracedShadowPass::GatherFrame(Frame& frame)
       frame.Actors.push_back(FrameActor(a, vtkshadow::CasterOpacity(a.Actor), key));
     }
   }
+  // Volumes cast the transmittance of their scalar opacity
+  // (vtkShadowVolumeCasters); their data, matrix and transfer function
+  // key a still frame too.
+  this->Impl->Volumes.Gather(shared.Renderer, key);
 }
 
 //------------------------------------------------------------------------------
@@ -390,6 +399,11 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, Frame& frame)
     return true; // a degenerate camera shows nothing to shadow
   }
   std::copy_n(frame.Shared.Eye, 3, rays.Eye);
+  if (!impl.Volumes.IsEmpty())
+  {
+    impl.Volumes.Place(impl.Scene.GetCentre());
+    rays.Volumes = &impl.Volumes;
+  }
   rays.Lights = frame.Lights;
   rays.Samples = frame.Samples;
   for (int samples : frame.Samples)
@@ -589,6 +603,27 @@ std::string RaysPerPixelJSON(const vtkShadowRayTracer::Counters& c)
       << ", \"refined_fraction_light\": [" << refined.str() << "]";
   return out.str();
 }
+
+// The volumes that cast, why the others do not (a list of strings), and
+// the opacity samples the last frame's shadow rays took in them.
+std::string VolumesJSON(
+  const vtkShadowVolumeCasters& volumes, const vtkShadowRayTracer::Counters& c)
+{
+  std::ostringstream out;
+  out << ", \"volumes\": " << volumes.GetNumberOfVolumes() << ", \"volumes_skipped\": [";
+  const std::vector<std::string>& skipped = volumes.GetSkipped();
+  for (size_t k = 0; k < skipped.size(); ++k)
+  {
+    out << (k ? ", " : "") << '"';
+    for (char ch : skipped[k])
+    {
+      out << (ch == '"' || ch == '\\' ? "\\" : "") << ch;
+    }
+    out << '"';
+  }
+  out << "], \"volume_samples\": " << c.VolumeSamples;
+  return out.str();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -619,7 +654,7 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"other_worlds_bytes\": " << this->GetWorldsMemoryBytes()
       << ", \"meshes\": " << impl.Scene.GetNumberOfMeshes()
       << ", \"triangles\": " << impl.Scene.GetNumberOfTriangles()
-      << ", \"impostors\": " << impl.Scene.GetNumberOfImpostors()
+      << ", \"impostors\": " << impl.Scene.GetNumberOfImpostors() << VolumesJSON(impl.Volumes, c)
       << ", \"mesh_builds\": " << impl.Scene.GetMeshBuilds()
       << ", \"mesh_build_ms\": " << 1e3 * impl.Scene.GetMeshBuildSeconds()
       << ", \"top_level_commits\": " << impl.Scene.GetTopLevelCommits()

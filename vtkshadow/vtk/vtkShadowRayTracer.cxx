@@ -4,6 +4,7 @@
 #include "vsh_rt_weight.h"
 #include "vsh_transmit.h"
 #include "vtkShadowEmbreeScene.h"
+#include "vtkShadowVolumeCasters.h"
 
 #include <algorithm>
 #include <atomic>
@@ -107,6 +108,7 @@ struct Worker
 {
   const vtkShadowEmbreeScene* Scene;
   const vtkShadowRayTracer::Frame* Frame;
+  const vtkShadowVolumeCasters* Volumes; // null when no volume casts
   std::vector<std::vector<float>>* Out;
   std::vector<std::vector<float>>* Tint; // 3 per pixel per light, or null
   double EyeToCentre[3];                 // eye - centre: camera-relative -> the top levels' frame
@@ -135,6 +137,8 @@ struct Worker
   void Rest(size_t begin, size_t end);
   void Finish();
   void Occlude();
+  void OccludeTranslucent();
+  double ThroughVolumes(const Surface& s, const RTCRay& ray, double start);
   void Resolve(bool first);
 };
 
@@ -521,38 +525,14 @@ void Worker::Occlude()
   this->Count.ShadowRays += static_cast<long long>(this->Rays.size());
   if (this->Scene->HasTranslucentCasters())
   {
-    // One ray at a time, each with its own transmittance (the context
-    // filter's; a stream query's filter may see rays of a packet mixed).
-    const std::vector<float>& opacity = this->Scene->GetCasterOpacity();
-    const std::vector<float>& transmit = this->Scene->GetCasterTransmit();
-    for (size_t r = 0; r < this->Rays.size(); ++r)
-    {
-      TransmitContext context;
-      rtcInitIntersectContext(&context.Base);
-      context.Base.filter = &Transmit;
-      context.Opacity = opacity.data();
-      context.Transmit = transmit.data();
-      context.Count = static_cast<unsigned int>(opacity.size());
-      std::fill_n(context.Transmittance, 3, 1.0);
-      context.SeenCount = 0;
-      RTCRay& ray = this->Rays[r];
-      rtcOccluded1(this->Scene->GetCasters(), &context.Base, &ray);
-      Pair& q = this->Pairs[this->RayPair[r]];
-      const double dir[3] = { ray.dir_x, ray.dir_y, ray.dir_z };
-      ++this->Count.LightRays[q.Light];
-      if (ray.tfar < 0.0f)
-      {
-        std::fill_n(context.Transmittance, 3, 0.0);
-      }
-      vsh_rt_visibility_add_coloured(&q.Vis,
-        vsh_rt_sample_weight(q.S.HasNormal ? q.S.Normal : nullptr, dir), context.Transmittance);
-    }
+    this->OccludeTranslucent();
     return;
   }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rtcOccluded1M(this->Scene->GetCasters(), &context, this->Rays.data(),
     static_cast<unsigned int>(this->Rays.size()), sizeof(RTCRay));
+  const bool volumes = this->Volumes != nullptr;
   for (size_t r = 0; r < this->Rays.size(); ++r)
   {
     Pair& q = this->Pairs[this->RayPair[r]];
@@ -561,9 +541,76 @@ void Worker::Occlude()
     ++this->Count.LightRays[q.Light];
     // rtcOccluded sets tfar to -inf for a ray that hit something. Without
     // a normal (the refinement missed) every ray weighs the same.
-    vsh_rt_visibility_add(
-      &q.Vis, vsh_rt_sample_weight(q.S.HasNormal ? q.S.Normal : nullptr, dir), ray.tfar < 0.0f);
+    const double weight = vsh_rt_sample_weight(q.S.HasNormal ? q.S.Normal : nullptr, dir);
+    if (volumes)
+    {
+      // A partial ray where a volume takes some of its light (no volume:
+      // the plain blocked / free count, untouched).
+      vsh_rt_visibility_add_transmitted(
+        &q.Vis, weight, ray.tfar < 0.0f ? 0.0 : this->ThroughVolumes(q.S, ray, 1.0));
+      continue;
+    }
+    vsh_rt_visibility_add(&q.Vis, weight, ray.tfar < 0.0f);
   }
+}
+
+// The rays one at a time, each with its own transmittance (the context
+// filter's; a stream query's filter may see rays of a packet mixed), then
+// through the volumes when they got past the surfaces.
+void Worker::OccludeTranslucent()
+{
+  const std::vector<float>& opacity = this->Scene->GetCasterOpacity();
+  const std::vector<float>& transmit = this->Scene->GetCasterTransmit();
+  for (size_t r = 0; r < this->Rays.size(); ++r)
+  {
+    TransmitContext context;
+    rtcInitIntersectContext(&context.Base);
+    context.Base.filter = &Transmit;
+    context.Opacity = opacity.data();
+    context.Transmit = transmit.data();
+    context.Count = static_cast<unsigned int>(opacity.size());
+    std::fill_n(context.Transmittance, 3, 1.0);
+    context.SeenCount = 0;
+    RTCRay& ray = this->Rays[r];
+    const float tmax = ray.tfar; // rtcOccluded1 leaves it or sets -inf
+    rtcOccluded1(this->Scene->GetCasters(), &context.Base, &ray);
+    Pair& q = this->Pairs[this->RayPair[r]];
+    const double dir[3] = { ray.dir_x, ray.dir_y, ray.dir_z };
+    ++this->Count.LightRays[q.Light];
+    double* t = context.Transmittance;
+    const double largest = ray.tfar < 0.0f ? 0.0 : *std::max_element(t, t + 3);
+    if (largest <= 0.0)
+    {
+      std::fill_n(t, 3, 0.0);
+    }
+    else if (this->Volumes)
+    {
+      // Volumes are grey: every channel keeps the same fraction; the ray
+      // counts as blocked where the product falls under the cutoff.
+      RTCRay full = ray;
+      full.tfar = tmax;
+      const double kept = this->ThroughVolumes(q.S, full, largest) / largest;
+      std::for_each(t, t + 3, [kept](double& c) { c *= kept; });
+    }
+    vsh_rt_visibility_add_coloured(
+      &q.Vis, vsh_rt_sample_weight(q.S.HasNormal ? q.S.Normal : nullptr, dir), t);
+  }
+}
+
+// `start` times what the volumes let through of shadow ray `ray` of
+// surface s (the ray's origin again in double, from the surface point).
+double Worker::ThroughVolumes(const Surface& s, const RTCRay& ray, double start)
+{
+  double origin[3], dir[3] = { ray.dir_x, ray.dir_y, ray.dir_z };
+  const double norm = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    origin[k] = s.Point[k] + s.Offset * s.Normal[k];
+    dir[k] /= norm;
+  }
+  const double tmax =
+    std::isfinite(ray.tfar) ? double(ray.tfar) * norm : std::numeric_limits<double>::infinity();
+  return this->Volumes->Transmittance(origin, dir, tmax, start, this->Count.VolumeSamples);
 }
 
 // Each pair's visibility: the N.L-weighted fraction of its traced rays that
@@ -680,6 +727,7 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
     Worker& w = workers[static_cast<size_t>(k)];
     w.Scene = &scene;
     w.Frame = &frame;
+    w.Volumes = frame.Volumes && !frame.Volumes->IsEmpty() ? frame.Volumes : nullptr;
     w.Out = &out;
     w.Tint = tint;
     w.States = &states;
@@ -718,6 +766,7 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
     counters.FacingAway += w.Count.FacingAway;
     counters.OutsideCone += w.Count.OutsideCone;
     counters.ShadowRays += w.Count.ShadowRays;
+    counters.VolumeSamples += w.Count.VolumeSamples;
     for (size_t l = 0; l < lights; ++l)
     {
       counters.LightPixels[l] += w.Count.LightPixels[l];

@@ -10,7 +10,9 @@
 // the normal by vsh_rt_offset_distance, towards points on the light (with
 // adaptive counts, a first batch and the rest only where it disagrees). The
 // pixels go in tiles of 64 to worker threads; each tile's rays go to Embree
-// as streams (rtcIntersect1M, rtcOccluded1M).
+// as streams (rtcIntersect1M, rtcOccluded1M). A ray through translucent
+// casters multiplies its transmittance in a context filter, and one that
+// reaches the light marches the volumes on its way (Frame::Volumes).
 #ifndef vtkShadowRayTracer_h
 #define vtkShadowRayTracer_h
 
@@ -19,6 +21,7 @@
 #include <vector>
 
 class vtkShadowEmbreeScene;
+class vtkShadowVolumeCasters;
 
 class vtkShadowRayTracer
 {
@@ -42,6 +45,10 @@ public:
     // proportion to the depth gradient).
     double DepthTolerance = 64 * VSH_RT_DEPTH_QUANTUM;
     double SlopeTolerance = 1.0;
+    // The volumes that cast (placed in the scene's frame), or null: a ray
+    // no opaque caster blocks keeps the fraction of its light they let
+    // through (vtkShadowVolumeCasters).
+    const vtkShadowVolumeCasters* Volumes = nullptr;
   };
 
   struct Counters
@@ -53,6 +60,7 @@ public:
     long long FacingAway = 0;   // (pixel, light) pairs traced whose facet faces away from the light
     long long OutsideCone = 0;  // (pixel, light) pairs outside a spot cone
     long long ShadowRays = 0;
+    long long VolumeSamples = 0; // opacity samples the shadow rays took in volumes
     // Per light: (pixel, light) pairs traced, their shadow rays, and the
     // pairs whose first batch disagreed and traced the rest.
     std::vector<long long> LightPixels, LightRays, LightRefined;
