@@ -138,8 +138,7 @@ const vtkshadow::ShadowFrame& vtkShadowPassBase::BeginFrame(const vtkRenderState
 //------------------------------------------------------------------------------
 const char* vtkShadowPassBase::GetLightNote(int light) const
 {
-  return light >= 0 && light < this->GetNumberOfLightNotes() ? this->LightNotes[light].c_str()
-                                                             : "";
+  return light >= 0 && light < this->GetNumberOfLightNotes() ? this->LightNotes[light].c_str() : "";
 }
 
 //------------------------------------------------------------------------------
@@ -163,8 +162,8 @@ void vtkShadowPassBase::NoteGreyFilters(const vtkshadow::ShadowFrame& frame)
   for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(frame.Renderer))
   {
     double transmit[3];
-    tinted = tinted ||
-      (vtkshadow::CastsAsSurface(a, NO_CAST()) && vtkshadow::CasterTransmit(a, transmit));
+    tinted =
+      tinted || (vtkshadow::CastsAsSurface(a, NO_CAST()) && vtkshadow::CasterTransmit(a, transmit));
   }
   for (size_t l = 0; tinted && l < frame.Lights.size(); ++l)
   {
