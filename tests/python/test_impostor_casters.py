@@ -33,7 +33,14 @@ impostors, 0 px in every case.
     angle after a first frame cast exactly the shadow of a fresh window at
     20 degrees (1912 px both; with the first frame's radii kept, 4963).
 
-Usage: test_impostor_casters.py"""
+Every other technique casts closed triangle proxies instead (issue 32,
+second part; vtkShadowImpostorProxies): an icosphere per point and a
+12-sided truncated cone per segment with an icosphere per vertex, at the
+same radius. The technique is the first argument (default raytrace); the
+control is rendered with the same technique, so its own errors cancel. The
+stats count of impostors is raytrace's only.
+
+Usage: test_impostor_casters.py [raytrace|csm|auto|volume|planar]"""
 import json
 import math
 import os
@@ -58,6 +65,7 @@ EYE, FOCAL, VIEW_ANGLE = (7.0, -7.0, 6.0), (0.0, 0.0, 0.6), 30.0
 POINT_SIZE, LINE_WIDTH = 18.0, 16.0
 RATIO = (0.6, 1.6)
 PARALLEL_SCALE = 3.5
+TECHNIQUE = sys.argv[1] if len(sys.argv) > 1 else "raytrace"
 
 
 def view_distance(p):
@@ -245,22 +253,27 @@ def compare(name, impostors, control_data, count, parallel_scale=None):
     off_tested, off_control = render(tested, None), render(control, None)
     mask = covered(off_tested, floor_alone) | covered(off_control, floor_alone)
     stats = {}
-    area = shadow_area(tested, "raytrace", mask, off_tested, stats)
-    reference = shadow_area(control, "raytrace", mask, off_control)
+    area = shadow_area(tested, TECHNIQUE, mask, off_tested, stats)
+    reference = shadow_area(control, TECHNIQUE, mask, off_control)
     none = shadow_area(tested, "none", mask, off_tested)
     unmarked = shadow_area(scene(no_cast(impostors), parallel_scale=parallel_scale),
-                           "raytrace", mask, off_tested)
+                           TECHNIQUE, mask, off_tested)
+    # What the technique shows with no caster but the floor: volume's open
+    # floor marks 2 px of its own far edge with the parallel camera.
+    own = shadow_area(scene(parallel_scale=parallel_scale), TECHNIQUE, mask, floor_alone)
     ratio = area / reference if reference else float("nan")
-    print(f"{name}: raytrace shadow area {area} px, control (meshes) {reference} px, "
-          f"ratio {ratio:.3f}; none {none} px; NO_CAST {unmarked} px; "
+    print(f"{name}: {TECHNIQUE} shadow area {area} px, control (meshes) {reference} px, "
+          f"ratio {ratio:.3f}; none {none} px; NO_CAST {unmarked} px; floor alone {own} px; "
           f"casters cover {int(mask.sum())} px")
     check(reference > 500, f"{name}: the control casts a shadow ({reference} px > 500)")
     check(RATIO[0] <= ratio <= RATIO[1],
           f"{name}: impostor shadow area / control's = {ratio:.3f} in {RATIO}")
     check(none == 0, f"{name}: the none technique shows no shadow ({none} px)")
-    check(unmarked == 0, f"{name}: marked NO_CAST, they cast nothing ({unmarked} px)")
-    check(stats.get("impostors") == count,
-          f"{name}: raytrace holds {stats.get('impostors')} spheres / segments ({count})")
+    check(unmarked <= own,
+          f"{name}: marked NO_CAST, they cast nothing ({unmarked} px, the floor alone {own})")
+    if TECHNIQUE == "raytrace":
+        check(stats.get("impostors") == count,
+              f"{name}: raytrace holds {stats.get('impostors')} spheres / segments ({count})")
 
 
 compare("points as spheres (size 18)", spheres_as_points, lambda: sphere_meshes(cloud()),
@@ -278,8 +291,8 @@ ZOOM = 20.0
 fresh_build = scene(spheres_as_points, ZOOM)
 off_zoom = render(fresh_build, None)
 mask_zoom = covered(off_zoom, render(scene(view_angle=ZOOM), None))
-fresh = shadow_area(fresh_build, "raytrace", mask_zoom, off_zoom)
-v, valid = fr.visibility(zoomed(scene(spheres_as_points), "raytrace", ZOOM), off_zoom)
+fresh = shadow_area(fresh_build, TECHNIQUE, mask_zoom, off_zoom)
+v, valid = fr.visibility(zoomed(scene(spheres_as_points), TECHNIQUE, ZOOM), off_zoom)
 after_zoom = int((valid & (v < 0.5) & ~mask_zoom).sum())
 print(f"points as spheres, zoomed to a {ZOOM} degree view angle: shadow area {after_zoom} px "
       f"after the zoom, {fresh} px in a fresh window")

@@ -20,6 +20,7 @@
 
 class vtkRenderState;
 class vtkRenderer;
+class vtkShadowCasterGeometry;
 
 namespace vtkshadow
 {
@@ -72,6 +73,10 @@ struct ShadowActor
   // assemblies, or twice in one): caches that depend on the placement key
   // on (Actor, Instance).
   int Instance;
+  // Set for the proxy of the spheres and tubes Actor draws
+  // (vtkShadowImpostorProxies): a pass draws these world-space triangles
+  // (Matrix is the identity) instead of the actor's own.
+  vtkShadowCasterGeometry* Proxy = nullptr;
 };
 
 // Calls visit(actor, matrix) for every visible actor with a mapper that
