@@ -38,7 +38,13 @@ second part; vtkShadowImpostorProxies): an icosphere per point and a
 12-sided truncated cone per segment with an icosphere per vertex, at the
 same radius. The technique is the first argument (default raytrace); the
 control is rendered with the same technique, so its own errors cancel. The
-stats count of impostors is raytrace's only.
+stats count of impostors is raytrace's only. Measured (points, tube,
+parallel points; zoomed px):
+csm 1872/1861 (1.006), 2978/2869 (1.038), 2089/2066 (1.011); 1865;
+auto 1857/1846 (1.006), 2975/2880 (1.033), 2080/2064 (1.008); 1869;
+volume 1874/1866 (1.004), 2977/2874 (1.036), 2088/2068 (1.010); 1873;
+planar 1873/1867 (1.003), 2976/2873 (1.036), 2086/2067 (1.009); 1873;
+before the proxies, 0 px for each of them in every case.
 
 Usage: test_impostor_casters.py [raytrace|csm|auto|volume|planar]"""
 import json

@@ -136,9 +136,10 @@ inline bool HasFlag(const ShadowActor& a, vtkInformationIntegerKey* key)
 // `noCast` (vtkShadowPassBase::NO_CAST) and drawn as a surface. An actor
 // drawn as a wireframe or as points shows only lines or points a few pixels
 // wide: the solid shadow of its triangles would come from nothing on
-// screen, so it casts none (csm's maps hold the lines VTK rasterizes; raytrace
-// casts the points and lines VTK draws as spheres and tubes,
-// vtkShadowImpostors, whatever the representation).
+// screen, so it casts none (csm's maps hold the lines VTK rasterizes). The
+// points and lines VTK draws as spheres and tubes (vtkShadowImpostors) cast
+// whatever the representation: raytrace as Embree spheres and curves, csm,
+// planar and volume as proxies (vtkShadowImpostorProxies).
 bool CastsAsSurface(const ShadowActor& a, vtkInformationIntegerKey* noCast);
 }
 
