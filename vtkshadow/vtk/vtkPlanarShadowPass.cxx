@@ -1014,7 +1014,8 @@ std::string vtkPlanarShadowPass::GetStatsJSON(vtkRenderer* renderer) const
     ", \"soft_batch\": " + std::to_string(this->Impl->SoftAdaptive ? VSH_SOFT_ADAPTIVE_BATCH : 0) +
     ", \"soft_adaptive\": " + adaptive +
     ", \"detected_receivers\": " + this->DetectedReceiversJSON(renderer) +
-    ", \"detected_flat_parts\": " + std::to_string(this->Impl->DetectedParts);
+    ", \"detected_flat_parts\": " + std::to_string(this->Impl->DetectedParts) + ", " +
+    this->Impl->Proxies.StatsJSON();
 }
 
 //------------------------------------------------------------------------------

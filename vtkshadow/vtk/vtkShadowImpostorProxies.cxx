@@ -313,6 +313,13 @@ long long ImpostorProxies::GetNumberOfTriangles() const
 }
 
 //------------------------------------------------------------------------------
+std::string ImpostorProxies::StatsJSON() const
+{
+  return "\"impostor_proxies\": {\"triangles\": " + std::to_string(this->GetNumberOfTriangles()) +
+    ", \"builds\": " + std::to_string(this->Builds) + "}";
+}
+
+//------------------------------------------------------------------------------
 void ImpostorProxies::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (auto& entry : this->Entries)

@@ -17,6 +17,7 @@
 
 #include <map>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -61,6 +62,8 @@ public:
   // Triangles of the last Append's proxies, and proxy rebuilds so far.
   long long GetNumberOfTriangles() const;
   long long GetNumberOfBuilds() const { return this->Builds; }
+  // Both as the passes' stats entry: "impostor_proxies": {...}.
+  std::string StatsJSON() const;
 
   void ReleaseGraphicsResources(vtkWindow* window);
 

@@ -930,7 +930,8 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
   const Internals& impl = *this->Impl;
   std::ostringstream out;
   out << "\"volume_builds\": " << impl.VolumeBuilds << ", \"caster_instances\": " << impl.Instances
-      << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", \"lights\": [";
+      << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", "
+      << impl.Proxies.StatsJSON() << ", \"lights\": [";
   for (int light = 0; light < impl.LightCount; ++light)
   {
     const LightStats& s = impl.Stats[light];
