@@ -24,6 +24,7 @@
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowFrame.h"
+#include "vtkShadowImpostorProxies.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkShadowTechniqueSet.h"
@@ -301,9 +302,17 @@ void vtkAutoShadowPass::GatherObjects(const vtkshadow::ShadowFrame& frame)
     const bool receiver = std::any_of(receivers.Receivers.begin(), receivers.Receivers.end(),
       [&](const vtkshadow::ShadowActor& r)
       { return r.Actor == shadowActor.Actor && r.Instance == shadowActor.Instance; });
+    // Points drawn as spheres and lines drawn as tubes cast (their proxies
+    // under csm, planar and volume; spheres and curves under raytrace), out
+    // to the radius they are drawn with.
+    double bounds[6];
+    const bool impostors = vtkshadow::ImpostorBounds(frame, shadowActor, bounds) &&
+      !vtkshadow::HasFlag(shadowActor, vtkShadowPassBase::NO_CAST());
+    const bool casts =
+      impostors || vtkshadow::CastsAsSurface(shadowActor, vtkShadowPassBase::NO_CAST());
     vsh_auto_object object;
-    vsh_auto_object_init(&object, shadowActor.Bounds, receiver ? 1 : 0,
-      vtkshadow::CastsAsSurface(shadowActor, vtkShadowPassBase::NO_CAST()) ? 1 : 0, frustum);
+    vsh_auto_object_init(
+      &object, impostors ? bounds : shadowActor.Bounds, receiver ? 1 : 0, casts ? 1 : 0, frustum);
     if (object.receiver)
     {
       const vtkshadow::ReceiverPlaneCache::Entry& plane = planes.Get(shadowActor);
@@ -323,7 +332,11 @@ int vtkAutoShadowPass::FindConcaveCaster()
   for (size_t i = 0; i < impl.Objects.size(); ++i)
   {
     const vsh_auto_object& o = impl.Objects[i];
-    if (!o.receiver && o.casts && o.in_view && !impl.For(impl.Actors[i].Actor).Convex)
+    // Spheres and tubes count as not convex: several of them can shadow
+    // each other, which planar leaves out.
+    vtkActor* actor = impl.Actors[i].Actor;
+    if (!o.receiver && o.casts && o.in_view &&
+      (!impl.For(actor).Convex || vtkshadow::DrawsImpostors(actor)))
     {
       return static_cast<int>(i);
     }

@@ -419,6 +419,12 @@ unsigned long long CasterContentKey(const std::vector<vtkshadow::ShadowActor>& c
       mix(&caster.Actor, sizeof(caster.Actor));
       mix(caster.Matrix, sizeof(caster.Matrix));
       mix(&mesh, sizeof(mesh));
+      if (caster.Proxy)
+      {
+        // Spheres and tubes: rebuilt with the camera, not with the mesh.
+        const vtkMTimeType built = caster.Proxy->GetBuildTime();
+        mix(&built, sizeof(built));
+      }
       if (opacities)
       {
         const double opacity = vtkshadow::CasterOpacity(caster.Actor);
@@ -464,6 +470,16 @@ void vtkCascadedShadowMapPass::GatherScene(Frame& frame)
       frame.Casters.push_back(shadowActor);
       vsh_bounds_merge(&scene.casters, &ab);
     }
+  }
+  // Points drawn as spheres and lines as tubes cast their proxies (the
+  // actor's own triangles, if any, are cast above as before).
+  const size_t meshes = frame.Casters.size();
+  this->Impl->Proxies.Append(shared, shared.Actors, frame.Casters);
+  for (size_t i = meshes; i < frame.Casters.size(); ++i)
+  {
+    vsh_bounds ab;
+    vsh_bounds_from_vtk(&ab, frame.Casters[i].Bounds);
+    vsh_bounds_merge(&scene.casters, &ab);
   }
   // Translucent casters are casters to the plan too (the maps' depth range
   // reaches them, and a screen tile near one is not lit for certain); only
@@ -774,6 +790,10 @@ void vtkCascadedShadowMapPass::BakeMaps(
     {
       for (const vtkshadow::ShadowActor& caster : *casters)
       {
+        if (caster.Proxy)
+        {
+          continue; // built by the proxies
+        }
         auto& geometry = impl.Casters[caster.Actor];
         if (!geometry)
         {
@@ -822,7 +842,8 @@ void vtkCascadedShadowMapPass::DrawCasters(vtkShaderProgram* program,
   const bool crossing = program->IsUniformUsed("vshCrossing");
   for (const vtkshadow::ShadowActor& caster : casters)
   {
-    vtkShadowCasterGeometry* geometry = this->Impl->Casters[caster.Actor].get();
+    vtkShadowCasterGeometry* geometry =
+      caster.Proxy ? caster.Proxy : this->Impl->Casters[caster.Actor].get();
     if (geometry->GetNumberOfTriangles() == 0)
     {
       continue;
@@ -1136,6 +1157,7 @@ void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
     impl.Queries[0] = impl.Queries[1] = 0;
   }
   impl.Overdraw = -1.0;
+  impl.Proxies.ReleaseGraphicsResources(w);
   for (auto& entry : impl.Casters)
   {
     entry.second->ReleaseGraphicsResources(w);
@@ -1287,7 +1309,8 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
       << ", \"sample_maps\": " << this->Impl->SampleSlots
       << ", \"pcss_blocker_taps\": " << (this->UsedPCSS ? this->PCSSBlockerTaps : 0)
       << ", \"pcss_filter_taps\": " << (this->UsedPCSS ? this->PCSSFilterTaps : 0)
-      << ", \"pcss_max_texels\": " << this->PCSSMaxTexels << ", \"lights\": [";
+      << ", \"pcss_max_texels\": " << this->PCSSMaxTexels << ", " << this->Impl->Proxies.StatsJSON()
+      << ", \"lights\": [";
   const int lights = renderer ? renderer->GetLights()->GetNumberOfItems() : 0;
   for (int l = 0; l < lights; ++l)
   {

@@ -11,6 +11,7 @@
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowClipSpaceRects.h"
 #include "vtkShadowFrame.h"
+#include "vtkShadowImpostorProxies.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
@@ -137,6 +138,8 @@ struct vtkCascadedShadowMapPass::Internals
 {
   double SplitFractions[VSH_CSM_MAX_CASCADES] = { 0 };
   std::map<vtkActor*, std::unique_ptr<vtkShadowCasterGeometry>> Casters;
+  // Proxies of the points drawn as spheres and lines drawn as tubes.
+  vtkshadow::ImpostorProxies Proxies;
   // The held maps of the world being drawn (vtkShadowPassBase::SetWorldKey)
   // and, parked by key, those of the other worlds (a mirror's reflection).
   vtkshadow::CascadedHeldMaps Held;

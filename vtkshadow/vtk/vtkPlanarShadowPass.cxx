@@ -455,6 +455,9 @@ void vtkPlanarShadowPass::GatherCasters(
       frame.Casters.push_back(actor);
     }
   }
+  // Points drawn as spheres and lines drawn as tubes: their closed proxies,
+  // drawn as silhouette fans like any closed caster.
+  this->Impl->Proxies.Append(frame.Shared, actors, frame.Casters);
 }
 
 //------------------------------------------------------------------------------
@@ -646,15 +649,16 @@ void vtkPlanarShadowPass::DrawPair(
   vsh_planar_rect_init(&fanRect);
   for (const vtkshadow::ShadowActor& caster : frame.Casters)
   {
-    if (caster.Actor == receiver)
+    if (caster.Actor == receiver && !caster.Proxy)
     {
-      continue; // a flat receiver does not shadow itself
+      continue; // a flat receiver does not shadow itself (its spheres do)
     }
     if (!receiver && LiesInPlane(caster, receiverPlane))
     {
       continue; // nor does a surface lying in an explicit receiver plane
     }
-    vtkShadowCasterGeometry* geometry = this->CasterGeometry(caster.Actor);
+    vtkShadowCasterGeometry* geometry =
+      caster.Proxy ? caster.Proxy : this->CasterGeometry(caster.Actor);
     if (geometry->GetNumberOfTriangles() > 0)
     {
       this->DrawCaster(program, frame, pair, frame.Lights[pair.light].homogeneous, shadowDC, caster,
@@ -952,6 +956,7 @@ void vtkPlanarShadowPass::ReleaseGraphicsResources(vtkWindow* w)
     impl.StencilSize[0] = impl.StencilSize[1] = 0;
   }
   impl.Quad.ReleaseGraphicsResources();
+  impl.Proxies.ReleaseGraphicsResources(w);
   for (auto& entry : impl.Casters)
   {
     entry.second->Geometry.ReleaseGraphicsResources(w);
@@ -1018,7 +1023,8 @@ std::string vtkPlanarShadowPass::GetStatsJSON(vtkRenderer* renderer) const
     ", \"soft_batch\": " + std::to_string(this->Impl->SoftAdaptive ? VSH_SOFT_ADAPTIVE_BATCH : 0) +
     ", \"soft_adaptive\": " + adaptive +
     ", \"detected_receivers\": " + this->DetectedReceiversJSON(renderer) +
-    ", \"detected_flat_parts\": " + std::to_string(this->Impl->DetectedParts);
+    ", \"detected_flat_parts\": " + std::to_string(this->Impl->DetectedParts) + ", " +
+    this->Impl->Proxies.StatsJSON();
 }
 
 //------------------------------------------------------------------------------

@@ -12,6 +12,7 @@
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowClipSpaceQuad.h"
 #include "vtkShadowFrame.h"
+#include "vtkShadowImpostorProxies.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkWeakPointer.h"
 
@@ -65,6 +66,8 @@ struct vtkPlanarShadowPass::Internals
   std::vector<ExplicitPlane> Planes;
   vtkshadow::ReceiverPlaneCache ReceiverPlanes;
   std::map<vtkActor*, std::unique_ptr<Caster>> Casters;
+  // Proxies of the points drawn as spheres and lines drawn as tubes.
+  vtkshadow::ImpostorProxies Proxies;
   vtkMTimeType Frame = 0;
 
   vtkTextureObject* Mask = nullptr;

@@ -294,11 +294,13 @@ void vtkPlanarShadowPass::DrawSoftSample(vtkShaderProgram* program, vtkOpenGLSta
   vsh_planar_rect_init(&fanRect);
   for (const vtkshadow::ShadowActor& caster : frame.Casters)
   {
-    if (caster.Actor == receiver || (!receiver && LiesInPlane(caster, receiverPlane)))
+    if ((caster.Actor == receiver && !caster.Proxy) ||
+      (!receiver && LiesInPlane(caster, receiverPlane)))
     {
       continue; // as in DrawPair
     }
-    vtkShadowCasterGeometry* geometry = this->CasterGeometry(caster.Actor);
+    vtkShadowCasterGeometry* geometry =
+      caster.Proxy ? caster.Proxy : this->CasterGeometry(caster.Actor);
     // The light's disk faces the caster's centre (docs/soft-shadows.md: the
     // direction of its shadow's centre too); a directional light ignores it.
     double centre[3];

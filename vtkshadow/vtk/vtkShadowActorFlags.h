@@ -20,6 +20,7 @@
 
 class vtkRenderState;
 class vtkRenderer;
+class vtkShadowCasterGeometry;
 
 namespace vtkshadow
 {
@@ -72,6 +73,10 @@ struct ShadowActor
   // assemblies, or twice in one): caches that depend on the placement key
   // on (Actor, Instance).
   int Instance;
+  // Set for the proxy of the spheres and tubes Actor draws
+  // (vtkShadowImpostorProxies): a pass draws these world-space triangles
+  // (Matrix is the identity) instead of the actor's own.
+  vtkShadowCasterGeometry* Proxy = nullptr;
 };
 
 // Calls visit(actor, matrix) for every visible actor with a mapper that
@@ -131,9 +136,10 @@ inline bool HasFlag(const ShadowActor& a, vtkInformationIntegerKey* key)
 // `noCast` (vtkShadowPassBase::NO_CAST) and drawn as a surface. An actor
 // drawn as a wireframe or as points shows only lines or points a few pixels
 // wide: the solid shadow of its triangles would come from nothing on
-// screen, so it casts none (csm's maps hold the lines VTK rasterizes; raytrace
-// casts the points and lines VTK draws as spheres and tubes,
-// vtkShadowImpostors, whatever the representation).
+// screen, so it casts none (csm's maps hold the lines VTK rasterizes). The
+// points and lines VTK draws as spheres and tubes (vtkShadowImpostors) cast
+// whatever the representation: raytrace as Embree spheres and curves, csm,
+// planar and volume as proxies (vtkShadowImpostorProxies).
 bool CastsAsSurface(const ShadowActor& a, vtkInformationIntegerKey* noCast);
 }
 

@@ -41,6 +41,12 @@ bool vtkShadowCasterGeometry::Update(vtkActor* actor)
   {
     return false;
   }
+  return this->Load(triangles);
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowCasterGeometry::Load(vtkshadow::CasterTriangles& triangles)
+{
   std::copy_n(triangles.Shift, 3, this->Shift);
   std::vector<float>& vertices = triangles.Vertices;
   std::vector<unsigned int>& indices = triangles.Indices;

@@ -25,6 +25,10 @@ class vtkPolyData;
 class vtkShaderProgram;
 class vtkWindow;
 struct vsh_mesh_topology;
+namespace vtkshadow
+{
+struct CasterTriangles;
+}
 
 class vtkShadowCasterGeometry
 {
@@ -36,6 +40,11 @@ public:
   // vtkPolyDataMapper, vtkCompositePolyDataMapper(2) and vtkGlyph3DMapper.
   // Returns false when the mapper's data has no triangles to cast.
   bool Update(vtkActor* actor);
+
+  // Take `triangles` (emptied) as the copy: triangles no mapper holds, the
+  // world-space proxies of spheres and tubes (vtkShadowImpostorProxies).
+  // Returns false when there are none.
+  bool Load(vtkshadow::CasterTriangles& triangles);
 
   // The shift applied to the stored positions: stored = data - Shift.
   const double* GetShift() const { return this->Shift; }

@@ -1,7 +1,8 @@
 // vtkShadowImpostors.h - the points and lines an actor's mapper draws as
 // screen-space solids, RenderPointsAsSpheres' sphere impostors and
 // RenderLinesAsTubes' tube impostors, on the CPU, for the ray tracer's
-// spheres and round curves (vtkShadowEmbreeScene). Their world size is not
+// spheres and round curves (vtkShadowEmbreeScene) and the other
+// techniques' triangle proxies (vtkShadowImpostorProxies). Their world size is not
 // in the data: it is a width in pixels, so the tracer sizes them per frame
 // (vsh_rt_impostor_radius).
 //

@@ -21,6 +21,7 @@
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowFrame.h"
+#include "vtkShadowImpostorProxies.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkSmartPointer.h"
@@ -179,8 +180,20 @@ struct vtkShadowVolumePass::Internals
     long long SeenFrame = -1;
   };
   // By (actor, instance): an actor drawn at two places (two assembly paths)
-  // has a volume per place.
+  // has a volume per place; the proxy of its spheres and tubes is at
+  // (actor, -1 - instance), out of the facing test's reach (its lookup
+  // starts at instance 0: VTK's impostors are not the proxy's facets).
   std::map<std::pair<vtkActor*, int>, std::unique_ptr<Caster>> Casters;
+  vtkshadow::ImpostorProxies Proxies;
+  static std::pair<vtkActor*, int> Key(const vtkshadow::ShadowActor& a)
+  {
+    return { a.Actor, a.Proxy ? -1 - a.Instance : a.Instance };
+  }
+  // The triangles a caster's volumes are built from.
+  vtkShadowCasterGeometry& GeometryOf(const vtkshadow::ShadowActor& a)
+  {
+    return a.Proxy ? *a.Proxy : this->Casters[Key(a)]->Geometry;
+  }
   long long FrameNumber = 0;
   LightStats Stats[MaxLights];
   FillQuery Queries[MaxLights];
@@ -263,6 +276,8 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
     frame.LightSize.push_back(this->SoftSamples <= 1 ? 0.0 : light.Size);
   }
   frame.Casters = CastingActors(shared);
+  // Points drawn as spheres and lines drawn as tubes: their closed proxies.
+  this->Impl->Proxies.Append(shared, shared.Actors, frame.Casters);
   // Translucent actors cast as the opaque ones do (not NO_CAST, drawn as
   // surfaces); opacity 0 lets all the light through.
   for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(shared.Renderer))
@@ -637,15 +652,18 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
 {
   Internals& impl = *this->Impl;
   vtkActor* actor = shadowActor.Actor;
-  auto& caster = impl.Casters[{ actor, shadowActor.Instance }];
+  auto& caster = impl.Casters[impl.Key(shadowActor)];
   if (!caster)
   {
     caster.reset(new Internals::Caster);
   }
-  vtkShadowCasterGeometry& geometry = caster->Geometry;
+  vtkShadowCasterGeometry& geometry = impl.GeometryOf(shadowActor);
   if (caster->SeenFrame != impl.FrameNumber)
   {
-    geometry.Update(actor);
+    if (!shadowActor.Proxy)
+    {
+      geometry.Update(actor);
+    }
     caster->SeenFrame = impl.FrameNumber;
     impl.Instances += geometry.GetNumberOfInstances();
   }
@@ -776,16 +794,17 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
   // drawn as lines or points, or with culled faces: its surface has holes
   // in the depth (an open caster with culled back faces, seen from behind:
   // 15.6 % of the pixels off in z-pass, 0.07 % in z-fail).
+  // A proxy of spheres or tubes is not what the depth holds (VTK's
+  // impostors are): z-fail.
   const bool drawn = std::binary_search(frame.Drawn.begin(), frame.Drawn.end(), caster.Root) &&
-    SurfaceInDepth(caster.Actor);
+    SurfaceInDepth(caster.Actor) && !caster.Proxy;
   // A translucent caster's crossings are always counted z-fail: it is not in
   // the depth pre-pass.
   const bool zpass = !this->ForceZFail && drawn && !crossings &&
     vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
   // Model (shifted) -> world -> relative to the eye -> clip, in double.
   double modelRelative[16], mcdc[16], transposed[16];
-  impl.Casters[{ caster.Actor, caster.Instance }]->Geometry.GetModelRelativeMatrix(
-    caster.Matrix, frame.Shared.Eye, modelRelative);
+  impl.GeometryOf(caster).GetModelRelativeMatrix(caster.Matrix, frame.Shared.Eye, modelRelative);
   vsh_mat4_multiply(frame.Shared.CameraRelative, modelRelative, mcdc);
   vsh_mat4_transpose(mcdc, transposed);
   float mcdcF[16];
@@ -945,7 +964,8 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
   const Internals& impl = *this->Impl;
   std::ostringstream out;
   out << "\"volume_builds\": " << impl.VolumeBuilds << ", \"caster_instances\": " << impl.Instances
-      << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", \"lights\": [";
+      << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", "
+      << impl.Proxies.StatsJSON() << ", \"lights\": [";
   for (int light = 0; light < impl.LightCount; ++light)
   {
     const LightStats& s = impl.Stats[light];
@@ -1009,6 +1029,7 @@ void vtkShadowVolumePass::ReleaseGraphicsResources(vtkWindow* w)
     }
     query = FillQuery();
   }
+  impl.Proxies.ReleaseGraphicsResources(w);
   for (auto& entry : impl.Casters)
   {
     entry.second->Geometry.ReleaseGraphicsResources(w);
