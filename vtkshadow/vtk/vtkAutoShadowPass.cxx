@@ -244,13 +244,7 @@ void vtkAutoShadowPass::ChooseForTint(const vtkshadow::ShadowFrame& frame)
   // says so), so its colour error is the tint itself, over any target;
   // raytrace draws it. Every casting light goes to raytrace (one pass for
   // them all also keeps the volume/raytrace mask clash away).
-  bool tinted = false;
-  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(frame.Renderer))
-  {
-    double transmit[3];
-    tinted =
-      tinted || (vtkshadow::CastsAsSurface(a, NO_CAST()) && vtkshadow::CasterTransmit(a, transmit));
-  }
+  const bool tinted = vtkshadow::HasTintingCaster(frame.Renderer, NO_CAST());
   Internals& impl = *this->Impl;
   for (size_t l = 0; tinted && l < impl.LightChoices.size(); ++l)
   {

@@ -128,7 +128,8 @@ std::vector<ShadowActor> ShadowActors(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-std::vector<ShadowActor> ShadowActors(vtkRenderer* renderer)
+// The actors of the renderer's props (opaque, or the translucent ones).
+std::vector<ShadowActor> RendererActors(vtkRenderer* renderer, bool translucent)
 {
   std::vector<ShadowActor> out;
   std::map<vtkActor*, int> seen;
@@ -141,9 +142,15 @@ std::vector<ShadowActor> ShadowActors(vtkRenderer* renderer)
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
-    AppendShadowActors(prop, out, seen);
+    AppendShadowActors(prop, out, seen, translucent);
   }
   return out;
+}
+
+//------------------------------------------------------------------------------
+std::vector<ShadowActor> ShadowActors(vtkRenderer* renderer)
+{
+  return RendererActors(renderer, false);
 }
 
 //------------------------------------------------------------------------------
@@ -180,20 +187,21 @@ bool CasterTransmit(const ShadowActor& a, double transmit[3])
 //------------------------------------------------------------------------------
 std::vector<ShadowActor> TranslucentShadowActors(vtkRenderer* renderer)
 {
-  std::vector<ShadowActor> out;
-  std::map<vtkActor*, int> seen;
-  vtkPropCollection* props = renderer ? renderer->GetViewProps() : nullptr;
-  if (!props)
+  return RendererActors(renderer, true);
+}
+
+//------------------------------------------------------------------------------
+bool HasTintingCaster(vtkRenderer* renderer, vtkInformationIntegerKey* noCast)
+{
+  for (const ShadowActor& a : TranslucentShadowActors(renderer))
   {
-    return out;
+    double transmit[3];
+    if (CastsAsSurface(a, noCast) && CasterTransmit(a, transmit))
+    {
+      return true;
+    }
   }
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    AppendShadowActors(prop, out, seen, true);
-  }
-  return out;
+  return false;
 }
 
 //------------------------------------------------------------------------------

@@ -119,6 +119,11 @@ double CasterOpacity(vtkActor* actor);
 // differ), i.e. whether grey visibility would be wrong for it.
 bool CasterTransmit(const ShadowActor& actor, double transmit[3]);
 
+// Whether a translucent actor of the renderer casts (not `noCast`, drawn as
+// a surface) a tinted shadow (CasterTransmit): techniques with one value
+// per light draw it grey, auto gives its lights raytrace.
+bool HasTintingCaster(vtkRenderer* renderer, vtkInformationIntegerKey* noCast);
+
 // The property keys that decide `key` for a shadow actor: its own when they
 // carry the key, else its root prop's (VTK's assemblies hand their keys to
 // their parts while drawing them, so marking the assembly marks every part);

@@ -158,13 +158,7 @@ void vtkShadowPassBase::AddLightNote(int light, const std::string& note)
 //------------------------------------------------------------------------------
 void vtkShadowPassBase::NoteGreyFilters(const vtkshadow::ShadowFrame& frame)
 {
-  bool tinted = false;
-  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(frame.Renderer))
-  {
-    double transmit[3];
-    tinted =
-      tinted || (vtkshadow::CastsAsSurface(a, NO_CAST()) && vtkshadow::CasterTransmit(a, transmit));
-  }
+  const bool tinted = vtkshadow::HasTintingCaster(frame.Renderer, NO_CAST());
   for (size_t l = 0; tinted && l < frame.Lights.size(); ++l)
   {
     if (frame.Lights[l].Casts)
