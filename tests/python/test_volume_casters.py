@@ -26,6 +26,11 @@ float, 320x240, on the 9 x 9 patch of floor points under its centre, within
   opacity 0 (control)                    1
   the volume VisibilityOff               1
   the `none` technique                   1
+  the `auto` technique                   0.3086 (it gives the light raytrace:
+                                         never "nothing casts" for a volume)
+
+csm, planar, volume and vtk cast no volume shadow and say so per light
+(GetLightNote "volumes cast no shadow"); auto's reason names the volume.
 
 The stats say what was collected ("volumes": 1) and what was skipped and
 why (a volume of cell scalars casts nothing: "volumes_skipped"). A second
@@ -187,8 +192,22 @@ for label, build, technique, want in (
          "raytrace", 0.25 * expected(ALPHA, 0.2)),
         ("opacity 0 (control)", scene(alpha=0.0), "raytrace", 1.0),
         ("the volume VisibilityOff", scene(visible=False), "raytrace", 1.0),
-        (f"opacity {ALPHA}, technique none", scene(), "none", 1.0)):
+        (f"opacity {ALPHA}, technique none", scene(), "none", 1.0),
+        # auto never answers "nothing casts" for a visible volume: raytrace.
+        (f"opacity {ALPHA} at unit {UNIT}, technique auto", scene(), "auto",
+         expected(ALPHA, UNIT))):
     ts.check_patch(check, f"{label}, floor under the centre", build, technique, round(want, 4))
+
+# The techniques that cast no volume shadow say so per light.
+for technique in ("csm", "planar", "volume", "vtk"):
+    note = fr.render_technique(scene(), technique, ts.W, ts.H,
+                               lambda renderer, inner: inner.GetLightNote(0))[1]
+    print(f"{technique}: light 0's note {note!r}")
+    check("volumes cast no shadow" in note, f"{technique} says volumes cast no shadow")
+reason = fr.render_technique(scene(), "auto", ts.W, ts.H,
+                             lambda renderer, inner: inner.GetLightReason(0))[1]
+print(f"auto: light 0 {reason!r}")
+check("volume" in reason and "raytrace" in reason, "auto gives the volume's light raytrace")
 
 stats = stats_of(scene(), "raytrace")
 print(f"stats: volumes {stats.get('volumes')}, skipped {stats.get('volumes_skipped')}, "

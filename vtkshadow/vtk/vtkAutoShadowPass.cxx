@@ -230,30 +230,42 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
   }
   this->ChooseTexelTarget(renderer, edgeLength, stretch);
   this->ChooseGeneral(renderer, edgeLengths);
-  this->ChooseForTint(frame);
+  this->ChooseRaytraceOnly(frame);
   this->ApplySoftSamples();
   this->ApplyLightMasks();
   this->DescribeChoice();
 }
 
 //------------------------------------------------------------------------------
-void vtkAutoShadowPass::ChooseForTint(const vtkshadow::ShadowFrame& frame)
+void vtkAutoShadowPass::ChooseRaytraceOnly(const vtkshadow::ShadowFrame& frame)
 {
-  // A translucent caster whose filter tints its shadow: csm, planar and
-  // volume hold one value per light and draw it grey (their GetLightNote
-  // says so), so its colour error is the tint itself, over any target;
-  // raytrace draws it. Every casting light goes to raytrace (one pass for
-  // them all also keeps the volume/raytrace mask clash away).
-  const bool tinted = vtkshadow::HasTintingCaster(frame.Renderer, NO_CAST());
+  // What only raytrace draws: a translucent caster whose filter tints its
+  // shadow (csm, planar and volume hold one value per light and draw it
+  // grey, so their colour error is the tint itself, over any target) and a
+  // vtkVolume's shadow (the others cast none). Every casting light goes to
+  // raytrace, also one whose casters were all volumes ("nothing casts" is
+  // never the answer for a visible volume); one pass for them all keeps
+  // the volume/raytrace mask clash away.
+  std::string why;
+  if (vtkshadow::HasTintingCaster(frame.Renderer, NO_CAST()))
+  {
+    why = "a translucent caster's filter tints the shadow, which only raytrace draws in colour";
+  }
+  else if (vtkshadow::HasVisibleVolumes(frame.Renderer))
+  {
+    why = "a volume (vtkVolume) casts, which only raytrace draws";
+  }
   Internals& impl = *this->Impl;
-  for (size_t l = 0; tinted && l < impl.LightChoices.size(); ++l)
+  for (size_t l = 0; !why.empty() && l < impl.LightChoices.size(); ++l)
   {
     vtkshadow::TechniqueSet& choice = impl.LightChoices[l];
-    if (choice != vtkshadow::TechniqueSet::None && choice != vtkshadow::TechniqueSet::RayTraced)
+    if (l < frame.Lights.size() && frame.Lights[l].Casts &&
+      choice != vtkshadow::TechniqueSet::RayTraced)
     {
+      const bool none = choice == vtkshadow::TechniqueSet::None;
       choice = vtkshadow::TechniqueSet::RayTraced;
-      this->LightReasons[l] += "; raytrace: a translucent caster's filter tints the shadow, "
-                               "which only raytrace draws in colour";
+      this->LightReasons[l] =
+        none ? "raytrace: " + why : this->LightReasons[l] + "; raytrace: " + why;
       if (impl.SoftLights[l])
       {
         impl.RaySamples = std::max(impl.RaySamples, this->RayTracedPass->GetSamples());

@@ -218,8 +218,8 @@ private:
 #ifndef __VTK_WRAP__
   void Decide(const vtkshadow::ShadowFrame& frame);
   void GatherObjects(const vtkshadow::ShadowFrame& frame);
-  // Lights with a tinting translucent caster go to raytrace.
-  void ChooseForTint(const vtkshadow::ShadowFrame& frame);
+  // Lights with a tinting translucent caster or a volume go to raytrace.
+  void ChooseRaytraceOnly(const vtkshadow::ShadowFrame& frame);
 #endif
   int FindConcaveCaster();
   std::string LightReasonText(int reason, int a, int b) const;

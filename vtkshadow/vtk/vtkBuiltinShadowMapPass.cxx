@@ -215,6 +215,7 @@ void vtkBuiltinShadowMapPass::Render(const vtkRenderState* s)
         "translucent actors cast no shadow (VTK's vtkShadowMapPass draws opaque casters only)");
     }
   }
+  this->NoteUncastVolumes(frame);
   this->RenderDelegate(s);
 }
 

@@ -345,6 +345,7 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   Frame frame(this->BeginFrame(s));
   // One transmittance per texel: a filter's colour comes out grey.
   this->NoteGreyFilters(frame.Shared);
+  this->NoteUncastVolumes(frame.Shared);
   this->GatherScene(frame);
   this->PlanMaps(frame);
   this->PlanSamples(frame);

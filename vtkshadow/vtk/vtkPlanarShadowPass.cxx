@@ -230,6 +230,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   Frame frame(this->BeginFrame(s));
   // One value per light: a filter's colour comes out grey.
   this->NoteGreyFilters(frame.Shared);
+  this->NoteUncastVolumes(frame.Shared);
   // The mask matches the viewport pixel for pixel.
   std::copy_n(frame.Shared.Origin, 2, impl.MaskOrigin);
   for (const vtkshadow::ShadowFrameLight& light : frame.Shared.Lights)

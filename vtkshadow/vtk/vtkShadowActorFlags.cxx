@@ -17,6 +17,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShadowPassBase.h"
+#include "vtkVolume.h"
 
 #include "vsh_mat4.h"
 
@@ -188,6 +189,26 @@ bool CasterTransmit(const ShadowActor& a, double transmit[3])
 std::vector<ShadowActor> TranslucentShadowActors(vtkRenderer* renderer)
 {
   return RendererActors(renderer, true);
+}
+
+//------------------------------------------------------------------------------
+bool HasVisibleVolumes(vtkRenderer* renderer)
+{
+  vtkPropCollection* props = renderer ? renderer->GetViewProps() : nullptr;
+  if (!props)
+  {
+    return false;
+  }
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility() && vtkVolume::SafeDownCast(prop))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------

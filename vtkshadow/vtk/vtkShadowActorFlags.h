@@ -124,6 +124,11 @@ bool CasterTransmit(const ShadowActor& actor, double transmit[3]);
 // per light draw it grey, auto gives its lights raytrace.
 bool HasTintingCaster(vtkRenderer* renderer, vtkInformationIntegerKey* noCast);
 
+// Whether the renderer shows a vtkVolume (volume rendering): raytrace casts
+// its shadow (vtkShadowVolumeCasters), the other techniques say per light
+// that they do not, and auto gives its lights raytrace.
+bool HasVisibleVolumes(vtkRenderer* renderer);
+
 // The property keys that decide `key` for a shadow actor: its own when they
 // carry the key, else its root prop's (VTK's assemblies hand their keys to
 // their parts while drawing them, so marking the assembly marks every part);

@@ -156,6 +156,19 @@ void vtkShadowPassBase::AddLightNote(int light, const std::string& note)
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowPassBase::NoteUncastVolumes(const vtkshadow::ShadowFrame& frame)
+{
+  const bool volumes = vtkshadow::HasVisibleVolumes(frame.Renderer);
+  for (size_t l = 0; volumes && l < frame.Lights.size(); ++l)
+  {
+    if (frame.Lights[l].Casts)
+    {
+      this->AddLightNote(static_cast<int>(l), "volumes cast no shadow (raytrace casts them)");
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowPassBase::NoteGreyFilters(const vtkshadow::ShadowFrame& frame)
 {
   const bool tinted = vtkshadow::HasTintingCaster(frame.Renderer, NO_CAST());

@@ -308,6 +308,9 @@ protected:
   void AddLightNote(int light, const std::string& note);
 #ifndef __VTK_WRAP__
   void NoteGreyFilters(const vtkshadow::ShadowFrame& frame);
+  // On every casting light, that the frame's volumes (vtkVolume) cast no
+  // shadow here (raytrace casts them), when it has any.
+  void NoteUncastVolumes(const vtkshadow::ShadowFrame& frame);
 #endif
   std::vector<std::string> LightNotes;
 

@@ -327,6 +327,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   Frame frame(this->BeginFrame(s));
   // One value per light: a filter's colour comes out grey.
   this->NoteGreyFilters(frame.Shared);
+  this->NoteUncastVolumes(frame.Shared);
   this->SetUpFrame(s, frame);
   impl.LightCount = std::min(static_cast<int>(frame.Shared.Lights.size()), MaxLights);
   this->LightsInViewCoordinates(s->GetRenderer(), frame);
