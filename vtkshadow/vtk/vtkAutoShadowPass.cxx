@@ -16,6 +16,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPlanarShadowPass.h"
 #include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRayTracedShadowPass.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -584,6 +585,21 @@ double vtkAutoShadowPass::ThinnestCasterPixels(vtkRenderer* renderer)
       continue;
     }
     const vtkshadow::ShadowActor& actor = impl.Actors[i];
+    // Spheres and tubes are as wide on screen as VTK draws them: the point
+    // size or line width in pixels, whatever their distance.
+    if (vtkshadow::DrawsImpostors(actor.Actor))
+    {
+      vtkProperty* property = actor.Actor->GetProperty();
+      if (property->GetRenderPointsAsSpheres())
+      {
+        thinnest = std::min(thinnest, double(property->GetPointSize()));
+      }
+      if (property->GetRenderLinesAsTubes() && property->GetLineWidth() > 1.0)
+      {
+        thinnest = std::min(thinnest, double(property->GetLineWidth()));
+      }
+      continue;
+    }
     const double width = impl.For(actor.Actor).Geometry.GetThinnestWidth();
     const double pixel = this->PixelWorldSize(renderer, o.center);
     if (!std::isfinite(width) || !(pixel > 0.0))
