@@ -157,7 +157,7 @@ static void test_meshes(void) {
   vsh_scene_free(s);
 }
 
-/* "mirror": R on planes; absent means no mirror (R = 0), 0 and 1 are valid. */
+/* "opacity" and "filter": a translucent sphere and a red filter slab. */
 static void test_translucent(void) {
   char err[VSH_SCENE_ERROR_MAX];
   vsh_scene *s = NULL;
@@ -176,6 +176,7 @@ static void test_translucent(void) {
   vsh_scene_free(s);
 }
 
+/* "mirror": R on planes; absent means no mirror (R = 0), 0 and 1 are valid. */
 static void test_mirror(void) {
   char err[VSH_SCENE_ERROR_MAX];
   vsh_scene *s = NULL;
