@@ -1012,9 +1012,11 @@ int vtkAutoShadowPass::VolumeInputs(
 //------------------------------------------------------------------------------
 int vtkAutoShadowPass::TranslucentCasters(vtkRenderer* renderer) const
 {
-  // Translucent actors are not in auto's objects (no technique here casts
-  // them); the volume pass skips them too, so volumes cannot promise their
-  // shadows: each one that casts counts as unsupported.
+  // The volume pass casts a translucent actor by the volumes of every one
+  // of its faces (its crossings), a cost volume's model (silhouette edges
+  // and fill) does not weigh: 16x the unshadowed frame on the translucent
+  // isosurface (docs/translucency.md, "Cost"). Until it does, each
+  // translucent caster counts as unsupported, so auto does not pick volume.
   int count = 0;
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
