@@ -248,11 +248,11 @@ void vtkAutoShadowPass::ChooseRaytraceOnly(const vtkshadow::ShadowFrame& frame)
   // never the answer for a visible volume); one pass for them all keeps
   // the volume/raytrace mask clash away.
   std::string why;
-  if (vtkshadow::HasTintingCaster(frame.Renderer, NO_CAST()))
+  if (vtkshadow::HasTintingCaster(frame.Translucent, NO_CAST()))
   {
     why = "a translucent caster's filter tints the shadow, which only raytrace draws in colour";
   }
-  else if (vtkshadow::HasVisibleVolumes(frame.Renderer))
+  else if (frame.ShowsVolumes)
   {
     why = "a volume (vtkVolume) casts, which only raytrace draws";
   }
@@ -292,7 +292,7 @@ void vtkAutoShadowPass::GatherObjects(const vtkshadow::ShadowFrame& frame)
   // caster is translucent still has something that casts. They are never
   // planar receivers.
   impl.Actors = frame.Drawn;
-  for (const vtkshadow::ShadowActor& translucent : vtkshadow::TranslucentShadowActors(renderer))
+  for (const vtkshadow::ShadowActor& translucent : frame.Translucent)
   {
     impl.Actors.push_back(translucent);
   }

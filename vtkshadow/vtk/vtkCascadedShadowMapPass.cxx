@@ -487,8 +487,7 @@ void vtkCascadedShadowMapPass::GatherScene(Frame& frame)
   // those drawn as surfaces cast, as under raytrace. Every translucent
   // actor receives on its own fragments (the forward lookups), so the maps
   // cover it as a receiver.
-  for (const vtkshadow::ShadowActor& shadowActor :
-    vtkshadow::TranslucentShadowActors(shared.Renderer))
+  for (const vtkshadow::ShadowActor& shadowActor : shared.Translucent)
   {
     vsh_bounds ab;
     vsh_bounds_from_vtk(&ab, shadowActor.Bounds);

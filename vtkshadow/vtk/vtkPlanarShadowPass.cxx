@@ -245,7 +245,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   // Translucent actors receive on their own fragments too: a flat one is a
   // receiver like an opaque one (marked, or detected).
   std::vector<vtkshadow::ShadowActor> receivers = frame.Shared.Drawn;
-  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(renderer))
+  for (const vtkshadow::ShadowActor& a : frame.Shared.Translucent)
   {
     receivers.push_back(a);
   }

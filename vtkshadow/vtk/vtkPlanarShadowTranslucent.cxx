@@ -44,8 +44,7 @@ void vtkPlanarShadowPass::GatherTranslucentCasters(Frame& frame)
   // The renderer's translucent actors that cast (as the opaque casters:
   // not NO_CAST, drawn as surfaces). Opacity 0 lets all the light through:
   // such an actor draws nothing.
-  for (const vtkshadow::ShadowActor& actor :
-    vtkshadow::TranslucentShadowActors(frame.Shared.Renderer))
+  for (const vtkshadow::ShadowActor& actor : frame.Shared.Translucent)
   {
     const double opacity = vtkshadow::CasterOpacity(actor.Actor);
     if (opacity > 0.0 && vtkshadow::CastsAsSurface(actor, NO_CAST()))

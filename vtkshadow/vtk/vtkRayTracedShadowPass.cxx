@@ -351,7 +351,7 @@ void vtkRayTracedShadowPass::GatherFrame(Frame& frame)
   // Translucent actors cast partial shadows with their opacity, tinted by
   // their filter (docs/translucency.md); they receive on the translucent
   // layer (TraceTranslucentLayer).
-  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(shared.Renderer))
+  for (const vtkshadow::ShadowActor& a : shared.Translucent)
   {
     if (!vtkshadow::HasFlag(a, NO_CAST()))
     {

@@ -212,9 +212,9 @@ bool HasVisibleVolumes(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-bool HasTintingCaster(vtkRenderer* renderer, vtkInformationIntegerKey* noCast)
+bool HasTintingCaster(const std::vector<ShadowActor>& translucent, vtkInformationIntegerKey* noCast)
 {
-  for (const ShadowActor& a : TranslucentShadowActors(renderer))
+  for (const ShadowActor& a : translucent)
   {
     double transmit[3];
     if (CastsAsSurface(a, noCast) && CasterTransmit(a, transmit))

@@ -119,10 +119,12 @@ double CasterOpacity(vtkActor* actor);
 // differ), i.e. whether grey visibility would be wrong for it.
 bool CasterTransmit(const ShadowActor& actor, double transmit[3]);
 
-// Whether a translucent actor of the renderer casts (not `noCast`, drawn as
-// a surface) a tinted shadow (CasterTransmit): techniques with one value
-// per light draw it grey, auto gives its lights raytrace.
-bool HasTintingCaster(vtkRenderer* renderer, vtkInformationIntegerKey* noCast);
+// Whether one of `translucent` (TranslucentShadowActors, a frame's
+// Translucent) casts (not `noCast`, drawn as a surface) a tinted shadow
+// (CasterTransmit): techniques with one value per light draw it grey, auto
+// gives its lights raytrace.
+bool HasTintingCaster(
+  const std::vector<ShadowActor>& translucent, vtkInformationIntegerKey* noCast);
 
 // Whether the renderer shows a vtkVolume (volume rendering): raytrace casts
 // its shadow (vtkShadowVolumeCasters), the other techniques say per light

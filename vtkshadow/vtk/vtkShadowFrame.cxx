@@ -63,9 +63,11 @@ void GatherShadowFrame(const vtkRenderState* s, bool actors, ShadowFrame& frame)
   {
     frame.Lights.push_back(GatherLight(light));
   }
+  frame.ShowsVolumes = HasVisibleVolumes(renderer);
   frame.HasActors = false;
   frame.Drawn.clear();
   frame.Actors.clear();
+  frame.Translucent.clear();
   if (actors)
   {
     GatherShadowFrameActors(s, frame);
@@ -77,6 +79,7 @@ void GatherShadowFrameActors(const vtkRenderState* s, ShadowFrame& frame)
 {
   frame.Drawn = ShadowActors(s);
   frame.Actors = ShadowActors(s->GetRenderer());
+  frame.Translucent = TranslucentShadowActors(s->GetRenderer());
   frame.HasActors = true;
 }
 }

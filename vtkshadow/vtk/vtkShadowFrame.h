@@ -71,10 +71,15 @@ struct ShadowFrame
   // Shadow actors (ShadowActors): Drawn from the render state (frustum
   // culled: what the frame draws, the receivers), Actors from the renderer's
   // props (casters: one behind the camera still shadows the view). Only
-  // gathered when HasActors.
+  // gathered when HasActors; so is Translucent (TranslucentShadowActors:
+  // the translucent actors every technique casts and lets receive).
   bool HasActors = false;
   std::vector<ShadowActor> Drawn;
   std::vector<ShadowActor> Actors;
+  std::vector<ShadowActor> Translucent;
+  // Whether the renderer shows a vtkVolume (HasVisibleVolumes): only
+  // raytrace casts it, the others say so per light.
+  bool ShowsVolumes = false;
 };
 
 /**

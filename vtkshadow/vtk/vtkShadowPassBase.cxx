@@ -158,8 +158,7 @@ void vtkShadowPassBase::AddLightNote(int light, const std::string& note)
 //------------------------------------------------------------------------------
 void vtkShadowPassBase::NoteUncastVolumes(const vtkshadow::ShadowFrame& frame)
 {
-  const bool volumes = vtkshadow::HasVisibleVolumes(frame.Renderer);
-  for (size_t l = 0; volumes && l < frame.Lights.size(); ++l)
+  for (size_t l = 0; frame.ShowsVolumes && l < frame.Lights.size(); ++l)
   {
     if (frame.Lights[l].Casts)
     {
@@ -171,7 +170,7 @@ void vtkShadowPassBase::NoteUncastVolumes(const vtkshadow::ShadowFrame& frame)
 //------------------------------------------------------------------------------
 void vtkShadowPassBase::NoteGreyFilters(const vtkshadow::ShadowFrame& frame)
 {
-  const bool tinted = vtkshadow::HasTintingCaster(frame.Renderer, NO_CAST());
+  const bool tinted = vtkshadow::HasTintingCaster(frame.Translucent, NO_CAST());
   for (size_t l = 0; tinted && l < frame.Lights.size(); ++l)
   {
     if (frame.Lights[l].Casts)

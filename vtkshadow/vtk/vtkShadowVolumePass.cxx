@@ -280,7 +280,7 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
   this->Impl->Proxies.Append(shared, shared.Actors, frame.Casters);
   // Translucent actors cast as the opaque ones do (not NO_CAST, drawn as
   // surfaces); opacity 0 lets all the light through.
-  for (const vtkshadow::ShadowActor& a : vtkshadow::TranslucentShadowActors(shared.Renderer))
+  for (const vtkshadow::ShadowActor& a : shared.Translucent)
   {
     const double opacity = vtkshadow::CasterOpacity(a.Actor);
     if (opacity > 0.0 && vtkshadow::CastsAsSurface(a, vtkShadowPassBase::NO_CAST()))
