@@ -46,6 +46,10 @@
 #               float64 x 3*point_count  points
 #               float64 x 3*point_count  normals
 #               int32   x 3*triangle_count  triangles
+#   optional trailer (scenes with volumes only): 4 bytes b"VOLS", int32 count,
+#   per volume: float64 x5  centre[3], radius, density; int32 casts. The
+#               extinction density * max(0, 1 - |p - centre| / radius) per
+#               unit length (docs/scene-format.md, "volume").
 import math
 import os
 import struct
@@ -108,9 +112,16 @@ def read_data(path):
         nrm = take_array("d", 3 * npts)
         tri = take_array("i", 3 * ntri)
         objects.append((npts, ntri, casts, pts, nrm, tri, colour, (opacity, filt)))
+    volumes = []
+    if pos < len(data) and take("<4s")[0] == b"VOLS":
+        for _ in range(take("<i")[0]):
+            volume = take("<5d") + take("<i")
+            if not (volume[3] > 0.0 and volume[4] > 0.0 and all(map(math.isfinite, volume))):
+                fail("%s: bad volume %r" % (path, volume))
+            volumes.append(volume)
     if pos != len(data):
         fail("%s: trailing bytes" % path)
-    return width, height, (samples, seed, centre), camera, clip, lights, objects
+    return width, height, (samples, seed, centre), camera, clip, lights, objects, volumes
 
 
 def frame_from_axis(z_axis):
@@ -552,6 +563,72 @@ def add_mesh(scene, index, obj_data, preset, colour, materials):
     scene.collection.objects.link(obj)
 
 
+def add_volume(scene, index, volume):
+    """A volume (harness_export.h ExportVolume): a closed sphere slightly
+    larger than the density's support, with no surface shader (shadow rays
+    cross its boundary) and a Volume Absorption of colour 0, whose
+    extinction is its density (Cycles absorbs density * (1 - colour)):
+    density * max(0, 1 - |p - centre| / radius) from the world position.
+    The camera does not see it (POV-Ray's no_image; vtkShadowScene draws it
+    black in the visibility renders)."""
+    cx, cy, cz, radius, density, casts = volume
+    nlon, nlat, r = 64, 32, 1.01 * radius
+    verts = [(cx, cy, cz + r)]
+    for i in range(1, nlat):
+        phi = math.pi * i / nlat
+        for j in range(nlon):
+            theta = 2.0 * math.pi * j / nlon
+            verts.append((cx + r * math.sin(phi) * math.cos(theta),
+                          cy + r * math.sin(phi) * math.sin(theta), cz + r * math.cos(phi)))
+    verts.append((cx, cy, cz - r))
+    faces, south = [], len(verts) - 1
+    for j in range(nlon):
+        j1 = (j + 1) % nlon
+        faces.append((0, 1 + j, 1 + j1))
+        for i in range(nlat - 2):
+            a, b = 1 + i * nlon, 1 + (i + 1) * nlon
+            faces.append((a + j, b + j, b + j1, a + j1))
+        faces.append((1 + (nlat - 2) * nlon + j, south, 1 + (nlat - 2) * nlon + j1))
+    mesh = bpy.data.meshes.new("v%d" % index)
+    mesh.from_pydata(verts, [], faces)
+    mat = bpy.data.materials.new("volume%d" % index)
+    mat.use_nodes = True
+    nodes, links = mat.node_tree.nodes, mat.node_tree.links
+    nodes.clear()
+    geometry = nodes.new("ShaderNodeNewGeometry")
+    distance = nodes.new("ShaderNodeVectorMath")
+    distance.operation = "DISTANCE"
+    distance.inputs[1].default_value = (cx, cy, cz)
+    links.new(geometry.outputs["Position"], distance.inputs[0])
+    profile = nodes.new("ShaderNodeMath")  # 1 - d / radius = d * (-1 / radius) + 1
+    profile.operation = "MULTIPLY_ADD"
+    profile.inputs[1].default_value = -1.0 / radius
+    profile.inputs[2].default_value = 1.0
+    links.new(distance.outputs["Value"], profile.inputs[0])
+    clamp = nodes.new("ShaderNodeMath")
+    clamp.operation = "MAXIMUM"
+    clamp.inputs[1].default_value = 0.0
+    links.new(profile.outputs["Value"], clamp.inputs[0])
+    scaled = nodes.new("ShaderNodeMath")
+    scaled.operation = "MULTIPLY"
+    scaled.inputs[1].default_value = density
+    links.new(clamp.outputs["Value"], scaled.inputs[0])
+    absorb = nodes.new("ShaderNodeVolumeAbsorption")
+    absorb.inputs["Color"].default_value = (0.0, 0.0, 0.0, 1.0)
+    links.new(scaled.outputs["Value"], absorb.inputs["Density"])
+    out = nodes.new("ShaderNodeOutputMaterial")
+    links.new(absorb.outputs["Volume"], out.inputs["Volume"])
+    # Steps of a fiftieth of the default (a tenth of the object's size):
+    # about 500 across the blob, so the march's error is far below 1e-3.
+    mat.cycles.volume_step_rate = 0.02
+    mat.cycles.homogeneous_volume = False
+    mesh.materials.append(mat)
+    obj = bpy.data.objects.new("volume%d" % index, mesh)
+    obj.visible_camera = False
+    obj.visible_shadow = bool(casts)
+    scene.collection.objects.link(obj)
+
+
 def add_camera(scene, camera, depth):
     """Camera: columns (r, u, -f, E), vertical sensor fit."""
     eye = Vector(camera[0:3])
@@ -575,7 +652,7 @@ def add_camera(scene, camera, depth):
 
 def main():
     datafile, outdir, preset, colour = parse_arguments()
-    width, height, samples, camera, clip, lights, objects = read_data(datafile)
+    width, height, samples, camera, clip, lights, objects, volumes = read_data(datafile)
     if colour:
         # (samples, seed, pixel centre): many samples, all at the pixel centre.
         samples = (COLOR_SAMPLES, samples[1], 1)
@@ -585,6 +662,9 @@ def main():
     materials = {}
     for index, obj_data in enumerate(objects):
         add_mesh(scene, index, obj_data, preset, colour, materials)
+    for index, volume in enumerate(volumes):
+        add_volume(scene, index, volume)
+    scene.cycles.volume_max_steps = 4096
     add_camera(scene, camera, depth)
     exr = os.path.join(outdir, "render.exr")
     if colour:

@@ -27,6 +27,18 @@ struct ExportObject
   double filter = 0;             // of that, the fraction tinted by `color`
 };
 
+// A volume-rendered blob (the scene format's "volume"): extinction
+// density * max(0, 1 - |p - center| / radius) per unit length, in the
+// normalized frame (radius scaled, density divided by the scale). The camera
+// does not see it in the visibility renders; shadow rays lose exp(-integral).
+struct ExportVolume
+{
+  double center[3];
+  double radius = 1;
+  double density = 0;
+  bool casts = true;
+};
+
 struct ExportLight
 {
   int type = 0;       // 0 directional, 1 point, 2 spot
@@ -56,6 +68,7 @@ struct ExportScene
   double bounds_diagonal = 1;
   std::vector<ExportLight> lights;
   std::vector<ExportObject> objects;
+  std::vector<ExportVolume> volumes;
   bool has_mirror = false; // some object has mirror > 0: the colour renders run
   // Some object has opacity < 1 and filter > 0: its shadow is tinted, so
   // every renderer also gives the green and blue channels' visibility.

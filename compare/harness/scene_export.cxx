@@ -139,6 +139,22 @@ ExportLight ExportOneLight(const vsh_light& L, const ExportScene& ex)
   return el;
 }
 
+// A volume in the normalized frame; grows the bounds lo/hi by its box.
+ExportVolume ExportOneVolume(const vsh_object& o, const ExportScene& ex, double lo[3], double hi[3])
+{
+  ExportVolume v;
+  v.radius = o.radius * ex.scale;
+  v.density = o.density / ex.scale; // an optical depth is density * length
+  v.casts = o.casts != 0;
+  for (int j = 0; j < 3; ++j)
+  {
+    v.center[j] = (o.center[j] - ex.anchor[j]) * ex.scale;
+    lo[j] = std::min(lo[j], v.center[j] - v.radius);
+    hi[j] = std::max(hi[j], v.center[j] + v.radius);
+  }
+  return v;
+}
+
 } // namespace
 
 bool BuildExport(vtkShadowScene* vs, const vsh_scene* s, int w, int h, ExportScene& ex)
@@ -164,6 +180,9 @@ bool BuildExport(vtkShadowScene* vs, const vsh_scene* s, int w, int h, ExportSce
     if (!eo.triangles.empty())
       ex.objects.push_back(std::move(eo));
   }
+  for (size_t i = 0; i < s->object_count; ++i)
+    if (s->objects[i].kind == VSH_OBJECT_VOLUME)
+      ex.volumes.push_back(ExportOneVolume(s->objects[i], ex, lo, hi));
   double diag = 0;
   for (int j = 0; j < 3; ++j)
   {

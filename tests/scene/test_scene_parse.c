@@ -4,7 +4,9 @@
 #include "vsh_check.h"
 #include "vsh_scene.h"
 
+#include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 static const char *data_dir = ".";
 
@@ -197,6 +199,37 @@ static void test_mirror(void) {
   vsh_scene_free(s);
 }
 
+/* Points and polylines get the world radius of VTK's impostor at each
+ * position (pixels / 2 at its depth, at the scene's size); a volume keeps
+ * its fields. */
+static void test_primitives(void) {
+  char err[VSH_SCENE_ERROR_MAX];
+  vsh_scene *s = NULL;
+  int rc = vsh_scene_load(data("good/primitives.json"), &s, err, sizeof err);
+  CHECK(rc == 0);
+  if (rc) {
+    fprintf(stderr, "unexpected error: %s\n", err);
+    return;
+  }
+  CHECK(s->object_count == 4);
+  if (s->object_count == 4) {
+    const vsh_object *p = &s->objects[0], *l = &s->objects[1], *v = &s->objects[2];
+    /* one pixel at depth d is 2 d tan(45) / 100 = d / 50 wide */
+    CHECK(p->kind == VSH_OBJECT_POINTS && p->position_count == 2 && p->pixels == 20);
+    CHECK(fabs(p->radii[0] - 10.0 * 10.0 / 50.0) < 1e-12); /* depth 10: 10 px of d/50 */
+    CHECK(fabs(p->radii[1] - 10.0 * 5.0 / 50.0) < 1e-12);  /* depth 5 */
+    CHECK(p->positions[3] == 3 && p->positions[4] == 1 && p->positions[5] == 5);
+    CHECK(p->resolution == 24); /* default */
+    CHECK(l->kind == VSH_OBJECT_POLYLINE && l->position_count == 3 && l->resolution == 16);
+    CHECK(fabs(l->radii[0] - 5.0 * 10.0 / 50.0) < 1e-12);
+    CHECK(fabs(l->radii[2] - 5.0 * 5.0 / 50.0) < 1e-12);
+    CHECK(v->kind == VSH_OBJECT_VOLUME && v->radius == 1.5 && v->density == 2);
+    CHECK(v->samples == 64 && v->center[2] == 2);
+    CHECK(strcmp(vsh_object_kind_name(v->kind), "volume") == 0);
+  }
+  vsh_scene_free(s);
+}
+
 /* One file per rule: the message must start with the file name and contain
  * the field path, the problem and the offending value. */
 typedef struct bad_case {
@@ -297,6 +330,24 @@ static const bad_case bad_cases[] = {
     {"trailing_text", ": line 2 column 1: invalid JSON (text after the end)", NULL},
     {"infinite_number", ": objects[0].sphere.radius: must be a finite number (got inf)", NULL},
     {"duplicate_field", ": objects[0].sphere.radius: duplicate field", NULL},
+    {"points_size_zero", ": objects[0].points.point_size: must be in (0, 4096] pixels (got 0)",
+     NULL},
+    {"points_behind_camera", ": objects[0].points.positions[1]: not in front of the camera",
+     "(got [0, -9, 2])"},
+    {"points_empty", ": objects[0].points.positions: needs at least 1 positions (got [])", NULL},
+    {"points_position_length",
+     ": objects[0].points.positions[0]: expected an array of 3 numbers (got [0, 0])", NULL},
+    {"points_transform", ": objects[0].transform: not supported for a points", NULL},
+    {"polyline_one_point", ": objects[0].polyline.points: needs at least 2 positions", NULL},
+    {"polyline_repeated", ": objects[0].polyline.points[2]: equal to the point before it",
+     "(got [1, 0, 1])"},
+    {"polyline_width_missing", ": objects[0].polyline.line_width: missing required field", NULL},
+    {"volume_density_zero", ": objects[0].volume.density: must be > 0 with density * radius <= 50",
+     "(got 0)"},
+    {"volume_too_dense", ": objects[0].volume.density: must be > 0 with density * radius <= 50",
+     "(got 30)"},
+    {"volume_samples", ": objects[0].volume.samples: must be in 8..512 (got 4)", NULL},
+    {"volume_opacity", ": objects[0].opacity: not supported for a volume", "(got 0.5)"},
 };
 
 static void test_bad_files(void) {
@@ -443,6 +494,7 @@ int main(int argc, char **argv) {
   test_meshes();
   test_mirror();
   test_translucent();
+  test_primitives();
   test_bad_files();
   test_light_sizes();
   test_load_errors();

@@ -382,6 +382,62 @@ static void test_extreme_scales(void) {
   }
 }
 
+/* Points: one closed outward sphere per position, of its radius; a
+ * polyline adds an outward frustum per segment whose ends have the
+ * vertices' radii. */
+static void test_impostor_solids(void) {
+  double pos[9] = {0, 0, 0, 4, 0, 0, 4, 3, 0}, radii[3] = {1, 0.5, 0.25};
+  vsh_object o = make(VSH_OBJECT_POINTS);
+  vsh_mesh m;
+  stats st;
+  size_t i, near_a = 0, near_b = 0;
+  o.positions = pos;
+  o.radii = radii;
+  o.position_count = 3;
+  o.resolution = 32;
+  CHECK(vsh_object_tessellate(&o, &m) == 0);
+  st = measure(&m);
+  CHECK(st.indices_ok && st.min_orientation > 0.9 && st.max_normal_error < 1e-12);
+  /* three inscribed UV spheres: just under the sum of the balls' volumes */
+  {
+    const double balls = 4.0 / 3.0 * PI * (1 + 0.125 + 0.015625);
+    CHECK(st.volume < balls && st.volume > 0.97 * balls);
+  }
+  for (i = 0; i < m.point_count; ++i) {
+    const double *p = m.points + 3 * i;
+    double d0 = len(p), q[3] = {p[0] - 4, p[1], p[2]};
+    if (fabs(d0 - 1) < 1e-12) ++near_a;
+    if (fabs(len(q) - 0.5) < 1e-12) ++near_b;
+  }
+  CHECK(near_a > 0 && near_b > 0 && near_a + near_b < m.point_count);
+  vsh_mesh_free(&m);
+
+  o.kind = VSH_OBJECT_POLYLINE;
+  CHECK(vsh_object_tessellate(&o, &m) == 0);
+  st = measure(&m);
+  CHECK(st.indices_ok && st.min_orientation > 0.5 && st.max_normal_error < 1e-12);
+  {
+    /* the frustums (sides only, their ends lie inside the balls): 2 rings of
+     * 32 per segment, the first ring on the circle of radius 1 around the
+     * first vertex, the last on the circle of 0.25 around the last */
+    const size_t balls = 3 * (2 + 15 * 32);
+    const double *first = m.points + 3 * balls, *last = m.points + 3 * (m.point_count - 1);
+    double q[3] = {last[0] - 4, last[1] - 3, last[2]};
+    CHECK(m.point_count == balls + 2 * 2 * 32);
+    CHECK(fabs(len(first) - 1) < 1e-12 && fabs(first[0]) < 1e-12);
+    CHECK(fabs(len(q) - 0.25) < 1e-12 && fabs(q[1]) < 1e-12);
+  }
+  vsh_mesh_free(&m);
+
+  /* a zero-length segment has no frustum axis */
+  pos[3] = pos[0];
+  pos[4] = pos[1];
+  pos[5] = pos[2];
+  CHECK(vsh_object_tessellate(&o, &m) != 0);
+  o.kind = VSH_OBJECT_VOLUME; /* no surface */
+  CHECK(vsh_object_tessellate(&o, &m) != 0);
+}
+
 static void test_refusals(void) {
   vsh_object o = make(VSH_OBJECT_MESH);
   vsh_mesh m;
@@ -403,6 +459,7 @@ int main(void) {
   test_cylinder();
   test_transform();
   test_extreme_scales();
+  test_impostor_solids();
   test_refusals();
   return vsh_check_report("scene.tessellate");
 }

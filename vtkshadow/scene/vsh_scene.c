@@ -71,6 +71,8 @@ static void free_object(vsh_object *o) {
   free(o->mesh_path);
   free(o->mesh_resolved_path);
   free(o->name);
+  free(o->positions);
+  free(o->radii);
 }
 
 void vsh_scene_free(vsh_scene *scene) {
@@ -103,6 +105,9 @@ const char *vsh_object_kind_name(vsh_object_kind kind) {
   case VSH_OBJECT_BOX: return "box";
   case VSH_OBJECT_CYLINDER: return "cylinder";
   case VSH_OBJECT_MESH: return "mesh";
+  case VSH_OBJECT_POINTS: return "points";
+  case VSH_OBJECT_POLYLINE: return "polyline";
+  case VSH_OBJECT_VOLUME: return "volume";
   }
   return "unknown";
 }

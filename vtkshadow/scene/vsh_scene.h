@@ -48,7 +48,12 @@ typedef enum vsh_object_kind {
   VSH_OBJECT_PLANE = 1,
   VSH_OBJECT_BOX = 2,
   VSH_OBJECT_CYLINDER = 3,
-  VSH_OBJECT_MESH = 4
+  VSH_OBJECT_MESH = 4,
+  /* What VTK draws as screen-space solids (docs/scene-format.md, "points",
+   * "polyline") and a volume-rendered blob ("volume"). */
+  VSH_OBJECT_POINTS = 5,
+  VSH_OBJECT_POLYLINE = 6,
+  VSH_OBJECT_VOLUME = 7
 } vsh_object_kind;
 
 typedef struct vsh_object {
@@ -63,6 +68,18 @@ typedef struct vsh_object {
   double min[3], max[3];
   /* cylinder: capped, from base centre to top centre */
   double base[3], top[3];
+  /* points (drawn as spheres) and polyline (drawn as a tube): world positions,
+   * and the world radius VTK's impostor has at each, pixels / 2 of the
+   * scene's image at that depth (vsh_impostor_world_radius); pixels is
+   * "point_size" or "line_width" at the scene's "size". */
+  double *positions; /* 3 * position_count */
+  double *radii;     /* position_count */
+  size_t position_count;
+  double pixels;
+  /* volume: extinction density * max(0, 1 - |p - center| / radius) per world
+   * unit (center, radius above), sampled on `samples`^3 grid points. */
+  double density;
+  int samples;
   /* mesh: path as written in the file, and resolved against the scene's folder */
   char *mesh_path;
   char *mesh_resolved_path;
@@ -121,7 +138,18 @@ typedef struct vsh_mesh {
   size_t triangle_count;
 } vsh_mesh;
 
-/* Tessellate a primitive object (not VSH_OBJECT_MESH) with its transform applied.
+/* The world radius of VTK's sphere or tube impostor of `pixels` pixels
+ * across at world point p, seen by the scene's camera at the scene's size:
+ * pixels * d * tan(view_angle / 2) / height, d the distance of p along the
+ * view direction (VTK draws the impostor `pixels` wide on screen, so it is
+ * as wide in world units as `pixels` pixels are at its depth). 0 when p is
+ * not in front of the camera. */
+double vsh_impostor_world_radius(const vsh_scene *scene, double pixels, const double p[3]);
+
+/* Tessellate a primitive object (not VSH_OBJECT_MESH or VSH_OBJECT_VOLUME:
+ * a volume has no surface) with its transform applied. points: a sphere of
+ * its radius at every position; polyline: a sphere at every vertex and a
+ * cone frustum along every segment (the solid VTK's tube impostor shows).
  * Returns 0 on success, non-zero on allocation failure or a mesh object. */
 int vsh_object_tessellate(const vsh_object *object, vsh_mesh *out);
 /* Apply a row-major affine transform to points (and inverse-transpose to normals). */

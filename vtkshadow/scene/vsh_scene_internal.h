@@ -71,8 +71,27 @@ char *vsh__strdup(const char *s);
 
 /* Reads objects[index] into *out (which the caller zeroed). `scene_path` is
  * the scene file's path (may be NULL) used to resolve relative mesh paths. */
-int vsh__parse_object(const vsh_ctx *ctx, const cJSON *item, size_t index,
-                      const char *scene_path, vsh_object *out);
+int vsh__parse_object(const vsh_ctx *ctx, const vsh_scene *scene, const cJSON *item,
+                      size_t index, const char *scene_path, vsh_object *out);
+
+/* ---- vsh_scene_primitives.c --------------------------------------------- */
+
+/* "points", "polyline" (radii from the scene's camera and size, which are
+ * parsed first) and "volume". */
+int vsh__parse_points(const vsh_ctx *ctx, const vsh_scene *scene, const cJSON *shape,
+                      const char *field, vsh_object *o);
+int vsh__parse_polyline(const vsh_ctx *ctx, const vsh_scene *scene, const cJSON *shape,
+                        const char *field, vsh_object *o);
+int vsh__parse_volume(const vsh_ctx *ctx, const cJSON *shape, const char *field, vsh_object *o);
+
+/* ---- vsh_tessellate_impostors.c ----------------------------------------- */
+
+/* points: a sphere per position; polyline: a sphere per vertex and a cone
+ * frustum per segment. 0 on success. */
+int vsh__tessellate_points(const vsh_object *o, vsh_mesh *out);
+int vsh__tessellate_polyline(const vsh_object *o, vsh_mesh *out);
+/* The UV sphere of vsh_tessellate.c around center. */
+int vsh__sphere_mesh(const double center[3], double radius, int resolution, vsh_mesh *out);
 
 /* ---- vsh_mesh.c ----------------------------------------------------------- */
 

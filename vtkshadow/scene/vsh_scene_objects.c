@@ -20,10 +20,11 @@
 #define VSH_SINGULAR_RELATIVE_DET 1e-12
 #define VSH_SINGULAR_ABSOLUTE_DET 1e-300
 
-static const char *const object_keys[] = {"sphere",   "plane", "box",   "cylinder",  "mesh",
-                                          "receiver", "casts", "color", "name", "transform",
-                                          "mirror",   "opacity", "filter", NULL};
-static const char *const shape_keys[] = {"sphere", "plane", "box", "cylinder", "mesh", NULL};
+static const char *const object_keys[] = {
+    "sphere", "plane",     "box",    "cylinder", "mesh",    "points",  "polyline", "volume",
+    "receiver", "casts", "color", "name", "transform", "mirror", "opacity", "filter", NULL};
+static const char *const shape_keys[] = {"sphere", "plane",    "box",    "cylinder",
+                                         "mesh",   "points", "polyline", "volume", NULL};
 static const char *const sphere_keys[] = {"center", "radius", "resolution", NULL};
 static const char *const plane_keys[] = {"origin", "point1", "point2", NULL};
 static const char *const box_keys[] = {"min", "max", NULL};
@@ -265,8 +266,55 @@ static int parse_translucency(const vsh_ctx *ctx, const cJSON *obj, const char *
   return 0;
 }
 
-int vsh__parse_object(const vsh_ctx *ctx, const cJSON *obj, size_t index,
-                      const char *scene_path, vsh_object *o) {
+/* Points, polylines and volumes are given in world coordinates: their
+ * solids depend on the camera (impostors) or are sampled on an axis-aligned
+ * grid (volumes), which a transform would skew; they are opaque. */
+static int world_only(const vsh_ctx *ctx, const cJSON *obj, const char *f, const vsh_object *o) {
+  static const char *const keys[] = {"transform", "opacity", "filter", NULL};
+  char sub[VSH_FIELD_MAX], got[VSH_GOT_MAX];
+  const char *const *k;
+  for (k = keys; *k; ++k) {
+    const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, *k);
+    if (!item) continue;
+    vsh__field(sub, f, *k);
+    vsh__fmt_json(item, got, sizeof got);
+    return vsh__fail(ctx, sub, got, "not supported for a %s (give its positions in world "
+                     "coordinates; it is opaque)", vsh_object_kind_name(o->kind));
+  }
+  return 0;
+}
+
+static int parse_shape(const vsh_ctx *ctx, const vsh_scene *scene, const char *shape_key,
+                       const cJSON *shape, const char *sub, const char *scene_path,
+                       vsh_object *o) {
+  if (strcmp(shape_key, "sphere") == 0) {
+    o->kind = VSH_OBJECT_SPHERE;
+    return parse_sphere(ctx, shape, sub, o);
+  } else if (strcmp(shape_key, "plane") == 0) {
+    o->kind = VSH_OBJECT_PLANE;
+    return parse_plane(ctx, shape, sub, o);
+  } else if (strcmp(shape_key, "box") == 0) {
+    o->kind = VSH_OBJECT_BOX;
+    return parse_box(ctx, shape, sub, o);
+  } else if (strcmp(shape_key, "cylinder") == 0) {
+    o->kind = VSH_OBJECT_CYLINDER;
+    return parse_cylinder(ctx, shape, sub, o);
+  } else if (strcmp(shape_key, "points") == 0) {
+    o->kind = VSH_OBJECT_POINTS;
+    return vsh__parse_points(ctx, scene, shape, sub, o);
+  } else if (strcmp(shape_key, "polyline") == 0) {
+    o->kind = VSH_OBJECT_POLYLINE;
+    return vsh__parse_polyline(ctx, scene, shape, sub, o);
+  } else if (strcmp(shape_key, "volume") == 0) {
+    o->kind = VSH_OBJECT_VOLUME;
+    return vsh__parse_volume(ctx, shape, sub, o);
+  }
+  o->kind = VSH_OBJECT_MESH;
+  return parse_mesh(ctx, shape, sub, scene_path, o);
+}
+
+int vsh__parse_object(const vsh_ctx *ctx, const vsh_scene *scene, const cJSON *obj,
+                      size_t index, const char *scene_path, vsh_object *o) {
   char f[VSH_FIELD_MAX], sub[VSH_FIELD_MAX], got[VSH_GOT_MAX];
   const cJSON *shape = NULL, *item;
   const char *shape_key = NULL;
@@ -287,24 +335,11 @@ int vsh__parse_object(const vsh_ctx *ctx, const cJSON *obj, size_t index,
   }
   if (!shape)
     return vsh__fail(ctx, f, NULL,
-                     "missing shape: needs one of sphere, plane, box, cylinder, mesh");
+                     "missing shape: needs one of sphere, plane, box, cylinder, mesh, "
+                     "points, polyline, volume");
   vsh__field(sub, f, shape_key);
-  if (strcmp(shape_key, "sphere") == 0) {
-    o->kind = VSH_OBJECT_SPHERE;
-    if (parse_sphere(ctx, shape, sub, o)) return -1;
-  } else if (strcmp(shape_key, "plane") == 0) {
-    o->kind = VSH_OBJECT_PLANE;
-    if (parse_plane(ctx, shape, sub, o)) return -1;
-  } else if (strcmp(shape_key, "box") == 0) {
-    o->kind = VSH_OBJECT_BOX;
-    if (parse_box(ctx, shape, sub, o)) return -1;
-  } else if (strcmp(shape_key, "cylinder") == 0) {
-    o->kind = VSH_OBJECT_CYLINDER;
-    if (parse_cylinder(ctx, shape, sub, o)) return -1;
-  } else {
-    o->kind = VSH_OBJECT_MESH;
-    if (parse_mesh(ctx, shape, sub, scene_path, o)) return -1;
-  }
+  if (parse_shape(ctx, scene, shape_key, shape, sub, scene_path, o)) return -1;
+  if (o->kind >= VSH_OBJECT_POINTS && world_only(ctx, obj, f, o)) return -1;
 
   for (i = 0; i < 16; ++i) o->transform[i] = (i % 5 == 0) ? 1.0 : 0.0;
   if ((item = cJSON_GetObjectItemCaseSensitive(obj, "transform"))) {

@@ -282,7 +282,7 @@ static int parse_tree(const vsh_ctx *ctx, const cJSON *root, const char *path, v
   s->objects = (vsh_object *)calloc(s->object_count, sizeof *s->objects);
   if (!s->objects) return vsh__fail(ctx, "objects", NULL, "out of memory");
   for (i = 0, e = item->child; e; e = e->next, ++i)
-    if (vsh__parse_object(ctx, e, i, path, &s->objects[i])) return -1;
+    if (vsh__parse_object(ctx, s, e, i, path, &s->objects[i])) return -1;
   return 0;
 }
 

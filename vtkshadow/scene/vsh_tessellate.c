@@ -174,6 +174,15 @@ static int cylinder(const vsh_object *o, vsh_mesh *m) {
   return 0;
 }
 
+int vsh__sphere_mesh(const double center[3], double radius, int resolution, vsh_mesh *out) {
+  vsh_object o;
+  memset(&o, 0, sizeof o);
+  memcpy(o.center, center, sizeof o.center);
+  o.radius = radius;
+  o.resolution = resolution;
+  return sphere(&o, out);
+}
+
 int vsh_object_tessellate(const vsh_object *object, vsh_mesh *out) {
   int rc;
   if (!out) return -1;
@@ -184,7 +193,9 @@ int vsh_object_tessellate(const vsh_object *object, vsh_mesh *out) {
   case VSH_OBJECT_PLANE: rc = plane(object, out); break;
   case VSH_OBJECT_BOX: rc = box(object, out); break;
   case VSH_OBJECT_CYLINDER: rc = cylinder(object, out); break;
-  default: return -1; /* meshes are read by VTK in the C++ layer */
+  case VSH_OBJECT_POINTS: rc = vsh__tessellate_points(object, out); break;
+  case VSH_OBJECT_POLYLINE: rc = vsh__tessellate_polyline(object, out); break;
+  default: return -1; /* meshes are read by VTK in the C++ layer; a volume has no surface */
   }
   if (rc) {
     vsh_mesh_free(out);

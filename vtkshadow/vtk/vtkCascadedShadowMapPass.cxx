@@ -929,8 +929,9 @@ bool vtkCascadedShadowMapPass::PostReplaceShaderValues(
   {
     return true;
   }
+  const std::string surface = vtkshadow::SurfacePositionVC(fragmentShader);
   if (this->InjectLightFactors(fragmentShader, "vshShadowFactor[%d]",
-        "vshShadowPrepare(vertexVC.xyz, normalize(normalVCVSOutput));", MaxLights))
+        "vshShadowPrepare(" + surface + ", normalize(normalVCVSOutput));", MaxLights))
   {
     // The debug view tints the final colour by cascade.
     const std::string output = "gl_FragData[0] = vec4(ambientColor + diffuse + specular, opacity);";

@@ -58,6 +58,24 @@ std::string ResidualFactor(const std::string& factor, double residual)
   return "mix(vec3(" + literal + "), vec3(1.0), vec3(" + factor + "))";
 }
 
+std::string SurfacePositionVC(const std::string& fs)
+{
+  if (fs.find("uniform float ZCalcR") == std::string::npos)
+  {
+    return "vertexVC.xyz";
+  }
+  const std::string radius = "(ZCalcR * (cameraParallel == 0 ? -vertexVC.z : 1.0))";
+  if (fs.find("gl_PointCoord") != std::string::npos)
+  {
+    return "(vertexVC.xyz + normalize(normalVCVSOutput) * " + radius + ")";
+  }
+  if (fs.find("tubeBasis2") != std::string::npos)
+  {
+    return "(vertexVC.xyz + tubeBasis2 * lenZ * " + radius + ")";
+  }
+  return "vertexVC.xyz";
+}
+
 bool InjectLightFactors(std::string& fs, const std::string& factorExpression,
   const std::string& prepare, int maxLights, double residual)
 {

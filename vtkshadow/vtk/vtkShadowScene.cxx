@@ -3,6 +3,7 @@
 #include "vtkPlanarReflectionPass.h"
 #include "vtkShadowClippingRange.h"
 #include "vtkShadowDisplay.h"
+#include "vtkShadowScenePrimitives.h"
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
@@ -27,11 +28,13 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSTLReader.h"
 #include "vtkShadowPassBase.h"
 #include "vtkSmartPointer.h"
 #include "vtkTriangleFilter.h"
+#include "vtkVolume.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include "vsh_mesh_check.h"
@@ -49,7 +52,10 @@ vtkStandardNewMacro(vtkShadowScene);
 struct vtkShadowScene::Internals
 {
   vsh_scene* Scene = nullptr;
+  // The triangles of each object (the solid the ray tracers draw; none for a
+  // volume) and, for points and polylines, the primitives VTK draws.
   std::vector<vtkSmartPointer<vtkPolyData>> Objects;
+  std::vector<vtkSmartPointer<vtkPolyData>> Drawn;
   std::string Error;
   std::string FileName;
 
@@ -59,6 +65,7 @@ struct vtkShadowScene::Internals
     vsh_scene_free(this->Scene);
     this->Scene = nullptr;
     this->Objects.clear();
+    this->Drawn.clear();
   }
 };
 
@@ -417,10 +424,19 @@ bool vtkShadowScene::LoadParsed(vsh_scene* scene, const char* path)
     return false;
   }
   path = this->Impl->FileName.c_str();
-  std::vector<vtkSmartPointer<vtkPolyData>> objects;
+  std::vector<vtkSmartPointer<vtkPolyData>> objects, drawn(scene->object_count);
   for (size_t i = 0; i < scene->object_count; ++i)
   {
     const vsh_object& object = scene->objects[i];
+    if (object.kind == VSH_OBJECT_POINTS || object.kind == VSH_OBJECT_POLYLINE)
+    {
+      drawn[i] = vtkshadow::NewImpostorPolyData(object);
+    }
+    if (object.kind == VSH_OBJECT_VOLUME)
+    {
+      objects.push_back(vtkSmartPointer<vtkPolyData>::New());
+      continue;
+    }
     if (object.kind == VSH_OBJECT_MESH)
     {
       std::string error;
@@ -448,6 +464,7 @@ bool vtkShadowScene::LoadParsed(vsh_scene* scene, const char* path)
   }
   this->Impl->Scene = scene;
   this->Impl->Objects = std::move(objects);
+  this->Impl->Drawn = std::move(drawn);
   this->Modified();
   return true;
 }
@@ -636,10 +653,22 @@ void vtkShadowScene::GetBounds(double bounds[6]) const
 {
   vtkMath::UninitializeBounds(bounds);
   bool first = true;
-  for (const auto& poly : this->Impl->Objects)
+  for (size_t i = 0; i < this->Impl->Objects.size(); ++i)
   {
     double b[6];
-    poly->GetBounds(b);
+    const vsh_object& object = this->Impl->Scene->objects[i];
+    if (object.kind == VSH_OBJECT_VOLUME)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        b[2 * a] = object.center[a] - object.radius;
+        b[2 * a + 1] = object.center[a] + object.radius;
+      }
+    }
+    else
+    {
+      this->Impl->Objects[i]->GetBounds(b);
+    }
     for (int a = 0; a < 3; ++a)
     {
       bounds[2 * a] = first ? b[2 * a] : std::min(bounds[2 * a], b[2 * a]);
@@ -718,13 +747,32 @@ bool vtkShadowScene::PopulateWith(vtkRenderer* renderer, int mode, int onlyLight
     vtkErrorMacro("Populate: " << vtkShadowDisplay::GetErrorMessage());
     return false;
   }
+  // The scene's point sizes and line widths are pixels of its own image
+  // size: scaled with the window, the impostors keep their world size.
+  const int* windowSize = renderer->GetRenderWindow()->GetSize();
+  const double pixelScale =
+    windowSize[1] > 0 ? static_cast<double>(windowSize[1]) / this->Impl->Scene->height : 1.0;
   for (int i = 0; i < this->GetNumberOfObjects(); ++i)
   {
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(this->Impl->Objects[i]);
-    mapper->ScalarVisibilityOff();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
+    const vsh_object& object = this->Impl->Scene->objects[i];
+    if (object.kind == VSH_OBJECT_VOLUME)
+    {
+      this->AddBlob(renderer, i, lambertian);
+      continue;
+    }
+    vtkSmartPointer<vtkActor> actor;
+    if (this->Impl->Drawn[i])
+    {
+      actor = vtkshadow::NewImpostorActor(object, this->Impl->Drawn[i], pixelScale);
+    }
+    else
+    {
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputData(this->Impl->Objects[i]);
+      mapper->ScalarVisibilityOff();
+      actor = vtkSmartPointer<vtkActor>::New();
+      actor->SetMapper(mapper);
+    }
     vtkProperty* p = actor->GetProperty();
     p->SetInterpolationToPhong();
     p->SetOpacity(this->GetObjectOpacity(i));
@@ -788,6 +836,24 @@ bool vtkShadowScene::PopulateWith(vtkRenderer* renderer, int mode, int onlyLight
   this->ConfigureCamera(renderer->GetActiveCamera());
   vtkShadowScene::ResetCameraClippingRange(renderer);
   return true;
+}
+
+//------------------------------------------------------------------------------
+// A volume adds nothing of its own to the visibility renders (black, as a
+// translucent surface there): its view transmittance multiplies I_on and
+// I_off alike, so their ratio stays the visibility of what is behind it.
+void vtkShadowScene::AddBlob(vtkRenderer* renderer, int object, bool lambertian) const
+{
+  double color[3] = { 0.0, 0.0, 0.0 };
+  if (!lambertian)
+  {
+    this->GetObjectColor(object, color);
+  }
+  auto volume = vtkshadow::NewBlobVolume(this->Impl->Scene->objects[object], color);
+  vtkNew<vtkInformation> keys;
+  keys->Set(vtkShadowPassBase::NO_CAST(), this->GetObjectCasts(object) ? 0 : 1);
+  volume->SetPropertyKeys(keys);
+  renderer->AddVolume(volume);
 }
 
 //------------------------------------------------------------------------------

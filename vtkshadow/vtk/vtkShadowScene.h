@@ -108,7 +108,11 @@ public:
 
   /**
    * Triangles of object `object` in world coordinates (double points, point
-   * normals). The transform is already applied.
+   * normals). The transform is already applied. For "points" and
+   * "polyline" objects: the solid VTK's impostors show (spheres, a tube),
+   * which the ray tracers draw; Populate() gives VTK the points and the
+   * line themselves, drawn as spheres and tubes. A "volume" has no
+   * triangles (Populate() adds a vtkVolume).
    */
   vtkPolyData* GetObjectPolyData(int object) const;
   bool GetObjectIsReceiver(int object) const;
@@ -172,6 +176,7 @@ public:
 
 protected:
   bool PopulateWith(vtkRenderer* renderer, int mode, int onlyLight) const;
+  void AddBlob(vtkRenderer* renderer, int object, bool lambertian) const;
 
   vtkShadowScene();
   ~vtkShadowScene() override;
