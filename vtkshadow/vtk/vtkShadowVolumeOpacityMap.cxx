@@ -6,7 +6,6 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
-#include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
@@ -257,22 +256,6 @@ bool vtkShadowVolumeOpacityMap::ApplyLight(vtkOpenGLRenderWindow* window, vtkSha
   const float maskSize[2] = { static_cast<float>(mask.GetSize()[0]),
     static_cast<float>(mask.GetSize()[1]) };
 
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglColorMask colorMask(state);
-  vtkOpenGLState::ScopedglDepthMask depthMask(state);
-  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable stencilTest(state, GL_STENCIL_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
-  const int channel = light % 4;
-  state->vtkglColorMask(channel == 0, channel == 1, channel == 2, channel == 3);
-  state->vtkglDepthMask(GL_FALSE);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_STENCIL_TEST);
-  state->vtkglDisable(GL_CULL_FACE);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFunc(GL_ZERO, GL_SRC_COLOR); // channel x= map
   depth->Activate();
   map.Texture->Activate();
   program->SetUniformi("vshDepth", depth->GetTextureUnit());
@@ -284,7 +267,7 @@ bool vtkShadowVolumeOpacityMap::ApplyLight(vtkOpenGLRenderWindow* window, vtkSha
   program->SetUniform2f("vshMapSize", mapSize);
   program->SetUniformi("vshPerspective", plan.perspective);
   mask.BeginDraw(light, false);
-  mask.DrawFullScreen(program);
+  mask.MultiplyLight(light, program);
   mask.EndDraw();
   map.Texture->Deactivate();
   depth->Deactivate();
