@@ -1,8 +1,11 @@
-"""A vtkVolume casts a shadow under raytrace (issue 32; docs/raytraced-shadows.md,
-"Volumes"): the light reaching the floor through it is the transmittance of
-its scalar opacity along the light ray, with VTK's opacity correction: a
-step of length ds keeps (1 - a)^(ds / u) of the light, a the transfer
-function's opacity and u the property's scalar opacity unit distance.
+"""A vtkVolume casts a shadow under raytrace, csm and volume (issue 32;
+docs/raytraced-shadows.md and docs/cascaded-shadow-maps.md, "Volumes"): the
+light reaching the floor through it is the transmittance of its scalar
+opacity along the light ray, with VTK's opacity correction: a step of
+length ds keeps (1 - a)^(ds / u) of the light, a the transfer function's
+opacity and u the property's scalar opacity unit distance. raytrace marches
+every shadow ray; csm and volume multiply their screen mask by the volumes'
+opacity shadow map (vtkShadowVolumeOpacityMap).
 
 The scene is translucent_scene.py's: a directional light straight down, an
 opaque floor at z = 0, the camera beside (it sees the floor patch under the
@@ -10,7 +13,7 @@ volume past it, not through it). The volume: a vtkImageData box of 20^3
 points, spacing 0.1 (1.9 units a side), centred 2 above the floor, a
 constant scalar, drawn by vtkSmartVolumeMapper. Visibility I_on / I_off in
 float, 320x240, on the 9 x 9 patch of floor points under its centre, within
-0.03 (mean, min and max):
+0.03 (mean, min and max), under raytrace, csm and volume:
 
   case                                   expected visibility
   opacity 0.06 at unit distance 0.1      (1 - 0.06)^(1.9 / 0.1) = 0.3086
@@ -25,17 +28,22 @@ float, 320x240, on the 9 x 9 patch of floor points under its centre, within
     of opacity 0.5 (0.25)                casters' rays march the volume too)
   opacity 0 (control)                    1
   the volume VisibilityOff               1
+and, the first case only:
   the `none` technique                   1
   the `auto` technique                   0.3086 (it gives the light raytrace:
                                          never "nothing casts" for a volume)
 
-csm, planar, volume and vtk cast no volume shadow and say so per light
-(GetLightNote "volumes cast no shadow"); auto's reason names the volume.
+planar and vtk cast no volume shadow and say so per light (GetLightNote
+"volumes cast no shadow"); csm and volume say nothing about it; auto's
+reason names the volume.
 
 The stats say what was collected ("volumes": 1) and what was skipped and
 why (a volume of cell scalars casts nothing: "volumes_skipped"). A second
 frame with nothing changed is still (not traced); changing the transfer
-function traces again and gives its visibility.
+function traces again and gives its visibility. Under csm and volume the
+camera orbiting 30 degrees and back computes no new opacity map (the stats'
+volume_maps_computed stays 1) and the function's change computes one and
+gives its visibility.
 
 Usage: test_volume_casters.py"""
 import json
@@ -182,28 +190,69 @@ def still_then_changed():
     return frames, visibility
 
 
+def orbit_then_changed(technique):
+    """Five frames of `technique` in one window: the first computes the
+    volume's opacity map, the camera then orbits 30 degrees and back
+    (frames 2 and 3: the map is reused), frame 4 is still, and frame 5
+    follows a change of the opacity function to 0.12 (computed again);
+    (volume_maps_computed per frame, the last frame's patch visibility)."""
+    off, _ = ts.render(scene(alpha=0.12), None)
+    window = fr.new_window(ts.W, ts.H)
+    renderer = fr.new_renderer(window)
+    scene()(renderer)
+    inner = vtkshadow.vtkShadowTechniqueRegistry.CreatePass(technique)
+    capture = fr.FloatCapture(renderer, inner)
+    computed = []
+    for step in ("first", "orbit", "back", "still", "change"):
+        camera = renderer.GetActiveCamera()
+        if step in ("orbit", "back"):
+            camera.Azimuth(30.0 if step == "orbit" else -30.0)
+        if step == "change":
+            function = renderer.GetVolumes().GetLastProp().GetProperty().GetScalarOpacity()
+            function.RemoveAllPoints()
+            function.AddPoint(0.0, 0.12)
+            function.AddPoint(1.0, 0.12)
+        window.Render()
+        computed.append(json.loads("{" + inner.GetStatsJSON(renderer) + "}")
+                        .get("volume_maps_computed"))
+    visibility = patch_after(window, capture, renderer, off)
+    capture.release()
+    window.Finalize()
+    return computed, visibility
+
+
+CASES = (
+    (f"opacity {ALPHA} at unit {UNIT}", scene(), expected(ALPHA, UNIT)),
+    (f"opacity {ALPHA} at unit 0.2", scene(unit=0.2), expected(ALPHA, 0.2)),
+    ("placed by its matrix", scene(moved=True), expected(ALPHA, UNIT)),
+    ("opacity 0.2 in the top 6 layers", scene(alpha=0.2, top=14), expected_top(0.2, UNIT, 14)),
+    ("under a translucent slab (0.25) too, unit 0.2", scene(slab=True, unit=0.2),
+     0.25 * expected(ALPHA, 0.2)),
+    ("opacity 0 (control)", scene(alpha=0.0), 1.0),
+    ("the volume VisibilityOff", scene(visible=False), 1.0))
+# raytrace marches each shadow ray; csm and volume multiply the volumes'
+# opacity shadow map into their screen mask.
+for technique in ("raytrace", "csm", "volume"):
+    for label, build, want in CASES:
+        ts.check_patch(check, f"{technique}: {label}, floor under the centre", build, technique,
+                       round(want, 4))
 for label, build, technique, want in (
-        (f"opacity {ALPHA} at unit {UNIT}", scene(), "raytrace", expected(ALPHA, UNIT)),
-        (f"opacity {ALPHA} at unit 0.2", scene(unit=0.2), "raytrace", expected(ALPHA, 0.2)),
-        ("placed by its matrix", scene(moved=True), "raytrace", expected(ALPHA, UNIT)),
-        ("opacity 0.2 in the top 6 layers", scene(alpha=0.2, top=14), "raytrace",
-         expected_top(0.2, UNIT, 14)),
-        ("under a translucent slab (0.25) too, unit 0.2", scene(slab=True, unit=0.2),
-         "raytrace", 0.25 * expected(ALPHA, 0.2)),
-        ("opacity 0 (control)", scene(alpha=0.0), "raytrace", 1.0),
-        ("the volume VisibilityOff", scene(visible=False), "raytrace", 1.0),
         (f"opacity {ALPHA}, technique none", scene(), "none", 1.0),
         # auto never answers "nothing casts" for a visible volume: raytrace.
         (f"opacity {ALPHA} at unit {UNIT}, technique auto", scene(), "auto",
          expected(ALPHA, UNIT))):
     ts.check_patch(check, f"{label}, floor under the centre", build, technique, round(want, 4))
 
-# The techniques that cast no volume shadow say so per light.
+# planar and vtk cast no volume shadow and say so per light; csm and volume
+# cast it and say nothing.
 for technique in ("csm", "planar", "volume", "vtk"):
     note = fr.render_technique(scene(), technique, ts.W, ts.H,
                                lambda renderer, inner: inner.GetLightNote(0))[1]
     print(f"{technique}: light 0's note {note!r}")
-    check("volumes cast no shadow" in note, f"{technique} says volumes cast no shadow")
+    if technique in ("csm", "volume"):
+        check("volume" not in note, f"{technique} casts the volume (no note about it)")
+    else:
+        check("volumes cast no shadow" in note, f"{technique} says volumes cast no shadow")
 reason = fr.render_technique(scene(), "auto", ts.W, ts.H,
                              lambda renderer, inner: inner.GetLightReason(0))[1]
 print(f"auto: light 0 {reason!r}")
@@ -233,4 +282,15 @@ want = expected(0.12, UNIT)
 print(f"after the change: visibility {mean:.4f} (min {lo:.4f}, max {hi:.4f}); expected {want:.4f}")
 check(abs(mean - want) <= ts.TOLERANCE and lo >= want - ts.TOLERANCE
       and hi <= want + ts.TOLERANCE, f"the changed function's shadow is {want:.4f} within 0.03")
+
+for technique in ("csm", "volume"):
+    computed, (mean, lo, hi) = orbit_then_changed(technique)
+    print(f"{technique}: volume_maps_computed per frame {computed}; after the change "
+          f"visibility {mean:.4f} (min {lo:.4f}, max {hi:.4f}); expected {want:.4f}")
+    check(computed == [1, 1, 1, 1, 2],
+          f"{technique}: the camera orbiting reuses the volume's map; the function's change "
+          "computes it again")
+    check(abs(mean - want) <= ts.TOLERANCE and lo >= want - ts.TOLERANCE
+          and hi <= want + ts.TOLERANCE, f"{technique}: the changed function's shadow is "
+          f"{want:.4f} within 0.03")
 finish()

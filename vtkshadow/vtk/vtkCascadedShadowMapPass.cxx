@@ -345,11 +345,13 @@ void vtkCascadedShadowMapPass::Render(const vtkRenderState* s)
   Frame frame(this->BeginFrame(s));
   // One transmittance per texel: a filter's colour comes out grey.
   this->NoteGreyFilters(frame.Shared);
-  this->NoteUncastVolumes(frame.Shared);
+  this->Impl->VolumeMaps.Update(frame.Shared, window);
   this->GatherScene(frame);
   this->PlanMaps(frame);
   this->PlanSamples(frame);
   this->Impl->Screen = this->ChooseScreenResolve(frame);
+  // Only the screen resolve multiplies the volumes' maps in.
+  this->NoteUncastVolumes(frame.Shared, this->Impl->Screen ? &this->Impl->VolumeMaps : nullptr);
   ++this->Impl->FramesSinceMeasure;
   this->UsedScreenResolve = this->Impl->Screen;
   this->UpdateShaderState(frame);
@@ -1158,6 +1160,7 @@ void vtkCascadedShadowMapPass::ReleaseGraphicsResources(vtkWindow* w)
     impl.Queries[0] = impl.Queries[1] = 0;
   }
   impl.Overdraw = -1.0;
+  impl.VolumeMaps.ReleaseGraphicsResources(w);
   impl.Proxies.ReleaseGraphicsResources(w);
   for (auto& entry : impl.Casters)
   {
@@ -1311,7 +1314,7 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
       << ", \"pcss_blocker_taps\": " << (this->UsedPCSS ? this->PCSSBlockerTaps : 0)
       << ", \"pcss_filter_taps\": " << (this->UsedPCSS ? this->PCSSFilterTaps : 0)
       << ", \"pcss_max_texels\": " << this->PCSSMaxTexels << ", " << this->Impl->Proxies.StatsJSON()
-      << ", \"lights\": [";
+      << ", " << this->Impl->VolumeMaps.StatsJSON() << ", \"lights\": [";
   const int lights = renderer ? renderer->GetLights()->GetNumberOfItems() : 0;
   for (int l = 0; l < lights; ++l)
   {

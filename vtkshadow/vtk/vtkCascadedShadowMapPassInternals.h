@@ -13,6 +13,7 @@
 #include "vtkShadowFrame.h"
 #include "vtkShadowImpostorProxies.h"
 #include "vtkShadowScreenMask.h"
+#include "vtkShadowVolumeOpacityMap.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkTimeStamp.h"
@@ -194,6 +195,9 @@ struct vtkCascadedShadowMapPass::Internals
   // depth pre-pass is running (the mask's textures are not bound then).
   std::unique_ptr<vtkShadowScreenMask> Mask;
   bool Screen = false;
+  // The volumes' opacity shadow maps, multiplied into the mask after the
+  // resolve: a frame they cover takes the screen resolve.
+  vtkShadowVolumeOpacityMap VolumeMaps;
   bool PrePass = false;
   bool ScreenFailed = false;
   std::string ResolveSource[2];

@@ -138,7 +138,7 @@ double DepthStep(double z, const double clip[2])
 bool vtkCascadedShadowMapPass::ChooseScreenResolve(const Frame& frame) const
 {
   const Internals& impl = *this->Impl;
-  if (this->Resolve == FORWARD || impl.ScreenFailed)
+  if (impl.ScreenFailed)
   {
     return false;
   }
@@ -146,8 +146,20 @@ bool vtkCascadedShadowMapPass::ChooseScreenResolve(const Frame& frame) const
   {
     return true;
   }
-  // CHOOSE. The debug tint is per cascade, which the mask does not carry.
+  // The debug tint is per cascade, which the mask does not carry.
   if (this->DebugCascades)
+  {
+    return false;
+  }
+  // A volume casting under some light: its opacity shadow map multiplies
+  // into the mask, which only the screen resolve has, so the frame takes it
+  // under FORWARD too whenever the depth holds the positions (the cost:
+  // reconstructed normals on thin geometry, see Resolve).
+  if (impl.VolumeMaps.CoversAny() && this->DepthPreciseEnough(frame))
+  {
+    return true;
+  }
+  if (this->Resolve == FORWARD)
   {
     return false;
   }
@@ -257,6 +269,11 @@ void vtkCascadedShadowMapPass::RenderScreenResolved(
   vtkshadow::MarkStage("csm.prepass");
   ok = ok && this->ResolveScreen(s, window, frame);
   vtkshadow::MarkStage("csm.resolve");
+  if (ok && impl.VolumeMaps.CoversAny())
+  {
+    ok = impl.VolumeMaps.Apply(window, mask, frame.Shared);
+    vtkshadow::MarkStage("csm.volumes");
+  }
   if (ok && impl.Measuring)
   {
     GLuint fragments = 0, pixels = 0;

@@ -16,6 +16,7 @@
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowRendererSteps.h"
 #include "vtkShadowSettings.h"
+#include "vtkShadowVolumeOpacityMap.h"
 
 #include <cmath>
 #include <cstring>
@@ -156,13 +157,17 @@ void vtkShadowPassBase::AddLightNote(int light, const std::string& note)
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowPassBase::NoteUncastVolumes(const vtkshadow::ShadowFrame& frame)
+void vtkShadowPassBase::NoteUncastVolumes(
+  const vtkshadow::ShadowFrame& frame, const vtkShadowVolumeOpacityMap* maps)
 {
   for (size_t l = 0; frame.ShowsVolumes && l < frame.Lights.size(); ++l)
   {
-    if (frame.Lights[l].Casts)
+    const int light = static_cast<int>(l);
+    const std::string note =
+      maps ? maps->GetLightNote(light) : "volumes cast no shadow (raytrace casts them)";
+    if (frame.Lights[l].Casts && !note.empty())
     {
-      this->AddLightNote(static_cast<int>(l), "volumes cast no shadow (raytrace casts them)");
+      this->AddLightNote(light, note);
     }
   }
 }

@@ -59,6 +59,7 @@ struct ShadowFrame;
 class vtkInformationIntegerKey;
 class vtkLight;
 class vtkRenderer;
+class vtkShadowVolumeOpacityMap;
 
 class VTKSHADOW_EXPORT vtkShadowPassBase : public vtkOpenGLRenderPass
 {
@@ -309,8 +310,11 @@ protected:
 #ifndef __VTK_WRAP__
   void NoteGreyFilters(const vtkshadow::ShadowFrame& frame);
   // On every casting light, that the frame's volumes (vtkVolume) cast no
-  // shadow here (raytrace casts them), when it has any.
-  void NoteUncastVolumes(const vtkshadow::ShadowFrame& frame);
+  // shadow here (raytrace casts them), when it has any; with `maps` (the
+  // screen-space techniques' opacity shadow maps) only on the lights they
+  // leave out, with their reason.
+  void NoteUncastVolumes(
+    const vtkshadow::ShadowFrame& frame, const vtkShadowVolumeOpacityMap* maps = nullptr);
 #endif
   std::vector<std::string> LightNotes;
 

@@ -484,7 +484,8 @@ int vtkShadowScreenMask::AccumulationLevels(int sample, int samples)
 }
 
 //------------------------------------------------------------------------------
-void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool add, int ref)
+void vtkShadowScreenMask::DrawChannel(
+  int light, float value, Where where, bool add, int ref, vtkShaderProgram* program)
 {
   Internals& impl = *this->Impl;
   if (!impl.Drawing || light < 0 || light >= this->LightCount)
@@ -504,9 +505,9 @@ void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool 
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_CULL_FACE);
-  if (add || where == Where::StencilCount)
+  if (add || where == Where::StencilCount || program)
   {
-    // Added, or multiplied (dst * src) for a count.
+    // Added, or multiplied (dst * src) for a count or a caller's program.
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendEquation(GL_FUNC_ADD);
     state->vtkglBlendFunc(add ? GL_ONE : GL_ZERO, add ? GL_ONE : GL_SRC_COLOR);
@@ -536,7 +537,12 @@ void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool 
     state->vtkglStencilFunc(where == Where::StencilSet ? GL_NOTEQUAL : GL_EQUAL, ref, 0xff);
     state->vtkglStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   }
-  vtkShaderProgram* program = impl.Window->GetShaderCache()->ReadyShaderProgram(
+  if (program)
+  {
+    this->DrawFullScreen(program);
+    return;
+  }
+  program = impl.Window->GetShaderCache()->ReadyShaderProgram(
     vtkShadowScreenQuadVS, vtkShadowScreenQuadFS, "");
   if (!program)
   {
@@ -546,6 +552,12 @@ void vtkShadowScreenMask::DrawChannel(int light, float value, Where where, bool 
   const float values[4] = { value, value, value, value };
   program->SetUniform4f("value", values);
   this->DrawFullScreen(program);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowScreenMask::MultiplyLight(int light, vtkShaderProgram* program)
+{
+  this->DrawChannel(light, 1.0f, Where::Everywhere, false, 0, program);
 }
 
 //------------------------------------------------------------------------------

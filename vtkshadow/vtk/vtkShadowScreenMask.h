@@ -138,6 +138,15 @@ public:
   int MultiplyStencilCount(int light, float transmit, int maxSteps);
 
   /**
+   * Inside BeginDraw(light, false): multiply the light's channel by what
+   * `program` writes over the whole mask (the caller readied the program,
+   * whose vertex shader is vtkShadowScreenQuadVS, and set its uniforms),
+   * the other channels, the depth and the stencil untouched: the volumes'
+   * opacity shadow maps (vtkShadowVolumeOpacityMap).
+   */
+  void MultiplyLight(int light, vtkShaderProgram* program);
+
+  /**
    * Inside BeginDraw(light), for adaptive sample counts (vtkShadowVolumePass's
    * adaptive): the light's channel holds its first batch of samples, whose
    * levels sum to `batchLevels` (vsh_soft_batch_levels). Sets the stencil
@@ -225,7 +234,9 @@ private:
     Everywhere,
     StencilCount
   };
-  void DrawChannel(int light, float value, Where where, bool add, int ref = 0);
+  // `program`: draw it instead of the constant value, multiplying.
+  void DrawChannel(int light, float value, Where where, bool add, int ref = 0,
+    vtkShaderProgram* program = nullptr);
 
   struct Internals;
   Internals* Impl;

@@ -125,6 +125,18 @@ bool WorldToData(vtkMatrix4x4* m, double out[12])
   std::copy_n(inverse, 12, out);
   return true;
 }
+
+// The world -> data matrix `toData` for points relative to `centre`:
+// data = A (p + centre) + b = A p + (A centre + b).
+void OffsetToData(const double toData[12], const double centre[3], double out[12])
+{
+  std::copy_n(toData, 12, out);
+  for (int r = 0; r < 3; ++r)
+  {
+    const double* row = toData + 4 * r;
+    out[4 * r + 3] = row[0] * centre[0] + row[1] * centre[1] + row[2] * centre[2] + row[3];
+  }
+}
 }
 
 struct vtkShadowVolumeCasters::Volume
@@ -259,6 +271,13 @@ bool vtkShadowVolumeCasters::Collect(vtkVolume* volume, int index, std::vector<d
   v.Unit = property->GetScalarOpacityUnitDistance(0);
   v.Seen = true;
   this->Active.push_back(&v);
+  double bounds[6];
+  volume->GetBounds(bounds);
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Bounds[2 * a] = std::min(this->Bounds[2 * a], bounds[2 * a]);
+    this->Bounds[2 * a + 1] = std::max(this->Bounds[2 * a + 1], bounds[2 * a + 1]);
+  }
   return true;
 }
 
@@ -267,6 +286,11 @@ void vtkShadowVolumeCasters::Gather(vtkRenderer* renderer, std::vector<double>& 
 {
   this->Active.clear();
   this->Skipped.clear();
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Bounds[2 * a] = VTK_DOUBLE_MAX;
+    this->Bounds[2 * a + 1] = -VTK_DOUBLE_MAX;
+  }
   for (auto& entry : this->Cache)
   {
     entry.second->Seen = false;
@@ -304,13 +328,7 @@ void vtkShadowVolumeCasters::Place(const double centre[3])
   for (auto& entry : this->Cache)
   {
     Volume& v = *entry.second;
-    // data = A (p + centre) + b = A p + (A centre + b)
-    std::copy_n(v.ToData, 12, v.Placed);
-    for (int r = 0; r < 3; ++r)
-    {
-      const double* row = v.ToData + 4 * r;
-      v.Placed[4 * r + 3] = row[0] * centre[0] + row[1] * centre[1] + row[2] * centre[2] + row[3];
-    }
+    OffsetToData(v.ToData, centre, v.Placed);
   }
 }
 
@@ -341,4 +359,28 @@ double vtkShadowVolumeCasters::Transmittance(
     samples += taken;
   }
   return kept < Cutoff ? 0.0 : kept;
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumeCasters::Describe(
+  const double origin[3], std::vector<vsh_volume_map_volume>& out) const
+{
+  out.clear();
+  for (const Volume* v : this->Active)
+  {
+    vsh_volume_map_volume d;
+    d.grid = v->Grid;
+    d.unit = v->Unit;
+    OffsetToData(v->ToData, origin, d.to_data);
+    d.sample = &Volume::Sample;
+    d.user = const_cast<Volume*>(v);
+    out.push_back(d);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowVolumeCasters::GetBounds(double bounds[6]) const
+{
+  std::copy_n(this->Bounds, 6, bounds);
+  return !this->Active.empty();
 }

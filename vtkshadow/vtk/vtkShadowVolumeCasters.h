@@ -24,6 +24,7 @@
 #define vtkShadowVolumeCasters_h
 
 #include "vsh_volume_march.h"
+#include "vsh_volume_opacity_map.h"
 
 #include <map>
 #include <memory>
@@ -55,6 +56,20 @@ public:
    */
   void Place(const double centre[3]);
 
+  /**
+   * The gathered volumes for the opacity shadow map
+   * (vtkShadowVolumeOpacityMap): each one's grid, unit distance, sampler and
+   * matrix from world relative to `origin` to its data coordinates. The
+   * samplers stay valid until the next Gather.
+   */
+  void Describe(const double origin[3], std::vector<vsh_volume_map_volume>& out) const;
+
+  /**
+   * The world bounds of the gathered volumes (xmin, xmax, ...); false when
+   * there are none.
+   */
+  bool GetBounds(double bounds[6]) const;
+
   bool IsEmpty() const { return this->Active.empty(); }
   int GetNumberOfVolumes() const { return static_cast<int>(this->Active.size()); }
   // Why each skipped volume casts nothing ("vtkVolume 2: cell scalars ...").
@@ -74,6 +89,7 @@ private:
   bool Collect(vtkVolume* volume, int index, std::vector<double>& key);
   std::map<vtkVolume*, std::unique_ptr<Volume>> Cache;
   std::vector<const Volume*> Active;
+  double Bounds[6];
   std::vector<std::string> Skipped;
 };
 

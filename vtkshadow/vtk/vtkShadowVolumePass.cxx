@@ -24,6 +24,7 @@
 #include "vtkShadowImpostorProxies.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowScreenMask.h"
+#include "vtkShadowVolumeOpacityMap.h"
 #include "vtkSmartPointer.h"
 #include "vtk_glew.h"
 
@@ -185,6 +186,9 @@ struct vtkShadowVolumePass::Internals
   // starts at instance 0: VTK's impostors are not the proxy's facets).
   std::map<std::pair<vtkActor*, int>, std::unique_ptr<Caster>> Casters;
   vtkshadow::ImpostorProxies Proxies;
+  // The volumes' opacity shadow maps, multiplied into each layer's mask
+  // after the stencil counts.
+  vtkShadowVolumeOpacityMap VolumeMaps;
   static std::pair<vtkActor*, int> Key(const vtkshadow::ShadowActor& a)
   {
     return { a.Actor, a.Proxy ? -1 - a.Instance : a.Instance };
@@ -327,7 +331,8 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   Frame frame(this->BeginFrame(s));
   // One value per light: a filter's colour comes out grey.
   this->NoteGreyFilters(frame.Shared);
-  this->NoteUncastVolumes(frame.Shared);
+  impl.VolumeMaps.Update(frame.Shared, window);
+  this->NoteUncastVolumes(frame.Shared, &impl.VolumeMaps);
   this->SetUpFrame(s, frame);
   impl.LightCount = std::min(static_cast<int>(frame.Shared.Lights.size()), MaxLights);
   this->LightsInViewCoordinates(s->GetRenderer(), frame);
@@ -391,6 +396,10 @@ bool vtkShadowVolumePass::CountLayer(const vtkRenderState* s, vtkOpenGLRenderWin
       impl.Stats[light].Casts = true;
       this->CountLight(window, program, frame, light);
     }
+  }
+  if (program && !impl.VolumeMaps.Apply(window, layer, frame.Shared))
+  {
+    vtkErrorMacro("the volumes' opacity shadow maps did not draw");
   }
   impl.Counted = &impl.Opaque;
   return depthOk;
@@ -966,7 +975,7 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
   std::ostringstream out;
   out << "\"volume_builds\": " << impl.VolumeBuilds << ", \"caster_instances\": " << impl.Instances
       << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", "
-      << impl.Proxies.StatsJSON() << ", \"lights\": [";
+      << impl.Proxies.StatsJSON() << ", " << impl.VolumeMaps.StatsJSON() << ", \"lights\": [";
   for (int light = 0; light < impl.LightCount; ++light)
   {
     const LightStats& s = impl.Stats[light];
@@ -1014,6 +1023,7 @@ void vtkShadowVolumePass::ReleaseGraphicsResources(vtkWindow* w)
   Internals& impl = *this->Impl;
   impl.Opaque.ReleaseGraphicsResources(w);
   impl.Translucent.ReleaseGraphicsResources(w);
+  impl.VolumeMaps.ReleaseGraphicsResources(w);
   for (FillQuery& query : impl.RefineQueries)
   {
     if (query.Id && w)
