@@ -3,7 +3,7 @@
 #
 # The library run of the test suite (docs/harness.md, "The library run"):
 # the scenes of scenes/GROUP (default all: basic scivis cad hard mirror soft
-# translucent)
+# translucent primitives)
 # at --scale 0.4 (320x240), every registered technique, against the shipped
 # references of scenes/references (--require-references: a reference that
 # is not shipped fails its scene and names scripts/update-references.sh).
@@ -20,7 +20,7 @@ if [ $# -lt 1 ]; then
 fi
 out=$1
 shift
-groups="basic scivis cad hard mirror soft translucent"
+groups="basic scivis cad hard mirror soft translucent primitives"
 if [ $# -gt 0 ] && [ "${1#-}" = "$1" ]; then
   [ "$1" = all ] || groups=$1
   shift

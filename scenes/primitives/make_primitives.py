@@ -104,7 +104,7 @@ def particles():
         "camera": {"position": [0, -8, 5], "focal_point": [0, 0, 1.2], "view_up": [0, 0, 1],
                    "view_angle": 30},
         "lights": [{"type": "directional", "direction": [-0.8, 0.4, -3]}],
-        "objects": [{"points": {"positions": pts, "point_size": 12, "resolution": 16},
+        "objects": [{"points": {"positions": pts, "point_size": 12},
                      "color": [0.9, 0.6, 0.2]}, FLOOR],
     }
 

@@ -26,7 +26,7 @@ endif()
 set(_harness_src ${CMAKE_CURRENT_LIST_DIR})
 set(_library_out ${VTKSHADOW_TEST_OUT}/harness/library)
 # The scene groups of scripts/library-run.sh.
-set(_library_groups basic scivis cad hard mirror soft translucent)
+set(_library_groups basic scivis cad hard mirror soft translucent primitives)
 foreach(group ${_library_groups})
   add_test(NAME harness.library.${group}
     COMMAND ${CMAKE_COMMAND} -E env VTKSHADOW_BIN=${VTKSHADOW_BIN}

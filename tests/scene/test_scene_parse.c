@@ -219,7 +219,7 @@ static void test_primitives(void) {
     CHECK(fabs(p->radii[0] - 10.0 * 10.0 / 50.0) < 1e-12); /* depth 10: 10 px of d/50 */
     CHECK(fabs(p->radii[1] - 10.0 * 5.0 / 50.0) < 1e-12);  /* depth 5 */
     CHECK(p->positions[3] == 3 && p->positions[4] == 1 && p->positions[5] == 5);
-    CHECK(p->resolution == 24); /* default */
+    CHECK(p->resolution == 32); /* default */
     CHECK(l->kind == VSH_OBJECT_POLYLINE && l->position_count == 3 && l->resolution == 16);
     CHECK(fabs(l->radii[0] - 5.0 * 10.0 / 50.0) < 1e-12);
     CHECK(fabs(l->radii[2] - 5.0 * 5.0 / 50.0) < 1e-12);

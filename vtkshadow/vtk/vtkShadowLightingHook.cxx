@@ -60,20 +60,17 @@ std::string ResidualFactor(const std::string& factor, double residual)
 
 std::string SurfacePositionVC(const std::string& fs)
 {
-  if (fs.find("uniform float ZCalcR") == std::string::npos)
+  // Both impostors leave vertexVC on the centre (the point, the line: the
+  // wide-line geometry shader offsets gl_Position only) and compute the
+  // solid's unit normal per fragment, so the surface is one radius out.
+  const bool impostor = fs.find("uniform float ZCalcR") != std::string::npos &&
+    (fs.find("gl_PointCoord") != std::string::npos || fs.find("tubeBasis2") != std::string::npos);
+  if (!impostor)
   {
     return "vertexVC.xyz";
   }
-  const std::string radius = "(ZCalcR * (cameraParallel == 0 ? -vertexVC.z : 1.0))";
-  if (fs.find("gl_PointCoord") != std::string::npos)
-  {
-    return "(vertexVC.xyz + normalize(normalVCVSOutput) * " + radius + ")";
-  }
-  if (fs.find("tubeBasis2") != std::string::npos)
-  {
-    return "(vertexVC.xyz + tubeBasis2 * lenZ * " + radius + ")";
-  }
-  return "vertexVC.xyz";
+  return "(vertexVC.xyz + normalize(normalVCVSOutput) * "
+         "(ZCalcR * (cameraParallel == 0 ? -vertexVC.z : 1.0)))";
 }
 
 bool InjectLightFactors(std::string& fs, const std::string& factorExpression,

@@ -55,12 +55,12 @@ std::string ResidualFactor(const std::string& factor, double residual);
  * The GLSL expression of the fragment's surface point in view coordinates
  * for a forward shadow lookup. "vertexVC.xyz" for surfaces. VTK 9.1's
  * impostors do not move vertexVC onto the solid they draw: a point drawn as
- * a sphere is one GL point, so vertexVC is its centre for every fragment;
- * a tube's fragments lie on a quad through the line. The surface is the
- * centre (or that quad point) plus the impostor's radius, ZCalcR times the
- * clip w (VTK's own depth correction), along the sphere normal (or along
- * the tube's depth axis scaled by lenZ): looked up at vertexVC, the
- * impostor sits inside its own shadow proxy and goes black.
+ * a sphere is one GL point, so vertexVC is its centre for every fragment,
+ * and a line drawn as a tube is widened in clip space only, so vertexVC is
+ * on the line. Both compute the solid's normal per fragment: the surface
+ * is the centre plus the impostor's radius (ZCalcR times the clip w, VTK's
+ * own depth correction) along it. Looked up at vertexVC, the impostor sits
+ * inside its own shadow proxy and goes black.
  */
 std::string SurfacePositionVC(const std::string& fragmentShader);
 }
