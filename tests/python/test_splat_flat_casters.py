@@ -20,7 +20,10 @@ nothing; the pass's stats count the shapes):
     shadow area is the floor's own), and a sphere with EdgeVisibility and
     line width 4 darkens no pixel of its surface beyond what it darkens
     without its edges (they do not shadow their own surface; the edges'
-    own pixels are left out: each technique shades drawn lines its way).
+    own pixels are left out: each technique shades drawn lines its way);
+(i) a sphere mesh drawn as points (size 8) or as a wireframe (width 3), and
+    the splats alone, cast a shadow; auto's reason for the light is never
+    "nothing casts shadows".
 
 Usage: test_splat_flat_casters.py [raytrace|csm|auto|volume|planar]"""
 import os
@@ -194,6 +197,38 @@ def edged_sphere(edges):
     return build
 
 
+def represented(representation, size):
+    """(i): a sphere mesh drawn as points (size `size`) or as a wireframe
+    (width `size`): VTK shows only those."""
+    def build(renderer):
+        s = vtkSphereSource()
+        s.SetCenter(0.0, 0.0, 1.4)
+        s.SetRadius(1.0)
+        s.SetThetaResolution(16)
+        s.SetPhiResolution(10)
+        s.Update()
+        actor = ic.add(renderer, s.GetOutput())
+        actor.GetProperty().SetRepresentation(representation)
+        actor.GetProperty().SetPointSize(size)
+        actor.GetProperty().SetLineWidth(size)
+    return build
+
+
+def casts_something(name, build):
+    """(i): `build` casts a shadow; under auto, its light's reason is not
+    "nothing casts shadows"."""
+    floor_alone = ic.render(ic.scene(), None)
+    off = ic.render(ic.scene(build), None)
+    area = ic.shadow_area(ic.scene(build), TECHNIQUE, ic.covered(off, floor_alone), off)
+    reason = fr.render_technique(ic.scene(build), TECHNIQUE, ic.W, ic.H,
+                                 lambda renderer, inner: inner.GetLightReason(0)
+                                 if TECHNIQUE == "auto" else "")[1]
+    print(f"{name}: {TECHNIQUE} shadow area {area} px; {reason!r}")
+    check(area > 300, f"{name}: casts a shadow ({area} px > 300)")
+    if TECHNIQUE == "auto":
+        check("nothing casts" not in reason, f"{name}: auto knows it casts ({reason!r})")
+
+
 def darkened(build):
     """Pixels whose visibility is below 0.5 (the sphere's too), and the
     unshadowed render."""
@@ -227,6 +262,9 @@ def main():
                lambda: bands(ic.LINE_WIDTH), segments, triangles=QUAD_TRIANGLES * segments)
     shadow_alone("plain polyline, width 1", plain("line", 1.0))
     shadow_alone("plain points, size 1", plain("verts", 1.0))
+    casts_something("sphere drawn as points (size 8)", represented(0, 8.0))
+    casts_something("sphere drawn as a wireframe (width 3)", represented(1, 3.0))
+    casts_something("splats alone", splats())
     extra, without = edges_darken()
     print(f"sphere with EdgeVisibility (width 4): {extra} px darkened off its edges that are "
           f"not without them ({without} px darkened without)")
