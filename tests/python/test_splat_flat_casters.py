@@ -183,15 +183,20 @@ def shadow_alone(name, build):
     check(area <= own, f"{name}: casts nothing ({area} px, the floor alone {own})")
 
 
+def sphere_actor(renderer, theta, phi):
+    """A sphere mesh (radius 1 at (0, 0, 1.4), theta x phi) in `renderer`."""
+    s = vtkSphereSource()
+    s.SetCenter(0.0, 0.0, 1.4)
+    s.SetRadius(1.0)
+    s.SetThetaResolution(theta)
+    s.SetPhiResolution(phi)
+    s.Update()
+    return ic.add(renderer, s.GetOutput())
+
+
 def edged_sphere(edges):
     def build(renderer):
-        s = vtkSphereSource()
-        s.SetCenter(0.0, 0.0, 1.4)
-        s.SetRadius(1.0)
-        s.SetThetaResolution(24)
-        s.SetPhiResolution(16)
-        s.Update()
-        actor = ic.add(renderer, s.GetOutput())
+        actor = sphere_actor(renderer, 24, 16)
         actor.GetProperty().SetEdgeVisibility(edges)
         actor.GetProperty().SetLineWidth(4.0)
     return build
@@ -201,13 +206,7 @@ def represented(representation, size):
     """(i): a sphere mesh drawn as points (size `size`) or as a wireframe
     (width `size`): VTK shows only those."""
     def build(renderer):
-        s = vtkSphereSource()
-        s.SetCenter(0.0, 0.0, 1.4)
-        s.SetRadius(1.0)
-        s.SetThetaResolution(16)
-        s.SetPhiResolution(10)
-        s.Update()
-        actor = ic.add(renderer, s.GetOutput())
+        actor = sphere_actor(renderer, 16, 10)
         actor.GetProperty().SetRepresentation(representation)
         actor.GetProperty().SetPointSize(size)
         actor.GetProperty().SetLineWidth(size)

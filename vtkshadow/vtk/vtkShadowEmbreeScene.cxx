@@ -41,6 +41,14 @@ void Cofactors(const double m[16], double out[9])
   }
 }
 
+// Commits `geometry` and hands it to `scene` (which keeps it).
+void CommitInto(RTCScene scene, RTCGeometry geometry)
+{
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);
+}
+
 // What an impostor instance points its triangle lookup at: nothing.
 const std::vector<float> NoVertices;
 const std::vector<unsigned int> NoIndices;
@@ -374,9 +382,7 @@ double vtkShadowEmbreeScene::AddSpheres(
       largest = std::max(largest, drawn.SplatRadii[i]);
     }
   }
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(scene, geometry);
-  rtcReleaseGeometry(geometry);
+  CommitInto(scene, geometry);
   return largest;
 }
 
@@ -403,9 +409,7 @@ double vtkShadowEmbreeScene::AddTubes(
       camera, drawn.LineWidth, vertices);
     std::copy(drawn.Segments.begin(), drawn.Segments.end(), indices);
   }
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(scene, geometry);
-  rtcReleaseGeometry(geometry);
+  CommitInto(scene, geometry);
   return largest;
 }
 
@@ -413,9 +417,9 @@ double vtkShadowEmbreeScene::AddTubes(
 size_t vtkShadowEmbreeScene::AddFlatQuads(
   RTCScene scene, const Actor& a, const vtkshadow::Impostors& drawn, const Camera& camera)
 {
-  // Plain points and lines: the flat squares and bands VTK draws, as
-  // triangles (Embree's flat curves face each ray, a shadow ray too: not
-  // the band facing the camera).
+  // Plain points and lines: the flat squares and bands VTK draws, as quads
+  // (Embree's flat curves face each ray, a shadow ray too: not the band
+  // facing the camera).
   std::vector<double> corners;
   vtkshadow::AppendFlatQuads(
     drawn, a.Matrix, camera.Projection, camera.View, camera.Width, corners);
@@ -440,9 +444,7 @@ size_t vtkShadowEmbreeScene::AddFlatQuads(
       indices[i] = static_cast<unsigned int>(i);
     }
   }
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(scene, geometry);
-  rtcReleaseGeometry(geometry);
+  CommitInto(scene, geometry);
   return quads;
 }
 
