@@ -105,16 +105,28 @@ set_tests_properties(python.translucent_csm PROPERTIES LABELS "render" TIMEOUT 1
 add_test(NAME python.impostor_casters
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_impostor_casters.py)
 set_tests_properties(python.impostor_casters PROPERTIES LABELS "render" TIMEOUT 180)
-# The other techniques cast closed triangle proxies of them at that radius
-# (vtkShadowImpostorProxies; docs/enable-shadows.md, "Points as spheres,
-# lines as tubes"), against the same controls drawn by the same technique:
-# 1.003-1.006 for the points, 1.033-1.038 for the tube (0 px before).
+# vtkPointGaussianMapper's splats cast spheres of their world radius, plain
+# points and lines wider than a pixel the camera-facing squares and bands
+# VTK draws (issue 32; docs/enable-shadows.md, "Points, lines and splats"),
+# against sphere meshes and quads drawn by the same technique (0.995-1.007);
+# 1-pixel points and lines and surface edges cast nothing.
+add_test(NAME python.splat_flat_casters
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY}
+          ${CMAKE_CURRENT_SOURCE_DIR}/python/test_splat_flat_casters.py)
+set_tests_properties(python.splat_flat_casters PROPERTIES LABELS "render" TIMEOUT 180)
+# The other techniques cast closed triangle proxies of spheres and tubes at
+# that radius (vtkShadowImpostorProxies; docs/enable-shadows.md, "Points as
+# spheres, lines as tubes"), against the same controls drawn by the same
+# technique: 1.003-1.006 for the points, 1.033-1.038 for the tube (0 px
+# before), and the quads and splat spheres above.
 foreach(_impostors csm auto volume planar)
-  add_test(NAME python.impostor_casters.${_impostors}
-    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY}
-            ${CMAKE_CURRENT_SOURCE_DIR}/python/test_impostor_casters.py ${_impostors})
-  set_tests_properties(python.impostor_casters.${_impostors} PROPERTIES LABELS "render"
-    TIMEOUT 180)
+  foreach(_script impostor_casters splat_flat_casters)
+    add_test(NAME python.${_script}.${_impostors}
+      COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY}
+              ${CMAKE_CURRENT_SOURCE_DIR}/python/test_${_script}.py ${_impostors})
+    set_tests_properties(python.${_script}.${_impostors} PROPERTIES LABELS "render"
+      TIMEOUT 180)
+  endforeach()
 endforeach()
 
 # planar's four transmittance channels go to the pairs a translucent caster

@@ -123,11 +123,59 @@ static void test_polyline(const vsh_proxy_shapes *shapes) {
   CHECK(!closed(p, V, t, T));
 }
 
+/* x / w and y / w of eye point e under the perspective `projection`. */
+static void screen(const double projection[16], const double e[3], double out[2]) {
+  const double w = -e[2];
+  out[0] = projection[0] * e[0] / w;
+  out[1] = projection[5] * e[1] / w;
+}
+
+/* Flat squares and bands: with the identity view (eye at the origin looking
+ * down -z) a square lies in its plane z = const, its sides along x and y,
+ * counter-clockwise from the camera; a band's ends stay on their depth
+ * planes and reach across the segment's screen direction, whatever its
+ * slant in depth; a segment seen end-on, a zero width or NaN give none. */
+static void test_flat(void) {
+  const double view[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  const double projection[16] = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, -1.1, -2.1, 0, 0, -1, 0};
+  const double centre[3] = {1, 2, -5};
+  double q[12];
+  CHECK(vsh_flat_square(view, centre, 0.5, q) == 1);
+  const double square[12] = {0.5, 1.5, -5, 1.5, 1.5, -5, 1.5, 2.5, -5, 0.5, 2.5, -5};
+  for (int i = 0; i < 12; ++i) {
+    CHECK(fabs(q[i] - square[i]) < 1e-12);
+  }
+  CHECK(vsh_flat_square(view, centre, 0.0, q) == 0);
+  CHECK(vsh_flat_square(view, centre, NAN, q) == 0);
+  const double a[3] = {-1, 0.5, -3}, b[3] = {2, 1, -8};
+  CHECK(vsh_flat_band(projection, view, a, 0.1, b, 0.3, q) == 1);
+  double sa[2], sb[2], s0[2], s3[2], s1[2], s2[2];
+  screen(projection, a, sa);
+  screen(projection, b, sb);
+  screen(projection, q, s0);
+  screen(projection, q + 3, s1);
+  screen(projection, q + 6, s2);
+  screen(projection, q + 9, s3);
+  const double dir[2] = {sb[0] - sa[0], sb[1] - sa[1]};
+  /* Across at both ends, the given half-widths in eye units, each end on
+   * its own depth plane, and counter-clockwise on screen. */
+  CHECK(fabs((s3[0] - s0[0]) * dir[0] + (s3[1] - s0[1]) * dir[1]) < 1e-12);
+  CHECK(fabs((s2[0] - s1[0]) * dir[0] + (s2[1] - s1[1]) * dir[1]) < 1e-12);
+  CHECK(fabs(hypot(q[9] - q[0], q[10] - q[1]) - 0.2) < 1e-12 && q[2] == -3 && q[11] == -3);
+  CHECK(fabs(hypot(q[6] - q[3], q[7] - q[4]) - 0.6) < 1e-12 && q[5] == -8 && q[8] == -8);
+  CHECK(dir[0] * (s3[1] - s0[1]) - dir[1] * (s3[0] - s0[0]) > 0);
+  const double near_end[3] = {0, 0, -2}, far_end[3] = {0, 0, -6};
+  CHECK(vsh_flat_band(projection, view, near_end, 0.1, far_end, 0.1, q) == 0);
+  CHECK(vsh_flat_band(projection, view, a, 0.0, b, 0.1, q) == 0);
+  CHECK(vsh_flat_band(projection, view, a, 0.1, centre, NAN, q) == 0);
+}
+
 int main(void) {
   vsh_proxy_shapes shapes;
   vsh_proxy_shapes_init(&shapes);
   test_sphere(&shapes);
   test_tube(&shapes);
   test_polyline(&shapes);
+  test_flat();
   return vsh_check_report("impostor_proxy");
 }

@@ -131,11 +131,17 @@ def poly_data(points, cell):
 
 
 def sphere_meshes(points, parallel_scale=None):
+    return sphere_meshes_of([(p, impostor_radius(p, POINT_SIZE, parallel_scale))
+                             for p in points])
+
+
+def sphere_meshes_of(spheres):
+    """Sphere meshes (vtkSphereSource, 32 x 32) of (centre, radius) pairs."""
     append = vtkAppendPolyData()
-    for p in points:
+    for p, radius in spheres:
         s = vtkSphereSource()
         s.SetCenter(*p)
-        s.SetRadius(impostor_radius(p, POINT_SIZE, parallel_scale))
+        s.SetRadius(radius)
         s.SetThetaResolution(32)
         s.SetPhiResolution(32)
         s.Update()
@@ -303,13 +309,8 @@ def compare(name, impostors, control_data, count, parallel_scale=None, triangles
         check(held == triangles, f"{name}: {TECHNIQUE} holds {held} proxy triangles ({triangles})")
 
 
-compare("points as spheres (size 18)", spheres_as_points, lambda: sphere_meshes(cloud()),
-        len(cloud()), triangles=proxy_triangles(len(cloud()), 0))
-compare("lines as tubes (width 16)", lines_as_tubes, lambda: tube_mesh(polyline()),
-        len(polyline()) - 1, triangles=proxy_triangles(len(polyline()), len(polyline()) - 1))
-compare(f"points as spheres, parallel (scale {PARALLEL_SCALE})", spheres_as_points,
-        lambda: sphere_meshes(cloud(), PARALLEL_SCALE), len(cloud()), PARALLEL_SCALE,
-        proxy_triangles(len(cloud()), 0))
+ZOOM = 20.0
+
 
 def follows(name, fresh_build, change):
     """Case `name`: the spheres after change(renderer) following a first
@@ -334,18 +335,29 @@ def sized(size, position=(0.0, 0.0, 0.0)):
     return build
 
 
-# The radii follow the camera: zoomed in after a first frame (the eye stays,
-# so the top levels' origin does too), the spheres' shadow is the one a
-# fresh window with the new view angle traces (the first frame's radii are
-# tan(15) / tan(10) = 1.52 times as large). Likewise a new point size (the
-# property) and a moved actor (its matrix) after the first frame.
-ZOOM = 20.0
-follows(f"zoomed to a {ZOOM} degree view angle", scene(spheres_as_points, ZOOM),
-        lambda renderer: renderer.GetActiveCamera().SetViewAngle(ZOOM))
-follows("point size 18 -> 26", scene(sized(26.0), ZOOM),
-        lambda renderer: (renderer.GetActiveCamera().SetViewAngle(ZOOM),
-                          caster_actor(renderer).GetProperty().SetPointSize(26.0)))
-follows("moved by (0.4, -0.3, 0.2)", scene(sized(POINT_SIZE, (0.4, -0.3, 0.2)), ZOOM),
-        lambda renderer: (renderer.GetActiveCamera().SetViewAngle(ZOOM),
-                          caster_actor(renderer).SetPosition(0.4, -0.3, 0.2)))
-finish()
+def main():
+    compare("points as spheres (size 18)", spheres_as_points, lambda: sphere_meshes(cloud()),
+            len(cloud()), triangles=proxy_triangles(len(cloud()), 0))
+    compare("lines as tubes (width 16)", lines_as_tubes, lambda: tube_mesh(polyline()),
+            len(polyline()) - 1, triangles=proxy_triangles(len(polyline()), len(polyline()) - 1))
+    compare(f"points as spheres, parallel (scale {PARALLEL_SCALE})", spheres_as_points,
+            lambda: sphere_meshes(cloud(), PARALLEL_SCALE), len(cloud()), PARALLEL_SCALE,
+            proxy_triangles(len(cloud()), 0))
+    # The radii follow the camera: zoomed in after a first frame (the eye stays,
+    # so the top levels' origin does too), the spheres' shadow is the one a
+    # fresh window with the new view angle traces (the first frame's radii are
+    # tan(15) / tan(10) = 1.52 times as large). Likewise a new point size (the
+    # property) and a moved actor (its matrix) after the first frame.
+    follows(f"zoomed to a {ZOOM} degree view angle", scene(spheres_as_points, ZOOM),
+            lambda renderer: renderer.GetActiveCamera().SetViewAngle(ZOOM))
+    follows("point size 18 -> 26", scene(sized(26.0), ZOOM),
+            lambda renderer: (renderer.GetActiveCamera().SetViewAngle(ZOOM),
+                              caster_actor(renderer).GetProperty().SetPointSize(26.0)))
+    follows("moved by (0.4, -0.3, 0.2)", scene(sized(POINT_SIZE, (0.4, -0.3, 0.2)), ZOOM),
+            lambda renderer: (renderer.GetActiveCamera().SetViewAngle(ZOOM),
+                              caster_actor(renderer).SetPosition(0.4, -0.3, 0.2)))
+    finish()
+
+
+if __name__ == "__main__":
+    main()

@@ -178,3 +178,82 @@ int vsh_proxy_tube(const vsh_proxy_shapes *shapes, const double a[3], double ra,
   }
   return 1;
 }
+
+/* The eye's x and y axes in world coordinates (the view's first two rows),
+ * unit length; 0 when degenerate. */
+static int eye_axes(const double view[16], double right[3], double up[3])
+{
+  normalize_into(view, right);
+  normalize_into(view + 4, up);
+  /* A zero row normalizes to NaNs. */
+  return isfinite(right[0] + right[1] + right[2] + up[0] + up[1] + up[2]);
+}
+
+/* The quad from p (half-width sp) to q (sq) across unit y: (p - y, q - y,
+ * q + y, p + y), counter-clockwise seen from the camera when y is the
+ * direction p -> q on screen turned a quarter counter-clockwise. */
+static void quad_corners(const double p[3], const double q[3], double sp, double sq,
+                         const double y[3], double corners[12])
+{
+  for (int k = 0; k < 3; ++k) {
+    corners[k] = p[k] - sp * y[k];
+    corners[3 + k] = q[k] - sq * y[k];
+    corners[6 + k] = q[k] + sq * y[k];
+    corners[9 + k] = p[k] + sp * y[k];
+  }
+}
+
+int vsh_flat_square(const double view[16], const double centre[3], double half,
+                    double corners[12])
+{
+  double right[3], up[3];
+  if (!(half > 0.0) || !isfinite(half) || !isfinite(centre[0] + centre[1] + centre[2]) ||
+      !eye_axes(view, right, up)) {
+    return 0;
+  }
+  /* The square about the centre: its left and right edges' midpoints are
+   * centre -/+ half * right, each spanning +-half * up. */
+  double left[3], rightmid[3];
+  for (int k = 0; k < 3; ++k) {
+    left[k] = centre[k] - half * right[k];
+    rightmid[k] = centre[k] + half * right[k];
+  }
+  quad_corners(left, rightmid, half, half, up, corners);
+  return 1;
+}
+
+int vsh_flat_band(const double projection[16], const double view[16], const double a[3], double ra,
+                  const double b[3], double rb, double corners[12])
+{
+  double right[3], up[3], ea[4] = { 0, 0, 0, 1 }, d[4] = { 0, 0, 0, 0 };
+  if (!(ra > 0.0) || !(rb > 0.0) || !isfinite(ra) || !isfinite(rb) ||
+      !isfinite(a[0] + a[1] + a[2] + b[0] + b[1] + b[2]) || !eye_axes(view, right, up)) {
+    return 0;
+  }
+  for (int r = 0; r < 3; ++r) {
+    ea[r] = view[4 * r] * a[0] + view[4 * r + 1] * a[1] + view[4 * r + 2] * a[2] + view[4 * r + 3];
+    d[r] = view[4 * r] * (b[0] - a[0]) + view[4 * r + 1] * (b[1] - a[1]) +
+           view[4 * r + 2] * (b[2] - a[2]);
+  }
+  /* On screen x / w and y / w (square pixels); along the segment their
+   * derivative is (d.xy w - a.xy dw) / w^2, w and dw from the projection's
+   * last row. */
+  double w = 0.0, dw = 0.0;
+  for (int c = 0; c < 4; ++c) {
+    w += projection[12 + c] * ea[c];
+    dw += projection[12 + c] * d[c];
+  }
+  const double sx = d[0] * w - ea[0] * dw, sy = d[1] * w - ea[1] * dw;
+  const double length = sqrt(sx * sx + sy * sy);
+  if (!(length > 0.0) || !isfinite(length)) {
+    return 0;
+  }
+  /* Across the screen direction (turned a quarter counter-clockwise), in
+   * world coordinates. */
+  double across[3];
+  for (int k = 0; k < 3; ++k) {
+    across[k] = (-sy * right[k] + sx * up[k]) / length;
+  }
+  quad_corners(a, b, ra, rb, across, corners);
+  return 1;
+}

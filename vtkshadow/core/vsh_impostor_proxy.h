@@ -62,6 +62,29 @@ void vsh_proxy_sphere(const vsh_proxy_shapes *shapes, const double centre[3], do
 int vsh_proxy_tube(const vsh_proxy_shapes *shapes, const double a[3], double ra, const double b[3],
                    double rb, int turn, double *vertices, uint32_t *triangles, uint32_t base);
 
+/* The flat shapes VTK draws for plain points and lines (without
+ * RenderPointsAsSpheres / RenderLinesAsTubes), as world quads: a point of
+ * size s is a square sprite s pixels wide parallel to the image plane, a
+ * line of width s a band s pixels wide across its direction on screen. Both
+ * casters and what raytrace's primary rays land on are these quads, not a
+ * solid: VTK draws nothing behind them. `view` is world -> eye (rigid), `projection` eye ->
+ * clip, both row major; the half-widths are vsh_rt_impostor_radius's at
+ * each point. The 4 corners (x y z each) run counter-clockwise seen from
+ * the camera.
+ *
+ * The square of half side `half` about `centre`: 0 (nothing written) when
+ * `half` is not positive and finite or the view is degenerate. */
+int vsh_flat_square(const double view[16], const double centre[3], double half,
+                    double corners[12]);
+
+/* The band from `a` (half-width ra) to `b` (rb), across the segment's
+ * direction on screen (a straight segment stays straight in projection, so
+ * one direction serves both ends): 0 (nothing written) when the segment is
+ * seen end-on (no direction on screen; VTK draws at most a dot), a width is
+ * not positive and finite, or the input is not finite. */
+int vsh_flat_band(const double projection[16], const double view[16], const double a[3], double ra,
+                  const double b[3], double rb, double corners[12]);
+
 #ifdef __cplusplus
 }
 #endif

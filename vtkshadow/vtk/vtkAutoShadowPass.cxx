@@ -26,6 +26,7 @@
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowFrame.h"
 #include "vtkShadowImpostorProxies.h"
+#include "vtkShadowImpostors.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowReceiverPlane.h"
 #include "vtkShadowTechniqueSet.h"
@@ -112,6 +113,33 @@ struct vtkAutoShadowPass::Internals
     return *caster;
   }
 };
+
+namespace
+{
+// How wide on screen the actor's points, lines and splats are drawn, the
+// thinnest of them: the point size or the line width, twice the smallest
+// splat radius over one pixel's world size `pixel` at the actor.
+double ImpostorPixels(vtkActor* actor, double pixel)
+{
+  const int kinds = vtkshadow::ImpostorKinds(actor);
+  vtkProperty* property = actor->GetProperty();
+  double thinnest = std::numeric_limits<double>::infinity();
+  if (kinds & (vtkshadow::SPHERES | vtkshadow::FLAT_POINTS))
+  {
+    thinnest = std::min(thinnest, double(property->GetPointSize()));
+  }
+  if (kinds & (vtkshadow::TUBES | vtkshadow::FLAT_LINES))
+  {
+    thinnest = std::min(thinnest, double(property->GetLineWidth()));
+  }
+  double radii[2];
+  if (vtkshadow::SplatRadiusRange(actor, radii) && pixel > 0.0)
+  {
+    thinnest = std::min(thinnest, 2.0 * radii[0] / pixel);
+  }
+  return thinnest;
+}
+}
 
 namespace
 {
@@ -585,19 +613,13 @@ double vtkAutoShadowPass::ThinnestCasterPixels(vtkRenderer* renderer)
       continue;
     }
     const vtkshadow::ShadowActor& actor = impl.Actors[i];
-    // Spheres and tubes are as wide on screen as VTK draws them: the point
-    // size or line width in pixels, whatever their distance.
+    // Spheres, tubes, squares and bands are as wide on screen as VTK draws
+    // them: the point size or line width in pixels, whatever their
+    // distance; splats twice their smallest radius.
     if (vtkshadow::DrawsImpostors(actor.Actor))
     {
-      vtkProperty* property = actor.Actor->GetProperty();
-      if (property->GetRenderPointsAsSpheres())
-      {
-        thinnest = std::min(thinnest, double(property->GetPointSize()));
-      }
-      if (property->GetRenderLinesAsTubes() && property->GetLineWidth() > 1.0)
-      {
-        thinnest = std::min(thinnest, double(property->GetLineWidth()));
-      }
+      thinnest =
+        std::min(thinnest, ImpostorPixels(actor.Actor, this->PixelWorldSize(renderer, o.center)));
       continue;
     }
     const double width = impl.For(actor.Actor).Geometry.GetThinnestWidth();

@@ -149,9 +149,10 @@ inline bool HasFlag(const ShadowActor& a, vtkInformationIntegerKey* key)
 // drawn as a wireframe or as points shows only lines or points a few pixels
 // wide: the solid shadow of its triangles would come from nothing on
 // screen, so it casts none (csm's maps hold the lines VTK rasterizes). The
-// points and lines VTK draws as spheres and tubes (vtkShadowImpostors) cast
-// whatever the representation: raytrace as Embree spheres and curves, csm,
-// planar and volume as proxies (vtkShadowImpostorProxies).
+// points and lines VTK draws (vtkShadowImpostors: spheres, tubes, and plain
+// squares and bands wider than a pixel) and vtkPointGaussianMapper's splats
+// cast whatever the representation: raytrace as Embree spheres, curves and
+// quads, csm, planar and volume as proxies (vtkShadowImpostorProxies).
 bool CastsAsSurface(const ShadowActor& a, vtkInformationIntegerKey* noCast);
 }
 

@@ -19,6 +19,7 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiPieceDataSet.h"
 #include "vtkPointData.h"
+#include "vtkPointGaussianMapper.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -255,7 +256,9 @@ bool vtkshadow::ExtractCasterTriangles(vtkActor* actor, CasterTriangles& out)
   out.Indices.clear();
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
   vtkDataObject* data = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
-  if (!data)
+  // A vtkPointGaussianMapper draws its points only, whatever cells its
+  // input has (its splats cast as vtkShadowImpostors).
+  if (!data || vtkPointGaussianMapper::SafeDownCast(mapper))
   {
     return false;
   }

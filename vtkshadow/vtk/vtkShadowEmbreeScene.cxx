@@ -41,6 +41,14 @@ void Cofactors(const double m[16], double out[9])
   }
 }
 
+// Commits `geometry` and hands it to `scene` (which keeps it).
+void CommitInto(RTCScene scene, RTCGeometry geometry)
+{
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);
+}
+
 // What an impostor instance points its triangle lookup at: nothing.
 const std::vector<float> NoVertices;
 const std::vector<unsigned int> NoIndices;
@@ -343,6 +351,104 @@ void vtkShadowEmbreeScene::AddMeshInstance(const Actor& a, const Mesh& mesh)
 }
 
 //------------------------------------------------------------------------------
+double vtkShadowEmbreeScene::AddSpheres(
+  RTCScene scene, const Actor& a, const vtkshadow::Impostors& drawn, const Camera& camera)
+{
+  // Points drawn as spheres (sized for the camera) and splats (their own
+  // world radius): one geometry of FLOAT4 (x y z radius) vertices.
+  const size_t points = drawn.Points.size() / 3, splats = drawn.SplatRadii.size();
+  if (points + splats == 0)
+  {
+    return 0;
+  }
+  RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), points + splats));
+  double largest = 0;
+  if (vertices)
+  {
+    largest = FillImpostorVertices(
+      drawn.Points.data(), points, a.Matrix, this->Centre, camera, drawn.PointSize, vertices);
+    float* out = vertices + 4 * points;
+    for (size_t i = 0; i < splats; ++i, out += 4)
+    {
+      double world[3];
+      vsh_mat4_transform_point(a.Matrix, &drawn.Splats[3 * i], world);
+      for (int r = 0; r < 3; ++r)
+      {
+        out[r] = static_cast<float>(world[r] - this->Centre[r]);
+      }
+      out[3] = static_cast<float>(drawn.SplatRadii[i]);
+      largest = std::max(largest, drawn.SplatRadii[i]);
+    }
+  }
+  CommitInto(scene, geometry);
+  return largest;
+}
+
+//------------------------------------------------------------------------------
+double vtkShadowEmbreeScene::AddTubes(
+  RTCScene scene, const Actor& a, const vtkshadow::Impostors& drawn, const Camera& camera)
+{
+  if (drawn.Segments.empty())
+  {
+    return 0;
+  }
+  // Round: cones between spheres at the vertices, a tube whose joints
+  // close (VTK's own wide-line tubes leave wedges at sharp bends).
+  const size_t lineVertices = drawn.LineVertices.size() / 3;
+  RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), lineVertices));
+  auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
+    RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned int), drawn.Segments.size()));
+  double largest = 0;
+  if (vertices && indices)
+  {
+    largest = FillImpostorVertices(drawn.LineVertices.data(), lineVertices, a.Matrix, this->Centre,
+      camera, drawn.LineWidth, vertices);
+    std::copy(drawn.Segments.begin(), drawn.Segments.end(), indices);
+  }
+  CommitInto(scene, geometry);
+  return largest;
+}
+
+//------------------------------------------------------------------------------
+size_t vtkShadowEmbreeScene::AddFlatQuads(
+  RTCScene scene, const Actor& a, const vtkshadow::Impostors& drawn, const Camera& camera)
+{
+  // Plain points and lines: the flat squares and bands VTK draws, as quads
+  // (Embree's flat curves face each ray, a shadow ray too: not the band
+  // facing the camera).
+  std::vector<double> corners;
+  vtkshadow::AppendFlatQuads(
+    drawn, a.Matrix, camera.Projection, camera.View, camera.Width, corners);
+  const size_t quads = corners.size() / 12;
+  if (quads == 0)
+  {
+    return 0;
+  }
+  RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_QUAD);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * quads));
+  auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned int), quads));
+  if (vertices && indices)
+  {
+    for (size_t i = 0; i < corners.size(); ++i)
+    {
+      vertices[i] = static_cast<float>(corners[i] - this->Centre[i % 3]);
+    }
+    for (size_t i = 0; i < 4 * quads; ++i)
+    {
+      indices[i] = static_cast<unsigned int>(i);
+    }
+  }
+  CommitInto(scene, geometry);
+  return quads;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowEmbreeScene::AddImpostors(const Actor& a, const Mesh& mesh, const Camera& camera)
 {
   // In world units relative to the centre, not instanced from data
@@ -352,46 +458,14 @@ void vtkShadowEmbreeScene::AddImpostors(const Actor& a, const Mesh& mesh, const 
   RTCScene scene = rtcNewScene(this->Device);
   rtcSetSceneFlags(scene,
     static_cast<RTCSceneFlags>(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION));
-  double largest = 0;
-  const size_t points = drawn.Points.size() / 3;
-  if (points > 0)
-  {
-    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), points));
-    if (vertices)
-    {
-      largest = FillImpostorVertices(
-        drawn.Points.data(), points, a.Matrix, this->Centre, camera, drawn.PointSize, vertices);
-    }
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene, geometry);
-    rtcReleaseGeometry(geometry);
-  }
-  const size_t lineVertices = drawn.LineVertices.size() / 3;
-  if (!drawn.Segments.empty())
-  {
-    // Round: cones between spheres at the vertices, a tube whose joints
-    // close (VTK's own wide-line tubes leave wedges at sharp bends).
-    RTCGeometry geometry = rtcNewGeometry(this->Device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), lineVertices));
-    auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(geometry,
-      RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned int), drawn.Segments.size()));
-    if (vertices && indices)
-    {
-      largest = std::max(largest,
-        FillImpostorVertices(drawn.LineVertices.data(), lineVertices, a.Matrix, this->Centre,
-          camera, drawn.LineWidth, vertices));
-      std::copy(drawn.Segments.begin(), drawn.Segments.end(), indices);
-    }
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene, geometry);
-    rtcReleaseGeometry(geometry);
-  }
+  // The flat quads need no slack: VTK's depth lies on them.
+  const double largest =
+    std::max(this->AddSpheres(scene, a, drawn, camera), this->AddTubes(scene, a, drawn, camera));
+  const size_t quads = this->AddFlatQuads(scene, a, drawn, camera);
   rtcCommitScene(scene);
   this->ImpostorScenes.push_back(scene);
-  this->ImpostorCount += static_cast<long long>(points + drawn.Segments.size());
+  this->ImpostorCount += static_cast<long long>(
+    drawn.Points.size() / 3 + drawn.SplatRadii.size() + drawn.Segments.size() + quads);
   // An identity placement: the positions already are in the frame.
   Instance instance;
   const float xfm[12] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0 };

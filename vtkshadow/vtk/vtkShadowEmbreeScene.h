@@ -24,9 +24,11 @@
 // RenderLinesAsTubes: vtkShadowImpostors) are Embree spheres (RTC_GEOMETRY_TYPE_SPHERE_POINT) and
 // round linear curves (RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE: cones between spheres) whose radius is
 // half their pixel width at their depth (vsh_rt_impostor_radius): the solid VTK's impostor shows
-// from the camera. That radius depends on the camera, so they are not instanced meshes but one
-// scene per actor placement in the top levels' frame, rebuilt with the top levels whenever the
-// camera or the viewport changes.
+// from the camera. vtkPointGaussianMapper's splats are spheres of their world radius; plain
+// points and lines wider than a pixel are the flat squares and bands VTK draws
+// (RTC_GEOMETRY_TYPE_QUAD, facing the camera). Pixel sizes depend on the camera, so these are
+// not instanced meshes but one scene per actor placement in the top levels' frame, rebuilt with
+// the top levels whenever the camera or the viewport changes.
 #ifndef vtkShadowEmbreeScene_h
 #define vtkShadowEmbreeScene_h
 
@@ -40,6 +42,10 @@
 #include <vector>
 
 class vtkActor;
+namespace vtkshadow
+{
+struct Impostors;
+}
 
 class vtkShadowEmbreeScene
 {
@@ -143,6 +149,14 @@ private:
   bool BuildTopLevel(const std::vector<Actor>& actors, const double eye[3], const Camera& camera);
   void AddMeshInstance(const Actor& a, const Mesh& mesh);
   void AddImpostors(const Actor& a, const Mesh& mesh, const Camera& camera);
+  // The parts of AddImpostors: each adds its geometry to `scene` and returns
+  // its largest radius (AddFlatQuads: its quads).
+  double AddSpheres(
+    RTCScene scene, const Actor& a, const vtkshadow::Impostors& drawn, const Camera& camera);
+  double AddTubes(
+    RTCScene scene, const Actor& a, const vtkshadow::Impostors& drawn, const Camera& camera);
+  size_t AddFlatQuads(
+    RTCScene scene, const Actor& a, const vtkshadow::Impostors& drawn, const Camera& camera);
   void Attach(const Actor& a, bool casts, RTCScene scene, const float transform[12],
     const Instance& instance);
   std::vector<double> PlacementKey(const std::vector<Actor>& actors, const Camera& camera) const;

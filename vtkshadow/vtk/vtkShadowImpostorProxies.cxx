@@ -74,6 +74,21 @@ struct ProxyMesh
     }
   }
 
+  // One flat quad (4 corners, counter-clockwise): two triangles, open (the
+  // techniques count an open surface's shadow from both sides).
+  void Quad(const double* corners)
+  {
+    const long long base = this->Grow(4, 2);
+    if (base < 0)
+    {
+      return;
+    }
+    std::copy_n(corners, 12, &this->Positions[3 * base]);
+    const auto b = static_cast<uint32_t>(base);
+    const uint32_t triangles[6] = { b, b + 1, b + 2, b, b + 2, b + 3 };
+    std::copy_n(triangles, 6, &this->Triangles[this->Triangles.size() - 6]);
+  }
+
   void Tube(const double a[3], double ra, const double b[3], double rb, int turn)
   {
     if (!(ra > 0.0) || !(rb > 0.0))
@@ -110,13 +125,26 @@ void PlacePoints(const vtkshadow::ShadowFrame& frame, const double matrix[16], c
   }
 }
 
-// The proxies of everything `drawn` holds: a sphere per point, a truncated
-// cone per segment and a sphere per line vertex (round joints and ends,
-// as raytrace's round curves have).
+// The proxies of everything `drawn` holds: a sphere per point and per
+// splat, a truncated cone per segment and a sphere per line vertex (round
+// joints and ends, as raytrace's round curves have), a quad per flat point
+// or segment.
 void BuildMesh(const vtkshadow::ShadowFrame& frame, const double matrix[16],
   const vtkshadow::Impostors& drawn, ProxyMesh& mesh)
 {
   std::vector<double> world, radii;
+  for (size_t i = 0; i < drawn.SplatRadii.size(); ++i)
+  {
+    double centre[3];
+    vsh_mat4_transform_point(matrix, &drawn.Splats[3 * i], centre);
+    mesh.Sphere(centre, drawn.SplatRadii[i]);
+  }
+  std::vector<double> corners;
+  vtkshadow::AppendFlatQuads(drawn, matrix, frame.Projection, frame.View, frame.Size[0], corners);
+  for (size_t q = 0; q + 11 < corners.size(); q += 12)
+  {
+    mesh.Quad(&corners[q]);
+  }
   PlacePoints(
     frame, matrix, drawn.Points.data(), drawn.Points.size() / 3, drawn.PointSize, world, radii);
   for (size_t i = 0; i < radii.size(); ++i)
@@ -160,10 +188,7 @@ struct ImpostorProxies::Entry
 //------------------------------------------------------------------------------
 bool DrawsImpostors(vtkActor* actor)
 {
-  vtkProperty* property = actor ? actor->GetProperty() : nullptr;
-  return property &&
-    (property->GetRenderPointsAsSpheres() ||
-      (property->GetRenderLinesAsTubes() && property->GetLineWidth() > 1.0));
+  return ImpostorKinds(actor) != 0;
 }
 
 //------------------------------------------------------------------------------
@@ -175,15 +200,22 @@ double ImpostorRadius(const ShadowFrame& frame, double pixels, const double p[3]
 //------------------------------------------------------------------------------
 bool ImpostorBounds(const ShadowFrame& frame, const ShadowActor& actor, double bounds[6])
 {
-  if (!DrawsImpostors(actor.Actor))
+  const int kinds = ImpostorKinds(actor.Actor);
+  if (!kinds)
   {
     return false;
   }
   vtkProperty* property = actor.Actor->GetProperty();
-  const double pixels = std::max(property->GetPointSize(), property->GetLineWidth());
-  // The radius grows linearly with the depth: the largest is at a corner.
-  double largest = 0.0;
-  for (int c = 0; c < 8; ++c)
+  const double pixels = (kinds & (SPHERES | FLAT_POINTS) ? property->GetPointSize() : 0.0) +
+    (kinds & (TUBES | FLAT_LINES) ? property->GetLineWidth() : 0.0);
+  // Splats: their largest radius; the others' radius grows linearly with
+  // the depth: the largest is at a corner.
+  double largest = 0.0, splats[2];
+  if (SplatRadiusRange(actor.Actor, splats))
+  {
+    largest = splats[1];
+  }
+  for (int c = 0; c < 8 && pixels > 0.0; ++c)
   {
     const double corner[3] = { actor.Bounds[c & 1], actor.Bounds[2 + ((c >> 1) & 1)],
       actor.Bounds[4 + ((c >> 2) & 1)] };

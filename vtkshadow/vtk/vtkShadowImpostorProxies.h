@@ -1,9 +1,13 @@
-// vtkShadowImpostorProxies.h - closed triangle proxies of the spheres and
-// tubes VTK draws for RenderPointsAsSpheres and RenderLinesAsTubes, for the
-// techniques that cast triangles (csm, planar, volume). raytrace casts true
-// spheres and round curves (vtkShadowEmbreeScene); these meshes stand in
-// for them at the same radius (vsh_rt_impostor_radius: half the drawn pixel
-// width at the point's depth), so every technique casts what VTK draws.
+// vtkShadowImpostorProxies.h - triangle proxies of the points and lines
+// VTK draws as screen-space shapes (vtkShadowImpostors), for the techniques
+// that cast triangles (csm, planar, volume): closed icospheres and tubes
+// for RenderPointsAsSpheres, RenderLinesAsTubes and vtkPointGaussianMapper's
+// splats, where raytrace casts true spheres and round curves
+// (vtkShadowEmbreeScene), and the very quads raytrace casts for plain
+// points and lines. Pixel-sized ones take the radius VTK draws
+// (vsh_rt_impostor_radius: half the drawn pixel width at the point's
+// depth), splats their world radius, so every technique casts what VTK
+// draws.
 //
 // The radius is in pixels, so the proxies are world-space meshes of the
 // current camera: rebuilt when the camera, the viewport, the actor's
@@ -28,19 +32,19 @@ namespace vtkshadow
 {
 struct ShadowFrame;
 
-// Whether the actor's property asks for spheres or tubes at all
-// (RenderPointsAsSpheres, or RenderLinesAsTubes with a width above 1): the
-// test that keeps the proxies free for every other actor.
+// Whether the actor draws any of those shapes (ImpostorKinds: its property,
+// mapper and cell counts): the test that keeps the proxies free for every
+// other actor.
 bool DrawsImpostors(vtkActor* actor);
 
 // The world radius VTK draws `pixels` wide at world point `p` with the
 // frame's camera (vsh_rt_impostor_radius).
 double ImpostorRadius(const ShadowFrame& frame, double pixels, const double p[3]);
 
-// The actor's world bounds grown by the largest radius its spheres and
-// tubes can have inside them (the radius at the box corner farthest along
-// the view, its width the larger of point size and line width). False when
-// the actor draws no spheres or tubes (DrawsImpostors).
+// The actor's world bounds grown by the largest radius its shapes can have
+// inside them (the radius at the box corner farthest along the view of the
+// point size plus the line width, or the largest splat radius). False when
+// the actor draws none (DrawsImpostors).
 bool ImpostorBounds(const ShadowFrame& frame, const ShadowActor& actor, double bounds[6]);
 
 // One pass's proxies (their GPU copies live in its context).
