@@ -361,3 +361,54 @@ double vsh_auto_taper_error(const double *widths, const double *lengths, size_t 
   }
   return 100.0 * area * stretch / pixels;
 }
+
+/* ---- thin impostor casters ---------------------------------------------- */
+
+static int thin_input_ok(double thin_outline_px, double pixels)
+{
+  return pixels > 0.0 && isfinite(pixels) && thin_outline_px >= 0.0 && isfinite(thin_outline_px);
+}
+
+double vsh_auto_thin_floor_error(double thin_outline_px, double pixels)
+{
+  if (!thin_input_ok(thin_outline_px, pixels))
+    return INFINITY;
+  return 100.0 * VSH_AUTO_THIN_EXACT_FLOOR * thin_outline_px / pixels;
+}
+
+double vsh_auto_thin_map_error(double thin_outline_px, double texel_px, double pixels)
+{
+  if (!thin_input_ok(thin_outline_px, pixels) || !(texel_px > 0.0) || isnan(texel_px))
+    return INFINITY;
+  if (thin_outline_px == 0.0)
+    return 0.0;
+  return 100.0 * VSH_AUTO_THIN_MAP_PER_TEXEL * texel_px * thin_outline_px / pixels;
+}
+
+double vsh_auto_thin_texel_target(double budget_pct, double thin_outline_px, double pixels)
+{
+  if (!thin_input_ok(thin_outline_px, pixels) || isnan(budget_pct))
+    return 0.0;
+  if (thin_outline_px == 0.0)
+    return INFINITY;
+  if (!(budget_pct > 0.0))
+    return 0.0;
+  return budget_pct / 100.0 * pixels / (VSH_AUTO_THIN_MAP_PER_TEXEL * thin_outline_px);
+}
+
+double vsh_auto_thin_frame_texel(double texel_px, double max_wrong_pct, const double *thin_outlines,
+                                 int count, double pixels)
+{
+  if (!(texel_px > 0.0) || !thin_outlines || isnan(max_wrong_pct))
+    return texel_px;
+  double t = texel_px;
+  for (int l = 0; l < count; ++l) {
+    if (!(thin_outlines[l] > 0.0))
+      continue;
+    const double budget = max_wrong_pct - vsh_auto_thin_floor_error(thin_outlines[l], pixels);
+    const double thin = vsh_auto_thin_texel_target(budget, thin_outlines[l], pixels);
+    if (thin >= VSH_AUTO_THIN_MIN_TEXEL_PX)
+      t = fmin(t, thin);
+  }
+  return t;
+}

@@ -110,6 +110,52 @@ double vsh_auto_taper_error(const double *widths, const double *lengths, size_t 
                             double px_per_unit, double texel_px, double min_texels,
                             double stretch, double pixels);
 
+/* ---- thin impostor casters ----------------------------------------------
+ *
+ * VTK draws points as spheres, lines as tubes and splats as discs a few
+ * pixels wide on screen, whatever their distance: shapes whose outline is
+ * long for their area. A map's error on them grows with its texel size
+ * well below the texel model's band (the shadows are a few texels wide, and
+ * the shapes' own terminators and shadows on each other move with the
+ * texels), and even exact techniques miss a little there (VTK's impostor
+ * depth is approximate). Both in pixels per pixel of the impostors' outline
+ * (`thin_outline_px`, their silhouettes seen from the light), measured on
+ * scenes/primitives against POV-Ray at 320x240 (docs/auto.md, "Thin
+ * impostor casters"). */
+#define VSH_AUTO_THIN_MAP_PER_TEXEL 0.2
+#define VSH_AUTO_THIN_EXACT_FLOOR 0.15
+/* The finest texel (pixels on screen) auto asks of a map for them: finer
+ * maps cost memory and rendering time that the cost model does not weigh,
+ * and an exact technique is the better way there. */
+#define VSH_AUTO_THIN_MIN_TEXEL_PX 0.5
+
+/* The wrong_pct every technique makes on impostor casters with
+ * `thin_outline_px` of outline: VSH_AUTO_THIN_EXACT_FLOOR of each outline
+ * pixel, over `pixels`. 0 for no outline; +inf for bad input (NaN, pixels
+ * <= 0, a negative outline). */
+double vsh_auto_thin_floor_error(double thin_outline_px, double pixels);
+
+/* The wrong_pct a map with texels `texel_px` pixels on screen adds on
+ * impostor casters beyond the floor: VSH_AUTO_THIN_MAP_PER_TEXEL x
+ * texel_px of each outline pixel, over `pixels`. 0 for no outline; +inf for
+ * bad input (NaN, texel_px or pixels <= 0, a negative outline). */
+double vsh_auto_thin_map_error(double thin_outline_px, double texel_px, double pixels);
+
+/* The largest texel (pixels on screen) whose vsh_auto_thin_map_error stays
+ * within `budget_pct`: +inf for no outline, 0 when there is no budget
+ * (budget_pct <= 0) or for bad input. */
+double vsh_auto_thin_texel_target(double budget_pct, double thin_outline_px, double pixels);
+
+/* The frame's texel target `texel_px` (> 0) tightened for the map lights'
+ * impostor casters: the smallest vsh_auto_thin_texel_target over the
+ * `count` lights' `thin_outlines` (0 for a light without them), each with
+ * the budget max_wrong_pct less its vsh_auto_thin_floor_error, among those
+ * at least VSH_AUTO_THIN_MIN_TEXEL_PX (a light that needs finer texels is
+ * left to an exact technique: its map then predicts the target missed).
+ * texel_px unchanged for bad input or no thin outline. */
+double vsh_auto_thin_frame_texel(double texel_px, double max_wrong_pct, const double *thin_outlines,
+                                 int count, double pixels);
+
 #ifdef __cplusplus
 }
 #endif

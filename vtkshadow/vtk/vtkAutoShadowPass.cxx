@@ -63,6 +63,10 @@ struct vtkAutoShadowPass::Internals
     // Shadow-volume side quads per light, with the light (shifted data
     // coordinates) they were counted for.
     std::map<int, std::pair<std::vector<double>, double>> VolumeEdges;
+    // What it draws as points and lines (spheres, tubes, splats, squares,
+    // bands), extracted again when ImpostorTime changes.
+    vtkshadow::Impostors Drawn;
+    vtkMTimeType DrawnTime = 0;
   };
   std::map<vtkProp*, std::unique_ptr<Caster>> Casters;
 
@@ -72,8 +76,9 @@ struct vtkAutoShadowPass::Internals
   std::vector<vtkshadow::ShadowActor> Actors;
   std::vector<vtkWeakPointer<vtkActor>> Detected; // receivers found, not marked
   std::string GeneralJSON;                        // per map light: the candidates auto weighed
-  std::vector<bool> SoftLights;                   // per switched-on light: has a radius or angle
-  std::string SoftJSON;                           // per light with a size: the soft candidates
+  std::vector<double> ThinOutlines; // per light: pixels of outline of impostor casters (thin)
+  std::vector<bool> SoftLights;     // per switched-on light: has a radius or angle
+  std::string SoftJSON;             // per light with a size: the soft candidates
   int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
   int RaySamples = 0;    // the frame's samples for raytrace's lights with a size (0: none)
   int VolumeSamples = 0; // the frame's soft_samples for volume's lights with a size (0: none)
@@ -244,6 +249,7 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
   // grazing light stretches them on plane receivers.
   double stretch = 1.0, edgeLength = 0.0;
   std::vector<double> edgeLengths(impl.LightChoices.size(), 0.0); // per map light
+  impl.ThinOutlines.assign(impl.LightChoices.size(), 0.0);        // of them, impostors' outlines
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
     if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
@@ -251,7 +257,8 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
       continue;
     }
     const int index = static_cast<int>(l);
-    edgeLengths[l] = this->MapOutlinePixels(frame.Lights[l].Homogeneous, index, renderer);
+    edgeLengths[l] =
+      this->MapOutlinePixels(frame.Lights[l].Homogeneous, index, renderer, &impl.ThinOutlines[l]);
     edgeLength = std::max(edgeLength, edgeLengths[l]);
     stretch = std::max(stretch,
       vsh_auto_plane_stretch(
@@ -428,8 +435,17 @@ void vtkAutoShadowPass::ApplyLightMasks()
 void vtkAutoShadowPass::ChooseTexelTarget(vtkRenderer* renderer, double edgeLength, double stretch)
 {
   const int* size = renderer->GetSize();
-  this->UsedTexelTarget = vsh_auto_frame_texel_target(this->MaxTexelPixels, this->MaxError,
-    static_cast<double>(size[0]) * size[1], edgeLength, stretch);
+  const double pixels = static_cast<double>(size[0]) * size[1];
+  this->UsedTexelTarget =
+    vsh_auto_frame_texel_target(this->MaxTexelPixels, this->MaxError, pixels, edgeLength, stretch);
+  // Impostor casters (spheres, tubes, splats) lose more than the texel
+  // model's edges: finer texels where a map can meet the target on them.
+  if (!(this->MaxTexelPixels > 0.0))
+  {
+    const std::vector<double>& thin = this->Impl->ThinOutlines;
+    this->UsedTexelTarget = vsh_auto_thin_frame_texel(
+      this->UsedTexelTarget, this->MaxError, thin.data(), static_cast<int>(thin.size()), pixels);
+  }
   // csm's sampled light was weighed at csm's own map_resolution within its
   // memory budget (vsh_auto_soft_csm_texel_ratio): a texel target would
   // shrink its maps further than the model saw (at 256x192 to 512 texels,
@@ -519,19 +535,95 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-double vtkAutoShadowPass::MapOutlinePixels(const double light[4], int index, vtkRenderer* renderer)
+double vtkAutoShadowPass::MapOutlinePixels(
+  const double light[4], int index, vtkRenderer* renderer, double* thin)
 {
   // The outline of every shadow this light's map must draw: the silhouettes
-  // of the (non-receiver) casters in view, in pixels.
+  // of the (non-receiver) casters in view, in pixels; of them, those of the
+  // points and lines VTK draws as shapes a few pixels wide (*thin).
   Internals& impl = *this->Impl;
   double outline = 0.0;
+  *thin = 0.0;
   for (size_t i = 0; i < impl.Objects.size(); ++i)
   {
     const vsh_auto_object& o = impl.Objects[i];
-    if (o.casts && !o.receiver && o.in_view)
+    if (!o.casts || o.receiver || !o.in_view)
     {
-      outline += this->OutlinePixels(i, light, index, renderer);
+      continue;
     }
+    if (vtkshadow::DrawsImpostors(impl.Actors[i].Actor))
+    {
+      const double drawn = this->ImpostorOutlinePixels(i, light, renderer);
+      *thin += drawn;
+      outline += drawn;
+      continue;
+    }
+    outline += this->OutlinePixels(i, light, index, renderer);
+  }
+  return outline;
+}
+
+//------------------------------------------------------------------------------
+double vtkAutoShadowPass::ImpostorOutlinePixels(
+  size_t object, const double light[4], vtkRenderer* renderer)
+{
+  // The outlines of the shapes VTK draws, not of the mesh's bounding sphere
+  // (a polyline or a point cloud has no silhouette of its own): a sphere or
+  // a splat its circle, a square its four sides, a tube or a band both long
+  // sides of each segment without their component along the light.
+  const vtkshadow::ShadowActor& actor = this->Impl->Actors[object];
+  Internals::Caster& caster = this->Impl->For(actor.Actor);
+  const vtkMTimeType time = vtkshadow::ImpostorTime(actor.Actor);
+  if (caster.DrawnTime != time || time == 0)
+  {
+    caster.DrawnTime = time;
+    caster.Drawn = vtkshadow::Impostors();
+    vtkshadow::ExtractImpostors(actor.Actor, caster.Drawn);
+  }
+  const vtkshadow::Impostors& drawn = caster.Drawn;
+  double outline = vtkMath::Pi() * drawn.PointSize * static_cast<double>(drawn.Points.size() / 3) +
+    4.0 * drawn.PointSize * static_cast<double>(drawn.FlatPoints.size() / 3);
+  for (size_t s = 0; s < drawn.SplatRadii.size(); ++s)
+  {
+    double center[3];
+    vsh_mat4_transform_point(actor.Matrix, &drawn.Splats[3 * s], center);
+    const double pixel = this->PixelWorldSize(renderer, center);
+    outline += pixel > 0.0 ? 2.0 * vtkMath::Pi() * drawn.SplatRadii[s] / pixel : 0.0;
+  }
+  outline += this->SegmentOutlinePixels(drawn.LineVertices, drawn.Segments, actor, light, renderer);
+  outline +=
+    this->SegmentOutlinePixels(drawn.FlatLineVertices, drawn.FlatSegments, actor, light, renderer);
+  return outline;
+}
+
+//------------------------------------------------------------------------------
+double vtkAutoShadowPass::SegmentOutlinePixels(const std::vector<double>& vertices,
+  const std::vector<unsigned int>& segments, const vtkshadow::ShadowActor& actor,
+  const double light[4], vtkRenderer* renderer)
+{
+  double outline = 0.0;
+  for (unsigned int first : segments)
+  {
+    double a[3], b[3], towards[3], edge[3], mid[3];
+    vsh_mat4_transform_point(actor.Matrix, &vertices[3 * first], a);
+    vsh_mat4_transform_point(actor.Matrix, &vertices[3 * first + 3], b);
+    for (int k = 0; k < 3; ++k)
+    {
+      mid[k] = 0.5 * (a[k] + b[k]);
+      edge[k] = b[k] - a[k];
+      towards[k] = light[k] - light[3] * mid[k];
+    }
+    const double pixel = this->PixelWorldSize(renderer, mid);
+    if (vtkMath::Normalize(towards) == 0.0 || !(pixel > 0.0))
+    {
+      continue;
+    }
+    const double along = vtkMath::Dot(edge, towards);
+    for (int k = 0; k < 3; ++k)
+    {
+      edge[k] -= along * towards[k];
+    }
+    outline += 2.0 * vtkMath::Norm(edge) / pixel;
   }
   return outline;
 }
@@ -884,14 +976,18 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
     const double thin = std::max(vsh_auto_thin_caster_error(this->UsedThinnestPixels,
                                    this->UsedTexelTarget, edgeLengths[l], pixels),
       this->UsedTaperErrorPct);
-    w.candidates[VSH_AUTO_GENERAL_CSM] = { 1, thin > 0.0 ? thin : 0.0,
+    // Impostor casters: what every technique misses there (VTK's impostor
+    // depth), and what a map adds with its texel size.
+    const double floor = vsh_auto_thin_floor_error(impl.ThinOutlines[l], pixels);
+    const double map = vsh_auto_thin_map_error(impl.ThinOutlines[l], this->UsedTexelTarget, pixels);
+    w.candidates[VSH_AUTO_GENERAL_CSM] = { 1, (thin > 0.0 ? thin : 0.0) + map + floor,
       MapLookupMsPerPixel * pixels };
     const int notDrawn = this->VolumeInputs(
       renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume);
     w.candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
-      vsh_volume_predicted_error(notDrawn, impl.SoftLights[l] ? 1 : 0),
+      vsh_volume_predicted_error(notDrawn, impl.SoftLights[l] ? 1 : 0) + floor,
       vsh_volume_cost_ms(&volume) };
-    w.candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, 0.0,
+    w.candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, floor,
       this->RayTracedPass->EstimateFrameMilliseconds(pixels, 1.0, 1, impl.SoftLights[l]) };
     lightOf.push_back(l);
     weighed.push_back(w);
@@ -920,6 +1016,7 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
   json << (impl.GeneralJSON.empty() ? "" : ", ") << "{\"light\": " << l << ", \"csm_error_pct\": "
        << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].predicted_error_pct)
        << ", \"csm_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].cost)
+       << ", \"thin_outline_px\": " << JSONNumber(impl.ThinOutlines[l])
        << ", \"volume_error_pct\": "
        << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].predicted_error_pct)
        << ", \"volume_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].cost)

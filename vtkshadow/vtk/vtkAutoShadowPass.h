@@ -56,6 +56,7 @@ namespace vtkshadow
 {
 struct ShadowFrame;
 struct ShadowFrameLight;
+struct ShadowActor;
 }
 struct vsh_auto_candidate;
 
@@ -273,7 +274,15 @@ private:
   void DescribeChoice();
   // Pixels of shadow outline the casters in view throw under light number
   // `index` (`light` homogeneous, world coordinates), and of one object.
-  double MapOutlinePixels(const double light[4], int index, vtkRenderer* renderer);
+  // Of them, *thin: the outlines of the points and lines drawn as spheres,
+  // tubes, splats, squares and bands (ImpostorOutlinePixels).
+  double MapOutlinePixels(const double light[4], int index, vtkRenderer* renderer, double* thin);
+  double ImpostorOutlinePixels(size_t object, const double light[4], vtkRenderer* renderer);
+#ifndef __VTK_WRAP__
+  double SegmentOutlinePixels(const std::vector<double>& vertices,
+    const std::vector<unsigned int>& segments, const vtkshadow::ShadowActor& actor,
+    const double light[4], vtkRenderer* renderer);
+#endif
   double OutlinePixels(size_t object, const double light[4], int index, vtkRenderer* renderer);
 };
 
