@@ -302,49 +302,55 @@ static void test_taper(void)
 
 /* Thin impostor casters: the floor every technique shares, the map's
  * texel term, and the texel target they give, at scenes/primitives'
- * figures (320x240, streamlines-tubes light 0: 1810 px of tube outline,
- * texels of 1.73 px at a 512 map). */
+ * figures (320x240; streamlines-tubes light 0: 1810 px of tube outline,
+ * texels of 1.73 px at a 512 map; particle-cloud: 3619 px of spheres). */
 static void test_thin_impostors(void)
 {
-  const double pixels = 320.0 * 240.0, outline = 1810.0;
-  const double floor = vsh_auto_thin_floor_error(outline, pixels);
-  CHECK(fabs(floor - 100.0 * VSH_AUTO_THIN_EXACT_FLOOR * outline / pixels) < 1e-12);
-  CHECK(floor > 0.3 && floor < 0.4); /* raytrace measured 0.36 */
-  const double map = vsh_auto_thin_map_error(outline, 1.73, pixels);
-  CHECK(floor + map > 1.32 / 1.5 && floor + map < 1.32 * 1.5); /* csm at 512 measured 1.32 */
+  const double pixels = 320.0 * 240.0, tubes = 1810.0, spheres = 3619.0;
+  const double floor = vsh_auto_thin_floor_error(0.0, tubes, pixels);
+  CHECK(fabs(floor - 100.0 * VSH_AUTO_THIN_LINE_FLOOR * tubes / pixels) < 1e-12);
+  /* raytrace measured 0.36 on the tubes, 0.18 on the spheres: within 1.35x */
+  CHECK(floor > 0.36 / 1.35 && floor < 0.36 * 1.35);
+  const double cloud = vsh_auto_thin_floor_error(spheres, 0.0, pixels);
+  CHECK(cloud > 0.176 / 1.35 && cloud < 0.176 * 1.35);
+  CHECK(fabs(vsh_auto_thin_floor_error(spheres, tubes, pixels) - floor - cloud) < 1e-12);
+  /* csm at 512 (texels 1.73 px) measured 1.32 on the tubes */
+  const double map = vsh_auto_thin_map_error(tubes, 1.73, pixels);
+  CHECK(floor + map > 1.32 / 1.5 && floor + map < 1.32 * 1.5);
   /* Linear in the texel size: half the texel, half the map's term. */
-  CHECK(fabs(vsh_auto_thin_map_error(outline, 0.865, pixels) - 0.5 * map) < 1e-12);
+  CHECK(fabs(vsh_auto_thin_map_error(tubes, 0.865, pixels) - 0.5 * map) < 1e-12);
   /* No impostors: nothing; bad input: not trusted (+inf). */
-  CHECK(vsh_auto_thin_floor_error(0.0, pixels) == 0.0);
+  CHECK(vsh_auto_thin_floor_error(0.0, 0.0, pixels) == 0.0);
   CHECK(vsh_auto_thin_map_error(0.0, 2.0, pixels) == 0.0);
-  CHECK(isinf(vsh_auto_thin_floor_error(NAN, pixels)));
-  CHECK(isinf(vsh_auto_thin_floor_error(-1.0, pixels)));
-  CHECK(isinf(vsh_auto_thin_map_error(outline, 0.0, pixels)));
-  CHECK(isinf(vsh_auto_thin_map_error(outline, NAN, pixels)));
-  CHECK(isinf(vsh_auto_thin_map_error(outline, 1.0, 0.0)));
+  CHECK(isinf(vsh_auto_thin_floor_error(NAN, 0.0, pixels)));
+  CHECK(isinf(vsh_auto_thin_floor_error(0.0, -1.0, pixels)));
+  CHECK(isinf(vsh_auto_thin_floor_error(1.0, 1.0, 0.0)));
+  CHECK(isinf(vsh_auto_thin_map_error(tubes, 0.0, pixels)));
+  CHECK(isinf(vsh_auto_thin_map_error(tubes, NAN, pixels)));
+  CHECK(isinf(vsh_auto_thin_map_error(tubes, 1.0, 0.0)));
   /* The texel target meets its budget exactly. */
-  const double t = vsh_auto_thin_texel_target(0.4, outline, pixels);
-  CHECK(fabs(vsh_auto_thin_map_error(outline, t, pixels) - 0.4) < 1e-9);
+  const double t = vsh_auto_thin_texel_target(0.4, tubes, pixels);
+  CHECK(fabs(vsh_auto_thin_map_error(tubes, t, pixels) - 0.4) < 1e-9);
   CHECK(isinf(vsh_auto_thin_texel_target(0.4, 0.0, pixels)));
-  CHECK(vsh_auto_thin_texel_target(0.0, outline, pixels) == 0.0);
-  CHECK(vsh_auto_thin_texel_target(-1.0, outline, pixels) == 0.0);
-  CHECK(vsh_auto_thin_texel_target(NAN, outline, pixels) == 0.0);
-  /* The frame's target: a light with a little impostor outline tightens it,
-   * one that needs texels finer than the minimum does not (it goes to an
-   * exact technique), lights without impostors leave it. */
-  const double few[3] = {0.0, 1000.0, 0.0};
-  const double tight = vsh_auto_thin_frame_texel(2.2, 0.5, few, 3, pixels);
+  CHECK(vsh_auto_thin_texel_target(0.0, tubes, pixels) == 0.0);
+  CHECK(vsh_auto_thin_texel_target(-1.0, tubes, pixels) == 0.0);
+  CHECK(vsh_auto_thin_texel_target(NAN, tubes, pixels) == 0.0);
+  /* The frame's target: a light with a little impostor outline tightens it
+   * to exactly the target, one that needs texels finer than the minimum
+   * does not (it goes to an exact technique), lights without impostors
+   * leave it. */
+  const double no[3] = {0.0, 0.0, 0.0}, few[3] = {0.0, 1000.0, 0.0};
+  const double tight = vsh_auto_thin_frame_texel(2.2, 0.5, few, no, 3, pixels);
   CHECK(tight < 2.2 && tight >= VSH_AUTO_THIN_MIN_TEXEL_PX);
-  CHECK(fabs(vsh_auto_thin_map_error(1000.0, tight, pixels) + vsh_auto_thin_floor_error(1000.0, pixels) -
-             0.5) < 1e-9);
-  const double many[2] = {1000.0, outline};
-  CHECK(vsh_auto_thin_frame_texel(2.2, 0.5, many, 2, pixels) == tight);
-  const double none[2] = {0.0, 0.0};
-  CHECK(vsh_auto_thin_frame_texel(2.2, 0.5, none, 2, pixels) == 2.2);
-  CHECK(vsh_auto_thin_frame_texel(2.2, 0.5, NULL, 2, pixels) == 2.2);
-  CHECK(vsh_auto_thin_frame_texel(0.0, 0.5, few, 3, pixels) == 0.0);
-  /* A loose outline target never tightens past what it needs. */
-  CHECK(vsh_auto_thin_frame_texel(0.1, 0.5, few, 3, pixels) == 0.1);
+  CHECK(fabs(vsh_auto_thin_map_error(1000.0, tight, pixels) +
+             vsh_auto_thin_floor_error(1000.0, 0.0, pixels) - 0.5) < 1e-9);
+  const double many_points[2] = {1000.0, 0.0}, many_lines[2] = {0.0, tubes};
+  CHECK(vsh_auto_thin_frame_texel(2.2, 0.5, many_points, many_lines, 2, pixels) == tight);
+  CHECK(vsh_auto_thin_frame_texel(2.2, 0.5, no, no, 3, pixels) == 2.2);
+  CHECK(vsh_auto_thin_frame_texel(2.2, 0.5, NULL, no, 3, pixels) == 2.2);
+  CHECK(vsh_auto_thin_frame_texel(0.0, 0.5, few, no, 3, pixels) == 0.0);
+  /* An outline target finer than the impostors need stays. */
+  CHECK(vsh_auto_thin_frame_texel(0.1, 0.5, few, no, 3, pixels) == 0.1);
 }
 
 int main(void)

@@ -369,11 +369,13 @@ static int thin_input_ok(double thin_outline_px, double pixels)
   return pixels > 0.0 && isfinite(pixels) && thin_outline_px >= 0.0 && isfinite(thin_outline_px);
 }
 
-double vsh_auto_thin_floor_error(double thin_outline_px, double pixels)
+double vsh_auto_thin_floor_error(double point_outline_px, double line_outline_px, double pixels)
 {
-  if (!thin_input_ok(thin_outline_px, pixels))
+  if (!thin_input_ok(point_outline_px, pixels) || !thin_input_ok(line_outline_px, pixels))
     return INFINITY;
-  return 100.0 * VSH_AUTO_THIN_EXACT_FLOOR * thin_outline_px / pixels;
+  return 100.0 *
+         (VSH_AUTO_THIN_POINT_FLOOR * point_outline_px + VSH_AUTO_THIN_LINE_FLOOR * line_outline_px) /
+         pixels;
 }
 
 double vsh_auto_thin_map_error(double thin_outline_px, double texel_px, double pixels)
@@ -396,17 +398,20 @@ double vsh_auto_thin_texel_target(double budget_pct, double thin_outline_px, dou
   return budget_pct / 100.0 * pixels / (VSH_AUTO_THIN_MAP_PER_TEXEL * thin_outline_px);
 }
 
-double vsh_auto_thin_frame_texel(double texel_px, double max_wrong_pct, const double *thin_outlines,
+double vsh_auto_thin_frame_texel(double texel_px, double max_wrong_pct,
+                                 const double *point_outlines, const double *line_outlines,
                                  int count, double pixels)
 {
-  if (!(texel_px > 0.0) || !thin_outlines || isnan(max_wrong_pct))
+  if (!(texel_px > 0.0) || !point_outlines || !line_outlines || isnan(max_wrong_pct))
     return texel_px;
   double t = texel_px;
   for (int l = 0; l < count; ++l) {
-    if (!(thin_outlines[l] > 0.0))
+    const double outline = point_outlines[l] + line_outlines[l];
+    if (!(outline > 0.0))
       continue;
-    const double budget = max_wrong_pct - vsh_auto_thin_floor_error(thin_outlines[l], pixels);
-    const double thin = vsh_auto_thin_texel_target(budget, thin_outlines[l], pixels);
+    const double budget =
+        max_wrong_pct - vsh_auto_thin_floor_error(point_outlines[l], line_outlines[l], pixels);
+    const double thin = vsh_auto_thin_texel_target(budget, outline, pixels);
     if (thin >= VSH_AUTO_THIN_MIN_TEXEL_PX)
       t = fmin(t, thin);
   }

@@ -115,30 +115,32 @@ double vsh_auto_taper_error(const double *widths, const double *lengths, size_t 
  * VTK draws points as spheres, lines as tubes and splats as discs a few
  * pixels wide on screen, whatever their distance: shapes whose outline is
  * long for their area. A map's error on them grows with its texel size
- * well below the texel model's band (the shadows are a few texels wide, and
- * the shapes' own terminators and shadows on each other move with the
+ * well below the texel model's band (their shadows are a few texels wide,
+ * and their own terminators and shadows on each other move with the
  * texels), and even exact techniques miss a little there (VTK's impostor
- * depth is approximate). Both in pixels per pixel of the impostors' outline
- * (`thin_outline_px`, their silhouettes seen from the light), measured on
- * scenes/primitives against POV-Ray at 320x240 (docs/auto.md, "Thin
- * impostor casters"). */
-#define VSH_AUTO_THIN_MAP_PER_TEXEL 0.2
-#define VSH_AUTO_THIN_EXACT_FLOOR 0.15
+ * depth is approximate, most of all a tube's). Both in wrong pixels per
+ * pixel of the impostors' outline (their silhouettes seen from the light:
+ * `point_outline_px` of spheres, splats and squares, `line_outline_px` of
+ * tubes and bands), measured on scenes/primitives against POV-Ray at
+ * 320x240 (docs/auto.md, "Thin impostor casters"). */
+#define VSH_AUTO_THIN_MAP_PER_TEXEL 0.2   /* per outline pixel and texel pixel */
+#define VSH_AUTO_THIN_POINT_FLOOR 0.04    /* per outline pixel of points */
+#define VSH_AUTO_THIN_LINE_FLOOR 0.2      /* per outline pixel of lines */
 /* The finest texel (pixels on screen) auto asks of a map for them: finer
  * maps cost memory and rendering time that the cost model does not weigh,
  * and an exact technique is the better way there. */
 #define VSH_AUTO_THIN_MIN_TEXEL_PX 0.5
 
-/* The wrong_pct every technique makes on impostor casters with
- * `thin_outline_px` of outline: VSH_AUTO_THIN_EXACT_FLOOR of each outline
- * pixel, over `pixels`. 0 for no outline; +inf for bad input (NaN, pixels
- * <= 0, a negative outline). */
-double vsh_auto_thin_floor_error(double thin_outline_px, double pixels);
+/* The wrong_pct every technique makes on impostor casters: the floors of
+ * their outlines over `pixels`. 0 for no outline; +inf for bad input (NaN,
+ * pixels <= 0, a negative outline). */
+double vsh_auto_thin_floor_error(double point_outline_px, double line_outline_px, double pixels);
 
 /* The wrong_pct a map with texels `texel_px` pixels on screen adds on
  * impostor casters beyond the floor: VSH_AUTO_THIN_MAP_PER_TEXEL x
- * texel_px of each outline pixel, over `pixels`. 0 for no outline; +inf for
- * bad input (NaN, texel_px or pixels <= 0, a negative outline). */
+ * texel_px of each pixel of their outline (`thin_outline_px`, points and
+ * lines together), over `pixels`. 0 for no outline; +inf for bad input
+ * (NaN, texel_px or pixels <= 0, a negative outline). */
 double vsh_auto_thin_map_error(double thin_outline_px, double texel_px, double pixels);
 
 /* The largest texel (pixels on screen) whose vsh_auto_thin_map_error stays
@@ -148,12 +150,14 @@ double vsh_auto_thin_texel_target(double budget_pct, double thin_outline_px, dou
 
 /* The frame's texel target `texel_px` (> 0) tightened for the map lights'
  * impostor casters: the smallest vsh_auto_thin_texel_target over the
- * `count` lights' `thin_outlines` (0 for a light without them), each with
- * the budget max_wrong_pct less its vsh_auto_thin_floor_error, among those
- * at least VSH_AUTO_THIN_MIN_TEXEL_PX (a light that needs finer texels is
- * left to an exact technique: its map then predicts the target missed).
- * texel_px unchanged for bad input or no thin outline. */
-double vsh_auto_thin_frame_texel(double texel_px, double max_wrong_pct, const double *thin_outlines,
+ * `count` lights (`point_outlines`, `line_outlines`: 0 for a light without
+ * them), each with the budget max_wrong_pct less its
+ * vsh_auto_thin_floor_error, among those at least
+ * VSH_AUTO_THIN_MIN_TEXEL_PX (a light that needs finer texels is left to
+ * an exact technique: its map then predicts the target missed). texel_px
+ * unchanged for bad input or no impostors. */
+double vsh_auto_thin_frame_texel(double texel_px, double max_wrong_pct,
+                                 const double *point_outlines, const double *line_outlines,
                                  int count, double pixels);
 
 #ifdef __cplusplus

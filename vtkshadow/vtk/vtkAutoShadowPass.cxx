@@ -76,9 +76,11 @@ struct vtkAutoShadowPass::Internals
   std::vector<vtkshadow::ShadowActor> Actors;
   std::vector<vtkWeakPointer<vtkActor>> Detected; // receivers found, not marked
   std::string GeneralJSON;                        // per map light: the candidates auto weighed
-  std::vector<double> ThinOutlines; // per light: pixels of outline of impostor casters (thin)
-  std::vector<bool> SoftLights;     // per switched-on light: has a radius or angle
-  std::string SoftJSON;             // per light with a size: the soft candidates
+  // Per light: pixels of outline of the casters drawn as spheres, splats
+  // and squares (ThinPoints) and as tubes and bands (ThinLines).
+  std::vector<double> ThinPoints, ThinLines;
+  std::vector<bool> SoftLights; // per switched-on light: has a radius or angle
+  std::string SoftJSON;         // per light with a size: the soft candidates
   int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
   int RaySamples = 0;    // the frame's samples for raytrace's lights with a size (0: none)
   int VolumeSamples = 0; // the frame's soft_samples for volume's lights with a size (0: none)
@@ -249,7 +251,8 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
   // grazing light stretches them on plane receivers.
   double stretch = 1.0, edgeLength = 0.0;
   std::vector<double> edgeLengths(impl.LightChoices.size(), 0.0); // per map light
-  impl.ThinOutlines.assign(impl.LightChoices.size(), 0.0);        // of them, impostors' outlines
+  impl.ThinPoints.assign(impl.LightChoices.size(), 0.0);          // of them, impostors' outlines
+  impl.ThinLines.assign(impl.LightChoices.size(), 0.0);
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
     if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
@@ -257,8 +260,8 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
       continue;
     }
     const int index = static_cast<int>(l);
-    edgeLengths[l] =
-      this->MapOutlinePixels(frame.Lights[l].Homogeneous, index, renderer, &impl.ThinOutlines[l]);
+    edgeLengths[l] = this->MapOutlinePixels(
+      frame.Lights[l].Homogeneous, index, renderer, &impl.ThinPoints[l], &impl.ThinLines[l]);
     edgeLength = std::max(edgeLength, edgeLengths[l]);
     stretch = std::max(stretch,
       vsh_auto_plane_stretch(
@@ -442,9 +445,10 @@ void vtkAutoShadowPass::ChooseTexelTarget(vtkRenderer* renderer, double edgeLeng
   // model's edges: finer texels where a map can meet the target on them.
   if (!(this->MaxTexelPixels > 0.0))
   {
-    const std::vector<double>& thin = this->Impl->ThinOutlines;
-    this->UsedTexelTarget = vsh_auto_thin_frame_texel(
-      this->UsedTexelTarget, this->MaxError, thin.data(), static_cast<int>(thin.size()), pixels);
+    const Internals& impl = *this->Impl;
+    this->UsedTexelTarget =
+      vsh_auto_thin_frame_texel(this->UsedTexelTarget, this->MaxError, impl.ThinPoints.data(),
+        impl.ThinLines.data(), static_cast<int>(impl.ThinPoints.size()), pixels);
   }
   // csm's sampled light was weighed at csm's own map_resolution within its
   // memory budget (vsh_auto_soft_csm_texel_ratio): a texel target would
@@ -536,14 +540,14 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
 
 //------------------------------------------------------------------------------
 double vtkAutoShadowPass::MapOutlinePixels(
-  const double light[4], int index, vtkRenderer* renderer, double* thin)
+  const double light[4], int index, vtkRenderer* renderer, double* points, double* lines)
 {
   // The outline of every shadow this light's map must draw: the silhouettes
   // of the (non-receiver) casters in view, in pixels; of them, those of the
-  // points and lines VTK draws as shapes a few pixels wide (*thin).
+  // points and lines VTK draws as shapes a few pixels wide.
   Internals& impl = *this->Impl;
   double outline = 0.0;
-  *thin = 0.0;
+  *points = *lines = 0.0;
   for (size_t i = 0; i < impl.Objects.size(); ++i)
   {
     const vsh_auto_object& o = impl.Objects[i];
@@ -553,9 +557,11 @@ double vtkAutoShadowPass::MapOutlinePixels(
     }
     if (vtkshadow::DrawsImpostors(impl.Actors[i].Actor))
     {
-      const double drawn = this->ImpostorOutlinePixels(i, light, renderer);
-      *thin += drawn;
-      outline += drawn;
+      double drawn[2];
+      this->ImpostorOutlinePixels(i, light, renderer, drawn);
+      *points += drawn[0];
+      *lines += drawn[1];
+      outline += drawn[0] + drawn[1];
       continue;
     }
     outline += this->OutlinePixels(i, light, index, renderer);
@@ -564,8 +570,8 @@ double vtkAutoShadowPass::MapOutlinePixels(
 }
 
 //------------------------------------------------------------------------------
-double vtkAutoShadowPass::ImpostorOutlinePixels(
-  size_t object, const double light[4], vtkRenderer* renderer)
+void vtkAutoShadowPass::ImpostorOutlinePixels(
+  size_t object, const double light[4], vtkRenderer* renderer, double outline[2])
 {
   // The outlines of the shapes VTK draws, not of the mesh's bounding sphere
   // (a polyline or a point cloud has no silhouette of its own): a sphere or
@@ -581,19 +587,18 @@ double vtkAutoShadowPass::ImpostorOutlinePixels(
     vtkshadow::ExtractImpostors(actor.Actor, caster.Drawn);
   }
   const vtkshadow::Impostors& drawn = caster.Drawn;
-  double outline = vtkMath::Pi() * drawn.PointSize * static_cast<double>(drawn.Points.size() / 3) +
+  outline[0] = vtkMath::Pi() * drawn.PointSize * static_cast<double>(drawn.Points.size() / 3) +
     4.0 * drawn.PointSize * static_cast<double>(drawn.FlatPoints.size() / 3);
   for (size_t s = 0; s < drawn.SplatRadii.size(); ++s)
   {
     double center[3];
     vsh_mat4_transform_point(actor.Matrix, &drawn.Splats[3 * s], center);
     const double pixel = this->PixelWorldSize(renderer, center);
-    outline += pixel > 0.0 ? 2.0 * vtkMath::Pi() * drawn.SplatRadii[s] / pixel : 0.0;
+    outline[0] += pixel > 0.0 ? 2.0 * vtkMath::Pi() * drawn.SplatRadii[s] / pixel : 0.0;
   }
-  outline += this->SegmentOutlinePixels(drawn.LineVertices, drawn.Segments, actor, light, renderer);
-  outline +=
+  outline[1] =
+    this->SegmentOutlinePixels(drawn.LineVertices, drawn.Segments, actor, light, renderer) +
     this->SegmentOutlinePixels(drawn.FlatLineVertices, drawn.FlatSegments, actor, light, renderer);
-  return outline;
 }
 
 //------------------------------------------------------------------------------
@@ -978,8 +983,9 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
       this->UsedTaperErrorPct);
     // Impostor casters: what every technique misses there (VTK's impostor
     // depth), and what a map adds with its texel size.
-    const double floor = vsh_auto_thin_floor_error(impl.ThinOutlines[l], pixels);
-    const double map = vsh_auto_thin_map_error(impl.ThinOutlines[l], this->UsedTexelTarget, pixels);
+    const double floor = vsh_auto_thin_floor_error(impl.ThinPoints[l], impl.ThinLines[l], pixels);
+    const double map = vsh_auto_thin_map_error(
+      impl.ThinPoints[l] + impl.ThinLines[l], this->UsedTexelTarget, pixels);
     w.candidates[VSH_AUTO_GENERAL_CSM] = { 1, (thin > 0.0 ? thin : 0.0) + map + floor,
       MapLookupMsPerPixel * pixels };
     const int notDrawn = this->VolumeInputs(
@@ -1016,7 +1022,8 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
   json << (impl.GeneralJSON.empty() ? "" : ", ") << "{\"light\": " << l << ", \"csm_error_pct\": "
        << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].predicted_error_pct)
        << ", \"csm_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].cost)
-       << ", \"thin_outline_px\": " << JSONNumber(impl.ThinOutlines[l])
+       << ", \"thin_point_outline_px\": " << JSONNumber(impl.ThinPoints[l])
+       << ", \"thin_line_outline_px\": " << JSONNumber(impl.ThinLines[l])
        << ", \"volume_error_pct\": "
        << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].predicted_error_pct)
        << ", \"volume_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].cost)

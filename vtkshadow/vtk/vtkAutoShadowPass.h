@@ -274,10 +274,13 @@ private:
   void DescribeChoice();
   // Pixels of shadow outline the casters in view throw under light number
   // `index` (`light` homogeneous, world coordinates), and of one object.
-  // Of them, *thin: the outlines of the points and lines drawn as spheres,
-  // tubes, splats, squares and bands (ImpostorOutlinePixels).
-  double MapOutlinePixels(const double light[4], int index, vtkRenderer* renderer, double* thin);
-  double ImpostorOutlinePixels(size_t object, const double light[4], vtkRenderer* renderer);
+  // Of them, the outlines of the points drawn as spheres, splats and
+  // squares (*points, outline[0]) and the lines drawn as tubes and bands
+  // (*lines, outline[1]): ImpostorOutlinePixels.
+  double MapOutlinePixels(
+    const double light[4], int index, vtkRenderer* renderer, double* points, double* lines);
+  void ImpostorOutlinePixels(
+    size_t object, const double light[4], vtkRenderer* renderer, double outline[2]);
 #ifndef __VTK_WRAP__
   double SegmentOutlinePixels(const std::vector<double>& vertices,
     const std::vector<unsigned int>& segments, const vtkshadow::ShadowActor& actor,
