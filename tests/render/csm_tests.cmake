@@ -70,9 +70,12 @@ vtkshadow_exact_cases(auto all
 
 # auto's choice per light (mixed planar + csm in one frame, a light with no
 # visible shadow, a receiver out of view, a box (convex, corners repeated
-# per face), an L-shaped prism (concave), the --max-error target), each
-# light's shadows against the exact answer (tests/render/test_auto_choice.py).
-foreach(case mixed idle-light out-of-view box concave volume-thin volume-fill max-error)
+# per face), an L-shaped prism (concave), the --max-error target, points and
+# lines drawn as spheres and tubes: the thin-impostor terms send them to an
+# exact technique), each light's shadows against the exact answer
+# (tests/render/test_auto_choice.py).
+foreach(case mixed idle-light out-of-view box concave volume-thin volume-fill max-error
+        impostors)
   add_test(NAME render.auto_choice.${case}
     COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_auto_choice.py
             --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/auto_choice --case ${case})

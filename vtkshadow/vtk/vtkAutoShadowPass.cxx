@@ -79,6 +79,8 @@ struct vtkAutoShadowPass::Internals
   // Per light: pixels of outline of the casters drawn as spheres, splats
   // and squares (ThinPoints) and as tubes and bands (ThinLines).
   std::vector<double> ThinPoints, ThinLines;
+  // Per light: the thin-impostor terms of the csm candidate (wrong_pct).
+  std::vector<double> ThinFloorPct, ThinMapPct;
   std::vector<bool> SoftLights; // per switched-on light: has a radius or angle
   std::string SoftJSON;         // per light with a size: the soft candidates
   int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
@@ -253,6 +255,8 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
   std::vector<double> edgeLengths(impl.LightChoices.size(), 0.0); // per map light
   impl.ThinPoints.assign(impl.LightChoices.size(), 0.0);          // of them, impostors' outlines
   impl.ThinLines.assign(impl.LightChoices.size(), 0.0);
+  impl.ThinFloorPct.assign(impl.LightChoices.size(), 0.0);
+  impl.ThinMapPct.assign(impl.LightChoices.size(), 0.0);
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
     if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
@@ -986,6 +990,8 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
     const double floor = vsh_auto_thin_floor_error(impl.ThinPoints[l], impl.ThinLines[l], pixels);
     const double map = vsh_auto_thin_map_error(
       impl.ThinPoints[l] + impl.ThinLines[l], this->UsedTexelTarget, pixels);
+    impl.ThinFloorPct[l] = floor;
+    impl.ThinMapPct[l] = map;
     w.candidates[VSH_AUTO_GENERAL_CSM] = { 1, (thin > 0.0 ? thin : 0.0) + map + floor,
       MapLookupMsPerPixel * pixels };
     const int notDrawn = this->VolumeInputs(
@@ -1042,7 +1048,16 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
   const vsh_auto_candidate& map = candidates[VSH_AUTO_GENERAL_CSM];
   std::ostringstream why;
   why.precision(3);
-  if (map.predicted_error_pct > this->MaxError)
+  const double impostors = impl.ThinFloorPct[l] + impl.ThinMapPct[l];
+  if (map.predicted_error_pct > this->MaxError && 2.0 * impostors >= map.predicted_error_pct)
+  {
+    why << "points and lines drawn as spheres, tubes or splats ("
+        << std::lround(impl.ThinPoints[l] + impl.ThinLines[l]) << " px of outline) lose "
+        << impl.ThinFloorPct[l] << "% with any technique and " << impl.ThinMapPct[l]
+        << "% more in maps of " << this->UsedTexelTarget << " px texels (maps predicted "
+        << map.predicted_error_pct << "% wrong), ";
+  }
+  else if (map.predicted_error_pct > this->MaxError)
   {
     if (this->UsedTaperErrorPct >= map.predicted_error_pct)
     {
