@@ -43,6 +43,7 @@
 #include "vsh_volume_cost.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -67,6 +68,10 @@ struct vtkAutoShadowPass::Internals
     // bands), extracted again when ImpostorTime changes.
     vtkshadow::Impostors Drawn;
     vtkMTimeType DrawnTime = 0;
+    // Their outlines (points, lines) per light, with what they were
+    // measured for: the light, the actor's matrix, the camera, the viewport
+    // and DrawnTime.
+    std::map<int, std::pair<std::vector<double>, std::array<double, 2>>> DrawnOutline;
   };
   std::map<vtkProp*, std::unique_ptr<Caster>> Casters;
 
@@ -562,7 +567,7 @@ double vtkAutoShadowPass::MapOutlinePixels(
     if (vtkshadow::DrawsImpostors(impl.Actors[i].Actor))
     {
       double drawn[2];
-      this->ImpostorOutlinePixels(i, light, renderer, drawn);
+      this->CachedImpostorOutline(i, light, index, renderer, drawn);
       *points += drawn[0];
       *lines += drawn[1];
       outline += drawn[0] + drawn[1];
@@ -571,6 +576,38 @@ double vtkAutoShadowPass::MapOutlinePixels(
     outline += this->OutlinePixels(i, light, index, renderer);
   }
   return outline;
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::CachedImpostorOutline(
+  size_t object, const double light[4], int index, vtkRenderer* renderer, double outline[2])
+{
+  // One pass over the points and segments when the light, the actor's
+  // placement, its shapes, the camera or the viewport changed; else the
+  // last frame's figures.
+  const vtkshadow::ShadowActor& actor = this->Impl->Actors[object];
+  Internals::Caster& caster = this->Impl->For(actor.Actor);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  std::vector<double> key(light, light + 4);
+  key.insert(key.end(), actor.Matrix, actor.Matrix + 16);
+  const double* eye = camera->GetPosition();
+  const double* focal = camera->GetFocalPoint();
+  key.insert(key.end(), eye, eye + 3);
+  key.insert(key.end(), focal, focal + 3);
+  key.push_back(camera->GetViewAngle());
+  key.push_back(camera->GetParallelProjection() ? camera->GetParallelScale() : -1.0);
+  key.push_back(camera->GetClippingRange()[0]);
+  key.push_back(renderer->GetSize()[1]);
+  key.push_back(static_cast<double>(vtkshadow::ImpostorTime(actor.Actor)));
+  auto& cached = caster.DrawnOutline[index];
+  if (cached.first != key || key.back() == 0.0)
+  {
+    this->ImpostorOutlinePixels(object, light, renderer, outline);
+    cached.first = key;
+    cached.second = { outline[0], outline[1] };
+  }
+  outline[0] = cached.second[0];
+  outline[1] = cached.second[1];
 }
 
 //------------------------------------------------------------------------------

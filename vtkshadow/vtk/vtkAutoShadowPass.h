@@ -281,6 +281,10 @@ private:
     const double light[4], int index, vtkRenderer* renderer, double* points, double* lines);
   void ImpostorOutlinePixels(
     size_t object, const double light[4], vtkRenderer* renderer, double outline[2]);
+  // ImpostorOutlinePixels for light number `index`, cached per caster and
+  // light until the light, the placement, the shapes or the camera change.
+  void CachedImpostorOutline(
+    size_t object, const double light[4], int index, vtkRenderer* renderer, double outline[2]);
 #ifndef __VTK_WRAP__
   double SegmentOutlinePixels(const std::vector<double>& vertices,
     const std::vector<unsigned int>& segments, const vtkshadow::ShadowActor& actor,
