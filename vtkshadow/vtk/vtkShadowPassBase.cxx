@@ -17,6 +17,9 @@
 #include "vtkShadowRendererSteps.h"
 #include "vtkShadowSettings.h"
 #include "vtkShadowVolumeOpacityMap.h"
+#include "vtkShadowVolumeReceiver.h"
+
+#include "vtkOpenGLRenderWindow.h"
 
 #include <cmath>
 #include <cstring>
@@ -102,6 +105,7 @@ vtkShadowPassBase::vtkShadowPassBase()
   , ShaderTime(0)
   , WorldKey(0)
   , OwnFrame(new vtkshadow::ShadowFrame)
+  , VolumeReceiver(new vtkShadowVolumeReceiver)
 {
   this->BumpShaderTime();
 }
@@ -286,9 +290,52 @@ void vtkShadowPassBase::RenderDelegate(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 void vtkShadowPassBase::RenderDelegateWithShaderHooks(const vtkRenderState* s)
 {
+  this->BeginVolumeReceiver(s);
   this->PreRender(s);
   this->RenderDelegate(s);
   this->PostRender(s);
+  this->EndVolumeReceiver();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::BeginVolumeReceiver(const vtkRenderState* s)
+{
+  if (this->VolumesReceive)
+  {
+    this->VolumeReceiver->Update(this->GetFrame(),
+      vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
+    vtkshadow::MarkStage("volume_receiver");
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::EndVolumeReceiver()
+{
+  this->VolumeReceiver->EndDraw();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::ReceiveVolumeShadows(std::string& fragmentShader, vtkProp* prop)
+{
+  if (this->VolumesReceive)
+  {
+    this->VolumeReceiver->PostReplaceShaderValues(fragmentShader, prop);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::SetVolumeShadowParameters(vtkShaderProgram* program)
+{
+  if (this->VolumesReceive)
+  {
+    this->VolumeReceiver->SetShaderParameters(program, this->ResidualLight);
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowPassBase::VolumeReceiverStatsJSON() const
+{
+  return this->VolumeReceiver->StatsJSON();
 }
 
 //------------------------------------------------------------------------------
@@ -322,6 +369,7 @@ vtkMTimeType vtkShadowPassBase::GetShaderStageMTime()
 //------------------------------------------------------------------------------
 void vtkShadowPassBase::ReleaseGraphicsResources(vtkWindow* w)
 {
+  this->VolumeReceiver->ReleaseGraphicsResources(w);
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);

@@ -60,6 +60,9 @@ class vtkInformationIntegerKey;
 class vtkLight;
 class vtkRenderer;
 class vtkShadowVolumeOpacityMap;
+class vtkShadowVolumeReceiver;
+class vtkShaderProgram;
+class vtkProp;
 
 class VTKSHADOW_EXPORT vtkShadowPassBase : public vtkOpenGLRenderPass
 {
@@ -318,6 +321,24 @@ protected:
 #endif
   std::vector<std::string> LightNotes;
 
+  /**
+   * Shaded vtkVolumes receive the opaque surfaces' shadows
+   * (vtkShadowVolumeReceiver) in the passes that set VolumesReceive (csm,
+   * volume, raytrace; auto through them): RenderDelegateWithShaderHooks
+   * brings the maps up to date before the draw (BeginVolumeReceiver; a pass
+   * drawing with its hooks otherwise calls it and EndVolumeReceiver around
+   * its draw), and the pass's hooks call
+   * these two for every mapper (they touch only the volume mapper's
+   * shader). VolumeReceiverStatsJSON: "volume_receiver_maps": ... for
+   * GetStatsJSON.
+   */
+  void BeginVolumeReceiver(const vtkRenderState* s);
+  void EndVolumeReceiver();
+  void ReceiveVolumeShadows(std::string& fragmentShader, vtkProp* prop);
+  void SetVolumeShadowParameters(vtkShaderProgram* program);
+  std::string VolumeReceiverStatsJSON() const;
+  bool VolumesReceive = false;
+
   vtkRenderPass* DelegatePass;
   bool DelegateIsApplicationScene = false;
   bool CastHeadlightShadows;
@@ -328,6 +349,7 @@ protected:
 
 private:
   std::unique_ptr<vtkshadow::ShadowFrame> OwnFrame;
+  std::unique_ptr<vtkShadowVolumeReceiver> VolumeReceiver;
   const vtkshadow::ShadowFrame* GivenFrame = nullptr;
 
   vtkShadowPassBase(const vtkShadowPassBase&) = delete;
