@@ -302,8 +302,8 @@ void vtkShadowPassBase::BeginVolumeReceiver(const vtkRenderState* s)
 {
   if (this->VolumesReceive)
   {
-    this->VolumeReceiver->Update(this->GetFrame(),
-      vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
+    this->VolumeReceiver->Update(
+      this->GetFrame(), vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
     vtkshadow::MarkStage("volume_receiver");
   }
 }

@@ -129,7 +129,8 @@ bool vtkShadowVolumeReceiver::GatherVolumes(const vtkshadow::ShadowFrame& frame)
   }
   while (vtkVolume* v = volumes ? volumes->GetNextVolume(it) : nullptr)
   {
-    if (!v->GetVisibility() || !v->GetProperty() || !v->GetProperty()->GetShade() || !v->GetMapper())
+    if (!v->GetVisibility() || !v->GetProperty() || !v->GetProperty()->GetShade() ||
+      !v->GetMapper())
     {
       continue;
     }
@@ -370,14 +371,14 @@ void vtkShadowVolumeReceiver::PostReplaceShaderValues(
   {
     const size_t brace = fragmentShader.find('{', loop);
     fragmentShader.insert(brace + 1, std::string("\n  float vshVolumeLit = 1.0") + More + ";");
-    for (const std::string colour : { "in_lightDiffuseColor[lightNum]",
-           "in_lightSpecularColor[lightNum]" })
+    for (const std::string colour :
+      { "in_lightDiffuseColor[lightNum]", "in_lightSpecularColor[lightNum]" })
     {
       vtkShaderProgram::Substitute(fragmentShader, colour, "(vshVolumeLit * " + colour + ")", true);
     }
   }
-  vtkShaderProgram::Substitute(fragmentShader, More,
-    Named(" * vshVR@Lit(lightNum, g_dataPos)", this->Id) + More, false);
+  vtkShaderProgram::Substitute(
+    fragmentShader, More, Named(" * vshVR@Lit(lightNum, g_dataPos)", this->Id) + More, false);
   fragmentShader.insert(fragmentShader.find(function), Named(LitCode, this->Id));
 }
 

@@ -94,17 +94,17 @@ private:
   void Compute(LightMap& map, const double light[4], int row);
   void Upload(vtkOpenGLRenderWindow* window);
 
-  int Id;                                        // the shader names' suffix
-  std::vector<vsh_volume_map_volume> Boxes;      // the shaded volumes' world boxes
-  double Origin[3] = { 0, 0, 0 };                // the maps' frame: world relative to this
-  double Bias = 0.0;                             // world units
-  vtkShadowEmbreeScene Scene;                    // the opaque casters
-  long long SceneVersion = 0;                    // mesh builds + top-level commits
+  int Id;                                   // the shader names' suffix
+  std::vector<vsh_volume_map_volume> Boxes; // the shaded volumes' world boxes
+  double Origin[3] = { 0, 0, 0 };           // the maps' frame: world relative to this
+  double Bias = 0.0;                        // world units
+  vtkShadowEmbreeScene Scene;               // the opaque casters
+  long long SceneVersion = 0;               // mesh builds + top-level commits
   std::vector<LightMap> Lights;
-  std::vector<float> Texels;                     // VSH_VOLUME_MAP_SIZE rows per light
+  std::vector<float> Texels; // VSH_VOLUME_MAP_SIZE rows per light
   vtkSmartPointer<vtkTextureObject> Texture;
-  bool Dirty = true;                             // Texels changed since the upload
-  bool Shown = false;                            // a shaded volume this frame
+  bool Dirty = true;  // Texels changed since the upload
+  bool Shown = false; // a shaded volume this frame
   long long Computed = 0;
   long long FrameComputed = 0;
   double LastSeconds = 0.0;
