@@ -24,7 +24,8 @@ slab moved beside the volume (x in [3, 5], nothing above it) every pixel of
 the image equals `none` exactly; an unshaded volume (ShadeOff) under the
 slab equals `none` exactly too. Under csm the camera orbiting and coming
 back computes no new receiver map (volume_receiver_maps_computed stays 1)
-and moving the slab computes one.
+and moving the slab computes one (raytrace, csm and volume). planar says
+per light that shaded volumes receive no shadow; csm does not.
 
 Usage: test_volume_receivers.py"""
 import json
@@ -191,6 +192,13 @@ def main():
         print("%s: ShadeOff under the slab, max |on - none| = %g" % (technique, flat))
         check(flat == 0.0, "%s: an unshaded volume renders as none (%g)" % (technique, flat))
         point_check(technique)
+    for technique in ("planar", "csm"):
+        note = fr.render_technique(scene(), technique, W, H,
+                                   lambda renderer, inner: inner.GetLightNote(0))[1] or ""
+        print("%s: light 0's note: %r" % (technique, note))
+        says = "shaded volumes receive no shadow" in note
+        check(says == (technique == "planar"), "%s %s that shaded volumes receive no shadow"
+              % (technique, "says" if technique == "planar" else "does not say"))
     for technique in ("raytrace", "csm", "volume"):
         counts = orbit(technique)
         print("%s: volume_receiver_maps_computed per frame (first, orbit, back, slab moved): %s"

@@ -174,6 +174,17 @@ void vtkShadowPassBase::NoteUncastVolumes(
       this->AddLightNote(light, note);
     }
   }
+  // Passes without the volumes' receiver maps (planar, vtk) say so too.
+  const bool shaded = !this->VolumesReceive && frame.ShowsVolumes &&
+    vtkShadowVolumeReceiver::ShowsShadedVolume(frame.Renderer);
+  for (size_t l = 0; shaded && l < frame.Lights.size(); ++l)
+  {
+    if (frame.Lights[l].Casts)
+    {
+      this->AddLightNote(static_cast<int>(l),
+        "shaded volumes receive no shadow (raytrace, csm and volume darken them)");
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -302,9 +313,19 @@ void vtkShadowPassBase::BeginVolumeReceiver(const vtkRenderState* s)
 {
   if (this->VolumesReceive)
   {
+    const vtkshadow::ShadowFrame& frame = this->GetFrame();
     this->VolumeReceiver->Update(
-      this->GetFrame(), vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
+      frame, vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
     vtkshadow::MarkStage("volume_receiver");
+    for (size_t l = 0; l < frame.Lights.size(); ++l)
+    {
+      const int light = static_cast<int>(l);
+      const std::string note = this->VolumeReceiver->GetLightNote(light, frame.Lights[l].Casts);
+      if (!note.empty())
+      {
+        this->AddLightNote(light, note);
+      }
+    }
   }
 }
 

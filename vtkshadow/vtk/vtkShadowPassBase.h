@@ -315,7 +315,9 @@ protected:
   // On every casting light, that the frame's volumes (vtkVolume) cast no
   // shadow here (raytrace casts them), when it has any; with `maps` (the
   // screen-space techniques' opacity shadow maps) only on the lights they
-  // leave out, with their reason.
+  // leave out, with their reason. In a pass without VolumesReceive (planar,
+  // vtk) also that shaded volumes receive no shadow, when the frame shows
+  // one.
   void NoteUncastVolumes(
     const vtkshadow::ShadowFrame& frame, const vtkShadowVolumeOpacityMap* maps = nullptr);
 #endif

@@ -354,6 +354,39 @@ bool vtkShadowVolumeReceiver::Covers(int light) const
 }
 
 //------------------------------------------------------------------------------
+std::string vtkShadowVolumeReceiver::GetLightNote(int light, bool casts) const
+{
+  if (!this->Shown || !casts || this->Covers(light))
+  {
+    return std::string();
+  }
+  if (light >= MaxLights)
+  {
+    return "shaded volumes receive no shadow from a light past the volume shader's 6";
+  }
+  return "shaded volumes receive no shadow under this light (inside or at a volume's box)";
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowVolumeReceiver::ShowsShadedVolume(vtkRenderer* renderer)
+{
+  vtkVolumeCollection* volumes = renderer ? renderer->GetVolumes() : nullptr;
+  vtkCollectionSimpleIterator it;
+  if (volumes)
+  {
+    volumes->InitTraversal(it);
+  }
+  while (vtkVolume* v = volumes ? volumes->GetNextVolume(it) : nullptr)
+  {
+    if (v->GetVisibility() && v->GetProperty() && v->GetProperty()->GetShade())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowVolumeReceiver::PostReplaceShaderValues(
   std::string& fragmentShader, vtkProp* prop) const
 {

@@ -40,6 +40,7 @@
 
 class vtkOpenGLRenderWindow;
 class vtkProp;
+class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
@@ -67,6 +68,14 @@ public:
 
   // Whether `light` has a map this frame.
   bool Covers(int light) const;
+  /**
+   * Why a casting light darkens no shaded volume although the frame shows
+   * one (empty otherwise): a point light inside or at a volume's box, or a
+   * light past the volume shader's 6.
+   */
+  std::string GetLightNote(int light, bool casts) const;
+  // Whether the renderer shows a visible vtkVolume with ShadeOn.
+  static bool ShowsShadedVolume(vtkRenderer* renderer);
 
   /**
    * The volume mapper's hooks (prop a vtkVolume, the shader its expanded
