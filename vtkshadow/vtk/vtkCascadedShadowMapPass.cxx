@@ -266,7 +266,7 @@ long long vtkCascadedShadowMapPass::GetMemoryBytes() const
   {
     atlases += parked.second.Bytes();
   }
-  return atlases + mask;
+  return atlases + mask + this->GetVolumeReceiverMemoryBytes();
 }
 
 //------------------------------------------------------------------------------

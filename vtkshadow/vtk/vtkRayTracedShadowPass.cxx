@@ -517,7 +517,7 @@ long long vtkRayTracedShadowPass::GetMemoryBytes() const
   {
     bytes += world.second->GetMemoryBytes();
   }
-  return bytes;
+  return bytes + this->GetVolumeReceiverMemoryBytes();
 }
 
 //------------------------------------------------------------------------------

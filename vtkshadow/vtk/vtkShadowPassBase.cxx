@@ -360,6 +360,12 @@ std::string vtkShadowPassBase::VolumeReceiverStatsJSON() const
 }
 
 //------------------------------------------------------------------------------
+long long vtkShadowPassBase::GetVolumeReceiverMemoryBytes() const
+{
+  return this->VolumeReceiver->GetMemoryBytes();
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowPassBase::GetViewport(const vtkRenderState* s, int size[2], int origin[2])
 {
   origin[0] = origin[1] = 0;

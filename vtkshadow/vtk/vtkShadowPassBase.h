@@ -339,6 +339,7 @@ protected:
   void ReceiveVolumeShadows(std::string& fragmentShader, vtkProp* prop);
   void SetVolumeShadowParameters(vtkShaderProgram* program);
   std::string VolumeReceiverStatsJSON() const;
+  long long GetVolumeReceiverMemoryBytes() const;
   bool VolumesReceive = false;
 
   vtkRenderPass* DelegatePass;

@@ -968,7 +968,7 @@ long long vtkShadowVolumePass::GetMemoryBytes() const
       }
     }
   }
-  return bytes;
+  return bytes + this->GetVolumeReceiverMemoryBytes();
 }
 
 //------------------------------------------------------------------------------

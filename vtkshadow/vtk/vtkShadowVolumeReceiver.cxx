@@ -487,8 +487,8 @@ std::string vtkShadowVolumeReceiver::StatsJSON() const
 //------------------------------------------------------------------------------
 long long vtkShadowVolumeReceiver::GetMemoryBytes() const
 {
-  // The CPU copy and the texture: 4 bytes a texel each.
-  return 2 * static_cast<long long>(this->Texels.size() * sizeof(float));
+  // The texture (GPU memory, as the passes count it): 4 bytes a texel.
+  return this->Texture ? static_cast<long long>(this->Texels.size() * sizeof(float)) : 0;
 }
 
 //------------------------------------------------------------------------------
