@@ -316,7 +316,10 @@ void vtkShadowPassBase::BeginVolumeReceiver(const vtkRenderState* s)
     const vtkshadow::ShadowFrame& frame = this->GetFrame();
     this->VolumeReceiver->Update(
       frame, vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
-    vtkshadow::MarkStage("volume_receiver");
+    if (frame.ShowsVolumes)
+    {
+      vtkshadow::MarkStage("volume_receiver"); // a stage only when there is work
+    }
     for (size_t l = 0; l < frame.Lights.size(); ++l)
     {
       const int light = static_cast<int>(l);
