@@ -147,6 +147,15 @@ add_test(NAME python.volume_casters
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_volume_casters.py)
 set_tests_properties(python.volume_casters PROPERTIES LABELS "render" TIMEOUT 180)
 
+# A shaded vtkVolume receives opaque surfaces' shadows (vtkShadowVolumeReceiver)
+# under raytrace, csm, volume and auto: the half under an opaque slab keeps
+# 0.9 / 1.95 = 0.4615 of its summed RGB (only ambient left), directional and
+# point light; the other half, a volume with nothing above it and an unshaded
+# volume equal `none`; a camera orbit computes no new map, moving the slab one.
+add_test(NAME python.volume_receivers
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_volume_receivers.py)
+set_tests_properties(python.volume_receivers PROPERTIES LABELS "render" TIMEOUT 180)
+
 # vedo: enable_shadows before show(), after it, or after another technique
 # gives the same frame, with the shadow, for every technique (needs
 # python3-vedo, which scripts/install-deps.sh installs).

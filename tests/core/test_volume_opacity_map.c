@@ -300,8 +300,33 @@ static void test_view_matrix(void)
   }
 }
 
+/* The texel rays the receiver map traces (vtkShadowVolumeReceiver): a
+ * directional light's start on the plane through the box's top, straight
+ * down, at the texel's centre; a point light's at the light, through the
+ * texel's centre (the centre texel of an odd grid: straight down). */
+static void test_texel_ray(void)
+{
+  const vsh_volume_map_volume v = box_volume();
+  const double down[4] = {0, 0, 1, 0}, above[4] = {0, 0, 10, 1};
+  vsh_volume_map_plan plan;
+  double o[3], d[3];
+  CHECK(vsh_volume_opacity_map_plan(&v, 1, down, 33, &plan) == VSH_VOLUME_MAP_OK);
+  vsh_volume_opacity_map_texel_ray(&plan, 16, 16, o, d);
+  CHECK_NEAR(o[2], 2.95, 1e-12);
+  CHECK_NEAR(d[2], -1.0, 1e-12);
+  vsh_volume_opacity_map_texel_ray(&plan, 0, 0, o, d);
+  /* The rim texel's centre: half a texel in from the window's corner. */
+  const double texel = (plan.hi[0] - plan.lo[0]) / 33;
+  CHECK_NEAR(fabs(o[0]), fabs(plan.lo[0]) - 0.5 * texel, 1e-12);
+  CHECK(vsh_volume_opacity_map_plan(&v, 1, above, 33, &plan) == VSH_VOLUME_MAP_OK);
+  vsh_volume_opacity_map_texel_ray(&plan, 16, 16, o, d);
+  CHECK_NEAR(o[2], 10.0, 1e-12);
+  CHECK_NEAR(d[2], -1.0, 1e-12);
+}
+
 int main(void)
 {
+  test_texel_ray();
   test_directional_down();
   test_point_above();
   test_oblique_moved();

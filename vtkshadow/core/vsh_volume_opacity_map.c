@@ -178,8 +178,8 @@ int vsh_volume_opacity_map_plan(const vsh_volume_map_volume *volumes, int count,
   return out->status;
 }
 
-/* The ray of texel (i, j): its origin and unit direction in the frame. */
-static void texel_ray(const vsh_volume_map_plan *plan, int i, int j, double o[3], double d[3])
+void vsh_volume_opacity_map_texel_ray(const vsh_volume_map_plan *plan, int i, int j, double o[3],
+                                      double d[3])
 {
   const double s = plan->lo[0] + (i + 0.5) * (plan->hi[0] - plan->lo[0]) / plan->size[0];
   const double t = plan->lo[1] + (j + 0.5) * (plan->hi[1] - plan->lo[1]) / plan->size[1];
@@ -243,7 +243,7 @@ long long vsh_volume_opacity_map_fill(const vsh_volume_map_plan *plan,
     for (int i = 0; i < plan->size[0]; ++i) {
       double o[3], d[3];
       float *texel = texels + 4 * ((size_t)j * (size_t)plan->size[0] + (size_t)i);
-      texel_ray(plan, i, j, o, d);
+      vsh_volume_opacity_map_texel_ray(plan, i, j, o, d);
       samples += texel_fill(volumes, volumes ? count : 0, cutoff, o, d, texel);
     }
   }

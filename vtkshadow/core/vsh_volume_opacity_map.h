@@ -91,6 +91,14 @@ long long vsh_volume_opacity_map_fill(const vsh_volume_map_plan *plan,
                                       const vsh_volume_map_volume *volumes, int count,
                                       double cutoff, int row0, int row1, float *texels);
 
+/* The ray of texel (i, j) of an OK plan, in the caller's frame: origin o
+ * (on the plane upstream of the boxes for a directional light, the light
+ * for a point light) and unit direction d. The fill marches these; the
+ * volumes' receiver map (vtkShadowVolumeReceiver) traces them through the
+ * opaque casters. */
+void vsh_volume_opacity_map_texel_ray(const vsh_volume_map_plan *plan, int i, int j, double o[3],
+                                      double d[3]);
+
 /* The light a receiver at light distance d keeps under a texel (T, entry,
  * exit): 1 before the entry, T past the exit, T^((d - entry) / (exit -
  * entry)) in between. The GPU stage computes the same. */

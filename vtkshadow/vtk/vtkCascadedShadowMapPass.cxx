@@ -143,6 +143,7 @@ vtkCascadedShadowMapPass::vtkCascadedShadowMapPass()
   , TotalMapsRendered(0)
   , Impl(new Internals)
 {
+  this->VolumesReceive = true;
 }
 
 //------------------------------------------------------------------------------
@@ -265,7 +266,7 @@ long long vtkCascadedShadowMapPass::GetMemoryBytes() const
   {
     atlases += parked.second.Bytes();
   }
-  return atlases + mask;
+  return atlases + mask + this->GetVolumeReceiverMemoryBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -921,8 +922,9 @@ bool vtkCascadedShadowMapPass::PreReplaceShaderValues(
 
 //------------------------------------------------------------------------------
 bool vtkCascadedShadowMapPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
+  this->ReceiveVolumeShadows(fragmentShader, prop);
   if (this->Impl->Mask && fragmentShader.find("vshScreenPrepare") != std::string::npos)
   {
     return this->Impl->Mask->PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
@@ -950,6 +952,7 @@ bool vtkCascadedShadowMapPass::PostReplaceShaderValues(
 bool vtkCascadedShadowMapPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
+  this->SetVolumeShadowParameters(program);
   Internals& impl = *this->Impl;
   if (impl.Mask && program->IsUniformUsed("vshScreenMask0"))
   {
@@ -1314,7 +1317,8 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
       << ", \"pcss_blocker_taps\": " << (this->UsedPCSS ? this->PCSSBlockerTaps : 0)
       << ", \"pcss_filter_taps\": " << (this->UsedPCSS ? this->PCSSFilterTaps : 0)
       << ", \"pcss_max_texels\": " << this->PCSSMaxTexels << ", " << this->Impl->Proxies.StatsJSON()
-      << ", " << this->Impl->VolumeMaps.StatsJSON() << ", \"lights\": [";
+      << ", " << this->Impl->VolumeMaps.StatsJSON() << ", " << this->VolumeReceiverStatsJSON()
+      << ", \"lights\": [";
   const int lights = renderer ? renderer->GetLights()->GetNumberOfItems() : 0;
   for (int l = 0; l < lights; ++l)
   {

@@ -298,10 +298,12 @@ void vtkCascadedShadowMapPass::RenderScreenResolved(
       "screen-space resolve unavailable (" << mask.GetError() << "): using forward lookups");
     impl.ScreenFailed = true;
   }
+  this->BeginVolumeReceiver(s);
   mask.Activate();
   this->RenderDelegate(s);
   mask.Deactivate();
   this->PostRender(s);
+  this->EndVolumeReceiver();
 }
 
 //------------------------------------------------------------------------------

@@ -234,6 +234,7 @@ vtkRayTracedShadowPass::vtkRayTracedShadowPass()
   , NumberOfTracedFrames(0)
   , Impl(new Internals)
 {
+  this->VolumesReceive = true;
 }
 
 //------------------------------------------------------------------------------
@@ -516,7 +517,7 @@ long long vtkRayTracedShadowPass::GetMemoryBytes() const
   {
     bytes += world.second->GetMemoryBytes();
   }
-  return bytes;
+  return bytes + this->GetVolumeReceiverMemoryBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -655,6 +656,7 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"meshes\": " << impl.Scene.GetNumberOfMeshes()
       << ", \"triangles\": " << impl.Scene.GetNumberOfTriangles()
       << ", \"impostors\": " << impl.Scene.GetNumberOfImpostors() << VolumesJSON(impl.Volumes, c)
+      << ", " << this->VolumeReceiverStatsJSON()
       << ", \"mesh_builds\": " << impl.Scene.GetMeshBuilds()
       << ", \"mesh_build_ms\": " << 1e3 * impl.Scene.GetMeshBuildSeconds()
       << ", \"top_level_commits\": " << impl.Scene.GetTopLevelCommits()
@@ -686,6 +688,7 @@ bool vtkRayTracedShadowPass::PreReplaceShaderValues(
 bool vtkRayTracedShadowPass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
+  this->ReceiveVolumeShadows(fragmentShader, prop);
   return this->Impl->W->For(prop).PostReplaceShaderValues(fragmentShader, this->GetResidualLight());
 }
 
@@ -693,6 +696,7 @@ bool vtkRayTracedShadowPass::PostReplaceShaderValues(
 bool vtkRayTracedShadowPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
+  this->SetVolumeShadowParameters(program);
   this->Impl->W->For(prop).SetShaderParameters(program);
   return true;
 }

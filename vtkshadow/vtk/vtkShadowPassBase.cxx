@@ -17,6 +17,9 @@
 #include "vtkShadowRendererSteps.h"
 #include "vtkShadowSettings.h"
 #include "vtkShadowVolumeOpacityMap.h"
+#include "vtkShadowVolumeReceiver.h"
+
+#include "vtkOpenGLRenderWindow.h"
 
 #include <cmath>
 #include <cstring>
@@ -102,6 +105,7 @@ vtkShadowPassBase::vtkShadowPassBase()
   , ShaderTime(0)
   , WorldKey(0)
   , OwnFrame(new vtkshadow::ShadowFrame)
+  , VolumeReceiver(new vtkShadowVolumeReceiver)
 {
   this->BumpShaderTime();
 }
@@ -168,6 +172,17 @@ void vtkShadowPassBase::NoteUncastVolumes(
     if (frame.Lights[l].Casts && !note.empty())
     {
       this->AddLightNote(light, note);
+    }
+  }
+  // Passes without the volumes' receiver maps (planar, vtk) say so too.
+  const bool shaded = !this->VolumesReceive && frame.ShowsVolumes &&
+    vtkShadowVolumeReceiver::ShowsShadedVolume(frame.Renderer);
+  for (size_t l = 0; shaded && l < frame.Lights.size(); ++l)
+  {
+    if (frame.Lights[l].Casts)
+    {
+      this->AddLightNote(static_cast<int>(l),
+        "shaded volumes receive no shadow (raytrace, csm and volume darken them)");
     }
   }
 }
@@ -286,9 +301,71 @@ void vtkShadowPassBase::RenderDelegate(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 void vtkShadowPassBase::RenderDelegateWithShaderHooks(const vtkRenderState* s)
 {
+  this->BeginVolumeReceiver(s);
   this->PreRender(s);
   this->RenderDelegate(s);
   this->PostRender(s);
+  this->EndVolumeReceiver();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::BeginVolumeReceiver(const vtkRenderState* s)
+{
+  if (this->VolumesReceive)
+  {
+    const vtkshadow::ShadowFrame& frame = this->GetFrame();
+    this->VolumeReceiver->Update(
+      frame, vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()));
+    if (frame.ShowsVolumes)
+    {
+      vtkshadow::MarkStage("volume_receiver"); // a stage only when there is work
+    }
+    for (size_t l = 0; l < frame.Lights.size(); ++l)
+    {
+      const int light = static_cast<int>(l);
+      const std::string note = this->VolumeReceiver->GetLightNote(light, frame.Lights[l].Casts);
+      if (!note.empty())
+      {
+        this->AddLightNote(light, note);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::EndVolumeReceiver()
+{
+  this->VolumeReceiver->EndDraw();
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::ReceiveVolumeShadows(std::string& fragmentShader, vtkProp* prop)
+{
+  if (this->VolumesReceive)
+  {
+    this->VolumeReceiver->PostReplaceShaderValues(fragmentShader, prop);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::SetVolumeShadowParameters(vtkShaderProgram* program)
+{
+  if (this->VolumesReceive)
+  {
+    this->VolumeReceiver->SetShaderParameters(program, this->ResidualLight);
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkShadowPassBase::VolumeReceiverStatsJSON() const
+{
+  return this->VolumeReceiver->StatsJSON();
+}
+
+//------------------------------------------------------------------------------
+long long vtkShadowPassBase::GetVolumeReceiverMemoryBytes() const
+{
+  return this->VolumeReceiver->GetMemoryBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -322,6 +399,7 @@ vtkMTimeType vtkShadowPassBase::GetShaderStageMTime()
 //------------------------------------------------------------------------------
 void vtkShadowPassBase::ReleaseGraphicsResources(vtkWindow* w)
 {
+  this->VolumeReceiver->ReleaseGraphicsResources(w);
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);

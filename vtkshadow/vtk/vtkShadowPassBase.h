@@ -60,6 +60,9 @@ class vtkInformationIntegerKey;
 class vtkLight;
 class vtkRenderer;
 class vtkShadowVolumeOpacityMap;
+class vtkShadowVolumeReceiver;
+class vtkShaderProgram;
+class vtkProp;
 
 class VTKSHADOW_EXPORT vtkShadowPassBase : public vtkOpenGLRenderPass
 {
@@ -312,11 +315,32 @@ protected:
   // On every casting light, that the frame's volumes (vtkVolume) cast no
   // shadow here (raytrace casts them), when it has any; with `maps` (the
   // screen-space techniques' opacity shadow maps) only on the lights they
-  // leave out, with their reason.
+  // leave out, with their reason. In a pass without VolumesReceive (planar,
+  // vtk) also that shaded volumes receive no shadow, when the frame shows
+  // one.
   void NoteUncastVolumes(
     const vtkshadow::ShadowFrame& frame, const vtkShadowVolumeOpacityMap* maps = nullptr);
 #endif
   std::vector<std::string> LightNotes;
+
+  /**
+   * Shaded vtkVolumes receive the opaque surfaces' shadows
+   * (vtkShadowVolumeReceiver) in the passes that set VolumesReceive (csm,
+   * volume, raytrace; auto through them): RenderDelegateWithShaderHooks
+   * brings the maps up to date before the draw (BeginVolumeReceiver; a pass
+   * drawing with its hooks otherwise calls it and EndVolumeReceiver around
+   * its draw), and the pass's hooks call
+   * these two for every mapper (they touch only the volume mapper's
+   * shader). VolumeReceiverStatsJSON: "volume_receiver_maps": ... for
+   * GetStatsJSON.
+   */
+  void BeginVolumeReceiver(const vtkRenderState* s);
+  void EndVolumeReceiver();
+  void ReceiveVolumeShadows(std::string& fragmentShader, vtkProp* prop);
+  void SetVolumeShadowParameters(vtkShaderProgram* program);
+  std::string VolumeReceiverStatsJSON() const;
+  long long GetVolumeReceiverMemoryBytes() const;
+  bool VolumesReceive = false;
 
   vtkRenderPass* DelegatePass;
   bool DelegateIsApplicationScene = false;
@@ -328,6 +352,7 @@ protected:
 
 private:
   std::unique_ptr<vtkshadow::ShadowFrame> OwnFrame;
+  std::unique_ptr<vtkShadowVolumeReceiver> VolumeReceiver;
   const vtkshadow::ShadowFrame* GivenFrame = nullptr;
 
   vtkShadowPassBase(const vtkShadowPassBase&) = delete;

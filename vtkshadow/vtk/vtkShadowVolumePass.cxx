@@ -246,6 +246,7 @@ vtkShadowVolumePass::vtkShadowVolumePass()
   : Impl(new Internals)
 {
   this->Impl->Translucent.SetTranslucentSurfaces(true);
+  this->VolumesReceive = true;
 }
 
 //------------------------------------------------------------------------------
@@ -879,6 +880,7 @@ bool vtkShadowVolumePass::PreReplaceShaderValues(
 bool vtkShadowVolumePass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
+  this->ReceiveVolumeShadows(fragmentShader, prop);
   vtkShadowScreenMask& mask = this->Impl->For(prop);
   if (fragmentShader.find("vshFacingPrepare") == std::string::npos)
   {
@@ -893,6 +895,7 @@ bool vtkShadowVolumePass::PostReplaceShaderValues(
 bool vtkShadowVolumePass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
+  this->SetVolumeShadowParameters(program);
   Internals& impl = *this->Impl;
   impl.For(prop).SetShaderParameters(program);
   if (program->IsUniformUsed("vshFacingLights"))
@@ -965,7 +968,7 @@ long long vtkShadowVolumePass::GetMemoryBytes() const
       }
     }
   }
-  return bytes;
+  return bytes + this->GetVolumeReceiverMemoryBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -975,7 +978,8 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
   std::ostringstream out;
   out << "\"volume_builds\": " << impl.VolumeBuilds << ", \"caster_instances\": " << impl.Instances
       << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", "
-      << impl.Proxies.StatsJSON() << ", " << impl.VolumeMaps.StatsJSON() << ", \"lights\": [";
+      << impl.Proxies.StatsJSON() << ", " << impl.VolumeMaps.StatsJSON() << ", "
+      << this->VolumeReceiverStatsJSON() << ", \"lights\": [";
   for (int light = 0; light < impl.LightCount; ++light)
   {
     const LightStats& s = impl.Stats[light];
