@@ -114,6 +114,10 @@ double vsh__sin_between(const double a[3], const double b[3]);
 /* Determinant of the upper-left 3x3 of a row-major 4x4, divided by the product
  * of its row lengths: scale-free, |value| <= 1, 0 for singular matrices. */
 double vsh__relative_det(const double m[16]);
+/* A right-handed frame (u, v, a) around the unit axis a: u from the
+ * coordinate axis least aligned with a, so for a = +z the seam of a
+ * cylinder or tube starts at +x as in most tools. */
+void vsh__frame_around(const double a[3], double u[3], double v[3]);
 
 #define VSH_PI 3.14159265358979323846
 

@@ -132,20 +132,13 @@ static int cylinder(const vsh_object *o, vsh_mesh *m) {
   const size_t n = (size_t)o->resolution;
   const size_t side_top = n, top_c = 2 * n, top_r = 2 * n + 1, bot_c = 3 * n + 1,
                bot_r = 3 * n + 2;
-  double axis[3], a[3], e[3] = {0.0, 0.0, 0.0}, u[3], v[3], na[3];
+  double axis[3], a[3], u[3], v[3], na[3];
   size_t j, k = 0;
-  int i, smallest = 0;
+  int i;
   if (!valid_resolution(o->resolution) || !(o->radius > 0.0) || !isfinite(o->radius)) return -1;
   for (i = 0; i < 3; ++i) axis[i] = o->top[i] - o->base[i];
   if (!vsh__normalize3(axis, a)) return -1;
-  /* A frame (u, v, a), right-handed: u from the coordinate axis least aligned
-   * with a, so for a = +z the seam starts at +x as in most tools. */
-  for (i = 1; i < 3; ++i)
-    if (fabs(a[i]) < fabs(a[smallest])) smallest = i;
-  e[smallest] = 1.0;
-  for (i = 0; i < 3; ++i) u[i] = e[i] - a[smallest] * a[i];
-  vsh__normalize3(u, u);
-  vsh__cross3(a, u, v);
+  vsh__frame_around(a, u, v);
   if (vsh__mesh_alloc(m, 4 * n + 2, 4 * n)) return -1;
 
   for (i = 0; i < 3; ++i) na[i] = -a[i];

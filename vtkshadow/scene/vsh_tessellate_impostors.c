@@ -46,18 +46,13 @@ static int append(vsh_mesh *all, vsh_mesh *part) {
 static int frustum(const double a[3], double ra, const double b[3], double rb, int res,
                    vsh_mesh *m) {
   const size_t n = (size_t)res;
-  double axis[3], len, u[3], v[3], e[3] = {0.0, 0.0, 0.0}, slope;
+  double axis[3], len, u[3], v[3], slope;
   size_t j, k = 0;
-  int i, smallest = 0;
+  int i;
   for (i = 0; i < 3; ++i) axis[i] = b[i] - a[i];
   len = vsh__norm3(axis);
   if (!vsh__normalize3(axis, axis) || !(len > 0.0)) return -1;
-  for (i = 1; i < 3; ++i)
-    if (fabs(axis[i]) < fabs(axis[smallest])) smallest = i;
-  e[smallest] = 1.0;
-  for (i = 0; i < 3; ++i) u[i] = e[i] - axis[smallest] * axis[i];
-  vsh__normalize3(u, u);
-  vsh__cross3(axis, u, v);
+  vsh__frame_around(axis, u, v);
   /* The outward normal of a cone whose radius shrinks by (ra - rb) over len
    * leans towards b by that slope. */
   slope = (ra - rb) / len;

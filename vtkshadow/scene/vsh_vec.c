@@ -75,3 +75,14 @@ double vsh__relative_det(const double m[16]) {
          r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0]) +
          r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]);
 }
+
+void vsh__frame_around(const double a[3], double u[3], double v[3]) {
+  double e[3] = {0.0, 0.0, 0.0};
+  int i, smallest = 0;
+  for (i = 1; i < 3; ++i)
+    if (fabs(a[i]) < fabs(a[smallest])) smallest = i;
+  e[smallest] = 1.0;
+  for (i = 0; i < 3; ++i) u[i] = e[i] - a[smallest] * a[i];
+  vsh__normalize3(u, u);
+  vsh__cross3(a, u, v);
+}
