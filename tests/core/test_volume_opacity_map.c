@@ -324,6 +324,18 @@ static void test_texel_ray(void)
   CHECK_NEAR(d[2], -1.0, 1e-12);
 }
 
+/* The light in the maps' frame: a position relative to the origin (w
+ * divided out), a direction unchanged. */
+static void test_light_in_frame(void)
+{
+  const double origin[3] = {1, 2, 3}, point[4] = {4, 6, 8, 2}, sun[4] = {0.5, -1, 2, 0};
+  double out[4];
+  vsh_volume_opacity_map_light(point, origin, out);
+  CHECK(out[0] == 1 && out[1] == 1 && out[2] == 1 && out[3] == 1);
+  vsh_volume_opacity_map_light(sun, origin, out);
+  CHECK(out[0] == 0.5 && out[1] == -1 && out[2] == 2 && out[3] == 0);
+}
+
 int main(void)
 {
   test_texel_ray();
@@ -336,5 +348,6 @@ int main(void)
   test_degenerate();
   test_parallel_to_faces();
   test_view_matrix();
+  test_light_in_frame();
   return vsh_check_report("volume_opacity_map");
 }

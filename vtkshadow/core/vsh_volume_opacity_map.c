@@ -283,3 +283,11 @@ int vsh_volume_opacity_map_view_matrix(const vsh_volume_map_plan *plan,
   }
   return 1;
 }
+
+void vsh_volume_opacity_map_light(const double homogeneous[4], const double origin[3],
+                                  double out[4]) {
+  const int positional = homogeneous[3] != 0.0;
+  for (int a = 0; a < 3; ++a)
+    out[a] = positional ? homogeneous[a] / homogeneous[3] - origin[a] : homogeneous[a];
+  out[3] = positional ? 1.0 : 0.0;
+}

@@ -74,6 +74,13 @@ typedef struct vsh_volume_map_plan {
   double lo[2], hi[2];
 } vsh_volume_map_plan;
 
+/* A light as vsh_volume_opacity_map_plan takes it, from its homogeneous
+ * world description (position, w) or (direction towards the light, 0):
+ * a position becomes (position / w - origin, 1), a direction stays
+ * (direction, 0), in the frame of world relative to `origin`. */
+void vsh_volume_opacity_map_light(const double homogeneous[4], const double origin[3],
+                                  double out[4]);
+
 /* Plans the grid of `size` x `size` texels (size >= 2) over the boxes of
  * the `count` volumes for light `light`: (position, 1) or (direction
  * towards the light, 0) in the caller's frame. The window has a texel of

@@ -85,14 +85,8 @@ void vtkShadowVolumeOpacityMap::Update(
     {
       continue;
     }
-    // The light in the maps' frame: a position relative to the origin.
     double h[4];
-    std::copy_n(light.Homogeneous, 4, h);
-    for (int a = 0; a < 3 && h[3] != 0.0; ++a)
-    {
-      h[a] = h[a] / h[3] - this->Origin[a];
-    }
-    h[3] = h[3] != 0.0 ? 1.0 : 0.0;
+    vsh_volume_opacity_map_light(light.Homogeneous, this->Origin, h);
     std::vector<double> key(this->VolumesKey);
     key.insert(key.end(), h, h + 4);
     if (key != map.Key)

@@ -226,14 +226,8 @@ void vtkShadowVolumeReceiver::Update(
     {
       continue;
     }
-    // The light in the maps' frame: a position relative to the origin.
     double h[4];
-    std::copy_n(frame.Lights[static_cast<size_t>(l)].Homogeneous, 4, h);
-    for (int a = 0; a < 3 && h[3] != 0.0; ++a)
-    {
-      h[a] = h[a] / h[3] - this->Origin[a];
-    }
-    h[3] = h[3] != 0.0 ? 1.0 : 0.0;
+    vsh_volume_opacity_map_light(frame.Lights[static_cast<size_t>(l)].Homogeneous, this->Origin, h);
     std::vector<double> key(h, h + 4);
     key.insert(key.end(), this->Origin, this->Origin + 3);
     key.push_back(static_cast<double>(this->SceneVersion));
