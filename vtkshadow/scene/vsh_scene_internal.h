@@ -74,6 +74,16 @@ char *vsh__strdup(const char *s);
 int vsh__parse_object(const vsh_ctx *ctx, const vsh_scene *scene, const cJSON *item,
                       size_t index, const char *scene_path, vsh_object *out);
 
+/* Typed shape fields shared by the shapes: a required [x, y, z]; a
+ * required number > 0; an optional "resolution" in 3..most (default
+ * `fallback`). */
+int vsh__need_vec3(const vsh_ctx *ctx, const cJSON *obj, const char *parent, const char *key,
+                   double out[3]);
+int vsh__positive(const vsh_ctx *ctx, const cJSON *obj, const char *parent, const char *key,
+                  double *out);
+int vsh__resolution(const vsh_ctx *ctx, const cJSON *obj, const char *parent, int fallback,
+                    int most, int *out);
+
 /* ---- vsh_scene_primitives.c --------------------------------------------- */
 
 /* "points", "polyline" (radii from the scene's camera and size, which are

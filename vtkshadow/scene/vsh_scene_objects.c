@@ -38,15 +38,15 @@ static const cJSON *need(const vsh_ctx *ctx, const cJSON *obj, const char *paren
   return item;
 }
 
-static int need_vec3(const vsh_ctx *ctx, const cJSON *obj, const char *parent, const char *key,
-                     double out[3]) {
+int vsh__need_vec3(const vsh_ctx *ctx, const cJSON *obj, const char *parent, const char *key,
+                   double out[3]) {
   char field[VSH_FIELD_MAX];
   const cJSON *item = need(ctx, obj, parent, key, field);
   return !item || vsh__vector(ctx, item, field, 3, out) ? -1 : 0;
 }
 
-static int positive(const vsh_ctx *ctx, const cJSON *obj, const char *parent, const char *key,
-                    double *out) {
+int vsh__positive(const vsh_ctx *ctx, const cJSON *obj, const char *parent, const char *key,
+                  double *out) {
   char field[VSH_FIELD_MAX], got[VSH_GOT_MAX];
   const cJSON *item = need(ctx, obj, parent, key, field);
   if (!item || vsh__number(ctx, item, field, out)) return -1;
@@ -57,29 +57,30 @@ static int positive(const vsh_ctx *ctx, const cJSON *obj, const char *parent, co
   return 0;
 }
 
-static int resolution(const vsh_ctx *ctx, const cJSON *obj, const char *parent, int *out) {
+int vsh__resolution(const vsh_ctx *ctx, const cJSON *obj, const char *parent, int fallback,
+                    int most, int *out) {
   char field[VSH_FIELD_MAX];
   const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, "resolution");
-  *out = 64;
+  *out = fallback;
   if (!item) return 0;
   vsh__field(field, parent, "resolution");
-  return vsh__integer(ctx, item, field, 3, 4096, out);
+  return vsh__integer(ctx, item, field, 3, most, out);
 }
 
 static int parse_sphere(const vsh_ctx *ctx, const cJSON *shape, const char *f, vsh_object *o) {
   if (vsh__object(ctx, shape, f) || vsh__check_keys(ctx, shape, f, sphere_keys, NULL)) return -1;
-  if (need_vec3(ctx, shape, f, "center", o->center)) return -1;
-  if (positive(ctx, shape, f, "radius", &o->radius)) return -1;
-  return resolution(ctx, shape, f, &o->resolution);
+  if (vsh__need_vec3(ctx, shape, f, "center", o->center)) return -1;
+  if (vsh__positive(ctx, shape, f, "radius", &o->radius)) return -1;
+  return vsh__resolution(ctx, shape, f, 64, 4096, &o->resolution);
 }
 
 static int parse_plane(const vsh_ctx *ctx, const cJSON *shape, const char *f, vsh_object *o) {
   double e1[3], e2[3], s;
   int i;
   if (vsh__object(ctx, shape, f) || vsh__check_keys(ctx, shape, f, plane_keys, NULL)) return -1;
-  if (need_vec3(ctx, shape, f, "origin", o->origin) ||
-      need_vec3(ctx, shape, f, "point1", o->point1) ||
-      need_vec3(ctx, shape, f, "point2", o->point2))
+  if (vsh__need_vec3(ctx, shape, f, "origin", o->origin) ||
+      vsh__need_vec3(ctx, shape, f, "point1", o->point1) ||
+      vsh__need_vec3(ctx, shape, f, "point2", o->point2))
     return -1;
   for (i = 0; i < 3; ++i) {
     e1[i] = o->point1[i] - o->origin[i];
@@ -98,7 +99,7 @@ static int parse_plane(const vsh_ctx *ctx, const cJSON *shape, const char *f, vs
 static int parse_box(const vsh_ctx *ctx, const cJSON *shape, const char *f, vsh_object *o) {
   int i;
   if (vsh__object(ctx, shape, f) || vsh__check_keys(ctx, shape, f, box_keys, NULL)) return -1;
-  if (need_vec3(ctx, shape, f, "min", o->min) || need_vec3(ctx, shape, f, "max", o->max))
+  if (vsh__need_vec3(ctx, shape, f, "min", o->min) || vsh__need_vec3(ctx, shape, f, "max", o->max))
     return -1;
   for (i = 0; i < 3; ++i) {
     if (!(o->min[i] < o->max[i])) {
@@ -119,7 +120,7 @@ static int parse_cylinder(const vsh_ctx *ctx, const cJSON *shape, const char *f,
   int i;
   if (vsh__object(ctx, shape, f) || vsh__check_keys(ctx, shape, f, cylinder_keys, NULL))
     return -1;
-  if (need_vec3(ctx, shape, f, "base", o->base) || need_vec3(ctx, shape, f, "top", o->top))
+  if (vsh__need_vec3(ctx, shape, f, "base", o->base) || vsh__need_vec3(ctx, shape, f, "top", o->top))
     return -1;
   for (i = 0; i < 3; ++i) axis[i] = o->top[i] - o->base[i];
   vsh__field(field, f, "top");
@@ -128,8 +129,8 @@ static int parse_cylinder(const vsh_ctx *ctx, const cJSON *shape, const char *f,
     return vsh__fail(ctx, field, got, "equal to base");
   if (!isfinite(vsh__norm3(axis)))
     return vsh__fail(ctx, field, got, "too far from base (length overflows)");
-  if (positive(ctx, shape, f, "radius", &o->radius)) return -1;
-  return resolution(ctx, shape, f, &o->resolution);
+  if (vsh__positive(ctx, shape, f, "radius", &o->radius)) return -1;
+  return vsh__resolution(ctx, shape, f, 64, 4096, &o->resolution);
 }
 
 static int parse_transform(const vsh_ctx *ctx, const cJSON *item, const char *f, double m[16]) {

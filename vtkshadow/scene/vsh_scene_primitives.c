@@ -47,16 +47,6 @@ static int pixel_size(const vsh_ctx *ctx, const cJSON *shape, const char *f, con
   return 0;
 }
 
-static int tessellation(const vsh_ctx *ctx, const cJSON *shape, const char *f, int fallback,
-                        int *out) {
-  char field[VSH_FIELD_MAX];
-  const cJSON *item = cJSON_GetObjectItemCaseSensitive(shape, "resolution");
-  *out = fallback;
-  if (!item) return 0;
-  vsh__field(field, f, "resolution");
-  return vsh__integer(ctx, item, field, 3, 256, out);
-}
-
 /* `key`: an array of at least `least` [x, y, z] positions, each in front of
  * the camera, with the impostor radius there. */
 static int positions(const vsh_ctx *ctx, const vsh_scene *scene, const cJSON *shape,
@@ -101,7 +91,7 @@ int vsh__parse_points(const vsh_ctx *ctx, const vsh_scene *scene, const cJSON *s
   if (pixel_size(ctx, shape, f, "point_size", &o->pixels)) return -1;
   /* 32 around: the inscribed UV sphere's radius is within 0.5 % of the
    * impostor's, well under a pixel of a point's shadow. */
-  if (tessellation(ctx, shape, f, 32, &o->resolution)) return -1;
+  if (vsh__resolution(ctx, shape, f, 32, 256, &o->resolution)) return -1;
   return positions(ctx, scene, shape, f, "positions", 1, o);
 }
 
@@ -112,7 +102,7 @@ int vsh__parse_polyline(const vsh_ctx *ctx, const vsh_scene *scene, const cJSON 
   if (vsh__object(ctx, shape, f) || vsh__check_keys(ctx, shape, f, polyline_keys, NULL))
     return -1;
   if (pixel_size(ctx, shape, f, "line_width", &o->pixels)) return -1;
-  if (tessellation(ctx, shape, f, 24, &o->resolution)) return -1;
+  if (vsh__resolution(ctx, shape, f, 24, 256, &o->resolution)) return -1;
   if (positions(ctx, scene, shape, f, "points", 2, o)) return -1;
   /* A zero-length segment has no axis for its frustum. */
   vsh__field(field, f, "points");
@@ -131,16 +121,9 @@ int vsh__parse_volume(const vsh_ctx *ctx, const cJSON *shape, const char *f, vsh
   char field[VSH_FIELD_MAX], got[VSH_GOT_MAX];
   const cJSON *item;
   if (vsh__object(ctx, shape, f) || vsh__check_keys(ctx, shape, f, volume_keys, NULL)) return -1;
-  vsh__field(field, f, "center");
-  item = cJSON_GetObjectItemCaseSensitive(shape, "center");
-  if (vsh__require(ctx, item, field) || vsh__vector(ctx, item, field, 3, o->center)) return -1;
-  vsh__field(field, f, "radius");
-  item = cJSON_GetObjectItemCaseSensitive(shape, "radius");
-  if (vsh__require(ctx, item, field) || vsh__number(ctx, item, field, &o->radius)) return -1;
-  if (!(o->radius > 0.0)) {
-    vsh__fmt_number(o->radius, got, sizeof got);
-    return vsh__fail(ctx, field, got, "must be > 0");
-  }
+  if (vsh__need_vec3(ctx, shape, f, "center", o->center) ||
+      vsh__positive(ctx, shape, f, "radius", &o->radius))
+    return -1;
   /* density * radius is the optical depth from the edge to the centre: past
    * ~50 nothing at all gets through and a float transfer function cannot say
    * more. */
