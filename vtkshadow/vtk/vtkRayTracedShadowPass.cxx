@@ -13,6 +13,7 @@
 #include "vtkShadowFrame.h"
 #include "vtkShadowImpostors.h"
 #include "vtkShadowLightingHook.h"
+#include "vtkShadowRayClassifier.h"
 #include "vtkShadowRayTracer.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkShadowVolumeCasters.h"
@@ -73,6 +74,8 @@ struct vtkRayTracedShadowPass::Internals
     vtkShadowScreenMask Translucent;
     std::vector<double> LastKey;
     bool HaveMask = false;
+    // The light-space maps that decide pixels without rays (Classify).
+    vtkShadowRayClassifier Classifier;
 
     World() { this->Translucent.SetTranslucentSurfaces(true); }
     // The mask `prop`'s fragments read.
@@ -82,7 +85,8 @@ struct vtkRayTracedShadowPass::Internals
     }
     long long GetMemoryBytes() const
     {
-      return this->Mask.GetMemoryBytes() + this->Translucent.GetMemoryBytes();
+      return this->Mask.GetMemoryBytes() + this->Translucent.GetMemoryBytes() +
+        this->Classifier.GetMemoryBytes();
     }
     void ReleaseGraphicsResources(vtkWindow* w)
     {
@@ -114,6 +118,7 @@ struct vtkRayTracedShadowPass::Internals
   std::vector<float> TranslucentDepth;
   std::vector<std::vector<float>> TranslucentVisibility;
   bool TracedTranslucent = false;
+  bool ClassifierUsed = false;
   bool Still = false;
   vtkShadowRayTracer::Counters Counters;
   vtkShadowRayTracer::Counters LastTraced; // the last frame that traced, for its rays per pixel
@@ -175,6 +180,30 @@ struct vtkRayTracedShadowPass::Internals
     return true;
   }
 
+  // The maps that decide pixels without rays (vtkShadowRayClassifier), for
+  // hard lights, when `classify` is on and every caster is a triangle.
+  void PrepareClassifier(vtkShadowRayTracer::Frame& rays, bool classify, int resolution)
+  {
+    this->ClassifierUsed = false;
+    if (!classify || !this->Volumes.IsEmpty() || this->Scene.HasImpostors() ||
+      this->Scene.IsEmpty())
+    {
+      return;
+    }
+    std::vector<bool> hard;
+    for (int samples : rays.Samples)
+    {
+      hard.push_back(samples <= 1);
+    }
+    vtkShadowRayClassifier& classifier = this->W->Classifier;
+    classifier.Update(this->Scene, rays.Lights, hard, rays.Eye, resolution);
+    rays.Classify = classifier.GetMaps();
+    classifier.Policy(rays.ClassifyBlocks, rays.ClassifyPixels);
+    std::copy_n(classifier.GetAnchor(), 3, rays.ClassifyAnchor);
+    rays.InstanceRadius = this->Scene.GetLargestRadius();
+    this->ClassifierUsed = true;
+  }
+
   // Fold the last frame's penumbra fraction of adaptive lights into Penumbra.
   void ObservePenumbra(const vtkShadowRayTracer::Frame& rays)
   {
@@ -227,6 +256,8 @@ struct vtkRayTracedShadowPass::Frame
 vtkRayTracedShadowPass::vtkRayTracedShadowPass()
   : Samples(128)
   , Adaptive(1)
+  , Classify(1)
+  , ClassifyResolution(1024)
   , LightRadius(0.0)
   , LightAngle(0.0)
   , NumberOfThreads(0)
@@ -407,6 +438,7 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, Frame& frame)
   }
   rays.Lights = frame.Lights;
   rays.Samples = frame.Samples;
+  impl.PrepareClassifier(rays, this->Classify != 0, this->ClassifyResolution);
   for (int samples : frame.Samples)
   {
     const int first = vsh_rt_adaptive_first(samples, this->Adaptive, VSH_RT_ADAPTIVE_BATCH);
@@ -432,6 +464,11 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, Frame& frame)
   this->NumberOfRaysTraced = static_cast<vtkIdType>(traced);
   vsh_rt_cost_model_observe(&impl.Cost, traced, impl.Counters.Seconds, impl.Counters.Threads);
   impl.ObservePenumbra(rays);
+  if (impl.ClassifierUsed)
+  {
+    const vtkShadowRayTracer::Counters& c = impl.Counters;
+    impl.W->Classifier.Observe(c.BlockAsked, c.BlockDecided, c.PixelAsked, c.PixelDecided);
+  }
   impl.LastTraced = impl.Counters;
   return true;
 }
@@ -567,6 +604,10 @@ const vtkshadow::Settings& vtkRayTracedShadowPass::SettingsTable()
         "rays per pixel for a light with a size (hard lights trace 1)"),
       Row("adaptive", vtkshadow::Flag(), &P::SetAdaptive, &P::GetAdaptive,
         "more rays only near a penumbra"),
+      Row("classify", vtkshadow::Flag(), &P::SetClassify, &P::GetClassify,
+        "decide the pixels a light-space map proves lit or shadowed without rays"),
+      Row("classify_resolution", vtkshadow::Integers(64, 4096), &P::SetClassifyResolution,
+        &P::GetClassifyResolution, "texels a side of the classifier's maps"),
       Row("threads", vtkshadow::Integers(0, 256), &P::SetNumberOfThreads, &P::GetNumberOfThreads,
         "tracing threads (0 = one per core)"),
       Row("light_radius", vtkshadow::OpenBelow(0, std::numeric_limits<double>::infinity()),
@@ -625,6 +666,36 @@ std::string VolumesJSON(
   out << "], \"volume_samples\": " << c.VolumeSamples;
   return out.str();
 }
+
+// The classifier's part of the last frame: whether it ran, per light the
+// fraction of (pixel, light) pairs it decided and of surface pixels traced,
+// pixels that traced no ray, and its maps (built, ms, bytes).
+std::string ClassifyJSON(
+  bool used, const vtkShadowRayClassifier& classifier, const vtkShadowRayTracer::Counters& c)
+{
+  std::ostringstream out, decided, traced;
+  long long asked = 0, settled = 0;
+  for (size_t l = 0; l < c.Classifiable.size(); ++l)
+  {
+    const double n = double(c.Classifiable[l]);
+    const long long d = c.ClassifiedLit[l] + c.ClassifiedShadowed[l];
+    decided << (l ? ", " : "") << (n > 0 ? double(d) / n : 0.0);
+    traced << (l ? ", " : "") << (n > 0 ? 1.0 - double(d) / n : 1.0);
+    asked += c.Classifiable[l];
+    settled += d;
+  }
+  const long long surface = c.Pixels - c.Background;
+  out << ", \"classify\": " << (used ? "true" : "false") << ", \"classified_fraction_light\": ["
+      << decided.str() << "], \"traced_fraction_light\": [" << traced.str()
+      << "], \"traced_fraction\": " << (asked > 0 ? 1.0 - double(settled) / double(asked) : 1.0)
+      << ", \"pixels_without_rays\": " << c.PixelsWithoutRays
+      << ", \"block_decided_pixels\": " << c.BlockPixels << ", \"surface_pixels\": " << surface
+      << ", \"classify_maps_built\": " << classifier.GetBuilds()
+      << ", \"classify_maps_built_last_frame\": " << (classifier.BuiltLastUpdate() ? 1 : 0)
+      << ", \"classify_build_ms\": " << 1e3 * classifier.GetBuildSeconds()
+      << ", \"classify_bytes\": " << classifier.GetMemoryBytes();
+  return out.str();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -657,6 +728,7 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"triangles\": " << impl.Scene.GetNumberOfTriangles()
       << ", \"impostors\": " << impl.Scene.GetNumberOfImpostors() << VolumesJSON(impl.Volumes, c)
       << ", " << this->VolumeReceiverStatsJSON()
+      << ClassifyJSON(impl.ClassifierUsed, impl.W->Classifier, c)
       << ", \"mesh_builds\": " << impl.Scene.GetMeshBuilds()
       << ", \"mesh_build_ms\": " << 1e3 * impl.Scene.GetMeshBuildSeconds()
       << ", \"top_level_commits\": " << impl.Scene.GetTopLevelCommits()

@@ -80,6 +80,21 @@ public:
   vtkGetMacro(LightAngle, double);
 
   /**
+   * Decide without rays the pixels a light-space map proves lit or
+   * shadowed (default 1, on): the image is the one every pixel's ray gives
+   * (vsh_rt_classify.h says why), at the cost of the pixels the map leaves
+   * undecided. Hard lights only, and only when every caster is a triangle
+   * mesh (no spheres, tubes, flat quads or volumes). 0: every pixel traced.
+   * ClassifyResolution: texels a side of each light's map (64..4096,
+   * default 1024; point lights and wide spots have six).
+   */
+  vtkSetClampMacro(Classify, int, 0, 1);
+  vtkGetMacro(Classify, int);
+  vtkBooleanMacro(Classify, int);
+  vtkSetClampMacro(ClassifyResolution, int, 64, 4096);
+  vtkGetMacro(ClassifyResolution, int);
+
+  /**
    * Worker threads for the rays (0, the default: one per core).
    */
   vtkSetClampMacro(NumberOfThreads, int, 0, 256);
@@ -147,6 +162,8 @@ protected:
 
   int Samples;
   int Adaptive;
+  int Classify;
+  int ClassifyResolution;
   double LightRadius;
   double LightAngle;
   int NumberOfThreads;

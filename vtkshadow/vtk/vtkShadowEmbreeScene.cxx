@@ -1,5 +1,7 @@
 #include "vtkShadowEmbreeScene.h"
 
+#include "vsh_rt_classify.h"
+
 #include "vsh_mat4.h"
 #include "vsh_raytrace.h"
 #include "vtkActor.h"
@@ -218,6 +220,53 @@ vtkShadowEmbreeScene::Mesh* vtkShadowEmbreeScene::UpdateMesh(vtkActor* actor)
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowEmbreeScene::CollectTriangles(std::vector<double>& triangles,
+  std::vector<unsigned char>& flags, std::vector<int>& placements) const
+{
+  triangles.clear();
+  flags.clear();
+  placements.clear();
+  for (size_t k = 0; k < this->Parts.size(); ++k)
+  {
+    const Part& part = this->Parts[k];
+    const Instance& inst = part.Placed;
+    if (!inst.Vertices || !inst.Indices || inst.Impostors)
+    {
+      continue;
+    }
+    const unsigned char flag = !part.Casts ? 0
+      : part.Translucent                   ? VSH_RT_CLASSIFY_TRANSLUCENT
+                                           : VSH_RT_CLASSIFY_CASTS;
+    const std::vector<unsigned int>& indices = *inst.Indices;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3)
+    {
+      for (int v = 0; v < 3; ++v)
+      {
+        const float* p = &(*inst.Vertices)[3 * size_t(indices[t + v])];
+        for (int r = 0; r < 3; ++r)
+        {
+          const double* m = &inst.Transform[4 * r];
+          triangles.push_back(m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + m[3]);
+        }
+      }
+      flags.push_back(flag);
+      placements.push_back(static_cast<int>(k));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkShadowEmbreeScene::GetLargestRadius() const
+{
+  double largest = 0;
+  for (const Part& part : this->Parts)
+  {
+    largest = std::max(largest, part.Placed.Radius);
+  }
+  return largest;
+}
+
+//------------------------------------------------------------------------------
 bool vtkShadowEmbreeScene::GetTriangle(
   unsigned int id, unsigned int primitive, double v[3][3]) const
 {
@@ -280,6 +329,8 @@ void vtkShadowEmbreeScene::Attach(
   const Actor& a, bool casts, RTCScene scene, const float transform[12], const Instance& instance)
 {
   const bool translucent = a.Opacity < 1.0;
+  this->Parts.push_back({ instance, casts, translucent });
+  this->ImpostorParts += instance.Impostors ? 1 : 0;
   for (RTCScene top : { this->Visible, this->Casters })
   {
     // A translucent actor is not in the depth pass (nothing lands on it)
@@ -509,6 +560,8 @@ bool vtkShadowEmbreeScene::BuildTopLevel(
   this->ImpostorCount = 0;
   rtcSetSceneFlags(this->Casters, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   this->Instances.clear();
+  this->Parts.clear();
+  this->ImpostorParts = 0;
   this->CasterOpacity.clear();
   this->CasterTransmit.clear();
   this->TranslucentCasters = false;

@@ -99,6 +99,20 @@ public:
    */
   bool GetTriangle(unsigned int id, unsigned int primitive, double v[3][3]) const;
 
+  /**
+   * Every triangle of the top levels relative to the centre, in double (9
+   * per triangle, as GetTriangle gives them), with its part in the
+   * shadows (vsh_rt_classify.h flags: an opaque caster, a translucent
+   * caster, or only drawn) and the index of the placement it belongs to:
+   * what the classifier's light-space maps rasterize. Spheres, tubes and
+   * flat quads have no triangles: HasImpostors says when some are left out.
+   */
+  void CollectTriangles(std::vector<double>& triangles, std::vector<unsigned char>& flags,
+    std::vector<int>& placements) const;
+  bool HasImpostors() const { return this->ImpostorParts > 0; }
+  // The largest Instance::Radius (the tracer's offset grows with it).
+  double GetLargestRadius() const;
+
   vtkShadowEmbreeScene();
   ~vtkShadowEmbreeScene();
   vtkShadowEmbreeScene(const vtkShadowEmbreeScene&) = delete;
@@ -166,6 +180,16 @@ private:
   RTCScene Casters = nullptr;
   std::map<vtkActor*, std::unique_ptr<Mesh>> Meshes;
   std::vector<Instance> Instances;
+  // Every placement attached to a top level (translucent ones too, which
+  // are not in Instances), with its part in the shadows.
+  struct Part
+  {
+    Instance Placed;
+    bool Casts;
+    bool Translucent;
+  };
+  std::vector<Part> Parts;
+  int ImpostorParts = 0;
   std::vector<RTCScene> ImpostorScenes; // this top level's, released with it
   long long ImpostorCount = 0;
   std::vector<float> CasterOpacity;

@@ -16,6 +16,9 @@
 namespace
 {
 constexpr int TileSize = 64;
+// Pixels go to the workers in blocks of Block x Block (TileSize pixels):
+// the classifier decides a whole block at once where it can.
+constexpr int Block = 8;
 
 // One shadow ray's query through translucent casters: the context filter
 // (Transmit) sees every hit of the ray in the "casters" top level, in no
@@ -90,6 +93,10 @@ struct Surface
   double Normal[3]; // unit, facing the camera
   double Offset;    // how far the shadow rays start off the surface
   bool HasNormal;   // false: the refinement missed, no facing test
+  // Per light (the first MaxDecided), what the classifier decided
+  // (VSH_RT_CLASSIFY_*): UNDECIDED ones are traced.
+  static constexpr int MaxDecided = 8;
+  signed char Decided[MaxDecided];
 };
 
 // One (surface, light) pair whose rays are traced: its rays so far.
@@ -125,9 +132,16 @@ struct Worker
   std::vector<std::vector<unsigned char>>* States;
   vtkShadowRayTracer::Counters Count;
 
-  void Tile(int begin, int end);
+  void Tile(int block);
   double Tolerance(int x, int y) const;
-  void Refine(int begin, int end);
+  bool ClassifyBlock(int x0, int y0, int x1, int y1, bool whole);
+  bool Classify(const vsh_rt_pixel_ray& ray, Surface& s);
+  // This block's classes per light (UNDECIDED: per pixel).
+  signed char BlockDecided[Surface::MaxDecided];
+  void Decide(const Surface& s, size_t l);
+  void Refine(int x0, int y0, int x1, int y1);
+  void RefinePixels(int x0, int y0, int x1, int y1);
+  void Intersect();
   void Land(int k);
   bool Reland(int k, const vtkShadowEmbreeScene::Instance& inst);
   bool Exact(int k, double n[3], double& len2, double& side);
@@ -163,54 +177,95 @@ double Worker::Tolerance(int x, int y) const
   return f.DepthTolerance + f.SlopeTolerance * slope;
 }
 
-void Worker::Refine(int begin, int end)
+// The block's pixels: decided whole (classifier), else in quarters, else
+// each pixel on its own.
+void Worker::Refine(int x0, int y0, int x1, int y1)
 {
-  const vtkShadowRayTracer::Frame& f = *this->Frame;
   this->Hits.clear();
   this->Pixels.clear();
   this->Surfaces.clear();
   this->Limits.clear();
-  const int width = f.View.width;
-  for (int p = begin; p < end; ++p)
+  if (this->ClassifyBlock(x0, y0, x1, y1, true))
   {
-    vsh_rt_pixel_ray ray;
-    const int x = p % width, y = p / width;
-    if (vsh_rt_pixel_ray_init(&f.View, x, y, f.Depth[p], this->Tolerance(x, y), &ray) != VSH_RT_OK)
-    {
-      ++this->Count.Background;
-      continue;
-    }
-    // Start at the near end of the interval: float keeps the precision of
-    // the surface's position, not of the far-away camera's.
-    RTCRayHit rh;
-    const double start = ray.lo;
-    rh.ray.org_x = static_cast<float>(ray.origin[0] + start * ray.direction[0] + EyeToCentre[0]);
-    rh.ray.org_y = static_cast<float>(ray.origin[1] + start * ray.direction[1] + EyeToCentre[1]);
-    rh.ray.org_z = static_cast<float>(ray.origin[2] + start * ray.direction[2] + EyeToCentre[2]);
-    rh.ray.dir_x = static_cast<float>(ray.direction[0]);
-    rh.ray.dir_y = static_cast<float>(ray.direction[1]);
-    rh.ray.dir_z = static_cast<float>(ray.direction[2]);
-    rh.ray.tnear = 0.0f;
-    // The interval, widened by float rounding of the origin.
-    // Unbounded: at a grazing angle far away the float ray can pass the
-    // interval and meet the right triangle further on; Land keeps a hit
-    // beyond the interval only where the double landing on its plane falls
-    // inside it.
-    this->Limits.push_back(static_cast<float>((ray.hi - ray.lo) + 1e-5 * (ray.hi - ray.lo) +
-      4 * VSH_RT_OFFSET_RELATIVE * std::fabs(ray.distance)));
-    rh.ray.tfar = std::numeric_limits<float>::infinity();
-    rh.ray.mask = 0xffffffffu;
-    rh.ray.time = 0.0f;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    this->Hits.push_back(rh);
-    this->Pixels.push_back(ray);
-    Surface s;
-    s.Pixel = p;
-    this->Surfaces.push_back(s);
+    return; // every pixel decided for every light
   }
+  const bool split = !this->Frame->Classify.empty() && x1 - x0 >= 3 && y1 - y0 >= 3;
+  if (!split)
+  {
+    this->RefinePixels(x0, y0, x1, y1);
+    this->Intersect();
+    return;
+  }
+  const int xm = (x0 + x1 + 1) / 2, ym = (y0 + y1 + 1) / 2;
+  const int qx[4][2] = { { x0, xm - 1 }, { xm, x1 }, { x0, xm - 1 }, { xm, x1 } };
+  const int qy[4][2] = { { y0, ym - 1 }, { y0, ym - 1 }, { ym, y1 }, { ym, y1 } };
+  for (int q = 0; q < 4; ++q)
+  {
+    if (!this->ClassifyBlock(qx[q][0], qy[q][0], qx[q][1], qy[q][1], false))
+    {
+      this->RefinePixels(qx[q][0], qy[q][0], qx[q][1], qy[q][1]);
+    }
+  }
+  this->Intersect();
+}
+
+// Each pixel's refinement ray (and its classification where the block's
+// left its lights undecided), appended to this tile's lists.
+void Worker::RefinePixels(int x0, int y0, int x1, int y1)
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  const int width = f.View.width;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+    {
+      vsh_rt_pixel_ray ray;
+      const int p = y * width + x;
+      if (vsh_rt_pixel_ray_init(&f.View, x, y, f.Depth[p], this->Tolerance(x, y), &ray) !=
+        VSH_RT_OK)
+      {
+        ++this->Count.Background;
+        continue;
+      }
+      // Start at the near end of the interval: float keeps the precision of
+      // the surface's position, not of the far-away camera's.
+      Surface s;
+      s.Pixel = p;
+      if (this->Classify(ray, s))
+      {
+        continue; // every light decided: no ray
+      }
+      RTCRayHit rh;
+      const double start = ray.lo;
+      rh.ray.org_x = static_cast<float>(ray.origin[0] + start * ray.direction[0] + EyeToCentre[0]);
+      rh.ray.org_y = static_cast<float>(ray.origin[1] + start * ray.direction[1] + EyeToCentre[1]);
+      rh.ray.org_z = static_cast<float>(ray.origin[2] + start * ray.direction[2] + EyeToCentre[2]);
+      rh.ray.dir_x = static_cast<float>(ray.direction[0]);
+      rh.ray.dir_y = static_cast<float>(ray.direction[1]);
+      rh.ray.dir_z = static_cast<float>(ray.direction[2]);
+      rh.ray.tnear = 0.0f;
+      // The interval, widened by float rounding of the origin.
+      // Unbounded: at a grazing angle far away the float ray can pass the
+      // interval and meet the right triangle further on; Land keeps a hit
+      // beyond the interval only where the double landing on its plane falls
+      // inside it.
+      this->Limits.push_back(static_cast<float>((ray.hi - ray.lo) + 1e-5 * (ray.hi - ray.lo) +
+        4 * VSH_RT_OFFSET_RELATIVE * std::fabs(ray.distance)));
+      rh.ray.tfar = std::numeric_limits<float>::infinity();
+      rh.ray.mask = 0xffffffffu;
+      rh.ray.time = 0.0f;
+      rh.ray.id = 0;
+      rh.ray.flags = 0;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      this->Hits.push_back(rh);
+      this->Pixels.push_back(ray);
+      this->Surfaces.push_back(s);
+    }
+}
+
+// The tile's refinement rays, in one stream.
+void Worker::Intersect()
+{
   if (!this->Hits.empty())
   {
     RTCIntersectContext context;
@@ -220,6 +275,208 @@ void Worker::Refine(int begin, int end)
       static_cast<unsigned int>(this->Hits.size()), sizeof(RTCRayHit));
     this->Count.PrimaryRays += static_cast<long long>(this->Hits.size());
   }
+}
+
+// What the lights' maps decide for the whole block [x0, x1] x [y0, y1]
+// (BlockDecided): its region is the hull of its corner pixels' rays
+// between the block's smallest and largest depth, widened by three times
+// its largest depth tolerance (every pixel's interval, two, and the half
+// interval of slack the landing keeps, vsh_rt_classify_tube_init, with one
+// to spare for the curvature of depth against distance), grown by the
+// tube's radius and 2e-5 of the distance (the slack's terms in distance). True when every
+// light is decided: its pixels' visibilities are then written.
+bool Worker::ClassifyBlock(int x0, int y0, int x1, int y1, bool whole)
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  std::fill_n(
+    this->BlockDecided, Surface::MaxDecided, static_cast<signed char>(VSH_RT_CLASSIFY_UNDECIDED));
+  if (f.Classify.empty())
+  {
+    return false;
+  }
+  const int width = f.View.width;
+  double dmin = 2, dmax = -1, tol = 0;
+  long long drawn = 0;
+  for (int y = y0; y <= y1; ++y)
+  {
+    for (int x = x0; x <= x1; ++x)
+    {
+      const float d = f.Depth[y * width + x];
+      if (d < 1.0f)
+      {
+        dmin = std::min(dmin, double(d));
+        dmax = std::max(dmax, double(d));
+        tol = std::max(tol, this->Tolerance(x, y));
+        ++drawn;
+      }
+    }
+  }
+  if (drawn == 0)
+  {
+    return false; // the pixels count themselves as background
+  }
+  vsh_rt_classify_region region;
+  const double lo = std::max(0.0, dmin - 3 * tol), hi = std::min(1.0, dmax + 3 * tol);
+  const int cx[4] = { x0, x1, x0, x1 }, cy[4] = { y0, y0, y1, y1 };
+  double magnitude = 0, distance = 0, span = 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    double a[3], b[3];
+    if (vsh_rt_unproject(&f.View, cx[k] + 0.5, cy[k] + 0.5, lo, a) != VSH_RT_OK ||
+      vsh_rt_unproject(&f.View, cx[k] + 0.5, cy[k] + 0.5, hi, b) != VSH_RT_OK)
+    {
+      return false;
+    }
+    double d2 = 0, c2a = 0, c2b = 0;
+    for (int r = 0; r < 3; ++r)
+    {
+      region.dir[k][r] = b[r] - a[r];
+      d2 += region.dir[k][r] * region.dir[k][r];
+      region.corner[k][r] = a[r] + f.Eye[r] - f.ClassifyAnchor[r];
+      region.corner[k + 4][r] = b[r] + f.Eye[r] - f.ClassifyAnchor[r];
+      c2a += (a[r] + this->EyeToCentre[r]) * (a[r] + this->EyeToCentre[r]);
+      c2b += (b[r] + this->EyeToCentre[r]) * (b[r] + this->EyeToCentre[r]);
+    }
+    const double len = std::sqrt(d2);
+    if (!(len > 0))
+    {
+      return false; // a slab of no thickness: no view direction
+    }
+    for (int r = 0; r < 3; ++r)
+    {
+      region.dir[k][r] /= len;
+    }
+    span = std::max(span, len);
+    magnitude = std::max(magnitude, std::sqrt(std::max(c2a, c2b)));
+    distance = std::max(distance, std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
+  }
+  region.radius =
+    5.0 * vsh_rt_offset_distance(magnitude + span + f.InstanceRadius) + 2e-5 * distance;
+  bool all = true;
+  for (size_t l = 0; l < f.Lights.size(); ++l)
+  {
+    const vsh_rt_classify_map* map =
+      l < f.Classify.size() && l < size_t(Surface::MaxDecided) ? f.Classify[l] : nullptr;
+    const bool blocks =
+      f.ClassifyBlocks.empty() || (l < f.ClassifyBlocks.size() && f.ClassifyBlocks[l]);
+    const int c = map && blocks ? vsh_rt_classify_block(map, &region) : VSH_RT_CLASSIFY_UNDECIDED;
+    if (map && blocks && l < this->Count.BlockAsked.size())
+    {
+      // Yield: the drawn pixels of whole blocks asked, those any block
+      // (whole or quarter) decided.
+      this->Count.BlockAsked[l] += whole ? drawn : 0;
+      this->Count.BlockDecided[l] += c != VSH_RT_CLASSIFY_UNDECIDED ? drawn : 0;
+    }
+    if (l < size_t(Surface::MaxDecided))
+    {
+      this->BlockDecided[l] = static_cast<signed char>(c);
+    }
+    all = all && c != VSH_RT_CLASSIFY_UNDECIDED;
+  }
+  if (!all)
+  {
+    return false;
+  }
+  Surface s;
+  std::copy_n(this->BlockDecided, Surface::MaxDecided, s.Decided);
+  for (int y = y0; y <= y1; ++y)
+  {
+    for (int x = x0; x <= x1; ++x)
+    {
+      s.Pixel = y * width + x;
+      if (f.Depth[s.Pixel] >= 1.0f)
+      {
+        ++this->Count.Background;
+        continue;
+      }
+      for (size_t l = 0; l < f.Lights.size(); ++l)
+      {
+        ++this->Count.Classifiable[l];
+        this->Count.ClassifiedLit[l] += s.Decided[l] != VSH_RT_CLASSIFY_SHADOWED;
+        this->Count.ClassifiedShadowed[l] += s.Decided[l] == VSH_RT_CLASSIFY_SHADOWED;
+        this->Decide(s, l);
+      }
+      ++this->Count.PixelsWithoutRays;
+      ++this->Count.BlockPixels;
+    }
+  }
+  return true;
+}
+
+// What the lights' maps decide for the pixel of `ray` (s.Decided); true
+// when they decide every light, whose visibilities are then written.
+bool Worker::Classify(const vsh_rt_pixel_ray& ray, Surface& s)
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  std::fill_n(s.Decided, Surface::MaxDecided, static_cast<signed char>(VSH_RT_CLASSIFY_UNDECIDED));
+  if (f.Classify.empty())
+  {
+    return false;
+  }
+  double eyeToAnchor[3], magnitude = 0;
+  for (int r = 0; r < 3; ++r)
+  {
+    eyeToAnchor[r] = f.Eye[r] - f.ClassifyAnchor[r];
+    const double c = ray.point[r] + this->EyeToCentre[r];
+    magnitude += c * c;
+  }
+  // The tracer's offset uses the landed point's magnitude plus its
+  // instance's radius: bound both (the point is within the interval).
+  magnitude = std::sqrt(magnitude) + std::fabs(ray.distance - ray.lo) +
+    std::fabs(ray.hi - ray.distance) + f.InstanceRadius;
+  vsh_rt_classify_tube tube;
+  vsh_rt_classify_tube_init(&ray, eyeToAnchor, magnitude, &tube);
+  bool all = true;
+  const size_t lights = f.Lights.size();
+  for (size_t l = 0; l < lights; ++l)
+  {
+    const vsh_rt_classify_map* map =
+      l < f.Classify.size() && l < size_t(Surface::MaxDecided) ? f.Classify[l] : nullptr;
+    const bool byPixel =
+      f.ClassifyPixels.empty() || (l < f.ClassifyPixels.size() && f.ClassifyPixels[l]);
+    if (!map)
+    {
+      all = false;
+      continue;
+    }
+    ++this->Count.Classifiable[l];
+    if (this->BlockDecided[l] == VSH_RT_CLASSIFY_UNDECIDED && !byPixel)
+    {
+      all = false;
+      continue;
+    }
+    int c = this->BlockDecided[l];
+    if (c == VSH_RT_CLASSIFY_UNDECIDED)
+    {
+      c = vsh_rt_classify_pixel(map, &tube);
+      ++this->Count.PixelAsked[l];
+      this->Count.PixelDecided[l] += c != VSH_RT_CLASSIFY_UNDECIDED;
+    }
+    s.Decided[l] = static_cast<signed char>(c);
+    this->Count.ClassifiedLit[l] += c == VSH_RT_CLASSIFY_LIT || c == VSH_RT_CLASSIFY_OUTSIDE_CONE;
+    this->Count.ClassifiedShadowed[l] += c == VSH_RT_CLASSIFY_SHADOWED;
+    all = all && c != VSH_RT_CLASSIFY_UNDECIDED;
+  }
+  if (!all)
+  {
+    return false;
+  }
+  for (size_t l = 0; l < lights; ++l)
+  {
+    this->Decide(s, l);
+  }
+  ++this->Count.PixelsWithoutRays;
+  return true;
+}
+
+// A decided (pixel, light) pair's visibility, as its ray would give it.
+void Worker::Decide(const Surface& s, size_t l)
+{
+  if (s.Decided[l] == VSH_RT_CLASSIFY_SHADOWED)
+  {
+    (*this->Out)[l][s.Pixel] = 0.0f;
+  }
+  this->Count.OutsideCone += s.Decided[l] == VSH_RT_CLASSIFY_OUTSIDE_CONE;
 }
 
 // The surface point of refinement ray k: on the triangle it hit, or the
@@ -390,6 +647,11 @@ void Worker::Queue(const Surface& s, int surface)
     static_cast<unsigned>(s.Pixel % f.View.width), static_cast<unsigned>(s.Pixel / f.View.width));
   for (size_t l = 0; l < f.Lights.size(); ++l)
   {
+    if (l < size_t(Surface::MaxDecided) && s.Decided[l] != VSH_RT_CLASSIFY_UNDECIDED)
+    {
+      this->Decide(s, l);
+      continue;
+    }
     const vsh_rt_light& light = f.Lights[l];
     double toLight[3], distance;
     if (vsh_rt_light_direction(&light, p, toLight, &distance) != VSH_RT_OK)
@@ -654,9 +916,13 @@ void Worker::Resolve(bool first)
   }
 }
 
-void Worker::Tile(int begin, int end)
+void Worker::Tile(int block)
 {
-  this->Refine(begin, end);
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  const int columns = (f.View.width + Block - 1) / Block;
+  const int x0 = (block % columns) * Block, y0 = (block / columns) * Block;
+  this->Refine(
+    x0, y0, std::min(f.View.width, x0 + Block) - 1, std::min(f.View.height, y0 + Block) - 1);
   this->Rays.clear();
   this->RayPair.clear();
   this->Pairs.clear();
@@ -668,6 +934,46 @@ void Worker::Tile(int begin, int end)
   this->Occlude();
   this->Resolve(true);
 }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowRayTracer::Counters::Reset(size_t lights)
+{
+  *this = Counters();
+  for (std::vector<long long>* v : { &this->LightPixels, &this->LightRays, &this->LightRefined,
+         &this->ClassifiedLit, &this->ClassifiedShadowed, &this->Classifiable, &this->BlockAsked,
+         &this->BlockDecided, &this->PixelAsked, &this->PixelDecided })
+  {
+    v->assign(lights, 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowRayTracer::Counters::Add(const Counters& o)
+{
+  this->Background += o.Background;
+  this->PrimaryRays += o.PrimaryRays;
+  this->RefineMisses += o.RefineMisses;
+  this->FacingAway += o.FacingAway;
+  this->OutsideCone += o.OutsideCone;
+  this->ShadowRays += o.ShadowRays;
+  this->VolumeSamples += o.VolumeSamples;
+  this->PixelsWithoutRays += o.PixelsWithoutRays;
+  this->BlockPixels += o.BlockPixels;
+  const std::pair<std::vector<long long>*, const std::vector<long long>*> lists[] = {
+    { &this->LightPixels, &o.LightPixels }, { &this->LightRays, &o.LightRays },
+    { &this->LightRefined, &o.LightRefined }, { &this->ClassifiedLit, &o.ClassifiedLit },
+    { &this->ClassifiedShadowed, &o.ClassifiedShadowed }, { &this->Classifiable, &o.Classifiable },
+    { &this->BlockAsked, &o.BlockAsked }, { &this->BlockDecided, &o.BlockDecided },
+    { &this->PixelAsked, &o.PixelAsked }, { &this->PixelDecided, &o.PixelDecided }
+  };
+  for (const auto& list : lists)
+  {
+    for (size_t l = 0; l < list.first->size() && l < list.second->size(); ++l)
+    {
+      (*list.first)[l] += (*list.second)[l];
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -689,13 +995,11 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
       light.assign(3 * static_cast<size_t>(pixels), 1.0f);
     }
   }
-  counters = Counters();
-  counters.Pixels = pixels;
   const size_t lights = frame.Lights.size();
-  counters.LightPixels.assign(lights, 0);
-  counters.LightRays.assign(lights, 0);
-  counters.LightRefined.assign(lights, 0);
-  const int tiles = (pixels + TileSize - 1) / TileSize;
+  counters.Reset(lights);
+  counters.Pixels = pixels;
+  const int tiles =
+    ((frame.View.width + Block - 1) / Block) * ((frame.View.height + Block - 1) / Block);
   threads = std::max(1, std::min(threads, tiles));
   counters.Threads = threads;
   if (scene.IsEmpty() || frame.Lights.empty() || !frame.Depth)
@@ -718,7 +1022,7 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
   {
     for (int t = next++; t < tiles; t = next++)
     {
-      w->Tile(t * TileSize, std::min(pixels, (t + 1) * TileSize));
+      w->Tile(t);
     }
   };
   std::vector<std::thread> pool;
@@ -731,9 +1035,7 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
     w.Out = &out;
     w.Tint = tint;
     w.States = &states;
-    w.Count.LightPixels.assign(lights, 0);
-    w.Count.LightRays.assign(lights, 0);
-    w.Count.LightRefined.assign(lights, 0);
+    w.Count.Reset(lights);
     for (int r = 0; r < 3; ++r)
     {
       w.EyeToCentre[r] = frame.Eye[r] - scene.GetCentre()[r];
@@ -760,19 +1062,7 @@ void vtkShadowRayTracer::Trace(const vtkShadowEmbreeScene& scene, const Frame& f
   }
   for (const Worker& w : workers)
   {
-    counters.Background += w.Count.Background;
-    counters.PrimaryRays += w.Count.PrimaryRays;
-    counters.RefineMisses += w.Count.RefineMisses;
-    counters.FacingAway += w.Count.FacingAway;
-    counters.OutsideCone += w.Count.OutsideCone;
-    counters.ShadowRays += w.Count.ShadowRays;
-    counters.VolumeSamples += w.Count.VolumeSamples;
-    for (size_t l = 0; l < lights; ++l)
-    {
-      counters.LightPixels[l] += w.Count.LightPixels[l];
-      counters.LightRays[l] += w.Count.LightRays[l];
-      counters.LightRefined[l] += w.Count.LightRefined[l];
-    }
+    counters.Add(w.Count);
   }
   counters.Seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

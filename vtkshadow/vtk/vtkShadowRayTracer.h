@@ -9,7 +9,7 @@
 // whose cone holds it, `samples` occlusion rays from the point, offset along
 // the normal by vsh_rt_offset_distance, towards points on the light (with
 // adaptive counts, a first batch and the rest only where it disagrees). The
-// pixels go in tiles of 64 to worker threads; each tile's rays go to Embree
+// pixels go in blocks of 8 x 8 to worker threads; each tile's rays go to Embree
 // as streams (rtcIntersect1M, rtcOccluded1M). A ray through translucent
 // casters multiplies its transmittance in a context filter, and one that
 // reaches the light marches the volumes on its way (Frame::Volumes).
@@ -17,6 +17,7 @@
 #define vtkShadowRayTracer_h
 
 #include "vsh_raytrace.h"
+#include "vsh_rt_classify.h"
 
 #include <vector>
 
@@ -49,6 +50,19 @@ public:
     // no opaque caster blocks keeps the fraction of its light they let
     // through (vtkShadowVolumeCasters).
     const vtkShadowVolumeCasters* Volumes = nullptr;
+    // Per light of Lights, the light-space map that decides the pixels it
+    // can prove lit or shadowed without a ray (vsh_rt_classify.h), or null
+    // (every pixel traced); its anchor in world coordinates. A pixel every
+    // light's map decides traces no ray at all, not even its primary one.
+    std::vector<const vsh_rt_classify_map*> Classify;
+    // Per light, whether its pixels are classified in blocks and whether
+    // those its blocks leave undecided are classified one by one (empty:
+    // both); off where that seldom decides (vtkShadowRayClassifier).
+    std::vector<bool> ClassifyBlocks, ClassifyPixels;
+    double ClassifyAnchor[3] = { 0, 0, 0 };
+    // The largest radius of the scene's instances: the tracer's offset
+    // grows with it (the classifier's tube covers that).
+    double InstanceRadius = 0;
   };
 
   struct Counters
@@ -64,8 +78,21 @@ public:
     // Per light: (pixel, light) pairs traced, their shadow rays, and the
     // pairs whose first batch disagreed and traced the rest.
     std::vector<long long> LightPixels, LightRays, LightRefined;
+    // Per light, (pixel, light) pairs its map decided: lit, shadowed (no
+    // ray), and the pairs it was asked about (pixels showing a surface).
+    std::vector<long long> ClassifiedLit, ClassifiedShadowed, Classifiable;
+    // Per light, the drawn pixels of the blocks asked and of those that
+    // decided, and the pixels classified one by one and those that decided.
+    std::vector<long long> BlockAsked, BlockDecided, PixelAsked, PixelDecided;
+    long long PixelsWithoutRays = 0; // every light decided: no primary ray either
+    long long BlockPixels = 0;       // of those, decided with their whole 8 x 8 block
     double Seconds = 0;
     int Threads = 0;
+
+    // Zero, with the per-light counters sized for `lights`.
+    void Reset(size_t lights);
+    // Add another thread's counts (not Seconds or Threads).
+    void Add(const Counters& other);
   };
 
   /**

@@ -1,0 +1,432 @@
+/* test_rt_classify.c - unit tests of vsh_rt_classify: every pixel tube the
+ * map decides agrees with an exact double-precision shadow ray (against
+ * every triangle) from the surface point the tube holds, for a directional,
+ * a narrow spot and a point light (six faces) over a floor, a box, a
+ * tilted plate and a sphere; most tubes are decided; and the degenerate
+ * cases (no casters, geometry at the light, a tube across many texels, a
+ * tube behind the light, a non-caster floor, bad input). */
+#include "vsh_check.h"
+#include "vsh_random.h"
+#include "vsh_rt_classify.h"
+#include "vsh_vec3.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+#define MAX_TRIANGLES 4096
+static double tris[MAX_TRIANGLES * 9];
+static unsigned char flags[MAX_TRIANGLES];
+static int placement[MAX_TRIANGLES]; /* one per shape, as an actor's */
+static int shape;
+static size_t count;
+
+static void add_triangle(const double a[3], const double b[3], const double c[3], int flag)
+{
+  memcpy(tris + 9 * count, a, 3 * sizeof(double));
+  memcpy(tris + 9 * count + 3, b, 3 * sizeof(double));
+  memcpy(tris + 9 * count + 6, c, 3 * sizeof(double));
+  placement[count] = shape;
+  flags[count++] = (unsigned char)flag;
+}
+
+static void add_quad(const double a[3], const double b[3], const double c[3], const double d[3],
+                     int flag)
+{
+  add_triangle(a, b, c, flag);
+  add_triangle(a, c, d, flag);
+}
+
+static void add_box(const double lo[3], const double hi[3])
+{
+  double v[8][3];
+  for (int k = 0; k < 8; ++k) {
+    v[k][0] = k & 1 ? hi[0] : lo[0];
+    v[k][1] = k & 2 ? hi[1] : lo[1];
+    v[k][2] = k & 4 ? hi[2] : lo[2];
+  }
+  static const int faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 },
+                                   { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  for (int f = 0; f < 6; ++f) {
+    add_quad(v[faces[f][0]], v[faces[f][1]], v[faces[f][2]], v[faces[f][3]],
+             VSH_RT_CLASSIFY_CASTS);
+  }
+}
+
+static void add_sphere(const double c[3], double r, int rings, int segments)
+{
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      double p[4][3];
+      for (int k = 0; k < 4; ++k) {
+        const double th = M_PI * (i + (k >> 1)) / rings, ph = 2 * M_PI * (j + (k & 1)) / segments;
+        p[k][0] = c[0] + r * sin(th) * cos(ph);
+        p[k][1] = c[1] + r * sin(th) * sin(ph);
+        p[k][2] = c[2] + r * cos(th);
+      }
+      add_quad(p[0], p[1], p[3], p[2], VSH_RT_CLASSIFY_CASTS);
+    }
+  }
+}
+
+/* The scene: a floor (a caster, or drawn only), a box on it, a tilted
+ * plate and a sphere above it. */
+static void make_scene(int floor_casts)
+{
+  count = 0;
+  const double f[4][3] = { { -6, -6, 0 }, { 6, -6, 0 }, { 6, 6, 0 }, { -6, 6, 0 } };
+  shape = 0;
+  add_quad(f[0], f[1], f[2], f[3], floor_casts ? VSH_RT_CLASSIFY_CASTS : 0);
+  shape = 1;
+  const double lo[3] = { -2, -1, 0 }, hi[3] = { -1, 0.5, 1.2 };
+  add_box(lo, hi);
+  const double p[4][3] = { { 1, 1, 1.5 }, { 2.5, 1, 1.9 }, { 2.5, 2.5, 2.2 }, { 1, 2.5, 1.8 } };
+  shape = 2;
+  add_quad(p[0], p[1], p[2], p[3], VSH_RT_CLASSIFY_CASTS);
+  shape = 3;
+  const double c[3] = { 1.5, -2, 1.3 };
+  add_sphere(c, 0.8, 12, 20);
+}
+
+/* Distance along the ray from o (unit d) to triangle t, or -1. */
+static double hit_distance(const double o[3], const double d[3], size_t t)
+{
+  const double *a = tris + 9 * t;
+  double e1[3], e2[3], pv[3], tv[3], qv[3];
+  vsh_vec3_sub(a + 3, a, e1);
+  vsh_vec3_sub(a + 6, a, e2);
+  vsh_vec3_cross(d, e2, pv);
+  const double det = vsh_vec3_dot(e1, pv);
+  if (fabs(det) < 1e-300) {
+    return -1;
+  }
+  vsh_vec3_sub(o, a, tv);
+  const double u = vsh_vec3_dot(tv, pv) / det;
+  vsh_vec3_cross(tv, e1, qv);
+  const double v = vsh_vec3_dot(d, qv) / det, h = vsh_vec3_dot(e2, qv) / det;
+  return u >= 0 && v >= 0 && u + v <= 1 && h > 0 ? h : -1;
+}
+
+/* Exact: does a ray from q along unit d, up to tmax, meet a caster? */
+static int blocked(const double q[3], const double d[3], double tmax)
+{
+  for (size_t t = 0; t < count; ++t) {
+    const double h = hit_distance(q, d, t);
+    if ((flags[t] & VSH_RT_CLASSIFY_CASTS) && h > 0 && h < tmax) {
+      return 1;
+    }
+  }
+  return 0;
+}
+
+/* Nearest hit along a ray from o (unit d) on any triangle: its distance
+ * and triangle, or -1. */
+static double nearest(const double o[3], const double d[3], size_t *hit)
+{
+  double best = HUGE_VAL;
+  for (size_t t = 0; t < count; ++t) {
+    const double h = hit_distance(o, d, t);
+    if (h > 0 && h < best) {
+      best = h;
+      *hit = t;
+    }
+  }
+  return best < HUGE_VAL ? best : -1;
+}
+
+/* A triangle chosen with probability proportional to its area (a
+ * picture's pixels fall on surfaces by area, not by triangle count). */
+static size_t pick_by_area(double x)
+{
+  double total = 0, sum = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (size_t t = 0; t < count; ++t) {
+      double e1[3], e2[3], n[3];
+      vsh_vec3_sub(tris + 9 * t + 3, tris + 9 * t, e1);
+      vsh_vec3_sub(tris + 9 * t + 6, tris + 9 * t, e2);
+      vsh_vec3_cross(e1, e2, n);
+      const double area = vsh_vec3_length(n);
+      if (pass == 0) {
+        total += area;
+      } else if ((sum += area) >= x * total) {
+        return t;
+      }
+    }
+  }
+  return count - 1;
+}
+
+/* The tracer's shadow-ray origin for surface point s on triangle t seen
+ * along dir: offset off the triangle towards the camera. */
+static void ray_origin(const double s[3], size_t t, const double dir[3], double q[3])
+{
+  const double *a = tris + 9 * t;
+  double e1[3], e2[3], nrm[3];
+  vsh_vec3_sub(a + 3, a, e1);
+  vsh_vec3_sub(a + 6, a, e2);
+  vsh_vec3_cross(e1, e2, nrm);
+  vsh_vec3_normalize(nrm, nrm);
+  const double side = vsh_vec3_dot(nrm, dir) > 0 ? -1.0 : 1.0;
+  for (int r = 0; r < 3; ++r) {
+    q[r] = s[r] + side * vsh_rt_offset_distance(12.0) * nrm[r];
+  }
+}
+
+/* A random point on the surfaces (by area) and its triangle, and a random
+ * camera position above the floor. */
+static size_t random_point(double s[3], double eye[3])
+{
+  const size_t t = pick_by_area(vsh_test_rnd(0, 1));
+  const double *a = tris + 9 * t;
+  double u = vsh_test_rnd(0, 1), v = vsh_test_rnd(0, 1);
+  if (u + v > 1) {
+    u = 1 - u, v = 1 - v;
+  }
+  for (int r = 0; r < 3; ++r) {
+    s[r] = a[r] + u * (a[3 + r] - a[r]) + v * (a[6 + r] - a[r]);
+  }
+  eye[0] = vsh_test_rnd(-9, 9), eye[1] = vsh_test_rnd(-9, 9), eye[2] = vsh_test_rnd(0.5, 9);
+  return t;
+}
+
+/* A random surface point seen from a random camera, its tube, and the
+ * exact answer at the ray's origin (offset towards the camera). */
+static int check_light(const vsh_rt_light *light, int floor_casts, int resolution, double *decided)
+{
+  make_scene(floor_casts);
+  vsh_rt_classify_map map;
+  CHECK(vsh_rt_classify_build(&map, light, tris, flags, placement, count, resolution) == 0);
+  CHECK(!map.unusable);
+  int wrong = 0, n = 0, d = 0;
+  for (int k = 0; k < 12000; ++k) {
+    double s[3], eye[3], dir[3];
+    const size_t t = random_point(s, eye);
+    vsh_vec3_sub(s, eye, dir);
+    const double dist = vsh_vec3_normalize(dir, dir);
+    vsh_rt_pixel_ray ray;
+    memset(&ray, 0, sizeof ray);
+    memcpy(ray.origin, eye, sizeof eye);
+    memcpy(ray.direction, dir, sizeof dir);
+    ray.distance = dist;
+    const double err = vsh_test_rnd(0, 1e-3) * dist;
+    ray.lo = dist - err * vsh_test_rnd(0, 1);
+    ray.hi = ray.lo + err;
+    const double zero[3] = { 0, 0, 0 };
+    vsh_rt_classify_tube tube;
+    vsh_rt_classify_tube_init(&ray, zero, 12.0, &tube);
+    const int c = vsh_rt_classify_pixel(&map, &tube);
+    double q[3], to[3], tmax;
+    ray_origin(s, t, dir, q);
+    CHECK(vsh_rt_light_direction(light, q, to, &tmax) == VSH_RT_OK);
+    ++n;
+    if (c == VSH_RT_CLASSIFY_UNDECIDED) {
+      continue;
+    }
+    ++d;
+    int truth;
+    if (c == VSH_RT_CLASSIFY_OUTSIDE_CONE) {
+      truth = !vsh_rt_light_in_cone(light, to);
+      wrong += !truth;
+      continue;
+    }
+    truth = blocked(q, to, tmax) ? VSH_RT_CLASSIFY_SHADOWED : VSH_RT_CLASSIFY_LIT;
+    if (truth != c) {
+      ++wrong;
+      if (wrong < 5) {
+        fprintf(stderr, "  tube on triangle %zu at (%g %g %g): map %d, ray %d\n", t, s[0], s[1],
+                s[2], c, truth);
+      }
+    }
+  }
+  *decided = (double)d / n;
+  vsh_rt_classify_free(&map);
+  return wrong;
+}
+
+/* Blocks of pixels: a camera-depth slab between 4 corner rays around a
+ * random surface point; every surface point inside it that the camera
+ * sees (sampled rays) must have the block's class. */
+static int check_blocks(const vsh_rt_light *light, int resolution, double *decided)
+{
+  make_scene(1);
+  vsh_rt_classify_map map;
+  CHECK(vsh_rt_classify_build(&map, light, tris, flags, placement, count, resolution) == 0);
+  int wrong = 0, n = 0, d = 0;
+  for (int k = 0; k < 1500; ++k) {
+    double s[3], eye[3], w[3], x[3], y[3];
+    random_point(s, eye);
+    vsh_vec3_sub(s, eye, w);
+    const double dist = vsh_vec3_normalize(w, w);
+    const double up[3] = { 0, 0, 1 };
+    vsh_vec3_cross(w, up, x);
+    vsh_vec3_normalize(x, x);
+    vsh_vec3_cross(x, w, y);
+    /* 8 pixels of ~1/600 rad; depths of the block from the surface's
+     * depth at its corners, with a tolerance. */
+    const double half = 4 * vsh_test_rnd(0.5, 2) / 600.0, tol = vsh_test_rnd(0, 2e-3) * dist;
+    vsh_rt_classify_region region;
+    double zlo = HUGE_VAL, zhi = -HUGE_VAL, dirs[4][3];
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 3; ++r) {
+        dirs[c][r] = w[r] + (c & 1 ? half : -half) * x[r] + (c & 2 ? half : -half) * y[r];
+      }
+      vsh_vec3_normalize(dirs[c], region.dir[c]);
+      size_t h;
+      const double hit = nearest(eye, region.dir[c], &h);
+      const double z = hit > 0 ? hit * vsh_vec3_dot(region.dir[c], w) : dist;
+      zlo = fmin(zlo, z), zhi = fmax(zhi, z);
+    }
+    zlo -= tol, zhi += tol;
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 3; ++r) {
+        region.corner[c][r] = eye[r] + dirs[c][r] * zlo;
+        region.corner[c + 4][r] = eye[r] + dirs[c][r] * zhi;
+      }
+    }
+    region.radius = 5 * vsh_rt_offset_distance(12.0);
+    const int cls = vsh_rt_classify_block(&map, &region);
+    ++n;
+    if (cls == VSH_RT_CLASSIFY_UNDECIDED) {
+      continue;
+    }
+    ++d;
+    for (int q = 0; q < 16; ++q) {
+      const double fu = vsh_test_rnd(-1, 1), fv = vsh_test_rnd(-1, 1);
+      double dir[3], p[3], to[3], tmax;
+      for (int r = 0; r < 3; ++r) {
+        dir[r] = w[r] + fu * half * x[r] + fv * half * y[r];
+      }
+      vsh_vec3_normalize(dir, dir);
+      size_t h = 0;
+      const double hit = nearest(eye, dir, &h);
+      if (hit < 0 || hit * vsh_vec3_dot(dir, w) < zlo || hit * vsh_vec3_dot(dir, w) > zhi) {
+        continue; /* not a pixel of this block */
+      }
+      double on[3];
+      for (int r = 0; r < 3; ++r) {
+        on[r] = eye[r] + hit * dir[r];
+      }
+      ray_origin(on, h, dir, p);
+      CHECK(vsh_rt_light_direction(light, p, to, &tmax) == VSH_RT_OK);
+      const int truth = cls == VSH_RT_CLASSIFY_OUTSIDE_CONE
+                          ? (vsh_rt_light_in_cone(light, to) ? -2 : cls)
+                          : (blocked(p, to, tmax) ? VSH_RT_CLASSIFY_SHADOWED : VSH_RT_CLASSIFY_LIT);
+      if (truth != cls && ++wrong < 5) {
+        fprintf(stderr, "  block at (%g %g %g): map %d, ray %d\n", p[0], p[1], p[2], cls, truth);
+      }
+    }
+  }
+  *decided = (double)d / n;
+  vsh_rt_classify_free(&map);
+  return wrong;
+}
+
+static vsh_rt_light make_light(int kind)
+{
+  vsh_rt_light light;
+  if (kind == VSH_RT_DIRECTIONAL) {
+    const double h[4] = { 0.3, -0.4, 1.0, 0.0 }, focal[3] = { 0, 0, 0 };
+    CHECK(vsh_rt_light_init(h, focal, 180.0, 0, 0, &light) == VSH_RT_OK);
+  } else if (kind == VSH_RT_SPOT) {
+    const double h[4] = { 1.0, 1.0, 7.0, 1.0 }, focal[3] = { 0, 0, 0 };
+    CHECK(vsh_rt_light_init(h, focal, 40.0, 0, 0, &light) == VSH_RT_OK);
+  } else {
+    const double h[4] = { 0.5, 0.3, 3.5, 1.0 }, focal[3] = { 0, 0, 0 };
+    CHECK(vsh_rt_light_init(h, focal, 180.0, 0, 0, &light) == VSH_RT_OK);
+  }
+  return light;
+}
+
+static void test_agrees_with_rays(void)
+{
+  const char *names[3] = { "directional", "point", "spot" };
+  for (int kind = 0; kind < 3; ++kind) {
+    for (int floor_casts = 0; floor_casts < 2; ++floor_casts) {
+      vsh_rt_light light = make_light(kind);
+      double decided = 0;
+      const int wrong = check_light(&light, floor_casts, 512, &decided);
+      printf("%-11s floor %s: decided %.3f, wrong %d\n", names[kind],
+             floor_casts ? "casts" : "drawn", decided, wrong);
+      CHECK(wrong == 0);
+      CHECK(decided > 0.85);
+    }
+  }
+}
+
+static void test_blocks_agree_with_rays(void)
+{
+  const char *names[3] = { "directional", "point", "spot" };
+  for (int kind = 0; kind < 3; ++kind) {
+    vsh_rt_light light = make_light(kind);
+    double decided = 0;
+    const int wrong = check_blocks(&light, 512, &decided);
+    printf("%-11s blocks: decided %.3f, wrong %d\n", names[kind], decided, wrong);
+    CHECK(wrong == 0);
+    CHECK(decided > 0.4);
+  }
+}
+
+static void test_degenerate(void)
+{
+  vsh_rt_light light = make_light(VSH_RT_DIRECTIONAL);
+  vsh_rt_classify_map map;
+  /* Nothing casts: every tube lit. */
+  CHECK(vsh_rt_classify_build(&map, &light, NULL, NULL, NULL, 0, 64) == 0);
+  vsh_rt_classify_tube tube = { { 0, 0, 5 }, { 0, 0, -1 }, 4.9, 5.1, 1e-6 };
+  CHECK(vsh_rt_classify_pixel(&map, &tube) == VSH_RT_CLASSIFY_LIT);
+  vsh_rt_classify_free(&map);
+  /* Bad input: refused, and the map decides nothing. */
+  make_scene(1);
+  CHECK(vsh_rt_classify_build(&map, &light, tris, flags, placement, count, 8) != 0);
+  CHECK(vsh_rt_classify_pixel(&map, &tube) == VSH_RT_CLASSIFY_UNDECIDED);
+  vsh_rt_classify_free(&map);
+  double bad[9] = { 0, 0, 0, 1, 0, 0, 0, NAN, 0 };
+  const unsigned char one = VSH_RT_CLASSIFY_CASTS;
+  CHECK(vsh_rt_classify_build(&map, &light, bad, &one, NULL, 1, 64) != 0);
+  CHECK(vsh_rt_classify_pixel(&map, &tube) == VSH_RT_CLASSIFY_UNDECIDED);
+  vsh_rt_classify_free(&map);
+  CHECK(vsh_rt_classify_pixel(NULL, &tube) == VSH_RT_CLASSIFY_UNDECIDED);
+  /* A tube across many texels (a depth interval a whole scene long). */
+  CHECK(vsh_rt_classify_build(&map, &light, tris, flags, placement, count, 512) == 0);
+  vsh_rt_classify_tube wide = { { -8, -8, 1 }, { 0.7071067811865476, 0.7071067811865476, 0 },
+                                0, 20, 1e-6 };
+  CHECK(vsh_rt_classify_pixel(&map, &wide) == VSH_RT_CLASSIFY_UNDECIDED);
+  /* Under the box, far below the floor: the floor covers it. */
+  vsh_rt_classify_tube below = { { -1.5, -0.2, -3 }, { 0, 0, -1 }, 0, 1e-4, 1e-7 };
+  CHECK(vsh_rt_classify_pixel(&map, &below) == VSH_RT_CLASSIFY_SHADOWED);
+  /* Above everything: lit. */
+  vsh_rt_classify_tube above = { { 0, 0, 9 }, { 0, 0, -1 }, 0, 1e-4, 1e-7 };
+  CHECK(vsh_rt_classify_pixel(&map, &above) == VSH_RT_CLASSIFY_LIT);
+  /* An inverted interval. */
+  vsh_rt_classify_tube inverted = above;
+  inverted.t1 = -1;
+  CHECK(vsh_rt_classify_pixel(&map, &inverted) == VSH_RT_CLASSIFY_UNDECIDED);
+  vsh_rt_classify_free(&map);
+  /* A point light touching the floor: nothing decided. */
+  vsh_rt_light at;
+  const double h[4] = { 0, 0, 0, 1 }, focal[3] = { 0, 0, -1 };
+  CHECK(vsh_rt_light_init(h, focal, 180.0, 0, 0, &at) == VSH_RT_OK);
+  CHECK(vsh_rt_classify_build(&map, &at, tris, flags, placement, count, 64) == 0);
+  CHECK(map.unusable);
+  CHECK(vsh_rt_classify_pixel(&map, &above) == VSH_RT_CLASSIFY_UNDECIDED);
+  vsh_rt_classify_free(&map);
+  /* A tube behind a point light's face (at the light): undecided. */
+  vsh_rt_light point = make_light(VSH_RT_POINT);
+  CHECK(vsh_rt_classify_build(&map, &point, tris, flags, placement, count, 64) == 0);
+  vsh_rt_classify_tube through = { { 0.5, 0.3, 3.4 }, { 0, 0, 1 }, 0, 0.2, 1e-7 };
+  CHECK(vsh_rt_classify_pixel(&map, &through) == VSH_RT_CLASSIFY_UNDECIDED);
+  CHECK(vsh_rt_classify_bytes(&map) > 6 * 64 * 64 * 16);
+  vsh_rt_classify_free(&map);
+}
+
+int main(void)
+{
+  test_agrees_with_rays();
+  test_blocks_agree_with_rays();
+  test_degenerate();
+  return vsh_check_report("rt_classify");
+}

@@ -1,0 +1,117 @@
+/* vsh_rt_classify_internal.h - what the map's builder and its classifier
+ * share (vsh_rt_classify.h): keys and tolerances. */
+#ifndef VSH_RT_CLASSIFY_INTERNAL_H
+#define VSH_RT_CLASSIFY_INTERNAL_H
+
+#include "vsh_rt_classify.h"
+#include "vsh_vec3.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* How far (relative to the map's scale) a triangle's edge may be from
+ * where Embree's float copy of it is: every overlap grows and every full
+ * cover shrinks by it (64 of the tracer's offsets, ~4e-6 of the scene). */
+#define VSH_RT_CLASSIFY_MARGIN (64.0 * VSH_RT_OFFSET_RELATIVE)
+
+/* Planes are grouped by their unit normal rounded to this and their
+ * offset rounded to this times the scale: triangles of one group lie
+ * within about that of each other's plane, far below the tracer's offset
+ * (8 float ulps, ~5e-7 of the scene), so a ray leaving one of them towards
+ * the light meets none of the others. */
+#define VSH_RT_CLASSIFY_NORMAL_QUANTUM 1e-12
+#define VSH_RT_CLASSIFY_OFFSET_QUANTUM 1e-10
+
+/* The most texels a tube's footprint may cover (its box): a longer tube
+ * (a far or grazing surface's depth interval) is traced. */
+#define VSH_RT_CLASSIFY_MAX_TEXELS 16
+/* The same for a block of pixels, and the most it reads texel by texel
+ * (beyond, only the 8 x 8 blocks' summaries). */
+#define VSH_RT_CLASSIFY_MAX_BLOCK_TEXELS 4096
+#define VSH_RT_CLASSIFY_MAX_FINE_TEXELS 256
+
+/* Texel (i, j)'s place in a face's array: blocks of 8 x 8 texels, each
+ * block's texels together, so a pixel's neighbours, which land on nearby
+ * texels in any direction, mostly read memory already in the cache (a
+ * row-major map puts the texel above 20 kB away). n is a multiple of 8. */
+static inline size_t vsh_rtc_texel_index(const vsh_rt_classify_face *face, int i, int j)
+{
+  const size_t block = (size_t)(j >> 3) * (size_t)(face->n >> 3) + (size_t)(i >> 3);
+  return 64 * block + (size_t)((j & 7) * 8 + (i & 7));
+}
+
+/* The key of depth z along a face's axis: nearer the light is smaller. */
+static inline double vsh_rt_classify_key(const vsh_rt_classify_face *face, double z)
+{
+  return face->perspective ? -1.0 / z : z;
+}
+
+/* A triangle clipped to a face and projected: up to 8 vertices (five clip
+ * planes) in (u, v) with their keys, and its key plane when it has one. */
+#define MAX_VERTICES 8
+typedef struct polygon {
+  int count;
+  double u[MAX_VERTICES], v[MAX_VERTICES], key[MAX_VERTICES];
+  double key_min, key_max;
+  double umin, umax, vmin, vmax;
+  int has_plane; /* key = a u + b v + c over the polygon */
+  double a, b, c;
+  double area2; /* twice the signed area; 0: seen edge-on */
+  double margin; /* world margin in (u, v) units at the polygon */
+} polygon;
+
+
+/* Per-face scratch of one placement's union cover: the texels its opaque
+ * triangles overlap (mark bit 1) with their largest far key, and those its
+ * contour edges cross (bit 2). */
+typedef struct vsh_rtc_scratch {
+  float *hi;
+  unsigned char *mark;
+  size_t *touched;
+  size_t count;
+} vsh_rtc_scratch;
+
+float vsh_rtc_round_down(double x);
+float vsh_rtc_round_up(double x);
+
+/* Triangle `tri` (9 doubles; a segment as (a, b, b)) clipped to the
+ * face's frustum and projected: 0 when nothing of it is in the face. */
+int vsh_rtc_project(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
+                    const double *tri, polygon *poly);
+
+/* Triangle t into the face's texels: pass 0 near, full (and the
+ * placement's scratch, when given, for opaque casters), pass 1 rest. */
+void vsh_rtc_rasterize(vsh_rt_classify_map *map, vsh_rt_classify_face *face, size_t t, int pass,
+                       vsh_rtc_scratch *scratch);
+
+/* Mark (bit 2) every texel the segment a-b crosses, each texel grown by
+ * at least `margin` (the largest margin its run's triangles overlap
+ * texels with: a union's boundary within any overlap's reach is marked). */
+void vsh_rtc_mark_segment(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
+                          const double a[3], const double b[3], double margin,
+                          vsh_rtc_scratch *scratch);
+
+/* The margin triangle t's projection into the face overlaps texels with
+ * (0 when it is not in the face). */
+double vsh_rtc_margin(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face, size_t t);
+
+/* Each triangle's plane group (vsh_rt_classify_map.group): the lowest
+ * index of the triangles with its rounded plane. Non-zero when out of
+ * memory. */
+int vsh_rtc_plane_groups(vsh_rt_classify_map *map);
+
+/* The contour edges of each run of one placement's opaque casters under
+ * the map's light: 3 flags per triangle (edge k from vertex k to k + 1),
+ * 1 where the edge bounds the run's projected union (on one triangle only,
+ * on more than two, or folded: both neighbours on one side of the plane
+ * through the edge and the light). Non-zero when out of memory. */
+int vsh_rtc_contours(const vsh_rt_classify_map *map, const int *placements,
+                     unsigned char *contour);
+
+/* The union cover of every run of one placement into the face's cover_far
+ * (pass 0 of its triangles included). */
+int vsh_rtc_cover_face(vsh_rt_classify_map *map, vsh_rt_classify_face *face,
+                       const int *placements, const unsigned char *contour);
+
+#endif

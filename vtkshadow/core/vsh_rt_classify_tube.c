@@ -1,0 +1,274 @@
+/* vsh_rt_classify_tube.c - a pixel's tube, or a block of pixels' hull,
+ * against the light-space map (vsh_rt_classify.h: why each decided class
+ * is right). Both are the convex hull of a few points grown by a radius,
+ * seen along a few view directions. */
+#include "vsh_rt_classify.h"
+#include "vsh_rt_classify_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+void vsh_rt_classify_tube_init(const vsh_rt_pixel_ray *ray, const double eye_to_anchor[3],
+                               double magnitude, vsh_rt_classify_tube *out)
+{
+  const double span = ray->hi - ray->lo, distance = fabs(ray->distance);
+  /* vtkShadowRayTracer keeps a landing within half the interval (plus
+   * 1e-6 of the distance) of it, or Embree's float hit within 1e-5 of
+   * the interval and 4 offsets past its end; a miss starts at its near
+   * end, moved one offset towards the camera. */
+  const double slack = 0.5 * span + 1e-6 * distance;
+  for (int r = 0; r < 3; ++r) {
+    out->origin[r] = ray->origin[r] + eye_to_anchor[r];
+    out->dir[r] = ray->direction[r];
+  }
+  out->t0 = ray->lo - slack;
+  out->t1 = ray->hi + slack + 1e-5 * span + 4 * VSH_RT_OFFSET_RELATIVE * distance;
+  /* The origin's offset off the surface, and four more for the float
+   * rounding of the ray's origin and of Embree's triangles. */
+  out->radius = 5.0 * vsh_rt_offset_distance(magnitude);
+}
+
+/* What is classified: the hull of `count` points grown by `radius`, seen
+ * along `views` unit directions (the pixels' rays: their range). */
+typedef struct hull {
+  const double (*points)[3];
+  int count;
+  const double (*dirs)[3];
+  int views;
+  double radius;
+} hull;
+
+/* Whether a spot light's cone holds none of the hull (1), all of it (0),
+ * or cannot say (-1), from the hull's bounding sphere. */
+static int outside_cone(const vsh_rt_light *light, const hull *h)
+{
+  double centre[3] = { 0, 0, 0 }, to[3];
+  for (int k = 0; k < h->count; ++k) {
+    vsh_vec3_add(centre, h->points[k], centre);
+  }
+  vsh_vec3_scale(centre, 1.0 / h->count, centre);
+  double half = 0;
+  for (int k = 0; k < h->count; ++k) {
+    double d[3];
+    vsh_vec3_sub(h->points[k], centre, d);
+    half = fmax(half, vsh_vec3_length(d));
+  }
+  half += h->radius;
+  vsh_vec3_sub(centre, light->position, to);
+  const double dist = vsh_vec3_length(to);
+  if (!(dist > 2 * half)) {
+    return -1;
+  }
+  const double c = vsh_vec3_dot(to, light->direction) / dist;
+  const double angle = acos(fmax(-1.0, fmin(1.0, c))), spread = asin(half / dist);
+  const double cone = acos(fmax(-1.0, fmin(1.0, light->cos_cone)));
+  if (angle - spread > cone + 1e-9) {
+    return 1;
+  }
+  return angle + spread < cone - 1e-9 ? 0 : -1;
+}
+
+static int choose_face(const vsh_rt_classify_map *map, const hull *h)
+{
+  if (map->faces == 1) {
+    return 0;
+  }
+  double to[3] = { 0, 0, 0 };
+  for (int k = 0; k < h->count; ++k) {
+    for (int r = 0; r < 3; ++r) {
+      to[r] += h->points[k][r] - map->light.position[r];
+    }
+  }
+  int axis = 0;
+  for (int r = 1; r < 3; ++r) {
+    axis = fabs(to[r]) > fabs(to[axis]) ? r : axis;
+  }
+  return 2 * axis + (to[axis] < 0);
+}
+
+/* The hull in one face: its footprint in (u, v) and its key range. */
+typedef struct footprint {
+  double umin, umax, vmin, vmax;
+  double key_lo, key_hi;
+} footprint;
+
+static int locate(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face, const hull *h,
+                  footprint *out)
+{
+  double zlo = HUGE_VAL, zhi = -HUGE_VAL, ulo = HUGE_VAL, uhi = -HUGE_VAL, vlo = HUGE_VAL,
+         vhi = -HUGE_VAL, spread = 0;
+  for (int k = 0; k < h->count; ++k) {
+    double p[3];
+    for (int r = 0; r < 3; ++r) {
+      p[r] = h->points[k][r] - (face->perspective ? map->light.position[r] : 0.0);
+    }
+    double x = vsh_vec3_dot(p, face->e1), y = vsh_vec3_dot(p, face->e2);
+    const double z = vsh_vec3_dot(p, face->axis);
+    zlo = fmin(zlo, z);
+    zhi = fmax(zhi, z);
+    if (face->perspective) {
+      if (!(z - h->radius > 2 * map->near_z)) {
+        return 0; /* at or behind the light's plane */
+      }
+      x /= z;
+      y /= z;
+      spread = fmax(spread, 1.0 + fabs(x) + fabs(y));
+    }
+    ulo = fmin(ulo, x), uhi = fmax(uhi, x);
+    vlo = fmin(vlo, y), vhi = fmax(vhi, y);
+  }
+  zlo -= h->radius;
+  zhi += h->radius;
+  /* A point moved by r moves its projection by at most r (1 + |u| + |v|) / z. */
+  const double grow = face->perspective ? h->radius * spread / zlo : h->radius;
+  out->umin = ulo - grow;
+  out->umax = uhi + grow;
+  out->vmin = vlo - grow;
+  out->vmax = vhi + grow;
+  out->key_lo = vsh_rt_classify_key(face, zlo);
+  out->key_hi = vsh_rt_classify_key(face, zhi);
+  return isfinite(out->umin + out->umax + out->vmin + out->vmax + out->key_lo + out->key_hi);
+}
+
+/* LIT (b)'s facing: P (the plane of triangle f) is seen from one side
+ * along every view, not nearly edge-on (a missed landing's origin, the
+ * interval's near end, would be barely off P), and that side faces the
+ * light by at least VSH_RT_CLASSIFY_MIN_COS everywhere in the hull (n.(L -
+ * x) is linear in x and |L - x| convex: their extremes are at the
+ * points). */
+static int faces_light(const vsh_rt_classify_map *map, const hull *h, int f)
+{
+  const double *tri = map->triangles + 9 * (size_t)f;
+  double e1[3], e2[3], n[3];
+  vsh_vec3_sub(tri + 3, tri, e1);
+  vsh_vec3_sub(tri + 6, tri, e2);
+  vsh_vec3_cross(e1, e2, n);
+  const double len = vsh_vec3_length(n);
+  if (!(len > 0)) {
+    return 0;
+  }
+  vsh_vec3_scale(n, 1.0 / len, n);
+  double side = 0;
+  for (int k = 0; k < h->views; ++k) {
+    const double s = vsh_vec3_dot(n, h->dirs[k]);
+    if (!(fabs(s) > 1e-3) || (side != 0 && (s > 0) != (side > 0))) {
+      return 0;
+    }
+    side = s;
+  }
+  vsh_vec3_scale(n, side > 0 ? -1.0 : 1.0, n); /* towards the camera */
+  if (map->light.kind == VSH_RT_DIRECTIONAL) {
+    return vsh_vec3_dot(n, map->light.direction) >= VSH_RT_CLASSIFY_MIN_COS;
+  }
+  double lowest = HUGE_VAL, farthest = 0;
+  for (int k = 0; k < h->count; ++k) {
+    double to[3];
+    vsh_vec3_sub(map->light.position, h->points[k], to);
+    lowest = fmin(lowest, vsh_vec3_dot(n, to));
+    farthest = fmax(farthest, vsh_vec3_length(to));
+  }
+  return lowest - h->radius >= VSH_RT_CLASSIFY_MIN_COS * (farthest + h->radius);
+}
+
+/* The rules over texels [i0, i1] x [j0, j1] of the face, or over its 8 x
+ * 8 blocks' summaries (`coarse`: conservative, a block's summary is the
+ * worst of its texels): SHADOWED, LIT (a), and LIT (b)'s plane. */
+static int scan(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face, const hull *h,
+                const int range[4], int coarse, float key_lo, float key_hi)
+{
+  int shadowed = 1, lit = 1, plane = 1, full = -1;
+  const int n = coarse ? face->n >> 3 : face->n;
+  for (int j = range[2]; j <= range[3] && (shadowed || lit || plane); ++j) {
+    for (int i = range[0]; i <= range[1]; ++i) {
+      if (i < 0 || j < 0 || i >= n || j >= n) {
+        /* Beyond a perspective face: not this face's. Beyond the
+         * directional map: no triangle projects there. */
+        if (face->perspective) {
+          return VSH_RT_CLASSIFY_UNDECIDED;
+        }
+        shadowed = plane = 0;
+        continue;
+      }
+      const vsh_rt_classify_texel *t = coarse
+                                         ? &face->coarse[(size_t)j * (size_t)n + (size_t)i]
+                                         : &face->texels[vsh_rtc_texel_index(face, i, j)];
+      shadowed = shadowed && ((t->full >= 0 && t->full_far < key_lo) || t->cover_far < key_lo);
+      lit = lit && t->near_key > key_hi;
+      plane = plane && t->full >= 0 && t->rest > key_hi && (full < 0 || t->full == full);
+      full = full < 0 ? t->full : full;
+    }
+  }
+  if (shadowed) {
+    return VSH_RT_CLASSIFY_SHADOWED;
+  }
+  if (lit || (plane && full >= 0 && faces_light(map, h, full))) {
+    return VSH_RT_CLASSIFY_LIT;
+  }
+  return VSH_RT_CLASSIFY_UNDECIDED;
+}
+
+static int classify_hull(const vsh_rt_classify_map *map, const hull *h, int max_texels)
+{
+  if (!map || map->unusable) {
+    return VSH_RT_CLASSIFY_UNDECIDED;
+  }
+  if (map->light.kind == VSH_RT_SPOT) {
+    const int outside = outside_cone(&map->light, h);
+    if (outside != 0) {
+      return outside > 0 ? VSH_RT_CLASSIFY_OUTSIDE_CONE : VSH_RT_CLASSIFY_UNDECIDED;
+    }
+  }
+  if (map->count == 0) {
+    return VSH_RT_CLASSIFY_LIT; /* nothing anywhere casts */
+  }
+  const vsh_rt_classify_face *face = &map->face[choose_face(map, h)];
+  footprint fp;
+  if (!locate(map, face, h, &fp)) {
+    return VSH_RT_CLASSIFY_UNDECIDED;
+  }
+  const int i0 = (int)floor((fp.umin - face->u0) / face->texel);
+  const int i1 = (int)floor((fp.umax - face->u0) / face->texel);
+  const int j0 = (int)floor((fp.vmin - face->v0) / face->texel);
+  const int j1 = (int)floor((fp.vmax - face->v0) / face->texel);
+  if (i1 < i0 || j1 < j0 || (double)(i1 - i0 + 1) * (j1 - j0 + 1) > max_texels) {
+    return VSH_RT_CLASSIFY_UNDECIDED;
+  }
+  /* Rounded outwards, every comparison stays on the safe side. */
+  const float key_lo = vsh_rtc_round_down(fp.key_lo), key_hi = vsh_rtc_round_up(fp.key_hi);
+  const int range[4] = { i0, i1, j0, j1 };
+  const int texels = (i1 - i0 + 1) * (j1 - j0 + 1);
+  if (texels > 64) {
+    /* A large footprint: the blocks' summaries first, and only them when
+     * reading every texel would cost more than tracing. */
+    const int blocks[4] = { i0 >> 3, i1 >> 3, j0 >> 3, j1 >> 3 };
+    const int c = scan(map, face, h, blocks, 1, key_lo, key_hi);
+    if (c != VSH_RT_CLASSIFY_UNDECIDED || texels > VSH_RT_CLASSIFY_MAX_FINE_TEXELS) {
+      return c;
+    }
+  }
+  return scan(map, face, h, range, 0, key_lo, key_hi);
+}
+
+int vsh_rt_classify_pixel(const vsh_rt_classify_map *map, const vsh_rt_classify_tube *tube)
+{
+  if (!tube || !(tube->t1 >= tube->t0)) {
+    return VSH_RT_CLASSIFY_UNDECIDED;
+  }
+  double ends[2][3];
+  for (int r = 0; r < 3; ++r) {
+    ends[0][r] = tube->origin[r] + tube->t0 * tube->dir[r];
+    ends[1][r] = tube->origin[r] + tube->t1 * tube->dir[r];
+  }
+  const hull h = { (const double(*)[3])ends, 2, (const double(*)[3])tube->dir, 1, tube->radius };
+  return classify_hull(map, &h, VSH_RT_CLASSIFY_MAX_TEXELS);
+}
+
+int vsh_rt_classify_block(const vsh_rt_classify_map *map, const vsh_rt_classify_region *region)
+{
+  if (!region) {
+    return VSH_RT_CLASSIFY_UNDECIDED;
+  }
+  const hull h = { (const double(*)[3])region->corner, 8, (const double(*)[3])region->dir, 4,
+                   region->radius };
+  return classify_hull(map, &h, VSH_RT_CLASSIFY_MAX_BLOCK_TEXELS);
+}
