@@ -76,3 +76,14 @@ add_test(NAME render.raytrace.soft
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_raytrace_soft.py
           --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/raytrace-soft)
 set_tests_properties(render.raytrace.soft PROPERTIES LABELS "render" TIMEOUT 1200)
+
+# The classifier (classify, on by default): each case's visibility equals
+# classify=0's (every pixel traced) in every pixel, its maps are built once
+# per light over the camera orbit, and it leaves less than the case's
+# fraction of (pixel, light) pairs to rays. Budget: 20 s.
+add_test(NAME render.raytrace.classify
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_raytrace_classify.py
+          --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/raytrace-classify
+          --case scivis/isosurface:0:0.7 --case scivis/isosurface:1:0.75
+          --case cad/table-parts:0:0.45 --case basic/sphere-spot:0:0.3)
+set_tests_properties(render.raytrace.classify PROPERTIES LABELS "render" TIMEOUT 300)

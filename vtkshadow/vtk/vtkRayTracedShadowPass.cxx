@@ -673,10 +673,12 @@ std::string VolumesJSON(
 std::string ClassifyJSON(
   bool used, const vtkShadowRayClassifier& classifier, const vtkShadowRayTracer::Counters& c)
 {
-  std::ostringstream out, decided, traced;
+  std::ostringstream out, decided, traced, lit, shadowed;
   long long asked = 0, settled = 0;
   for (size_t l = 0; l < c.Classifiable.size(); ++l)
   {
+    lit << (l ? ", " : "") << c.ClassifiedLit[l];
+    shadowed << (l ? ", " : "") << c.ClassifiedShadowed[l];
     const double n = double(c.Classifiable[l]);
     const long long d = c.ClassifiedLit[l] + c.ClassifiedShadowed[l];
     decided << (l ? ", " : "") << (n > 0 ? double(d) / n : 0.0);
@@ -688,6 +690,8 @@ std::string ClassifyJSON(
   out << ", \"classify\": " << (used ? "true" : "false") << ", \"classified_fraction_light\": ["
       << decided.str() << "], \"traced_fraction_light\": [" << traced.str()
       << "], \"traced_fraction\": " << (asked > 0 ? 1.0 - double(settled) / double(asked) : 1.0)
+      << ", \"classified_lit_light\": [" << lit.str() << "], \"classified_shadowed_light\": ["
+      << shadowed.str() << "]"
       << ", \"pixels_without_rays\": " << c.PixelsWithoutRays
       << ", \"block_decided_pixels\": " << c.BlockPixels << ", \"surface_pixels\": " << surface
       << ", \"classify_maps_built\": " << classifier.GetBuilds()
