@@ -325,7 +325,7 @@ static void test_cost(void)
   vsh_rt_cost_model m;
   vsh_rt_cost_model_default(&m);
   CHECK(m.rays_per_second_per_thread > 0 && m.pixel_ns > 0 && m.frame_ms >= 0);
-  vsh_rt_cost_input in = { 640.0 * 480, 0.5, 2, 1, 2, 0, 0.0 };
+  vsh_rt_cost_input in = { 640.0 * 480, 0.5, 2, 1, 2, 0, 0.0, 0.0 };
   CHECK_NEAR(vsh_rt_cost_rays(&in), 0.5 * 640 * 480 * 3, 1e-6);
   const double base = vsh_rt_cost_ms(&m, &in);
   CHECK(base > m.frame_ms);
@@ -347,6 +347,19 @@ static void test_cost(void)
   CHECK_NEAR(vsh_rt_cost_rays(&more), 0.5 * 640 * 480 * (1 + 2 * 13.6), 1e-6);
   more.penumbra = 1.0; /* every pixel in the penumbra: the full count */
   CHECK_NEAR(vsh_rt_cost_rays(&more), 0.5 * 640 * 480 * (1 + 2 * 64), 1e-6);
+  /* The classifier leaves 30% of the pairs to rays: 30% of the rays;
+   * out of range counts as no classifier (0) or everything (> 1). */
+  more = in;
+  more.traced = 0.3;
+  CHECK_NEAR(vsh_rt_cost_rays(&more), 0.3 * 0.5 * 640 * 480 * 3, 1e-6);
+  more.traced = 0.0;
+  CHECK_NEAR(vsh_rt_cost_rays(&more), 0.5 * 640 * 480 * 3, 1e-6);
+  more.traced = 7.0;
+  CHECK_NEAR(vsh_rt_cost_rays(&more), 0.5 * 640 * 480 * 3, 1e-6);
+  more = in;
+  more.samples = 64;
+  more.first = 8;
+  more.penumbra = 1.0;
   more.first = 0; /* not adaptive */
   more.penumbra = 0.0;
   CHECK_NEAR(vsh_rt_cost_rays(&more), 0.5 * 640 * 480 * (1 + 2 * 64), 1e-6);

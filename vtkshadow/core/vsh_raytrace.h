@@ -194,6 +194,11 @@ typedef struct vsh_rt_cost_input {
    * samples. */
   int first;
   double penumbra;
+  /* The fraction of (pixel, light) pairs the classifier leaves to rays
+   * (vsh_rt_classify.h), in (0, 1]; 0 counts as 1 (no classifier). Its
+   * own cost is in the measured rays per second: the rate is the rays
+   * traced over the whole stage's time. */
+  double traced;
 } vsh_rt_cost_input;
 
 /* Conservative defaults (measured on llvmpipe's machine class, one core of
@@ -206,9 +211,9 @@ void vsh_rt_cost_model_default(vsh_rt_cost_model *model);
 void vsh_rt_cost_model_observe(vsh_rt_cost_model *model, double rays, double seconds,
                                int threads);
 
-/* Rays a frame traces: coverage x pixels x (1 primary refinement ray +
- * lights x rays per pixel), rays per pixel samples, or with adaptive counts
- * first + penumbra x (samples - first). */
+/* Rays a frame traces: coverage x pixels x traced x (1 primary refinement
+ * ray + lights x rays per pixel), rays per pixel samples, or with adaptive
+ * counts first + penumbra x (samples - first). */
 double vsh_rt_cost_rays(const vsh_rt_cost_input *input);
 
 /* Estimated milliseconds of shadow work per frame (a moving camera: a still

@@ -45,7 +45,8 @@ double vsh_rt_cost_rays(const vsh_rt_cost_input *input)
   if (lights == 0.0) {
     return 0.0;
   }
-  return clamp01(input->coverage) * pixels * (1.0 + lights * samples);
+  const double traced = input->traced > 0.0 ? clamp01(input->traced) : 1.0;
+  return clamp01(input->coverage) * traced * pixels * (1.0 + lights * samples);
 }
 
 double vsh_rt_cost_ms(const vsh_rt_cost_model *model, const vsh_rt_cost_input *input)

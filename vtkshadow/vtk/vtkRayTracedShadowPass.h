@@ -117,7 +117,8 @@ public:
    * second this pass measured so far (vsh_rt_cost_ms). Lights with a size
    * (`sized`) trace Samples rays per pixel (with Adaptive, 8 plus the rest
    * on the fraction of pixels measured to be in a penumbra, 0.25 until
-   * measured), hard lights one.
+   * measured), hard lights one, on the fraction of pixels the classifier
+   * leaves to rays (with Classify: measured, 0.5 until measured).
    */
   double EstimateFrameMilliseconds(double pixels, double coverage, int lights, bool sized) const;
 
