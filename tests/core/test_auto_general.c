@@ -353,9 +353,33 @@ static void test_thin_impostors(void)
   CHECK(vsh_auto_thin_frame_texel(0.1, 0.5, few, no, 3, pixels) == 0.1);
 }
 
+/* The map's outline floor: linear in the outline and the stretch, the
+ * library's worst light (basic/two-lights light 1: 358 px of outline,
+ * stretch 1.18 at 320x240, auto's map measured 0.547) predicted above what
+ * it measured, and bad input refused. */
+static void test_map_outline_floor(void)
+{
+  const double pixels = 320.0 * 240.0;
+  const double two_lights = vsh_auto_map_outline_error(358.0, 1.18, pixels);
+  CHECK(two_lights > 0.547);
+  CHECK(fabs(two_lights - 100.0 * VSH_AUTO_MAP_OUTLINE_FLOOR * 358.0 * 1.18 / pixels) < 1e-12);
+  CHECK(fabs(vsh_auto_map_outline_error(716.0, 1.18, pixels) - 2 * two_lights) < 1e-12);
+  CHECK(fabs(vsh_auto_map_outline_error(358.0, 2.36, pixels) - 2 * two_lights) < 1e-12);
+  /* At 800x600 the same scene's outline is 2.5 times longer over 6.25
+   * times the pixels: a map becomes a candidate at the default target. */
+  CHECK(vsh_auto_map_outline_error(2.5 * 358.0, 1.18, 800.0 * 600.0) < 0.5);
+  CHECK(vsh_auto_map_outline_error(0.0, 1.0, pixels) == 0.0);
+  CHECK(isinf(vsh_auto_map_outline_error(-1.0, 1.0, pixels)));
+  CHECK(isinf(vsh_auto_map_outline_error(NAN, 1.0, pixels)));
+  CHECK(isinf(vsh_auto_map_outline_error(10.0, 0.5, pixels)));
+  CHECK(isinf(vsh_auto_map_outline_error(10.0, 1.0, 0.0)));
+  CHECK(isinf(vsh_auto_map_outline_error(10.0, INFINITY, pixels)));
+}
+
 int main(void)
 {
   test_thin_impostors();
+  test_map_outline_floor();
   test_masks_and_thin_error();
   test_pick();
   test_map_resolves();

@@ -102,6 +102,7 @@ static vsh_auto_soft_input frame(double target)
   in.rt_frame.threads = 2;
   in.rt_frame.first = 0;
   in.rt_frame.penumbra = 0.25;
+  in.rt_frame.traced = 0.0;
   in.rt_adaptive = 1;
   /* volume off unless a test turns it on; its inputs a small scene's. */
   in.volume_available = 0;

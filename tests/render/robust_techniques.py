@@ -198,7 +198,12 @@ def csm_work(p):
 
 
 def auto_work(p):
-    return p.GetPlanarPass().GetNumberOfGeometryBuilds() + p.GetCascadedPass().GetTotalMapsRendered()
+    """The work of every pass auto may pick: planar's geometry, csm's maps,
+    volume's volumes and raytrace's meshes."""
+    return (p.GetPlanarPass().GetNumberOfGeometryBuilds() +
+            p.GetCascadedPass().GetTotalMapsRendered() +
+            p.GetVolumePass().GetNumberOfVolumeBuilds() +
+            p.GetRayTracedPass().GetNumberOfMeshBuilds())
 
 
 # ---------------------------------------------------------------------------
@@ -258,7 +263,8 @@ PROFILES = {
         headlight_on=lambda p: p.SetCastHeadlightShadows(True),
         settings=csm_settings(), special={"debug-cascades": csm_debug_cascades},
         translucent_casts=0.36),
-    # Per light planar, csm or nothing, by an error target. Its choice may
+    # Per light planar, csm, volume, raytrace or nothing, by an error
+    # target. Its choice may
     # differ between a set-up and its equivalent plain scene (it depends on how
     # the actors are split): planar and csm then differ on shadow-edge pixels.
     "auto": Profile(

@@ -6,8 +6,10 @@ is known, and each light's shadows checked against the exact ray-cast answer.
 Cases:
   mixed       light 0 (sun from straight above) shadows only the floor:
               planar; light 1 (a point light low on the left) throws the
-              sphere's shadow onto a second sphere: csm. One frame draws
-              both (choice planar+csm); each light's visibility must meet
+              sphere's shadow onto a second sphere: a map would put more
+              than the 0.5 target along the spheres' outlines (its outline
+              floor), so raytrace. One frame draws both (choice
+              planar+raytrace); each light's visibility must meet
               wrong_pct <= 0.5 against the exact answer.
   idle-light  light 1 shines almost horizontally (its shadows end beyond the floor): no caster's shadow can reach
               another object, so it gets no shadow work (none), while
@@ -26,7 +28,8 @@ Cases:
               than rays: volume, checked against the exact answer; the
               stats show the weighed candidates and the pick.
   volume-fill 20 spheres lit from behind, towards the camera: no thin part,
-              maps meet the target, and the volumes' scissored fill (each
+              maps meet a target of 2 (their outline floor predicts 1.67),
+              and the volumes' scissored fill (each
               volume reaches the camera: several windows in all) makes them
               cost more than the map: csm, with volume weighed, not picked.
   max-error   --max-error 2px gives the cascaded pass a texel target of
@@ -130,10 +133,10 @@ def near_spheres():
     return scene([{"type": "directional", "direction": [0.1, -1, -0.6]}], balls, camera)
 
 
-def general_case(c, args, name, builder, want):
+def general_case(c, args, name, builder, want, extra=()):
     """The light's general choice (no planar receiver in the scene) and what
     auto weighed for it."""
-    ts, _ = stats(args.bin, args.out, name, builder())
+    ts, _ = stats(args.bin, args.out, name, builder(), extra)
     general = ts.get("general") or [{}]
     g = general[0]
     c.check(ts.get("light_choices") == [want] and g.get("pick") == want,
@@ -320,7 +323,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     c = Checks()
     if args.case == "mixed":
-        choice_case(c, args, "mixed", mixed, "planar+csm", ["planar", "csm"])
+        choice_case(c, args, "mixed", mixed, "planar+raytrace", ["planar", "raytrace"])
     elif args.case == "idle-light":
         choice_case(c, args, "idle-light", idle_light, "planar", ["planar", "none"])
     elif args.case == "out-of-view":
@@ -354,11 +357,11 @@ def main():
         c.check(not failed, f"volume-thin: against the exact answer: wrong_pct "
                             f"{m['wrong_pct']:.4f} (bound 0.5)")
     elif args.case == "volume-fill":
-        ts, g = general_case(c, args, "volume-fill", near_spheres, "csm")
+        ts, g = general_case(c, args, "volume-fill", near_spheres, "csm", ["--max-error", "2"])
         w, h = S43
-        c.check(g.get("csm_error_pct", 1) <= 0.5 and g.get("volume_fill_px", 0) > 5 * w * h and
+        c.check(g.get("csm_error_pct", 9) <= 2 and g.get("volume_fill_px", 0) > 5 * w * h and
                 g.get("volume_ms", 0) > g.get("csm_ms", 1e9),
-                f"volume-fill: maps meet the target ({g.get('csm_error_pct')}%), volume fill "
+                f"volume-fill: maps meet the target 2 ({g.get('csm_error_pct')}%), volume fill "
                 f"{g.get('volume_fill_px')} px > 5 windows of {w * h}, volume {g.get('volume_ms')} "
                 f"ms > csm {g.get('csm_ms')} ms")
     elif args.case == "impostors":

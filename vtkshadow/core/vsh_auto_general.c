@@ -362,6 +362,16 @@ double vsh_auto_taper_error(const double *widths, const double *lengths, size_t 
   return 100.0 * area * stretch / pixels;
 }
 
+/* ---- a map's outline floor ----------------------------------------------- */
+
+double vsh_auto_map_outline_error(double outline_px, double stretch, double pixels)
+{
+  if (!(pixels > 0.0) || !isfinite(pixels) || !(outline_px >= 0.0) || !isfinite(outline_px) ||
+      !(stretch >= 1.0) || !isfinite(stretch))
+    return INFINITY;
+  return 100.0 * VSH_AUTO_MAP_OUTLINE_FLOOR * outline_px * stretch / pixels;
+}
+
 /* ---- thin impostor casters ---------------------------------------------- */
 
 static int thin_input_ok(double thin_outline_px, double pixels)

@@ -237,6 +237,7 @@ static double raytrace_ms(const vsh_auto_soft_input *in, int samples)
   frame.pixels = in->pixels;
   frame.samples = samples;
   frame.first = vsh_rt_adaptive_first(samples, in->rt_adaptive, VSH_RT_ADAPTIVE_BATCH);
+  frame.traced = 1.0; /* the classifier decides hard lights only */
   return vsh_rt_cost_ms(&in->rt_model, &frame);
 }
 

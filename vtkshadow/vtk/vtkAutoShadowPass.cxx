@@ -86,6 +86,8 @@ struct vtkAutoShadowPass::Internals
   std::vector<double> ThinPoints, ThinLines;
   // Per light: the thin-impostor terms of the csm candidate (wrong_pct).
   std::vector<double> ThinFloorPct, ThinMapPct;
+  // Per light: the map's outline floor (vsh_auto_map_outline_error).
+  std::vector<double> OutlinePct;
   std::vector<bool> SoftLights; // per switched-on light: has a radius or angle
   std::string SoftJSON;         // per light with a size: the soft candidates
   int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
@@ -262,6 +264,7 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
   impl.ThinLines.assign(impl.LightChoices.size(), 0.0);
   impl.ThinFloorPct.assign(impl.LightChoices.size(), 0.0);
   impl.ThinMapPct.assign(impl.LightChoices.size(), 0.0);
+  impl.OutlinePct.assign(impl.LightChoices.size(), 0.0);
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
     if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
@@ -1029,7 +1032,12 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
       impl.ThinPoints[l] + impl.ThinLines[l], this->UsedTexelTarget, pixels);
     impl.ThinFloorPct[l] = floor;
     impl.ThinMapPct[l] = map;
-    w.candidates[VSH_AUTO_GENERAL_CSM] = { 1, (thin > 0.0 ? thin : 0.0) + map + floor,
+    // The map's floor along the outline (bias, filtering, terminators).
+    const double outline =
+      vsh_auto_map_outline_error(edgeLengths[l], std::max(1.0, this->UsedStretch), pixels);
+    impl.OutlinePct[l] = outline;
+    w.candidates[VSH_AUTO_GENERAL_CSM] = { 1,
+      (thin > 0.0 ? thin : 0.0) + map + floor + (std::isfinite(outline) ? outline : 0.0),
       MapLookupMsPerPixel * pixels };
     const int notDrawn = this->VolumeInputs(
       renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume);
@@ -1067,6 +1075,7 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
        << ", \"csm_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].cost)
        << ", \"thin_point_outline_px\": " << JSONNumber(impl.ThinPoints[l])
        << ", \"thin_line_outline_px\": " << JSONNumber(impl.ThinLines[l])
+       << ", \"csm_outline_error_pct\": " << JSONNumber(impl.OutlinePct[l])
        << ", \"volume_error_pct\": "
        << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].predicted_error_pct)
        << ", \"volume_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_VOLUME].cost)
@@ -1092,6 +1101,13 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
         << std::lround(impl.ThinPoints[l] + impl.ThinLines[l]) << " px of outline) lose "
         << impl.ThinFloorPct[l] << "% with any technique and " << impl.ThinMapPct[l]
         << "% more in maps of " << this->UsedTexelTarget << " px texels (maps predicted "
+        << map.predicted_error_pct << "% wrong), ";
+  }
+  else if (map.predicted_error_pct > this->MaxError &&
+    2.0 * impl.OutlinePct[l] >= map.predicted_error_pct)
+  {
+    why << "maps put about " << VSH_AUTO_MAP_OUTLINE_FLOOR
+        << " wrong pixels beside each pixel of the casters' outline (predicted "
         << map.predicted_error_pct << "% wrong), ";
   }
   else if (map.predicted_error_pct > this->MaxError)

@@ -1,0 +1,100 @@
+"""Exact shadows at the cost of a map: raytrace with its classifier
+(classify=1, the default) against every pixel traced (classify=0), csm,
+auto at its default target and at max_error 0.05, and none, timed
+interleaved in one window over vtkshadow-render's camera orbit, with the
+fraction of (pixel, light) pairs the classifier leaves to rays and auto's
+pick per light.
+
+  python3 bench/bench_classify.py --bin build/bin --out DIR SCENE.json...
+      [--size 800x600] [--frames 8] [--rounds 4] [--warmup 3]
+
+Writes DIR/classify.json (one row per scene) and prints a Markdown table:
+ms per frame (median over rounds x frames), each configuration against
+none and against csm, the noise floor (none#2 / none), the traced fraction
+per light, and the classifier's maps built over the orbit (one per hard
+light when they are kept while only the camera moves)."""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+CONFIGS = ["raytrace:classify=0", "csm", "auto", "auto:max_error=0.05"]
+
+
+def run(args, scene):
+    """One interleaved vtkshadow-render run; its stats."""
+    name = os.path.splitext(os.path.relpath(scene, args.scenes))[0].replace("/", "-")
+    stats = os.path.join(args.out, name + ".json")
+    cmd = [os.path.join(args.bin, "vtkshadow-render"), scene, "--technique", "raytrace",
+           "--image", os.path.join(args.out, name + ".png"), "--stats", stats,
+           "--size", args.size, "--frames", str(args.frames), "--rounds", str(args.rounds),
+           "--warmup", str(args.warmup), "--quiet"]
+    for c in CONFIGS:
+        cmd += ["--time-also", c]
+    print("bench_classify: %s" % name, file=sys.stderr, flush=True)
+    subprocess.run(cmd, check=True, stderr=subprocess.DEVNULL)
+    return name, json.load(open(stats))
+
+
+def row(name, data):
+    entries = {e["label"]: e for e in data["timing"]["entries"]}
+    ms = {label: e["ms"]["median"] for label, e in entries.items()}
+    t = entries["raytrace"]["technique_stats"]
+    picks = {label: entries[label]["technique_stats"].get("light_choices", [])
+             for label in ("auto", "auto:max_error=0.05")}
+    return {
+        "scene": name,
+        "ms": ms,
+        "noise_floor": data["noise_floor"]["ratio"],
+        "traced_fraction_light": t.get("traced_fraction_light", []),
+        "block_decided_pixels": t.get("block_decided_pixels", 0),
+        "surface_pixels": t.get("surface_pixels", 0),
+        "classify_maps_built": t.get("classify_maps_built", 0),
+        "classify_build_ms": t.get("classify_build_ms", 0.0),
+        "auto_picks": picks,
+    }
+
+
+def table(rows):
+    lines = ["| scene | none ms | raytrace (classifier) x none | every pixel traced x none | "
+             "csm x none | raytrace / csm | auto x none (picks) | auto at 0.05 x none (picks) | "
+             "traced fraction per light | maps built | none#2 / none |",
+             "|---|---:|---:|---:|---:|---:|---|---|---|---:|---:|"]
+    for r in rows:
+        ms, none = r["ms"], r["ms"]["none"]
+
+        def x(label):
+            return "%.2f" % (ms[label] / none)
+        lines.append("| %s | %.1f | %s | %s | %s | %.2f | %s (%s) | %s (%s) | %s | %d | %.3f |" % (
+            r["scene"], none, x("raytrace"), x("raytrace:classify=0"), x("csm"),
+            ms["raytrace"] / ms["csm"], x("auto"), ", ".join(r["auto_picks"]["auto"]),
+            x("auto:max_error=0.05"), ", ".join(r["auto_picks"]["auto:max_error=0.05"]),
+            " / ".join("%.2f" % f for f in r["traced_fraction_light"]),
+            r["classify_maps_built"], r["noise_floor"]))
+    return "\n".join(lines)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--bin", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--scenes", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                     "..", "scenes"),
+                    help="the folder scene names are given relative to")
+    ap.add_argument("--size", default="800x600")
+    ap.add_argument("--frames", type=int, default=8)
+    ap.add_argument("--rounds", type=int, default=4)
+    ap.add_argument("--warmup", type=int, default=3)
+    ap.add_argument("scene", nargs="+")
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    rows = [row(*run(args, s)) for s in args.scene]
+    with open(os.path.join(args.out, "classify.json"), "w") as f:
+        json.dump(rows, f, indent=1)
+    print(table(rows))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
