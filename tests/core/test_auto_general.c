@@ -374,6 +374,14 @@ static void test_map_outline_floor(void)
   CHECK(isinf(vsh_auto_map_outline_error(10.0, 0.5, pixels)));
   CHECK(isinf(vsh_auto_map_outline_error(10.0, 1.0, 0.0)));
   CHECK(isinf(vsh_auto_map_outline_error(10.0, INFINITY, pixels)));
+  /* Shadow volumes: table-parts light 0's outline (1117 px at 320x240)
+   * predicts more than the 0.064 it measured, not stretched. */
+  const double table = vsh_auto_volume_outline_error(1117.0, pixels);
+  CHECK(table > 0.064 && table < 0.1);
+  CHECK(fabs(table - 100.0 * VSH_AUTO_VOLUME_OUTLINE_FLOOR * 1117.0 / pixels) < 1e-12);
+  CHECK(vsh_auto_volume_outline_error(0.0, pixels) == 0.0);
+  CHECK(isinf(vsh_auto_volume_outline_error(-1.0, pixels)));
+  CHECK(isinf(vsh_auto_volume_outline_error(1.0, 0.0)));
 }
 
 int main(void)

@@ -372,6 +372,12 @@ double vsh_auto_map_outline_error(double outline_px, double stretch, double pixe
   return 100.0 * VSH_AUTO_MAP_OUTLINE_FLOOR * outline_px * stretch / pixels;
 }
 
+double vsh_auto_volume_outline_error(double outline_px, double pixels)
+{
+  return vsh_auto_map_outline_error(outline_px, 1.0, pixels) * VSH_AUTO_VOLUME_OUTLINE_FLOOR /
+         VSH_AUTO_MAP_OUTLINE_FLOOR;
+}
+
 /* ---- thin impostor casters ---------------------------------------------- */
 
 static int thin_input_ok(double thin_outline_px, double pixels)

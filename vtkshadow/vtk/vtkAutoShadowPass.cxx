@@ -1041,8 +1041,10 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
       MapLookupMsPerPixel * pixels };
     const int notDrawn = this->VolumeInputs(
       renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume);
+    const double stencil = vsh_auto_volume_outline_error(edgeLengths[l], pixels);
     w.candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
-      vsh_volume_predicted_error(notDrawn, impl.SoftLights[l] ? 1 : 0) + floor,
+      vsh_volume_predicted_error(notDrawn, impl.SoftLights[l] ? 1 : 0) + floor +
+        (std::isfinite(stencil) ? stencil : 0.0),
       vsh_volume_cost_ms(&volume) };
     w.candidates[VSH_AUTO_GENERAL_RAYTRACE] = { 1, floor,
       this->RayTracedPass->EstimateFrameMilliseconds(pixels, 1.0, 1, impl.SoftLights[l]) };

@@ -49,8 +49,9 @@ const Technique Techniques[] = {
     "auto", "per light the cheapest technique that meets an error target (max_error)"),
   Of<vtkShadowVolumePass>(
     "volume", "stencil shadow volumes: exact hard shadows on every surface, every light type"),
-  Of<vtkRayTracedShadowPass>(
-    "raytrace", "exact shadows of any geometry: Embree rays per visible pixel and light (CPU)"),
+  Of<vtkRayTracedShadowPass>("raytrace",
+    "exact shadows of any geometry: a light-space map decides what it proves, Embree rays the "
+    "rest"),
 };
 constexpr int TechniqueCount = static_cast<int>(sizeof(Techniques) / sizeof(Techniques[0]));
 }
