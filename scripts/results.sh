@@ -4,7 +4,9 @@
 # Blender EEVEE peer through vtkshadow-compare), how cost grows with triangles,
 # pixels, lights and coverage (bench/bench_growth.py), assembled by
 # bench/make_results.py; penumbra error against time for lights with a size
-# (bench/bench_soft.py).
+# (bench/bench_soft.py); raytrace's classifier against every pixel traced,
+# volume, csm and auto at two targets on the scivis and cad scenes
+# (bench/bench_classify.py, its own section, written last).
 # Timing: per scene (and per growth row) one vtkshadow-render process times
 # every configuration in one window, interleaved in blocks (3 warm-up frames
 # each, 4 rounds of 10 frames, the order changed every round; the growth and
@@ -44,3 +46,5 @@ sh tests/gl-run.sh build/bin/vtkshadow-python bench/bench_soft.py \
   --out "$OUT/soft" --frames 8 --rounds 3 --warmup 2 --cache out/results-cache > "$OUT/soft.txt"
 /usr/bin/python3 bench/make_results.py --bench "$OUT/bench" --growth "$OUT/growth" \
   --soft "$OUT/soft" --command "sh scripts/results.sh" --output docs/results.md
+sh tests/gl-run.sh /usr/bin/python3 bench/bench_classify.py --bin build/bin --out "$OUT/classify" \
+  --results docs/results.md scenes/scivis/*.json scenes/cad/*.json > "$OUT/classify.txt"

@@ -698,6 +698,17 @@ std::string VolumesJSON(
   return out.str();
 }
 
+// Numbers separated by commas.
+std::string Join(const std::vector<double>& values)
+{
+  std::ostringstream out;
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    out << (k ? ", " : "") << values[k];
+  }
+  return out.str();
+}
+
 // The classifier's part of the last frame: whether it ran, per light the
 // fraction of (pixel, light) pairs it decided and of surface pixels traced,
 // pixels that traced no ray, and its maps (built, ms, bytes).
@@ -728,7 +739,9 @@ std::string ClassifyJSON(
       << ", \"classify_maps_built\": " << classifier.GetBuilds()
       << ", \"classify_maps_built_last_frame\": " << (classifier.BuiltLastUpdate() ? 1 : 0)
       << ", \"classify_build_ms\": " << 1e3 * classifier.GetBuildSeconds()
-      << ", \"classify_bytes\": " << classifier.GetMemoryBytes();
+      << ", \"classify_bytes\": " << classifier.GetMemoryBytes() << ", \"classify_block_yield\": ["
+      << Join(classifier.GetBlockYield()) << "], \"classify_pixel_yield\": ["
+      << Join(classifier.GetPixelYield()) << "]";
   return out.str();
 }
 }

@@ -51,7 +51,9 @@ public:
   void Policy(std::vector<bool>& blocks, std::vector<bool>& pixels);
   void Observe(const std::vector<long long>& blockAsked, const std::vector<long long>& blockDecided,
     const std::vector<long long>& pixelAsked, const std::vector<long long>& pixelDecided);
-  static constexpr double BlockWorth = 0.25;
+  static constexpr double BlockWorth = 0.35;
+  const std::vector<double>& GetBlockYield() const { return this->BlockRate; }
+  const std::vector<double>& GetPixelYield() const { return this->PixelRate; }
   static constexpr double PixelWorth = 0.5;
   static constexpr int ProbeEvery = 16;
 

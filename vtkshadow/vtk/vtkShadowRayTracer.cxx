@@ -290,7 +290,10 @@ bool Worker::ClassifyBlock(int x0, int y0, int x1, int y1, bool whole)
   const vtkShadowRayTracer::Frame& f = *this->Frame;
   std::fill_n(
     this->BlockDecided, Surface::MaxDecided, static_cast<signed char>(VSH_RT_CLASSIFY_UNDECIDED));
-  if (f.Classify.empty())
+  // Nothing to ask when every light's blocks stand aside (the policy).
+  if (f.Classify.empty() ||
+    (!f.ClassifyBlocks.empty() &&
+      std::none_of(f.ClassifyBlocks.begin(), f.ClassifyBlocks.end(), [](bool b) { return b; })))
   {
     return false;
   }
@@ -411,6 +414,22 @@ bool Worker::Classify(const vsh_rt_pixel_ray& ray, Surface& s)
   std::fill_n(s.Decided, Surface::MaxDecided, static_cast<signed char>(VSH_RT_CLASSIFY_UNDECIDED));
   if (f.Classify.empty())
   {
+    return false;
+  }
+  // Nothing to ask when no light's pixels are asked and its block decided
+  // nothing: count the pixel and leave it to the rays.
+  bool ask = f.ClassifyPixels.empty();
+  for (size_t l = 0; l < f.Lights.size() && !ask; ++l)
+  {
+    ask = (l < f.ClassifyPixels.size() && f.ClassifyPixels[l]) ||
+      (l < size_t(Surface::MaxDecided) && this->BlockDecided[l] != VSH_RT_CLASSIFY_UNDECIDED);
+  }
+  if (!ask)
+  {
+    for (size_t l = 0; l < f.Lights.size() && l < f.Classify.size(); ++l)
+    {
+      this->Count.Classifiable[l] += f.Classify[l] != nullptr;
+    }
     return false;
   }
   double eyeToAnchor[3], magnitude = 0;
