@@ -163,8 +163,10 @@ int vsh_rt_classify_build(vsh_rt_classify_map *map, const vsh_rt_light *light,
   if (!map->triangles || !map->flags || !map->group) {
     return 1;
   }
-  memcpy(map->triangles, triangles, count * 9 * sizeof(double));
-  memcpy(map->flags, flags, count);
+  if (count > 0) { /* memcpy from NULL is undefined even for 0 bytes */
+    memcpy(map->triangles, triangles, count * 9 * sizeof(double));
+    memcpy(map->flags, flags, count);
+  }
   double scale = light->kind == VSH_RT_DIRECTIONAL ? 0.0 : vsh_vec3_length(light->position);
   for (size_t k = 0; k < 9 * count; ++k) {
     if (!isfinite(triangles[k])) {
