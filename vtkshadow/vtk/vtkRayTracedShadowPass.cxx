@@ -570,8 +570,9 @@ void vtkRayTracedShadowPass::GetCostInputs(double pixels, double coverage, int l
   // penumbra fraction the rest.
   input->first = vsh_rt_adaptive_first(input->samples, this->Adaptive, VSH_RT_ADAPTIVE_BATCH);
   input->penumbra = this->Impl->Penumbra;
-  // The classifier decides hard lights' pixels only.
-  input->traced = sized || !this->Classify ? 1.0 : this->Impl->Traced;
+  // The classifier decides lights traced with one ray only (hard ones, or
+  // a sized one at one sample).
+  input->traced = input->samples > 1 || !this->Classify ? 1.0 : this->Impl->Traced;
   input->threads = this->NumberOfThreads > 0
     ? this->NumberOfThreads
     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
