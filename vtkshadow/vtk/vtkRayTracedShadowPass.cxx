@@ -207,7 +207,7 @@ struct vtkRayTracedShadowPass::Internals
     classifier.Policy(rays.ClassifyBlocks, rays.ClassifyPixels);
     std::copy_n(classifier.GetAnchor(), 3, rays.ClassifyAnchor);
     rays.InstanceRadius = this->Scene.GetLargestRadius();
-    this->ClassifierUsed = true;
+    this->ClassifierUsed = !rays.Classify.empty();
   }
 
   // Fold the last frame's traced fraction of hard lights into Traced.
@@ -740,7 +740,8 @@ std::string ClassifyJSON(
       << ", \"classify_maps_built\": " << classifier.GetBuilds()
       << ", \"classify_maps_built_last_frame\": " << (classifier.BuiltLastUpdate() ? 1 : 0)
       << ", \"classify_build_ms\": " << 1e3 * classifier.GetBuildSeconds()
-      << ", \"classify_bytes\": " << classifier.GetMemoryBytes() << ", \"classify_block_yield\": ["
+      << ", \"classify_bytes\": " << classifier.GetMemoryBytes()
+      << ", \"classify_wait_frames\": " << classifier.GetWait() << ", \"classify_block_yield\": ["
       << Join(classifier.GetBlockYield()) << "], \"classify_pixel_yield\": ["
       << Join(classifier.GetPixelYield()) << "]";
   return out.str();

@@ -51,12 +51,37 @@ void vtkShadowRayClassifier::Update(const vtkShadowEmbreeScene& scene,
       key.push_back(positional ? double(static_cast<float>(light.position[r] + eye[r])) : 0.0);
     }
   }
-  this->Rebuilt = key != this->Key;
-  if (!this->Rebuilt)
+  ++this->Updates;
+  this->Rebuilt = false;
+  if (key == this->Key)
   {
     return;
   }
-  this->Clear();
+  // The maps are stale. A map pays for its build only over frames that
+  // keep it: wait until the new key has held Wait updates (0 at first),
+  // twice as long (at least MinWait, up to MaxWait) each time maps are
+  // dropped soon after being built, half as long when they last (a scene
+  // edited every few frames traces every pixel instead of building maps it
+  // throws away).
+  if (!this->Key.empty())
+  {
+    const long long lived = this->Updates - this->BuiltAt;
+    this->Wait = lived < 4 * std::max(this->Wait, MinWait)
+      ? std::min(std::max(2 * this->Wait, MinWait), MaxWait)
+      : this->Wait / 2;
+    this->Clear();
+  }
+  if (key != this->Pending)
+  {
+    this->Pending = key;
+    this->PendingSince = this->Updates;
+  }
+  if (this->Updates - this->PendingSince < this->Wait)
+  {
+    return; // no maps yet: every pixel is traced
+  }
+  this->Rebuilt = true;
+  this->BuiltAt = this->Updates;
   this->Key = key;
   this->BlockRate.clear();
   this->PixelRate.clear();

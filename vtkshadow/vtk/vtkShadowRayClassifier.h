@@ -6,7 +6,10 @@
 // triangles in double precision (vtkShadowEmbreeScene::CollectTriangles).
 // Maps live in world space (anchored at the casters' centre when built),
 // so a camera that only moves keeps them: they are rebuilt only when a
-// light moves or changes, or the top levels or a mesh are rebuilt.
+// light moves or changes, or the top levels or a mesh are rebuilt, and
+// then only once the new state has held for a few frames (Wait: longer
+// while maps keep being dropped soon after their build, as in a scene
+// edited every few frames, where tracing every pixel is cheaper).
 // Spheres, tubes and flat quads (no triangles) and volumes are not in the
 // maps, so a scene with them gets no maps and every pixel is traced.
 #ifndef vtkShadowRayClassifier_h
@@ -61,11 +64,16 @@ public:
   int GetBuilds() const { return this->Builds; }
   double GetBuildSeconds() const { return this->BuildSeconds; }
   bool BuiltLastUpdate() const { return this->Rebuilt; }
+  // Updates a new key waits before its maps are built (0, or MinWait..MaxWait).
+  int GetWait() const { return static_cast<int>(this->Wait); }
+  static constexpr long long MinWait = 2, MaxWait = 256;
   long long GetMemoryBytes() const;
   void Clear();
 
 private:
-  std::vector<double> Key;
+  std::vector<double> Key;     // of the maps held (empty: none)
+  std::vector<double> Pending; // the newest key, waiting for maps
+  long long Updates = 0, PendingSince = 0, BuiltAt = 0, Wait = 0;
   std::vector<vsh_rt_classify_map> Maps;
   std::vector<bool> Built;
   std::vector<const vsh_rt_classify_map*> Pointers;
