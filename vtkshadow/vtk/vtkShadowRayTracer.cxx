@@ -136,6 +136,17 @@ struct Worker
   double Tolerance(int x, int y) const;
   bool ClassifyBlock(int x0, int y0, int x1, int y1, bool whole);
   bool Classify(const vsh_rt_pixel_ray& ray, Surface& s);
+  // Light l's map (null: not classified, or beyond Surface::MaxDecided).
+  const vsh_rt_classify_map* MapOf(size_t l) const
+  {
+    const vtkShadowRayTracer::Frame& f = *this->Frame;
+    return l < f.Classify.size() && l < size_t(Surface::MaxDecided) ? f.Classify[l] : nullptr;
+  }
+  // Whether the policy lets light l be asked (an empty policy: every light).
+  static bool Allowed(const std::vector<bool>& policy, size_t l)
+  {
+    return policy.empty() || (l < policy.size() && policy[l]);
+  }
   // This block's classes per light (UNDECIDED: per pixel).
   signed char BlockDecided[Surface::MaxDecided];
   void Decide(const Surface& s, size_t l);
@@ -358,10 +369,8 @@ bool Worker::ClassifyBlock(int x0, int y0, int x1, int y1, bool whole)
   bool all = true;
   for (size_t l = 0; l < f.Lights.size(); ++l)
   {
-    const vsh_rt_classify_map* map =
-      l < f.Classify.size() && l < size_t(Surface::MaxDecided) ? f.Classify[l] : nullptr;
-    const bool blocks =
-      f.ClassifyBlocks.empty() || (l < f.ClassifyBlocks.size() && f.ClassifyBlocks[l]);
+    const vsh_rt_classify_map* map = this->MapOf(l);
+    const bool blocks = Allowed(f.ClassifyBlocks, l);
     const int c = map && blocks ? vsh_rt_classify_block(map, &region) : VSH_RT_CLASSIFY_UNDECIDED;
     if (map && blocks && l < this->Count.BlockAsked.size())
     {
@@ -449,10 +458,8 @@ bool Worker::Classify(const vsh_rt_pixel_ray& ray, Surface& s)
   const size_t lights = f.Lights.size();
   for (size_t l = 0; l < lights; ++l)
   {
-    const vsh_rt_classify_map* map =
-      l < f.Classify.size() && l < size_t(Surface::MaxDecided) ? f.Classify[l] : nullptr;
-    const bool byPixel =
-      f.ClassifyPixels.empty() || (l < f.ClassifyPixels.size() && f.ClassifyPixels[l]);
+    const vsh_rt_classify_map* map = this->MapOf(l);
+    const bool byPixel = Allowed(f.ClassifyPixels, l);
     if (!map)
     {
       all = false;
