@@ -49,6 +49,28 @@ static void test_normalize_degenerate(void) {
   CHECK(vsh_vec3_normalize(nan3, o) == 0.0);
   CHECK(o[0] == 0 && o[1] == 0 && o[2] == 0);
 
+  /* A NaN after a finite largest component (the unscaled path's check). */
+  const double nan_y[3] = {1, NAN, 0}, nan_z[3] = {2, 0, NAN};
+  CHECK(vsh_vec3_normalize(nan_y, o) == 0.0);
+  CHECK(o[0] == 0 && o[1] == 0 && o[2] == 0);
+  CHECK(vsh_vec3_normalize(nan_z, o) == 0.0);
+  CHECK(o[0] == 0 && o[1] == 0 && o[2] == 0);
+  CHECK(isnan(vsh_vec3_length(nan_y)));
+
+  /* Either side of the unscaled range's limits (1e150, 1e-150): the same
+   * answer, and a component far below the largest one underflows harmlessly. */
+  const double edges[6][3] = {{0.99e150, -0.99e150, 0.99e150}, {1.01e150, -1.01e150, 1.01e150},
+                              {0.99e-150, 0.99e-150, 0.99e-150},
+                              {1.01e-150, 1.01e-150, 1.01e-150}, {1.01e-150, 1e-170, 0},
+                              {1e300, 1e300, 1e300}};
+  for (int k = 0; k < 6; ++k) {
+    const double m = fabs(edges[k][0]);
+    const double expect = m * (edges[k][1] == 1e-170 ? 1.0 : sqrt(3.0));
+    CHECK_NEAR(vsh_vec3_length(edges[k]) / expect, 1, 1e-15);
+    CHECK_NEAR(vsh_vec3_normalize(edges[k], o) / expect, 1, 1e-15);
+    CHECK_NEAR(o[0] * o[0] + o[1] * o[1] + o[2] * o[2], 1, 1e-15);
+  }
+
   const double inf3[3] = {INFINITY, 0, 0};
   CHECK(vsh_vec3_normalize(inf3, o) == 0.0);
   CHECK(o[0] == 0 && o[1] == 0 && o[2] == 0);

@@ -104,18 +104,24 @@ static int locate(const vsh_rt_classify_map *map, const vsh_rt_classify_face *fa
     }
     double x = vsh_vec3_dot(p, face->e1), y = vsh_vec3_dot(p, face->e2);
     const double z = vsh_vec3_dot(p, face->axis);
-    zlo = fmin(zlo, z);
-    zhi = fmax(zhi, z);
+    if (!isfinite(x + y + z)) {
+      return 0; /* so that the plain comparisons below never meet a NaN */
+    }
+    zlo = z < zlo ? z : zlo;
+    zhi = z > zhi ? z : zhi;
     if (face->perspective) {
       if (!(z - h->radius > 2 * map->near_z)) {
         return 0; /* at or behind the light's plane */
       }
       x /= z;
       y /= z;
-      spread = fmax(spread, 1.0 + fabs(x) + fabs(y));
+      const double s = 1.0 + fabs(x) + fabs(y);
+      spread = s > spread ? s : spread;
     }
-    ulo = fmin(ulo, x), uhi = fmax(uhi, x);
-    vlo = fmin(vlo, y), vhi = fmax(vhi, y);
+    ulo = x < ulo ? x : ulo;
+    uhi = x > uhi ? x : uhi;
+    vlo = y < vlo ? y : vlo;
+    vhi = y > vhi ? y : vhi;
   }
   zlo -= h->radius;
   zhi += h->radius;
@@ -196,6 +202,9 @@ static int scan(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face
       lit = lit && t->near_key > key_hi;
       plane = plane && t->full >= 0 && t->rest > key_hi && (full < 0 || t->full == full);
       full = full < 0 ? t->full : full;
+      if (!(shadowed || lit || plane)) {
+        return VSH_RT_CLASSIFY_UNDECIDED; /* every rule has failed */
+      }
     }
   }
   if (shadowed) {

@@ -99,8 +99,11 @@ int vsh_rt_light_sample(const vsh_rt_light *light, const double point[3], int k,
 {
   double centre[3];
   const int status = vsh_rt_light_direction(light, point, centre, distance);
-  const double size = light->kind == VSH_RT_DIRECTIONAL ? tan(0.5 * light->angle) : light->radius;
-  if (status != VSH_RT_OK || n <= 1 || size <= 0.0) {
+  /* A hard light's one ray needs no size (no tan per ray). */
+  const double size = status != VSH_RT_OK || n <= 1 ? 0.0
+                      : light->kind == VSH_RT_DIRECTIONAL ? tan(0.5 * light->angle)
+                                                          : light->radius;
+  if (size <= 0.0) {
     memcpy(dir, centre, sizeof centre);
     return status;
   }

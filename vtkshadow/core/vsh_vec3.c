@@ -24,7 +24,22 @@ static double max_abs(const double v[3]) {
   return m;
 }
 
+/* Below this largest component and above its inverse, the plain sum of
+ * squares neither overflows nor loses the vector to underflow (the largest
+ * square stays above DBL_MIN), so it needs no scaling: the tracer's per-pixel
+ * rays take this path, scaling costs three divisions more. */
+static const double UnscaledLimit = 1e150;
+
+/* Whether v is finite (a NaN component fails the sum) and in that range. */
+static int unscaled(const double v[3]) {
+  const double m = max_abs(v);
+  return m < UnscaledLimit && m > 1.0 / UnscaledLimit && isfinite(v[0] + v[1] + v[2]);
+}
+
 double vsh_vec3_length(const double v[3]) {
+  if (unscaled(v)) {
+    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  }
   if (!vsh_vec3_is_finite(v)) return fabs(v[0]) + fabs(v[1]) + fabs(v[2]);
   const double m = max_abs(v);
   if (m == 0.0) return 0.0;
@@ -33,6 +48,13 @@ double vsh_vec3_length(const double v[3]) {
 }
 
 double vsh_vec3_normalize(const double v[3], double out[3]) {
+  if (unscaled(v)) {
+    const double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    out[0] = v[0] / len;
+    out[1] = v[1] / len;
+    out[2] = v[2] / len;
+    return len;
+  }
   if (!vsh_vec3_is_finite(v)) {
     out[0] = out[1] = out[2] = 0.0;
     return 0.0;

@@ -134,6 +134,15 @@ struct Worker
 
   void Tile(int block);
   double Tolerance(int x, int y) const;
+  // The block's pixels' depth tolerances, computed once by Refine and
+  // read by ClassifyBlock (whole and quarters) and RefinePixels.
+  double Tolerances[TileSize];
+  int ToleranceX0 = 0, ToleranceY0 = 0;
+  void ComputeTolerances(int x0, int y0, int x1, int y1);
+  double BlockTolerance(int x, int y) const
+  {
+    return this->Tolerances[(y - this->ToleranceY0) * Block + (x - this->ToleranceX0)];
+  }
   bool ClassifyBlock(int x0, int y0, int x1, int y1, bool whole);
   bool Classify(const vsh_rt_pixel_ray& ray, Surface& s);
   // Light l's map (null: not classified, or beyond Surface::MaxDecided).
@@ -188,6 +197,22 @@ double Worker::Tolerance(int x, int y) const
   return f.DepthTolerance + f.SlopeTolerance * slope;
 }
 
+void Worker::ComputeTolerances(int x0, int y0, int x1, int y1)
+{
+  this->ToleranceX0 = x0;
+  this->ToleranceY0 = y0;
+  const float* depth = this->Frame->Depth;
+  const int width = this->Frame->View.width;
+  for (int y = y0; y <= y1; ++y)
+  {
+    for (int x = x0; x <= x1; ++x)
+    {
+      this->Tolerances[(y - y0) * Block + (x - x0)] =
+        depth[y * width + x] < 1.0f ? this->Tolerance(x, y) : 0.0;
+    }
+  }
+}
+
 // The block's pixels: decided whole (classifier), else in quarters, else
 // each pixel on its own.
 void Worker::Refine(int x0, int y0, int x1, int y1)
@@ -196,6 +221,7 @@ void Worker::Refine(int x0, int y0, int x1, int y1)
   this->Pixels.clear();
   this->Surfaces.clear();
   this->Limits.clear();
+  this->ComputeTolerances(x0, y0, x1, y1);
   if (this->ClassifyBlock(x0, y0, x1, y1, true))
   {
     return; // every pixel decided for every light
@@ -231,7 +257,7 @@ void Worker::RefinePixels(int x0, int y0, int x1, int y1)
     {
       vsh_rt_pixel_ray ray;
       const int p = y * width + x;
-      if (vsh_rt_pixel_ray_init(&f.View, x, y, f.Depth[p], this->Tolerance(x, y), &ray) !=
+      if (vsh_rt_pixel_ray_init(&f.View, x, y, f.Depth[p], this->BlockTolerance(x, y), &ray) !=
         VSH_RT_OK)
       {
         ++this->Count.Background;
@@ -320,7 +346,7 @@ bool Worker::ClassifyBlock(int x0, int y0, int x1, int y1, bool whole)
       {
         dmin = std::min(dmin, double(d));
         dmax = std::max(dmax, double(d));
-        tol = std::max(tol, this->Tolerance(x, y));
+        tol = std::max(tol, this->BlockTolerance(x, y));
         ++drawn;
       }
     }
