@@ -76,6 +76,17 @@ typedef struct vsh_rt_pixel_ray {
 int vsh_rt_pixel_ray_init(const vsh_rt_view *view, int i, int j, double depth, double tolerance,
                           vsh_rt_pixel_ray *out);
 
+/* How far from its interval [lo, hi] a landing on the hit triangle's
+ * plane (in double) may fall and still be the pixel's surface: half the
+ * interval plus 1e-6 of the distance. vtkShadowRayTracer keeps such a
+ * landing, and the classifier's tube reaches that far. */
+double vsh_rt_landing_slack(const vsh_rt_pixel_ray *ray);
+
+/* How far past lo the refinement ray's float hit may lie and still count
+ * as inside the interval: the interval, 1e-5 of it for the float origin's
+ * rounding, and four offsets (vsh_rt_offset_distance) of the distance. */
+double vsh_rt_refine_reach(const vsh_rt_pixel_ray *ray);
+
 /* The offset of a shadow ray's origin off a surface whose coordinates (in
  * the tracer's float frame) have magnitude `magnitude`:
  * VSH_RT_OFFSET_RELATIVE * magnitude, and never 0 (a tiny floor of

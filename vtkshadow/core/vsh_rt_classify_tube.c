@@ -11,18 +11,17 @@
 void vsh_rt_classify_tube_init(const vsh_rt_pixel_ray *ray, const double eye_to_anchor[3],
                                double magnitude, vsh_rt_classify_tube *out)
 {
-  const double span = ray->hi - ray->lo, distance = fabs(ray->distance);
-  /* vtkShadowRayTracer keeps a landing within half the interval (plus
-   * 1e-6 of the distance) of it, or Embree's float hit within 1e-5 of
-   * the interval and 4 offsets past its end; a miss starts at its near
-   * end, moved one offset towards the camera. */
-  const double slack = 0.5 * span + 1e-6 * distance;
+  /* vtkShadowRayTracer keeps a landing within vsh_rt_landing_slack of the
+   * interval, or Embree's float hit within vsh_rt_refine_reach of its near
+   * end; a miss starts at its near end, moved one offset towards the
+   * camera. */
+  const double slack = vsh_rt_landing_slack(ray);
   for (int r = 0; r < 3; ++r) {
     out->origin[r] = ray->origin[r] + eye_to_anchor[r];
     out->dir[r] = ray->direction[r];
   }
   out->t0 = ray->lo - slack;
-  out->t1 = ray->hi + slack + 1e-5 * span + 4 * VSH_RT_OFFSET_RELATIVE * distance;
+  out->t1 = fmax(ray->hi, ray->lo + vsh_rt_refine_reach(ray)) + slack;
   /* The origin's offset off the surface, and four more for the float
    * rounding of the ray's origin and of Embree's triangles. */
   out->radius = 5.0 * vsh_rt_offset_distance(magnitude);

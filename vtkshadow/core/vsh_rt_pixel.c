@@ -122,6 +122,17 @@ int vsh_rt_pixel_ray_init(const vsh_rt_view *view, int i, int j, double depth, d
   return VSH_RT_OK;
 }
 
+double vsh_rt_landing_slack(const vsh_rt_pixel_ray *ray)
+{
+  return 0.5 * (ray->hi - ray->lo) + 1e-6 * fabs(ray->distance);
+}
+
+double vsh_rt_refine_reach(const vsh_rt_pixel_ray *ray)
+{
+  const double span = ray->hi - ray->lo;
+  return span + 1e-5 * span + 4 * VSH_RT_OFFSET_RELATIVE * fabs(ray->distance);
+}
+
 double vsh_rt_offset_distance(double magnitude)
 {
   const double m = isfinite(magnitude) ? fabs(magnitude) : 0.0;

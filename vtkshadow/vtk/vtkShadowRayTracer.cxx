@@ -285,8 +285,7 @@ void Worker::RefinePixels(int x0, int y0, int x1, int y1)
       // interval and meet the right triangle further on; Land keeps a hit
       // beyond the interval only where the double landing on its plane falls
       // inside it.
-      this->Limits.push_back(static_cast<float>((ray.hi - ray.lo) + 1e-5 * (ray.hi - ray.lo) +
-        4 * VSH_RT_OFFSET_RELATIVE * std::fabs(ray.distance)));
+      this->Limits.push_back(static_cast<float>(vsh_rt_refine_reach(&ray)));
       rh.ray.tfar = std::numeric_limits<float>::infinity();
       rh.ray.mask = 0xffffffffu;
       rh.ray.time = 0.0f;
@@ -669,7 +668,7 @@ bool Worker::Exact(int k, double n[3], double& len2, double& side)
     return false;
   }
   const double t = num / denom;
-  const double slack = 0.5 * (ray.hi - ray.lo) + 1e-6 * std::fabs(ray.distance);
+  const double slack = vsh_rt_landing_slack(&ray);
   if (!std::isfinite(t) || t < ray.lo - slack || t > ray.hi + slack)
   {
     return false; // keep Embree's hit
