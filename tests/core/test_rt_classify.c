@@ -2,7 +2,8 @@
  * map decides agrees with an exact double-precision shadow ray (against
  * every triangle) from the surface point the tube holds, for a directional,
  * a narrow spot and a point light (six faces) over a floor, a box, a
- * tilted plate and a sphere; most tubes are decided; and the degenerate
+ * tilted plate, a sphere and a terrain; most tubes are decided; tubes on
+ * a sharp valley's floor; and the degenerate
  * cases (no casters, geometry at the light, a tube across many texels, a
  * tube behind the light, a non-caster floor, bad input). */
 #include "vsh_check.h"
@@ -73,8 +74,33 @@ static void add_sphere(const double c[3], double r, int rings, int segments)
   }
 }
 
+/* Height z(x, y) of the terrain: gentle hills, one valley along x = -4
+ * whose sides bend sharply (slope 1.5) and one gentle valley. */
+static double terrain_height(double x, double y)
+{
+  return 0.4 + 0.1 * sin(3 * x) * cos(2.5 * y) + (fabs(x + 4) < 0.26 ? 1.5 * fabs(x + 4) : 0.39) +
+         0.05 * fabs(y - 3.5);
+}
+
+/* An open sheet over [-5.5, -2.5] x [1.5, 5.5], 24 x 16 cells (the
+ * valley's floor on a grid line). */
+static void add_terrain(void)
+{
+  for (int i = 0; i < 24; ++i) {
+    for (int j = 0; j < 16; ++j) {
+      double p[4][3];
+      for (int k = 0; k < 4; ++k) {
+        p[k][0] = -5.5 + 0.125 * (i + (k & 1));
+        p[k][1] = 1.5 + 0.25 * (j + (k >> 1));
+        p[k][2] = terrain_height(p[k][0], p[k][1]);
+      }
+      add_quad(p[0], p[1], p[3], p[2], VSH_RT_CLASSIFY_CASTS);
+    }
+  }
+}
+
 /* The scene: a floor (a caster, or drawn only), a box on it, a tilted
- * plate and a sphere above it. */
+ * plate, a sphere above it and a terrain (an open sheet). */
 static void make_scene(int floor_casts)
 {
   count = 0;
@@ -90,6 +116,8 @@ static void make_scene(int floor_casts)
   shape = 3;
   const double c[3] = { 1.5, -2, 1.3 };
   add_sphere(c, 0.8, 12, 20);
+  shape = 4;
+  add_terrain();
 }
 
 /* Distance along the ray from o (unit d) to triangle t, or -1. */
@@ -370,6 +398,98 @@ static void test_blocks_agree_with_rays(void)
   }
 }
 
+/* Surface point s on triangle t seen from eye, with a depth interval of
+ * +-1e-6: the map's class of its tube (return) and the exact ray's from
+ * the offset origin (truth). */
+static int tube_class(const vsh_rt_classify_map *map, const vsh_rt_light *light,
+                      const double s[3], size_t t, const double eye[3], int *truth)
+{
+  double dir[3], q[3], to[3], tmax;
+  vsh_rt_pixel_ray ray;
+  memset(&ray, 0, sizeof ray);
+  vsh_vec3_sub(s, eye, dir);
+  ray.distance = vsh_vec3_normalize(dir, dir);
+  memcpy(ray.origin, eye, sizeof ray.origin);
+  memcpy(ray.direction, dir, sizeof dir);
+  ray.lo = ray.distance - 1e-6;
+  ray.hi = ray.distance + 1e-6;
+  const double zero[3] = { 0, 0, 0 };
+  vsh_rt_classify_tube tube;
+  vsh_rt_classify_tube_init(&ray, zero, 12.0, &tube);
+  ray_origin(s, t, dir, q);
+  CHECK(vsh_rt_light_direction(light, q, to, &tmax) == VSH_RT_OK);
+  *truth = blocked(q, to, tmax) ? VSH_RT_CLASSIFY_SHADOWED : VSH_RT_CLASSIFY_LIT;
+  return vsh_rt_classify_pixel(map, &tube);
+}
+
+/* Surface points within 1e-9 of the terrain's sharp valley floor under a
+ * light straight above: an origin offset off one side of the valley
+ * stands below the other side's plane there (the bend, sin cos |grad h1 -
+ * grad h| = 1.38, is above 1), so the exact ray meets the other side.
+ * Every tube the map decides must agree; none may be lit there. */
+static void test_valley_floor(void)
+{
+  make_scene(1);
+  vsh_rt_light light;
+  const double h[4] = { 0, 0, 1, 0 }, focal[3] = { 0, 0, 0 };
+  CHECK(vsh_rt_light_init(h, focal, 180.0, 0, 0, &light) == VSH_RT_OK);
+  vsh_rt_classify_map map;
+  CHECK(vsh_rt_classify_build(&map, &light, tris, flags, placement, count, 512) == 0);
+  int wrong = 0, decided = 0, blocked_rays = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const double x = -4 + (k % 2 ? 1 : -1) * vsh_test_rnd(1e-12, 1e-9), y = vsh_test_rnd(1.6, 5.4);
+    const double above[3] = { x, y, 10 }, down[3] = { 0, 0, -1 };
+    size_t t = 0;
+    const double hit = nearest(above, down, &t);
+    CHECK(hit > 0);
+    const double s[3] = { x, y, 10 - hit };
+    const double eye[3] = { x + vsh_test_rnd(-1, 1), y + vsh_test_rnd(-1, 1), vsh_test_rnd(3, 9) };
+    int truth;
+    const int c = tube_class(&map, &light, s, t, eye, &truth);
+    blocked_rays += truth == VSH_RT_CLASSIFY_SHADOWED;
+    decided += c != VSH_RT_CLASSIFY_UNDECIDED;
+    wrong += c != VSH_RT_CLASSIFY_UNDECIDED && c != truth;
+  }
+  printf("valley floor: %d of 4000 rays blocked by the other side, decided %d, wrong %d\n",
+         blocked_rays, decided, wrong);
+  CHECK(blocked_rays > 100); /* the case this guards exists */
+  CHECK(wrong == 0);
+  vsh_rt_classify_free(&map);
+}
+
+/* Surface points within 1e-10 of any edge of the terrain (its gentle
+ * valleys among them, which LIT (c) accepts) under a tilted light: every
+ * decided tube agrees with the exact ray from its offset origin. */
+static void test_terrain_edges(void)
+{
+  make_scene(1);
+  const vsh_rt_light light = make_light(VSH_RT_DIRECTIONAL);
+  vsh_rt_classify_map map;
+  CHECK(vsh_rt_classify_build(&map, &light, tris, flags, placement, count, 512) == 0);
+  const size_t first = count - 24 * 16 * 2; /* the terrain's triangles */
+  int wrong = 0, decided = 0;
+  for (int k = 0; k < 6000; ++k) {
+    const size_t t = first + (size_t)vsh_test_rnd(0, (double)(count - first) - 1e-9);
+    const int m = (int)vsh_test_rnd(0, 3 - 1e-9);
+    const double *a = tris + 9 * t + 3 * m, *b = tris + 9 * t + 3 * ((m + 1) % 3);
+    const double *c = tris + 9 * t + 3 * ((m + 2) % 3), u = vsh_test_rnd(0.01, 0.99);
+    double s[3];
+    for (int r = 0; r < 3; ++r) {
+      s[r] = a[r] + u * (b[r] - a[r]);
+      s[r] += 1e-10 * (c[r] - s[r]); /* just inside triangle t */
+    }
+    const double eye[3] = { vsh_test_rnd(-9, 9), vsh_test_rnd(-9, 9), vsh_test_rnd(2, 9) };
+    int truth;
+    const int cls = tube_class(&map, &light, s, t, eye, &truth);
+    decided += cls != VSH_RT_CLASSIFY_UNDECIDED;
+    wrong += cls != VSH_RT_CLASSIFY_UNDECIDED && cls != truth;
+  }
+  printf("terrain edges: decided %d of 6000, wrong %d\n", decided, wrong);
+  CHECK(wrong == 0);
+  CHECK(decided > 2000);
+  vsh_rt_classify_free(&map);
+}
+
 static void test_degenerate(void)
 {
   vsh_rt_light light = make_light(VSH_RT_DIRECTIONAL);
@@ -427,6 +547,8 @@ int main(void)
 {
   test_agrees_with_rays();
   test_blocks_agree_with_rays();
+  test_valley_floor();
+  test_terrain_edges();
   test_degenerate();
   return vsh_check_report("rt_classify");
 }

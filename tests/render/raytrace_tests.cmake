@@ -80,10 +80,12 @@ set_tests_properties(render.raytrace.soft PROPERTIES LABELS "render" TIMEOUT 120
 # The classifier (classify, on by default): each case's visibility equals
 # classify=0's (every pixel traced) in every pixel, its maps are built once
 # per light over the camera orbit, and it leaves less than the case's
-# fraction of (pixel, light) pairs to rays. Budget: 20 s.
+# fraction of (pixel, light) pairs to rays (elevation's lit side needs
+# LIT (c), the single layer: without it every pixel is traced). Budget: 25 s.
 add_test(NAME render.raytrace.classify
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_raytrace_classify.py
           --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/raytrace-classify
           --case scivis/isosurface:0:0.7 --case scivis/isosurface:1:0.75
-          --case cad/table-parts:0:0.45 --case basic/sphere-spot:0:0.3)
+          --case cad/table-parts:0:0.45 --case basic/sphere-spot:0:0.3
+          --case scivis/elevation:0:0.3)
 set_tests_properties(render.raytrace.classify PROPERTIES LABELS "render" TIMEOUT 300)

@@ -184,7 +184,8 @@ def caching(out):
 
     rays0, builds0, commits0 = frame("first")
     meshes = renderer.GetActors().GetNumberOfItems()
-    expect(rays0 > 320 * 240 // 4 and builds0 == meshes and commits0 == 1,
+    # The classifier decides most pixels without rays; some are traced.
+    expect(rays0 > 1000 and builds0 == meshes and commits0 == 1,
            f"first frame traces and builds each of the {meshes} meshes once")
     for k in range(3):
         rays, builds, commits = frame(f"still {k}")

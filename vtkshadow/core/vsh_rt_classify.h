@@ -22,7 +22,11 @@
  *            of their triangles over it (vsh_rt_classify_cover.c says how
  *            the union is proved whole: no contour edge crosses it);
  *   rest     the smallest key over the texel of every surface (caster,
- *            translucent or only drawn) not in full's plane.
+ *            translucent or only drawn) not in full's plane;
+ *   sheet    where one LAYER of one placement's opaque triangles is
+ *            alone near the texel (vsh_rt_classify_sheet.c): the smallest
+ *            key over the texel of every other surface, its other layers
+ *            included (-inf: no such layer).
  *
  * A pixel's surface point is not known to the map: the depth buffer puts
  * it on a short segment of the pixel's ray (the tracer's depth interval)
@@ -44,6 +48,18 @@
  *             edge-on), so the ray's origin is on the light's side of P,
  *             its ray moves away from P and from everything in P's plane,
  *             and everything else is behind it.
+ *   LIT (c)   every texel of the footprint either passes LIT (a) or has
+ *             a layer whose sheet is farther than the tube: the pixel's
+ *             surface is then on that layer, which over the texel is one
+ *             sheet, crossed by none of its placement's contour edges,
+ *             the footprint clear of every edge where the layer bends
+ *             towards the light (concave), every triangle of the layer
+ *             facing the light by VSH_RT_CLASSIFY_MIN_COS;
+ *             the camera sees the side facing the light (the 8 x 8 texel
+ *             block's box of those triangles' normals against every view
+ *             direction). The ray's origin is then on the light's side of
+ *             the layer, and the ray, one point of the light's image
+ *             plane, meets the layer only once: where it started.
  *   else      undecided: the tracer traces it.
  *
  * Keys: z (distance along the light's direction) for a directional light,
@@ -82,11 +98,11 @@ extern "C" {
 #define VSH_RT_CLASSIFY_LIT 1
 #define VSH_RT_CLASSIFY_OUTSIDE_CONE 2 /* a spot light's cone misses the whole tube */
 
-/* One texel's facts (one cache line holds three texels; the classifier
- * reads them together). */
+/* One texel's facts (24 bytes; the classifier reads neighbours together). */
 typedef struct vsh_rt_classify_texel {
   float near_key, full_far, rest, cover_far;
-  int full; /* the plane group (vsh_rt_classify_map.group) of full, or -1 */
+  float sheet; /* coarse: the smallest over the block of max(near_key, sheet) */
+  int full;    /* the plane group (vsh_rt_classify_map.group) of full, or -1 */
 } vsh_rt_classify_texel;
 
 typedef struct vsh_rt_classify_face {
@@ -100,6 +116,17 @@ typedef struct vsh_rt_classify_face {
    * rest, in full_far the largest key a shadow rule accepts (min of
    * full_far and cover_far), full the group every texel shares (or -1). */
   vsh_rt_classify_texel *coarse;
+  /* Per 8 x 8 block, the box (min x, y, z, max x, y, z) of the unit
+   * normals, turned towards the light, of the layers LIT (c) may accept. */
+  float *normal_box;
+  /* Per texel, 1 where LIT (c)'s layer bends towards the light along an
+   * edge across it: a footprint there must keep clear of the concave
+   * edges listed for its block (bend_list[bend_start[b] ..
+   * bend_start[b + 1]), indices into bends: 5 doubles each, the edge's
+   * projected ends u0 v0 u1 v1 and its margin). */
+  unsigned char *bent;
+  int *bend_start, *bend_list;
+  double *bends;
 } vsh_rt_classify_face;
 
 typedef struct vsh_rt_classify_map {

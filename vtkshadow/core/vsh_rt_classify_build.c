@@ -2,7 +2,7 @@
  * faces a light needs, and the order of its stages: plane groups and
  * contour edges (vsh_rt_classify_cover.c), then per face near, full and
  * union cover, then rest, which depends on each texel's final full
- * (vsh_rt_classify_raster.c). */
+ * (vsh_rt_classify_raster.c), then the sheets (vsh_rt_classify_sheet.c). */
 #include "vsh_rt_classify.h"
 #include "vsh_rt_classify_internal.h"
 
@@ -116,12 +116,20 @@ static int allocate(vsh_rt_classify_face *f)
   const size_t n = (size_t)f->n * (size_t)f->n;
   f->texels = malloc(n * sizeof *f->texels);
   f->coarse = malloc((n / 64 + 1) * sizeof *f->coarse);
-  if (!f->texels || !f->coarse) {
+  f->normal_box = malloc((n / 64 + 1) * 6 * sizeof *f->normal_box);
+  f->bent = calloc(n, 1);
+  if (!f->texels || !f->coarse || !f->normal_box || !f->bent) {
     return 1;
   }
-  const vsh_rt_classify_texel empty = { INFINITY, INFINITY, INFINITY, INFINITY, -1 };
+  const vsh_rt_classify_texel empty = { INFINITY, INFINITY, INFINITY, INFINITY, -INFINITY, -1 };
   for (size_t x = 0; x < n; ++x) {
     f->texels[x] = empty;
+  }
+  for (size_t b = 0; b < n / 64 + 1; ++b) {
+    for (int r = 0; r < 3; ++r) {
+      f->normal_box[6 * b + (size_t)r] = INFINITY;
+      f->normal_box[6 * b + 3 + (size_t)r] = -INFINITY;
+    }
   }
   return 0;
 }
@@ -132,9 +140,12 @@ static void summarize(vsh_rt_classify_face *f)
   const size_t blocks = (size_t)(f->n / 8) * (size_t)(f->n / 8);
   for (size_t b = 0; b < blocks; ++b) {
     const vsh_rt_classify_texel *t = f->texels + 64 * b;
-    vsh_rt_classify_texel c = { INFINITY, -INFINITY, INFINITY, 0, t[0].full };
+    vsh_rt_classify_texel c = { INFINITY, -INFINITY, INFINITY, 0, INFINITY, t[0].full };
     for (int k = 0; k < 64; ++k) {
       c.near_key = fminf(c.near_key, t[k].near_key);
+      /* A bent texel's sheet needs its footprint: not at this level. */
+      c.sheet = fminf(c.sheet, fmaxf(t[k].near_key, f->bent[64 * b + (size_t)k] ? -INFINITY
+                                                                                 : t[k].sheet));
       c.rest = fminf(c.rest, t[k].rest);
       c.full_far = fmaxf(c.full_far, fminf(t[k].full >= 0 ? t[k].full_far : INFINITY, t[k].cover_far));
       c.full = t[k].full == c.full ? c.full : -1;
@@ -142,6 +153,38 @@ static void summarize(vsh_rt_classify_face *f)
     c.cover_far = c.full_far; /* the shadow rule reads either */
     f->coarse[b] = c;
   }
+}
+
+/* The stages after the faces are placed: per triangle its light-facing
+ * normal, plane group and edges; per face near, full and union cover,
+ * rest (which reads the final full), and LIT (c)'s sheets. */
+static int build_faces(vsh_rt_classify_map *map, const int *placements)
+{
+  const size_t count = map->count, texels = (size_t)map->face[0].n * (size_t)map->face[0].n;
+  unsigned char *contour = malloc(count ? 3 * count : 1), *facing = malloc(count ? count : 1);
+  unsigned char *crossed = malloc(texels);
+  double *normals = malloc((count ? 3 * count : 1) * sizeof *normals);
+  int *partner = malloc((count ? 3 * count : 1) * sizeof *partner);
+  int failed = !contour || !facing || !crossed || !normals || !partner;
+  if (!failed) {
+    vsh_rtc_light_normals(map, normals, facing);
+    failed = vsh_rtc_plane_groups(map) || vsh_rtc_contours(map, placements, normals, contour, partner);
+  }
+  const vsh_rtc_layer_input in = { placements, normals, facing, partner, contour, crossed };
+  for (int k = 0; k < map->faces && !failed; ++k) {
+    memset(crossed, 0, texels);
+    failed = vsh_rtc_cover_face(map, &map->face[k], placements, contour, crossed);
+    for (size_t t = 0; t < count && !failed; ++t) {
+      vsh_rtc_rasterize(map, &map->face[k], t, 1, NULL);
+    }
+    failed = failed || vsh_rtc_sheet_face(map, &map->face[k], &in);
+  }
+  free(contour);
+  free(facing);
+  free(crossed);
+  free(normals);
+  free(partner);
+  return failed;
 }
 
 int vsh_rt_classify_build(vsh_rt_classify_map *map, const vsh_rt_light *light,
@@ -193,16 +236,7 @@ int vsh_rt_classify_build(vsh_rt_classify_map *map, const vsh_rt_light *light,
       }
     }
   }
-  unsigned char *contour = malloc(count ? 3 * count : 1);
-  int failed = !contour || vsh_rtc_plane_groups(map) || vsh_rtc_contours(map, placements, contour);
-  for (int k = 0; k < map->faces && !failed; ++k) {
-    failed = vsh_rtc_cover_face(map, &map->face[k], placements, contour);
-    for (size_t t = 0; t < count && !failed; ++t) {
-      vsh_rtc_rasterize(map, &map->face[k], t, 1, NULL);
-    }
-  }
-  free(contour);
-  if (failed) {
+  if (build_faces(map, placements)) {
     return 1;
   }
   for (int k = 0; k < map->faces; ++k) {
@@ -218,6 +252,11 @@ void vsh_rt_classify_free(vsh_rt_classify_map *map)
   for (int k = 0; k < 6; ++k) {
     free(map->face[k].texels);
     free(map->face[k].coarse);
+    free(map->face[k].normal_box);
+    free(map->face[k].bent);
+    free(map->face[k].bend_start);
+    free(map->face[k].bend_list);
+    free(map->face[k].bends);
   }
   free(map->triangles);
   free(map->flags);
@@ -230,7 +269,8 @@ size_t vsh_rt_classify_bytes(const vsh_rt_classify_map *map)
 {
   size_t bytes = map->count * (9 * sizeof(double) + 1 + sizeof(int));
   for (int k = 0; k < map->faces; ++k) {
-    bytes += (size_t)map->face[k].n * (size_t)map->face[k].n * sizeof(vsh_rt_classify_texel) * 65 / 64;
+    const size_t texels = (size_t)map->face[k].n * (size_t)map->face[k].n;
+    bytes += texels * sizeof(vsh_rt_classify_texel) * 65 / 64 + texels / 64 * 6 * sizeof(float);
   }
   return bytes;
 }

@@ -44,12 +44,9 @@ int vsh_rtc_plane_groups(vsh_rt_classify_map *map)
   size_t n = 0;
   for (size_t t = 0; t < map->count; ++t) {
     const double *v = map->triangles + 9 * t;
-    double e1[3], e2[3], nrm[3];
-    vsh_vec3_sub(v + 3, v, e1);
-    vsh_vec3_sub(v + 6, v, e2);
-    vsh_vec3_cross(e1, e2, nrm);
+    double nrm[3];
     map->group[t] = (int)t;
-    if (!(vsh_vec3_normalize(nrm, nrm) > 0)) {
+    if (!(vsh_rtc_unit_normal(map, t, nrm) > 0)) {
       continue; /* degenerate: a group of its own */
     }
     /* One sign per plane: the first clearly non-zero component positive. */
@@ -123,10 +120,67 @@ static int folded(const vsh_rt_classify_map *map, const edge *e, const double c2
   return !(s1 * s2 < 0) || fabs(s1) <= tiny || fabs(s2) <= tiny;
 }
 
-int vsh_rtc_contours(const vsh_rt_classify_map *map, const int *placements,
-                     unsigned char *contour)
+/* How far a ray's origin, offset by eps along the unit normal n (turned
+ * towards the light, direction l) off its plane, may see the neighbour
+ * across a concave edge rise, in eps: the origin's column moves eps
+ * sin(theta) sideways, where the neighbour's height (along l) rises over
+ * n's plane by at most that times g = |grad h1 - grad h| (h: height along
+ * l over the plane across l, grad h = -(n - (n.l) l) / (n.l)), while the
+ * origin stands eps / cos(theta) above n's plane along l. Returns
+ * sin(theta) cos(theta) g: below 1 the origin stays above the neighbour. */
+static double rise_over_clearance(const double n[3], const double n1[3], const double l[3])
 {
-  memset(contour, 1, 3 * map->count);
+  const double c = vsh_vec3_dot(n, l), c1 = vsh_vec3_dot(n1, l);
+  if (!(c > 0) || !(c1 > 0)) {
+    return HUGE_VAL;
+  }
+  double across[3], g[3];
+  for (int r = 0; r < 3; ++r) {
+    across[r] = n[r] - c * l[r];
+    g[r] = (n1[r] - c1 * l[r]) / c1 - across[r] / c;
+  }
+  return vsh_vec3_length(across) * c * vsh_vec3_length(g);
+}
+
+/* Whether the unfolded edge shared by e's and f's triangles bends towards
+ * the light enough to matter: either neighbour's far vertex on the light's
+ * side of the other's plane (by more than 1e-9 of the way), and the bend
+ * sharp enough that an origin offset from one triangle could stand below
+ * the other (rise_over_clearance above 1/4: a margin of 4 for the float
+ * rounding of the origin and of Embree's triangles). A gently curved
+ * surface's valleys are smooth. */
+static int concave(const vsh_rt_classify_map *map, const double *normals, const edge *e,
+                   const edge *f)
+{
+  const double *n0 = normals + 3 * (e->slot / 3), *n1 = normals + 3 * (f->slot / 3);
+  double d0[3], d1[3];
+  vsh_vec3_sub(f->third, e->a, d1);
+  vsh_vec3_sub(e->third, e->a, d0);
+  if (!(vsh_vec3_dot(n0, d1) > 1e-9 * vsh_vec3_length(d1) ||
+        vsh_vec3_dot(n1, d0) > 1e-9 * vsh_vec3_length(d0))) {
+    return 0;
+  }
+  double l[3];
+  if (map->light.kind == VSH_RT_DIRECTIONAL) {
+    memcpy(l, map->light.direction, sizeof l);
+  } else {
+    double middle[3];
+    for (int r = 0; r < 3; ++r) {
+      middle[r] = 0.5 * (e->a[r] + e->b[r]);
+    }
+    vsh_vec3_sub(map->light.position, middle, l);
+    vsh_vec3_normalize(l, l);
+  }
+  return rise_over_clearance(n0, n1, l) > 0.25 || rise_over_clearance(n1, n0, l) > 0.25;
+}
+
+int vsh_rtc_contours(const vsh_rt_classify_map *map, const int *placements,
+                     const double *normals, unsigned char *contour, int *partner)
+{
+  memset(contour, VSH_RTC_CONTOUR, 3 * map->count);
+  for (size_t k = 0; k < 3 * map->count; ++k) {
+    partner[k] = -1;
+  }
   edge *edges = malloc((map->count ? 3 * map->count : 1) * sizeof *edges);
   if (!edges) {
     return 1;
@@ -155,7 +209,11 @@ int vsh_rtc_contours(const vsh_rt_classify_map *map, const int *placements,
       ++b;
     }
     if (b - a == 2 && !folded(map, &edges[a], edges[a + 1].third)) {
-      contour[edges[a].slot] = contour[edges[a + 1].slot] = 0;
+      const size_t s0 = edges[a].slot, s1 = edges[a + 1].slot;
+      contour[s0] = contour[s1] =
+        concave(map, normals, &edges[a], &edges[a + 1]) ? VSH_RTC_CONCAVE : VSH_RTC_SMOOTH;
+      partner[s0] = (int)(s1 / 3);
+      partner[s1] = (int)(s0 / 3);
     }
     a = b;
   }
@@ -163,21 +221,26 @@ int vsh_rtc_contours(const vsh_rt_classify_map *map, const int *placements,
   return 0;
 }
 
-/* The run's covered texels into cover_far, and the scratch cleared. */
-static void flush(vsh_rt_classify_face *face, vsh_rtc_scratch *s)
+/* The run's covered texels into cover_far (overlapped, bit 1, and no
+ * contour across, bit 2), the texels its contour or concave (bit 4) edges
+ * cross into `crossed`, and the scratch cleared. */
+static void flush(vsh_rt_classify_face *face, vsh_rtc_scratch *s, unsigned char *crossed)
 {
   for (size_t k = 0; k < s->count; ++k) {
     const size_t x = s->touched[k];
-    if (s->mark[x] == 1) {
+    if ((s->mark[x] & 3) == 1) {
       face->texels[x].cover_far = fminf(face->texels[x].cover_far, s->hi[x]);
     }
+    crossed[x] |= (unsigned char)(((s->mark[x] & 2) ? VSH_RTC_CROSSED_CONTOUR : 0) |
+                                  ((s->mark[x] & 4) ? VSH_RTC_CROSSED_CONCAVE : 0));
     s->mark[x] = 0;
   }
   s->count = 0;
 }
 
 int vsh_rtc_cover_face(vsh_rt_classify_map *map, vsh_rt_classify_face *face,
-                       const int *placements, const unsigned char *contour)
+                       const int *placements, const unsigned char *contour,
+                       unsigned char *crossed)
 {
   const size_t texels = (size_t)face->n * (size_t)face->n;
   vsh_rtc_scratch s;
@@ -205,13 +268,15 @@ int vsh_rtc_cover_face(vsh_rt_classify_map *map, vsh_rt_classify_face *face,
     }
     for (size_t t = start; t < end; ++t) {
       for (int k = 0; k < 3 && (map->flags[t] & VSH_RT_CLASSIFY_CASTS); ++k) {
-        if (contour[3 * t + (size_t)k]) {
+        const unsigned char c = contour[3 * t + (size_t)k];
+        if (c != VSH_RTC_SMOOTH) {
           const double *v = map->triangles + 9 * t;
-          vsh_rtc_mark_segment(map, face, v + 3 * k, v + 3 * ((k + 1) % 3), margin, &s);
+          vsh_rtc_mark_segment(map, face, v + 3 * k, v + 3 * ((k + 1) % 3), margin,
+                               c == VSH_RTC_CONTOUR ? 2 : 4, &s);
         }
       }
     }
-    flush(face, &s);
+    flush(face, &s, crossed);
     start = end;
   }
   free(s.hi);

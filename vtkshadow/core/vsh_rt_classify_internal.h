@@ -41,6 +41,18 @@ static inline size_t vsh_rtc_texel_index(const vsh_rt_classify_face *face, int i
   return 64 * block + (size_t)((j & 7) * 8 + (i & 7));
 }
 
+/* Triangle t's unit normal (its winding's) into out; returns the cross
+ * product's length, 0 for a degenerate triangle (out = 0). */
+static inline double vsh_rtc_unit_normal(const vsh_rt_classify_map *map, size_t t, double out[3])
+{
+  const double *v = map->triangles + 9 * t;
+  double e1[3], e2[3];
+  vsh_vec3_sub(v + 3, v, e1);
+  vsh_vec3_sub(v + 6, v, e2);
+  vsh_vec3_cross(e1, e2, out);
+  return vsh_vec3_normalize(out, out);
+}
+
 /* The key of depth z along a face's axis: nearer the light is smaller. */
 static inline double vsh_rt_classify_key(const vsh_rt_classify_face *face, double z)
 {
@@ -64,13 +76,26 @@ typedef struct polygon {
 
 /* Per-face scratch of one placement's union cover: the texels its opaque
  * triangles overlap (mark bit 1) with their largest far key, and those its
- * contour edges cross (bit 2). */
+ * contour edges (bit 2) or concave edges (bit 4) cross. */
 typedef struct vsh_rtc_scratch {
   float *hi;
   unsigned char *mark;
   size_t *touched;
   size_t count;
 } vsh_rtc_scratch;
+
+/* Whether texel [u0, u1] x [v0, v1] overlaps the polygon, the texel
+ * grown by the polygon's margin (separating axes). */
+int vsh_rtc_overlaps(const polygon *p, double u0, double u1, double v0, double v1);
+
+/* The polygon's key range over the texel (grown by its margin). */
+void vsh_rtc_key_range(const polygon *p, double u0, double u1, double v0, double v1, double *lo,
+                       double *hi);
+
+/* The texels [range[0], range[1]] x [range[2], range[3]] that a (u, v) box
+ * grown by m covers, clamped to the face; 0 when it misses the face. */
+int vsh_rtc_texel_range(const vsh_rt_classify_face *face, double umin, double umax, double vmin,
+                        double vmax, double m, int range[4]);
 
 float vsh_rtc_round_down(double x);
 float vsh_rtc_round_up(double x);
@@ -85,12 +110,13 @@ int vsh_rtc_project(const vsh_rt_classify_map *map, const vsh_rt_classify_face *
 void vsh_rtc_rasterize(vsh_rt_classify_map *map, vsh_rt_classify_face *face, size_t t, int pass,
                        vsh_rtc_scratch *scratch);
 
-/* Mark (bit 2) every texel the segment a-b crosses, each texel grown by
- * at least `margin` (the largest margin its run's triangles overlap
- * texels with: a union's boundary within any overlap's reach is marked). */
+/* Mark (with `bits`) every texel the segment a-b crosses, each texel
+ * grown by at least `margin` (the largest margin its run's triangles
+ * overlap texels with: a union's boundary within any overlap's reach is
+ * marked). */
 void vsh_rtc_mark_segment(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
                           const double a[3], const double b[3], double margin,
-                          vsh_rtc_scratch *scratch);
+                          unsigned char bits, vsh_rtc_scratch *scratch);
 
 /* The margin triangle t's projection into the face overlaps texels with
  * (0 when it is not in the face). */
@@ -101,17 +127,51 @@ double vsh_rtc_margin(const vsh_rt_classify_map *map, const vsh_rt_classify_face
  * memory. */
 int vsh_rtc_plane_groups(vsh_rt_classify_map *map);
 
-/* The contour edges of each run of one placement's opaque casters under
- * the map's light: 3 flags per triangle (edge k from vertex k to k + 1),
- * 1 where the edge bounds the run's projected union (on one triangle only,
- * on more than two, or folded: both neighbours on one side of the plane
- * through the edge and the light). Non-zero when out of memory. */
+/* Each triangle's unit normal turned towards the light (3 doubles per
+ * triangle) and whether it faces the light by VSH_RT_CLASSIFY_MIN_COS over
+ * the whole triangle (facing, 1 per triangle). */
+void vsh_rtc_light_normals(const vsh_rt_classify_map *map, double *normals,
+                           unsigned char *facing);
+
+/* Per edge (3 per triangle, edge k from vertex k to k + 1) of the opaque
+ * casters: */
+#define VSH_RTC_SMOOTH 0  /* two neighbours, unfolded, not bent towards the light */
+#define VSH_RTC_CONTOUR 1 /* bounds the run's projected union: on one triangle
+                           * only, on more than two, or folded (both
+                           * neighbours on one side of the plane through
+                           * the edge and the light) */
+#define VSH_RTC_CONCAVE 2 /* unfolded, but one neighbour bends towards the
+                           * light over the other's plane */
+
+/* Each run's (one placement's) edges, classed as above, and for the
+ * unfolded ones the triangle across (partner, -1 elsewhere). Non-zero
+ * when out of memory. */
 int vsh_rtc_contours(const vsh_rt_classify_map *map, const int *placements,
-                     unsigned char *contour);
+                     const double *normals, unsigned char *contour, int *partner);
 
 /* The union cover of every run of one placement into the face's cover_far
- * (pass 0 of its triangles included). */
+ * (pass 0 of its triangles included), and per texel (crossed) whether a
+ * contour or a concave edge of any run crosses it (bits below). */
+#define VSH_RTC_CROSSED_CONTOUR 1
+#define VSH_RTC_CROSSED_CONCAVE 2
 int vsh_rtc_cover_face(vsh_rt_classify_map *map, vsh_rt_classify_face *face,
-                       const int *placements, const unsigned char *contour);
+                       const int *placements, const unsigned char *contour,
+                       unsigned char *crossed);
+
+/* Per-triangle facts LIT (c)'s layers are found from. */
+typedef struct vsh_rtc_layer_input {
+  const int *placements;
+  const double *normals;       /* vsh_rtc_light_normals */
+  const unsigned char *facing; /* vsh_rtc_light_normals */
+  const int *partner;          /* vsh_rtc_contours */
+  const unsigned char *contour; /* vsh_rtc_contours */
+  const unsigned char *crossed; /* vsh_rtc_cover_face, this face's */
+} vsh_rtc_layer_input;
+
+/* LIT (c)'s facts of one face: every texel's sheet, the blocks' normal
+ * boxes and the concave edges near each block (vsh_rt_classify_sheet.c).
+ * Non-zero when out of memory. */
+int vsh_rtc_sheet_face(const vsh_rt_classify_map *map, vsh_rt_classify_face *face,
+                       const vsh_rtc_layer_input *in);
 
 #endif

@@ -139,7 +139,7 @@ int vsh_rtc_project(const vsh_rt_classify_map *map, const vsh_rt_classify_face *
 /* Whether the texel [u0, u1] x [v0, v1] overlaps the polygon (separating
  * axes: the texel's two and the polygon's edge normals), the texel grown
  * by the polygon's margin. */
-static int overlaps(const polygon *p, double u0, double u1, double v0, double v1)
+int vsh_rtc_overlaps(const polygon *p, double u0, double u1, double v0, double v1)
 {
   const double m = p->margin;
   u0 -= m;
@@ -190,8 +190,8 @@ static int covers(const polygon *p, double u0, double u1, double v0, double v1)
 
 /* The polygon's key range over the texel: its plane at the texel's corners,
  * clamped by its vertices' keys (both bound it there). */
-static void key_range(const polygon *p, double u0, double u1, double v0, double v1, double *lo,
-                      double *hi)
+void vsh_rtc_key_range(const polygon *p, double u0, double u1, double v0, double v1, double *lo,
+                       double *hi)
 {
   *lo = p->key_min;
   *hi = p->key_max;
@@ -229,7 +229,7 @@ float vsh_rtc_round_up(double x)
 
 /* The texel range a (u, v) box grown by m covers, clamped to the face;
  * 0 when it misses the face. */
-static int texel_range(const vsh_rt_classify_face *face, double umin, double umax, double vmin,
+int vsh_rtc_texel_range(const vsh_rt_classify_face *face, double umin, double umax, double vmin,
                        double vmax, double m, int range[4])
 {
   const double size = face->texel;
@@ -267,7 +267,7 @@ void vsh_rtc_rasterize(vsh_rt_classify_map *map, vsh_rt_classify_face *face, siz
   const double *tri = map->triangles + 9 * t;
   int range[4];
   if (!vsh_rtc_project(map, face, tri, &p) ||
-      !texel_range(face, p.umin, p.umax, p.vmin, p.vmax, p.margin, range)) {
+      !vsh_rtc_texel_range(face, p.umin, p.umax, p.vmin, p.vmax, p.margin, range)) {
     return;
   }
   const int flags = map->flags[t], group = map->group[t];
@@ -278,12 +278,12 @@ void vsh_rtc_rasterize(vsh_rt_classify_map *map, vsh_rt_classify_face *face, siz
     const double v0 = face->v0 + j * size, v1 = v0 + size;
     for (int i = range[0]; i <= range[1]; ++i) {
       const double u0 = face->u0 + i * size, u1 = u0 + size;
-      if (!overlaps(&p, u0, u1, v0, v1)) {
+      if (!vsh_rtc_overlaps(&p, u0, u1, v0, v1)) {
         continue;
       }
       const size_t x = vsh_rtc_texel_index(face, i, j);
       double lo, hi;
-      key_range(&p, u0, u1, v0, v1, &lo, &hi);
+      vsh_rtc_key_range(&p, u0, u1, v0, v1, &lo, &hi);
       if (pass == 1) {
         /* rest: everything but the full triangle's plane (opaque casters
          * in it cannot stop a ray leaving it). */
@@ -312,7 +312,7 @@ void vsh_rtc_rasterize(vsh_rt_classify_map *map, vsh_rt_classify_face *face, siz
 
 void vsh_rtc_mark_segment(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
                           const double a[3], const double b[3], double margin,
-                          vsh_rtc_scratch *scratch)
+                          unsigned char bits, vsh_rtc_scratch *scratch)
 {
   /* The segment as a two-vertex polygon through the same clip and
    * projection as the triangles. */
@@ -323,7 +323,7 @@ void vsh_rtc_mark_segment(const vsh_rt_classify_map *map, const vsh_rt_classify_
     return;
   }
   p.margin = fmax(p.margin, margin);
-  if (!texel_range(face, p.umin, p.umax, p.vmin, p.vmax, p.margin, range)) {
+  if (!vsh_rtc_texel_range(face, p.umin, p.umax, p.vmin, p.vmax, p.margin, range)) {
     return;
   }
   /* The segment's line: through its clipped polygon's two vertices
@@ -351,7 +351,7 @@ void vsh_rtc_mark_segment(const vsh_rt_classify_map *map, const vsh_rt_classify_
       const double lo = fmin(fmin(c[0], c[1]), fmin(c[2], c[3]));
       const double hi = fmax(fmax(c[0], c[1]), fmax(c[2], c[3]));
       if (lo <= 0 && hi >= 0) {
-        touch(scratch, vsh_rtc_texel_index(face, i, j), 2);
+        touch(scratch, vsh_rtc_texel_index(face, i, j), bits);
       }
     }
   }

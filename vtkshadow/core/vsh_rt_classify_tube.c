@@ -89,6 +89,11 @@ static int choose_face(const vsh_rt_classify_map *map, const hull *h)
 typedef struct footprint {
   double umin, umax, vmin, vmax;
   double key_lo, key_hi;
+  /* A tube's (two points) projected ends, and how far its radius reaches
+   * beyond the segment between them (a straight line stays straight
+   * through the projection). */
+  int segment;
+  double end[2][2], grow;
 } footprint;
 
 static int locate(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face, const hull *h,
@@ -117,6 +122,9 @@ static int locate(const vsh_rt_classify_map *map, const vsh_rt_classify_face *fa
       const double s = 1.0 + fabs(x) + fabs(y);
       spread = s > spread ? s : spread;
     }
+    if (k < 2) {
+      out->end[k][0] = x, out->end[k][1] = y;
+    }
     ulo = x < ulo ? x : ulo;
     uhi = x > uhi ? x : uhi;
     vlo = y < vlo ? y : vlo;
@@ -126,6 +134,8 @@ static int locate(const vsh_rt_classify_map *map, const vsh_rt_classify_face *fa
   zhi += h->radius;
   /* A point moved by r moves its projection by at most r (1 + |u| + |v|) / z. */
   const double grow = face->perspective ? h->radius * spread / zlo : h->radius;
+  out->segment = h->count == 2;
+  out->grow = grow;
   out->umin = ulo - grow;
   out->umax = uhi + grow;
   out->vmin = vlo - grow;
@@ -175,15 +185,108 @@ static int faces_light(const vsh_rt_classify_map *map, const hull *h, int f)
   return lowest - h->radius >= VSH_RT_CLASSIFY_MIN_COS * (farthest + h->radius);
 }
 
+/* LIT (c)'s camera side: every normal in the block's box (turned towards
+ * the light) against every view direction of the hull, not nearly
+ * edge-on: the camera sees the layer's side that faces the light. */
+static int sees_lit_side(const float box[6], const hull *h)
+{
+  if (!(box[0] <= box[3] && box[1] <= box[4] && box[2] <= box[5])) {
+    return 0; /* no layer there */
+  }
+  for (int k = 0; k < h->views; ++k) {
+    double most = 0; /* the largest n.d over the box */
+    for (int r = 0; r < 3; ++r) {
+      const double d = h->dirs[k][r];
+      most += d * (d > 0 ? box[3 + r] : box[r]);
+    }
+    if (!(most < -1e-3)) {
+      return 0;
+    }
+  }
+  return 1;
+}
+
+/* Whether segment (a, b) meets the box [u0, u1] x [v0, v1] (Liang-Barsky
+ * clipping of the segment's parameter to each slab). */
+static int segment_meets_box(const double a[2], const double b[2], double u0, double u1,
+                             double v0, double v1)
+{
+  double t0 = 0, t1 = 1;
+  const double d[2] = { b[0] - a[0], b[1] - a[1] }, lo[2] = { u0, v0 }, hi[2] = { u1, v1 };
+  for (int r = 0; r < 2; ++r) {
+    if (d[r] == 0) {
+      if (a[r] < lo[r] || a[r] > hi[r]) {
+        return 0;
+      }
+      continue;
+    }
+    double ta = (lo[r] - a[r]) / d[r], tb = (hi[r] - a[r]) / d[r];
+    if (ta > tb) {
+      const double swap = ta;
+      ta = tb, tb = swap;
+    }
+    t0 = ta > t0 ? ta : t0;
+    t1 = tb < t1 ? tb : t1;
+  }
+  return t0 <= t1;
+}
+
+/* Distance from point p to segment (a, b) in the plane. */
+static double point_segment_distance(const double p[2], const double a[2], const double b[2])
+{
+  const double du = b[0] - a[0], dv = b[1] - a[1], l2 = du * du + dv * dv;
+  double t = l2 > 0 ? ((p[0] - a[0]) * du + (p[1] - a[1]) * dv) / l2 : 0;
+  t = t < 0 ? 0 : (t > 1 ? 1 : t);
+  const double x = a[0] + t * du - p[0], y = a[1] + t * dv - p[1];
+  return sqrt(x * x + y * y);
+}
+
+/* Whether segments (a, b) and (c, d) come within `reach` of each other
+ * (crossing, or an end within reach of the other segment). */
+static int segments_within(const double a[2], const double b[2], const double c[2],
+                           const double d[2], double reach)
+{
+  const double d1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  const double d2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+  const double d3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
+  const double d4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
+  if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
+      ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0))) {
+    return 1;
+  }
+  return !(point_segment_distance(a, c, d) > reach && point_segment_distance(b, c, d) > reach &&
+           point_segment_distance(c, a, b) > reach && point_segment_distance(d, a, b) > reach);
+}
+
+/* LIT (c) on a bent texel: the footprint keeps clear of every concave
+ * edge listed for its block (each grown by its margin), so the ray's
+ * origin and the surface point it left lie on one side of them (a tube:
+ * its projected segment, grown; a block: its box). */
+static int clear_of_bends(const vsh_rt_classify_face *face, long block, const footprint *fp)
+{
+  for (int k = face->bend_start[block]; k < face->bend_start[block + 1]; ++k) {
+    const double *e = face->bends + 5 * face->bend_list[k];
+    const int near = fp->segment ? segments_within(fp->end[0], fp->end[1], e, e + 2,
+                                                   2 * (fp->grow + e[4]))
+                                 : segment_meets_box(e, e + 2, fp->umin - e[4], fp->umax + e[4],
+                                                     fp->vmin - e[4], fp->vmax + e[4]);
+    if (near) {
+      return 0;
+    }
+  }
+  return 1;
+}
+
 /* The rules over texels [i0, i1] x [j0, j1] of the face, or over its 8 x
  * 8 blocks' summaries (`coarse`: conservative, a block's summary is the
- * worst of its texels): SHADOWED, LIT (a), and LIT (b)'s plane. */
+ * worst of its texels): SHADOWED, LIT (a), LIT (b)'s plane and LIT (c). */
 static int scan(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face, const hull *h,
-                const int range[4], int coarse, float key_lo, float key_hi)
+                const footprint *fp, const int range[4], int coarse, float key_lo, float key_hi)
 {
-  int shadowed = 1, lit = 1, plane = 1, full = -1;
+  int shadowed = 1, lit = 1, plane = 1, sheet = 1, full = -1;
+  long seen_box = -1; /* the last block whose normal box passed */
   const int n = coarse ? face->n >> 3 : face->n;
-  for (int j = range[2]; j <= range[3] && (shadowed || lit || plane); ++j) {
+  for (int j = range[2]; j <= range[3] && (shadowed || lit || plane || sheet); ++j) {
     for (int i = range[0]; i <= range[1]; ++i) {
       if (i < 0 || j < 0 || i >= n || j >= n) {
         /* Beyond a perspective face: not this face's. Beyond the
@@ -194,14 +297,21 @@ static int scan(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face
         shadowed = plane = 0;
         continue;
       }
-      const vsh_rt_classify_texel *t = coarse
-                                         ? &face->coarse[(size_t)j * (size_t)n + (size_t)i]
-                                         : &face->texels[vsh_rtc_texel_index(face, i, j)];
+      const long block = coarse ? (long)j * n + i : (long)(j >> 3) * (n >> 3) + (i >> 3);
+      const size_t x = coarse ? (size_t)j * (size_t)n + (size_t)i : vsh_rtc_texel_index(face, i, j);
+      const vsh_rt_classify_texel *t = coarse ? &face->coarse[x] : &face->texels[x];
       shadowed = shadowed && ((t->full >= 0 && t->full_far < key_lo) || t->cover_far < key_lo);
-      lit = lit && t->near_key > key_hi;
+      const int behind = t->near_key > key_hi;
+      lit = lit && behind;
+      if (sheet && !behind) {
+        sheet = t->sheet > key_hi &&
+                (block == seen_box || sees_lit_side(face->normal_box + 6 * block, h)) &&
+                (coarse || !face->bent[x] || clear_of_bends(face, block, fp));
+        seen_box = sheet ? block : seen_box;
+      }
       plane = plane && t->full >= 0 && t->rest > key_hi && (full < 0 || t->full == full);
       full = full < 0 ? t->full : full;
-      if (!(shadowed || lit || plane)) {
+      if (!(shadowed || lit || plane || sheet)) {
         return VSH_RT_CLASSIFY_UNDECIDED; /* every rule has failed */
       }
     }
@@ -209,7 +319,7 @@ static int scan(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face
   if (shadowed) {
     return VSH_RT_CLASSIFY_SHADOWED;
   }
-  if (lit || (plane && full >= 0 && faces_light(map, h, full))) {
+  if (lit || sheet || (plane && full >= 0 && faces_light(map, h, full))) {
     return VSH_RT_CLASSIFY_LIT;
   }
   return VSH_RT_CLASSIFY_UNDECIDED;
@@ -249,12 +359,12 @@ static int classify_hull(const vsh_rt_classify_map *map, const hull *h, int max_
     /* A large footprint: the blocks' summaries first, and only them when
      * reading every texel would cost more than tracing. */
     const int blocks[4] = { i0 >> 3, i1 >> 3, j0 >> 3, j1 >> 3 };
-    const int c = scan(map, face, h, blocks, 1, key_lo, key_hi);
+    const int c = scan(map, face, h, &fp, blocks, 1, key_lo, key_hi);
     if (c != VSH_RT_CLASSIFY_UNDECIDED || texels > VSH_RT_CLASSIFY_MAX_FINE_TEXELS) {
       return c;
     }
   }
-  return scan(map, face, h, range, 0, key_lo, key_hi);
+  return scan(map, face, h, &fp, range, 0, key_lo, key_hi);
 }
 
 int vsh_rt_classify_pixel(const vsh_rt_classify_map *map, const vsh_rt_classify_tube *tube)

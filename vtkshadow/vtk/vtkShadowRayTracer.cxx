@@ -156,8 +156,10 @@ struct Worker
   {
     return policy.empty() || (l < policy.size() && policy[l]);
   }
-  // This block's classes per light (UNDECIDED: per pixel).
+  // This block's classes per light (UNDECIDED: per pixel), and the whole
+  // 8 x 8 block's (its quarters' yield counts only what it left).
   signed char BlockDecided[Surface::MaxDecided];
+  signed char WholeDecided[Surface::MaxDecided];
   void Decide(const Surface& s, size_t l);
   void Refine(int x0, int y0, int x1, int y1);
   void RefinePixels(int x0, int y0, int x1, int y1);
@@ -226,6 +228,7 @@ void Worker::Refine(int x0, int y0, int x1, int y1)
   {
     return; // every pixel decided for every light
   }
+  std::copy_n(this->BlockDecided, Surface::MaxDecided, this->WholeDecided);
   const bool split = !this->Frame->Classify.empty() && x1 - x0 >= 3 && y1 - y0 >= 3;
   if (!split)
   {
@@ -401,8 +404,10 @@ bool Worker::ClassifyBlock(int x0, int y0, int x1, int y1, bool whole)
     {
       // Yield: the drawn pixels of whole blocks asked, those any block
       // (whole or quarter) decided.
+      const bool fresh = whole || l >= size_t(Surface::MaxDecided) ||
+        this->WholeDecided[l] == VSH_RT_CLASSIFY_UNDECIDED;
       this->Count.BlockAsked[l] += whole ? drawn : 0;
-      this->Count.BlockDecided[l] += c != VSH_RT_CLASSIFY_UNDECIDED ? drawn : 0;
+      this->Count.BlockDecided[l] += c != VSH_RT_CLASSIFY_UNDECIDED && fresh ? drawn : 0;
     }
     if (l < size_t(Surface::MaxDecided))
     {
