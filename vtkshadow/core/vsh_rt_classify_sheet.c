@@ -1,7 +1,9 @@
 /* vsh_rt_classify_sheet.c - LIT (c) of vsh_rt_classify.h: over each
  * texel, the LAYER of one placement's opaque triangles that a pixel's
  * surface may lie on, and the smallest key of every other surface there
- * (the texel's sheet).
+ * (the texel's sheet). The nearest layer also covers the texel whole, so
+ * its largest key there is a union cover (cover_far) for SHADOWED: the
+ * side of a blob away from the light, under its side towards it.
  *
  * One sheet: no contour edge of any placement crosses the texel (grown by
  * the margin; vsh_rt_classify_cover.c), so across it the number of a
@@ -108,7 +110,7 @@ static double key_at(const polygon *p, double u, double v)
 
 typedef struct overlap {
   int t;
-  float lo; /* the triangle's smallest key over the texel, rounded down */
+  float lo, hi; /* the triangle's key range over the texel, rounded outwards */
 } overlap;
 
 /* Everything one face's sheets are found from. */
@@ -166,26 +168,37 @@ static void connect_layer(const int *partner, const overlap *o, int k, int seed,
 }
 
 /* The texel's sheet (-inf: none) from its k overlaps, and its layer's
- * normals into the block's box. */
+ * normals into the block's box. One layer of opaque triangles, facing the
+ * light or not, covers the whole texel (no contour edge crosses it):
+ * `far`, its largest key there, is a union cover's far key (+inf: none). */
 static float texel_sheet(const vsh_rt_classify_map *map, const vsh_rtc_layer_input *in,
                          const sheet_lists *s, const overlap *o, int k, double u, double v,
-                         double tol, float box[6])
+                         double tol, float box[6], float *far)
 {
   unsigned char over[MAX_TEXEL_TRIANGLES], layer[MAX_TEXEL_TRIANGLES];
+  *far = INFINITY;
   const int seed = nearest_over(s, o, k, u, v, tol, over);
   if (seed < 0) {
     return -INFINITY;
   }
   connect_layer(in->partner, o, k, seed, layer);
-  float rest = INFINITY;
+  float rest = INFINITY, reach = -INFINITY;
+  int facing = 1;
   for (int e = 0; e < k; ++e) {
     const int t = o[e].t;
     if (!layer[e]) {
       rest = fminf(rest, o[e].lo);
-    } else if (!(map->flags[t] & VSH_RT_CLASSIFY_CASTS) || !in->facing[t] ||
-               (over[e] && e != seed)) {
-      return -INFINITY; /* not one layer of opaque triangles facing the light */
+      continue;
     }
+    if (!(map->flags[t] & VSH_RT_CLASSIFY_CASTS) || (over[e] && e != seed)) {
+      return -INFINITY; /* not one layer of opaque triangles */
+    }
+    facing = facing && in->facing[t];
+    reach = fmaxf(reach, o[e].hi);
+  }
+  *far = reach;
+  if (!facing) {
+    return -INFINITY;
   }
   for (int e = 0; e < k; ++e) {
     for (int r = 0; r < 3 && layer[e]; ++r) {
@@ -229,7 +242,7 @@ static int list_overlaps(const vsh_rt_classify_map *map, const vsh_rt_classify_f
           }
           double lo, hi;
           vsh_rtc_key_range(p, u0, u1, v0, v1, &lo, &hi);
-          s->list[cursor[x]++] = (overlap){ (int)t, vsh_rtc_round_down(lo) };
+          s->list[cursor[x]++] = (overlap){ (int)t, vsh_rtc_round_down(lo), vsh_rtc_round_up(hi) };
         }
       }
     }
@@ -356,9 +369,11 @@ int vsh_rtc_sheet_face(const vsh_rt_classify_map *map, vsh_rt_classify_face *fac
           continue;
         }
         float *box = face->normal_box + 6 * ((size_t)(j / 8) * (size_t)blocks + (size_t)(i / 8));
+        float far;
         face->texels[x].sheet =
           texel_sheet(map, in, &s, s.list + s.start[x], (int)k, face->u0 + (i + 0.5) * face->texel,
-                      face->v0 + (j + 0.5) * face->texel, tol, box);
+                      face->v0 + (j + 0.5) * face->texel, tol, box, &far);
+        face->texels[x].cover_far = fminf(face->texels[x].cover_far, far);
         face->bent[x] = (in->crossed[x] & VSH_RTC_CROSSED_CONCAVE) && face->texels[x].sheet > -INFINITY;
       }
     }
