@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """Run one third-party example program UNMODIFIED with vtkshadow injected.
 
-  run_example.py --example FILE --technique T --out PREFIX
+  run_example.py --example FILE --technique T[:KEY=VALUE,...] --out PREFIX
                  [--size 400x300] [--frames 3] [--sabotage hide|error|crash|light]
+
+T may carry technique settings, passed to enable_shadows by name (e.g.
+raytrace:classify=0).
 
 The example file is executed with runpy (cwd = its folder, sys.argv =
 [FILE]) after the toolkit has been patched:
@@ -191,11 +194,30 @@ def background_frame(window, renderers):
     return rgb
 
 
+def technique_spec(spec):
+    """TECH[:KEY=VALUE[,KEY=VALUE]...] -> (TECH, {KEY: number or text})."""
+    name, _, rest = spec.partition(":")
+    options = {}
+    for item in filter(None, rest.split(",")):
+        key, eq, value = item.partition("=")
+        if not eq or not key:
+            raise SystemExit("run_example.py: --technique %r: %r is not KEY=VALUE" % (spec, item))
+        try:
+            options[key] = int(value)
+        except ValueError:
+            try:
+                options[key] = float(value)
+            except ValueError:
+                options[key] = value
+    return name, options
+
+
 def enable_all(renderers, technique):
     import vtkshadow
+    name, options = technique_spec(technique)
     techs = []
     for r in renderers:
-        techs.append(vtkshadow.enable_shadows(r, technique=technique))
+        techs.append(vtkshadow.enable_shadows(r, technique=name, **options))
     return techs
 
 

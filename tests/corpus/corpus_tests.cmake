@@ -42,3 +42,13 @@ vtkshadow_corpus_negative(bound advanced.interpolateScalar3 bound --techniques r
 # still sees it lost.
 vtkshadow_corpus_negative(shadow basic.legendbox shadow
                           --techniques raytrace,none,csm --as csm=none)
+
+# raytrace's classifier changes no pixel of third-party programs: four vedo
+# examples (curvature-coloured mesh, boolean, extrusion, tubes of varying
+# radius) under raytrace and raytrace:classify=0, equal in every pixel, the
+# classifier's maps built in at least one. Budget: 30 s.
+add_test(NAME corpus.classify_identical
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/test_classify_identical.py
+          --python ${VTKSHADOW_BIN}/vtkshadow-python --out ${VTKSHADOW_CORPUS_OUT}/classify
+          advanced/measure_curvature basic/boolean basic/extrude basic/tube_radii)
+set_tests_properties(corpus.classify_identical PROPERTIES LABELS "corpus;render" TIMEOUT 300)
