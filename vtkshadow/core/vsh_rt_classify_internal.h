@@ -158,6 +158,14 @@ int vsh_rtc_cover_face(vsh_rt_classify_map *map, vsh_rt_classify_face *face,
                        const int *placements, const unsigned char *contour,
                        unsigned char *crossed);
 
+/* Whether segment (a, b) meets the box [u0, u1] x [v0, v1]. */
+int vsh_rtc_segment_meets_box(const double a[2], const double b[2], double u0, double u1,
+                              double v0, double v1);
+
+/* Whether segments (a, b) and (c, d) come within `reach` of each other. */
+int vsh_rtc_segments_within(const double a[2], const double b[2], const double c[2],
+                            const double d[2], double reach);
+
 /* Per-triangle facts LIT (c)'s layers are found from. */
 typedef struct vsh_rtc_layer_input {
   const int *placements;

@@ -206,58 +206,6 @@ static int sees_lit_side(const float box[6], const hull *h)
   return 1;
 }
 
-/* Whether segment (a, b) meets the box [u0, u1] x [v0, v1] (Liang-Barsky
- * clipping of the segment's parameter to each slab). */
-static int segment_meets_box(const double a[2], const double b[2], double u0, double u1,
-                             double v0, double v1)
-{
-  double t0 = 0, t1 = 1;
-  const double d[2] = { b[0] - a[0], b[1] - a[1] }, lo[2] = { u0, v0 }, hi[2] = { u1, v1 };
-  for (int r = 0; r < 2; ++r) {
-    if (d[r] == 0) {
-      if (a[r] < lo[r] || a[r] > hi[r]) {
-        return 0;
-      }
-      continue;
-    }
-    double ta = (lo[r] - a[r]) / d[r], tb = (hi[r] - a[r]) / d[r];
-    if (ta > tb) {
-      const double swap = ta;
-      ta = tb, tb = swap;
-    }
-    t0 = ta > t0 ? ta : t0;
-    t1 = tb < t1 ? tb : t1;
-  }
-  return t0 <= t1;
-}
-
-/* Distance from point p to segment (a, b) in the plane. */
-static double point_segment_distance(const double p[2], const double a[2], const double b[2])
-{
-  const double du = b[0] - a[0], dv = b[1] - a[1], l2 = du * du + dv * dv;
-  double t = l2 > 0 ? ((p[0] - a[0]) * du + (p[1] - a[1]) * dv) / l2 : 0;
-  t = t < 0 ? 0 : (t > 1 ? 1 : t);
-  const double x = a[0] + t * du - p[0], y = a[1] + t * dv - p[1];
-  return sqrt(x * x + y * y);
-}
-
-/* Whether segments (a, b) and (c, d) come within `reach` of each other
- * (crossing, or an end within reach of the other segment). */
-static int segments_within(const double a[2], const double b[2], const double c[2],
-                           const double d[2], double reach)
-{
-  const double d1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-  const double d2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-  const double d3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
-  const double d4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
-  if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
-      ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0))) {
-    return 1;
-  }
-  return !(point_segment_distance(a, c, d) > reach && point_segment_distance(b, c, d) > reach &&
-           point_segment_distance(c, a, b) > reach && point_segment_distance(d, a, b) > reach);
-}
-
 /* LIT (c) on a bent texel: the footprint keeps clear of every concave
  * edge listed for its block (each grown by its margin), so the ray's
  * origin and the surface point it left lie on one side of them (a tube:
@@ -266,9 +214,9 @@ static int clear_of_bends(const vsh_rt_classify_face *face, long block, const fo
 {
   for (int k = face->bend_start[block]; k < face->bend_start[block + 1]; ++k) {
     const double *e = face->bends + 5 * face->bend_list[k];
-    const int near = fp->segment ? segments_within(fp->end[0], fp->end[1], e, e + 2,
+    const int near = fp->segment ? vsh_rtc_segments_within(fp->end[0], fp->end[1], e, e + 2,
                                                    2 * (fp->grow + e[4]))
-                                 : segment_meets_box(e, e + 2, fp->umin - e[4], fp->umax + e[4],
+                                 : vsh_rtc_segment_meets_box(e, e + 2, fp->umin - e[4], fp->umax + e[4],
                                                      fp->vmin - e[4], fp->vmax + e[4]);
     if (near) {
       return 0;
