@@ -36,9 +36,10 @@
 
 /* More triangles than this over one texel: no sheet there. */
 #define MAX_TEXEL_TRIANGLES 64
-/* More triangle-texel overlaps than this in one face: no sheets (the
- * lists would cost more memory than the map). */
-#define MAX_OVERLAPS ((size_t)1 << 25)
+/* More triangle-texel overlaps than this in one face: no sheets (their
+ * lists, 12 bytes each, would pass 200 MB; the scivis scenes have 0.7-1.7
+ * million at 1024 texels a side). Also keeps the indices in 32 bits. */
+#define MAX_OVERLAPS ((size_t)1 << 24)
 
 void vsh_rtc_light_normals(const vsh_rt_classify_map *map, double *normals,
                            unsigned char *facing)
@@ -113,24 +114,28 @@ typedef struct overlap {
   float lo, hi; /* the triangle's key range over the texel, rounded outwards */
 } overlap;
 
-/* Everything one face's sheets are found from. */
+/* Every triangle's texels in one face (projected again where needed, not
+ * kept: a polygon per triangle would cost 272 bytes each). */
 typedef struct sheet_lists {
-  polygon *polys;        /* per triangle */
-  unsigned char *inside; /* per triangle: projected into the face */
-  size_t *start;         /* per texel: its overlaps [start[x], start[x + 1]) */
+  unsigned *start; /* per texel: its overlaps [start[x], start[x + 1]) */
   overlap *list;
 } sheet_lists;
 
 /* The nearest triangle over (u, v) among the texel's k overlaps, each
  * one's place (over[e]: 1 over the point, 0 not); -1 when none is, or
  * any is too near to tell. */
-static int nearest_over(const sheet_lists *s, const overlap *o, int k, double u, double v,
-                        double tol, unsigned char *over)
+static int nearest_over(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
+                        const overlap *o, int k, double u, double v, double tol,
+                        unsigned char *over)
 {
   int best = -1;
   double best_key = HUGE_VAL;
   for (int e = 0; e < k; ++e) {
-    const polygon *p = &s->polys[o[e].t];
+    polygon projected;
+    const polygon *p = &projected;
+    if (!vsh_rtc_project(map, face, map->triangles + 9 * (size_t)o[e].t, &projected)) {
+      return -1; /* it overlapped the texel: cannot happen */
+    }
     const int c = over_point(p, u, v, tol);
     if (c < 0) {
       return -1;
@@ -171,13 +176,13 @@ static void connect_layer(const int *partner, const overlap *o, int k, int seed,
  * normals into the block's box. One layer of opaque triangles, facing the
  * light or not, covers the whole texel (no contour edge crosses it):
  * `far`, its largest key there, is a union cover's far key (+inf: none). */
-static float texel_sheet(const vsh_rt_classify_map *map, const vsh_rtc_layer_input *in,
-                         const sheet_lists *s, const overlap *o, int k, double u, double v,
-                         double tol, float box[6], float *far)
+static float texel_sheet(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
+                         const vsh_rtc_layer_input *in, const overlap *o, int k, double u,
+                         double v, double tol, float box[6], float *far)
 {
   unsigned char over[MAX_TEXEL_TRIANGLES], layer[MAX_TEXEL_TRIANGLES];
   *far = INFINITY;
-  const int seed = nearest_over(s, o, k, u, v, tol, over);
+  const int seed = nearest_over(map, face, o, k, u, v, tol, over);
   if (seed < 0) {
     return -INFINITY;
   }
@@ -216,14 +221,15 @@ static int list_overlaps(const vsh_rt_classify_map *map, const vsh_rt_classify_f
                          sheet_lists *s)
 {
   const size_t texels = (size_t)face->n * (size_t)face->n;
-  size_t *cursor = calloc(texels + 1, sizeof *cursor);
+  unsigned *cursor = calloc(texels + 1, sizeof *cursor);
   int ok = cursor != NULL;
   for (int pass = 0; pass < 2 && ok; ++pass) {
     size_t total = 0;
     for (size_t t = 0; t < map->count && ok; ++t) {
-      const polygon *p = &s->polys[t];
+      polygon projected;
+      const polygon *p = &projected;
       int range[4];
-      if (!s->inside[t] ||
+      if (!vsh_rtc_project(map, face, map->triangles + 9 * t, &projected) ||
           !vsh_rtc_texel_range(face, p->umin, p->umax, p->vmin, p->vmax, p->margin, range)) {
         continue;
       }
@@ -351,13 +357,8 @@ int vsh_rtc_sheet_face(const vsh_rt_classify_map *map, vsh_rt_classify_face *fac
                        const vsh_rtc_layer_input *in)
 {
   const size_t texels = (size_t)face->n * (size_t)face->n;
-  sheet_lists s = { malloc((map->count ? map->count : 1) * sizeof(polygon)),
-                    malloc(map->count ? map->count : 1), calloc(texels + 1, sizeof(size_t)),
-                    NULL };
-  int failed = !s.polys || !s.inside || !s.start;
-  for (size_t t = 0; t < map->count && !failed; ++t) {
-    s.inside[t] = (unsigned char)vsh_rtc_project(map, face, map->triangles + 9 * t, &s.polys[t]);
-  }
+  sheet_lists s = { calloc(texels + 1, sizeof(unsigned)), NULL };
+  const int failed = !s.start;
   if (!failed && list_overlaps(map, face, &s)) {
     const double tol = 1e-6 * face->texel;
     const int blocks = face->n / 8;
@@ -371,15 +372,13 @@ int vsh_rtc_sheet_face(const vsh_rt_classify_map *map, vsh_rt_classify_face *fac
         float *box = face->normal_box + 6 * ((size_t)(j / 8) * (size_t)blocks + (size_t)(i / 8));
         float far;
         face->texels[x].sheet =
-          texel_sheet(map, in, &s, s.list + s.start[x], (int)k, face->u0 + (i + 0.5) * face->texel,
+          texel_sheet(map, face, in, s.list + s.start[x], (int)k, face->u0 + (i + 0.5) * face->texel,
                       face->v0 + (j + 0.5) * face->texel, tol, box, &far);
         face->texels[x].cover_far = fminf(face->texels[x].cover_far, far);
         face->bent[x] = (in->crossed[x] & VSH_RTC_CROSSED_CONCAVE) && face->texels[x].sheet > -INFINITY;
       }
     }
   }
-  free(s.polys);
-  free(s.inside);
   free(s.start);
   free(s.list);
   return failed || list_bends(map, face, in);
