@@ -8,9 +8,12 @@ Cases:
               planar; light 1 (a point light low on the left) throws the
               sphere's shadow onto a second sphere: a map would put more
               than the 0.5 target along the spheres' outlines (its outline
-              floor), so raytrace. One frame draws both (choice
-              planar+raytrace); each light's visibility must meet
-              wrong_pct <= 0.5 against the exact answer.
+              floor), so an exact technique, and of the two the shadow
+              volumes cost less (vtkshadow-render, 640x480, interleaved:
+              volume 2.22 x none, raytrace 2.88 x for both lights). One
+              frame draws both (choice planar+volume); each light's
+              visibility must meet wrong_pct <= 0.5 against the exact
+              answer.
   idle-light  light 1 shines almost horizontally (its shadows end beyond the floor): no caster's shadow can reach
               another object, so it gets no shadow work (none), while
               light 0 still gets planar; both exact.
@@ -326,7 +329,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     c = Checks()
     if args.case == "mixed":
-        choice_case(c, args, "mixed", mixed, "planar+raytrace", ["planar", "raytrace"])
+        choice_case(c, args, "mixed", mixed, "planar+volume", ["planar", "volume"])
     elif args.case == "idle-light":
         choice_case(c, args, "idle-light", idle_light, "planar", ["planar", "none"])
     elif args.case == "out-of-view":

@@ -11,12 +11,21 @@
  * build) at a load average of about 5: each row is
  * the median over interleaved rounds of volume's round median minus none's,
  * and single rows moved by 2-10x between runs. Residuals of the fit: within
- * a factor of 2 on most rows, 5x on the worst. The triangle term is large
- * (the pre-pass alone should cost about what a `none` frame's geometry
- * does): a cost the pass pays per scene triangle beyond its depth pre-pass,
- * or the interleaved timing's switching; re-fit on a quiet machine. */
+ * a factor of 2 on most rows, 5x on the worst.
+ *
+ * The triangle term is from a run on the quiet machine (--rounds 4
+ * --frames 8, load under 1), where the rows with a non-casting sphere of
+ * 39,824 triangles (20 silhouette edges, little fill) isolate it: 8.7 and
+ * 9.4 ms above none at 320x240 and 640x480, 1.5-2.0e-4 ms a triangle; that
+ * run's fit gave 1.768e-4. The loaded fit's 1.217e-3 predicted 48 ms for
+ * those rows and 79 ms of pre-pass for a 65,060-triangle sphere whose whole
+ * volume frame measured 17.6 ms above none. The quiet run's edge and fill
+ * terms (3.6e-3, 9.1e-7) are not taken: with them the model predicted
+ * isosurface's volumes at 77 ms against 198 measured (the grids of spheres
+ * do not exercise long self-overlapping silhouettes), and ranked them
+ * below raytrace there. */
 const double VSH_VOLUME_MS_PER_PIXEL = 8.021e-06;
-const double VSH_VOLUME_MS_PER_TRIANGLE = 1.217e-03;
+const double VSH_VOLUME_MS_PER_TRIANGLE = 1.768e-04;
 const double VSH_VOLUME_MS_PER_EDGE = 1.167e-02;
 const double VSH_VOLUME_MS_PER_FILL_PX = 5.808e-06;
 
