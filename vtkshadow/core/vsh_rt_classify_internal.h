@@ -110,6 +110,13 @@ int vsh_rtc_project(const vsh_rt_classify_map *map, const vsh_rt_classify_face *
 void vsh_rtc_rasterize(vsh_rt_classify_map *map, vsh_rt_classify_face *face, size_t t, int pass,
                        vsh_rtc_scratch *scratch);
 
+/* Segment a-b clipped and projected into the face as a polygon of up to
+ * 8 vertices (a, b, b through the triangles' clip), and which two of them
+ * are the clipped segment's ends (the farthest apart); 0 when nothing of
+ * it is in the face. */
+int vsh_rtc_project_segment(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
+                            const double a[3], const double b[3], polygon *p, int ends[2]);
+
 /* Mark (with `bits`) every texel the segment a-b crosses, each texel
  * grown by at least `margin` (the largest margin its run's triangles
  * overlap texels with: a union's boundary within any overlap's reach is

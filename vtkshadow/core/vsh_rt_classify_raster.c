@@ -310,34 +310,44 @@ void vsh_rtc_rasterize(vsh_rt_classify_map *map, vsh_rt_classify_face *face, siz
   }
 }
 
-void vsh_rtc_mark_segment(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
-                          const double a[3], const double b[3], double margin,
-                          unsigned char bits, vsh_rtc_scratch *scratch)
+int vsh_rtc_project_segment(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
+                            const double a[3], const double b[3], polygon *p, int ends[2])
 {
   /* The segment as a two-vertex polygon through the same clip and
    * projection as the triangles. */
   const double seg[9] = { a[0], a[1], a[2], b[0], b[1], b[2], b[0], b[1], b[2] };
+  if (!vsh_rtc_project(map, face, seg, p)) {
+    return 0;
+  }
+  /* The clipped segment's ends: its polygon's two vertices farthest apart. */
+  double far2 = -1;
+  ends[0] = ends[1] = 0;
+  for (int k = 0; k < p->count; ++k) {
+    for (int l = k + 1; l < p->count; ++l) {
+      const double du = p->u[l] - p->u[k], dv = p->v[l] - p->v[k];
+      if (du * du + dv * dv > far2) {
+        far2 = du * du + dv * dv, ends[0] = k, ends[1] = l;
+      }
+    }
+  }
+  return 1;
+}
+
+void vsh_rtc_mark_segment(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
+                          const double a[3], const double b[3], double margin,
+                          unsigned char bits, vsh_rtc_scratch *scratch)
+{
   polygon p;
-  int range[4];
-  if (!vsh_rtc_project(map, face, seg, &p)) {
+  int range[4], ends[2];
+  if (!vsh_rtc_project_segment(map, face, a, b, &p, ends)) {
     return;
   }
   p.margin = fmax(p.margin, margin);
   if (!vsh_rtc_texel_range(face, p.umin, p.umax, p.vmin, p.vmax, p.margin, range)) {
     return;
   }
-  /* The segment's line: through its clipped polygon's two vertices
-   * farthest apart (the clipped segment's ends). */
-  int e0 = 0, e1 = 0;
-  double far2 = -1;
-  for (int k = 0; k < p.count; ++k) {
-    for (int l = k + 1; l < p.count; ++l) {
-      const double d2 = (p.u[l] - p.u[k]) * (p.u[l] - p.u[k]) + (p.v[l] - p.v[k]) * (p.v[l] - p.v[k]);
-      if (d2 > far2) {
-        far2 = d2, e0 = k, e1 = l;
-      }
-    }
-  }
+  /* The segment's line: through its ends. */
+  const int e0 = ends[0], e1 = ends[1];
   const double du = p.u[e1] - p.u[e0], dv = p.v[e1] - p.v[e0], size = face->texel;
   for (int j = range[2]; j <= range[3]; ++j) {
     const double v0 = face->v0 + j * size - p.margin, v1 = v0 + size + 2 * p.margin;

@@ -272,28 +272,18 @@ static int project_bend(const vsh_rt_classify_map *map, const vsh_rt_classify_fa
 {
   const double *v = map->triangles + 9 * (slot / 3);
   const double *a = v + 3 * (slot % 3), *b = v + 3 * ((slot % 3 + 1) % 3);
-  const double seg[9] = { a[0], a[1], a[2], b[0], b[1], b[2], b[0], b[1], b[2] };
   polygon p;
-  if (!vsh_rtc_project(map, face, seg, &p)) {
+  int ends[2];
+  if (!vsh_rtc_project_segment(map, face, a, b, &p, ends)) {
     return 0;
   }
-  /* The clipped segment's ends: its two vertices farthest apart. */
-  double far2 = -1;
-  for (int k = 0; k < p.count; ++k) {
-    for (int l = k + 1; l < p.count; ++l) {
-      const double du = p.u[l] - p.u[k], dv = p.v[l] - p.v[k];
-      if (du * du + dv * dv > far2) {
-        far2 = du * du + dv * dv;
-        out[0] = p.u[k], out[1] = p.v[k], out[2] = p.u[l], out[3] = p.v[l];
-      }
-    }
-  }
+  out[0] = p.u[ends[0]], out[1] = p.v[ends[0]], out[2] = p.u[ends[1]], out[3] = p.v[ends[1]];
   out[4] = p.margin;
   return 1;
 }
 
-/* The concave edges over each block with a bent texel (each edge once:
- * from its lower triangle). */
+/* The concave edges over each 8 x 8 block they cross (each edge once:
+ * from its lower triangle), read where a texel is bent. */
 static int list_bends(const vsh_rt_classify_map *map, vsh_rt_classify_face *face,
                       const vsh_rtc_layer_input *in)
 {

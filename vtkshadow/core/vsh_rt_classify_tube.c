@@ -153,16 +153,10 @@ static int locate(const vsh_rt_classify_map *map, const vsh_rt_classify_face *fa
  * points). */
 static int faces_light(const vsh_rt_classify_map *map, const hull *h, int f)
 {
-  const double *tri = map->triangles + 9 * (size_t)f;
-  double e1[3], e2[3], n[3];
-  vsh_vec3_sub(tri + 3, tri, e1);
-  vsh_vec3_sub(tri + 6, tri, e2);
-  vsh_vec3_cross(e1, e2, n);
-  const double len = vsh_vec3_length(n);
-  if (!(len > 0)) {
+  double n[3];
+  if (!(vsh_rtc_unit_normal(map, (size_t)f, n) > 0)) {
     return 0;
   }
-  vsh_vec3_scale(n, 1.0 / len, n);
   double side = 0;
   for (int k = 0; k < h->views; ++k) {
     const double s = vsh_vec3_dot(n, h->dirs[k]);
