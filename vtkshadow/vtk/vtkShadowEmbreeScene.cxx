@@ -331,6 +331,10 @@ void vtkShadowEmbreeScene::Attach(
   const bool translucent = a.Opacity < 1.0;
   this->Parts.push_back({ instance, casts, translucent });
   this->ImpostorParts += instance.Impostors ? 1 : 0;
+  if (instance.Impostors && !translucent)
+  {
+    this->ImpostorSlack = std::max(this->ImpostorSlack, instance.Slack);
+  }
   for (RTCScene top : { this->Visible, this->Casters })
   {
     // A translucent actor is not in the depth pass (nothing lands on it)
@@ -562,6 +566,7 @@ bool vtkShadowEmbreeScene::BuildTopLevel(
   this->Instances.clear();
   this->Parts.clear();
   this->ImpostorParts = 0;
+  this->ImpostorSlack = 0;
   this->CasterOpacity.clear();
   this->CasterTransmit.clear();
   this->TranslucentCasters = false;

@@ -110,6 +110,10 @@ public:
   void CollectTriangles(std::vector<double>& triangles, std::vector<unsigned char>& flags,
     std::vector<int>& placements) const;
   bool HasImpostors() const { return this->ImpostorParts > 0; }
+  // The largest Instance::Slack of the visible top level's impostors (0
+  // without any): how far in front of a depth point on one of them the
+  // front-most solid's surface can be.
+  double GetLargestImpostorSlack() const { return this->ImpostorSlack; }
   // The largest Instance::Radius (the tracer's offset grows with it).
   double GetLargestRadius() const;
 
@@ -190,6 +194,7 @@ private:
   };
   std::vector<Part> Parts;
   int ImpostorParts = 0;
+  double ImpostorSlack = 0;
   std::vector<RTCScene> ImpostorScenes; // this top level's, released with it
   long long ImpostorCount = 0;
   std::vector<float> CasterOpacity;

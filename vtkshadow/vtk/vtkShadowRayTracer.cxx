@@ -166,6 +166,10 @@ struct Worker
   void Intersect();
   void Land(int k);
   bool Reland(int k, const vtkShadowEmbreeScene::Instance& inst);
+  bool RelandFront(int k);
+  bool RelandOwn(int k, const vtkShadowEmbreeScene::Instance& inst);
+  bool RelandFrom(int k, RTCScene scene, double back, unsigned int instance,
+    bool (*accept)(const vtkShadowEmbreeScene::Instance&));
   bool Exact(int k, double n[3], double& len2, double& side);
   void Miss(int k);
   void Queue(const Surface& s, int surface);
@@ -546,10 +550,11 @@ void Worker::Land(int k)
   {
     const vtkShadowEmbreeScene::Instance& inst = this->Scene->GetInstance(rh.hit.instID[0]);
     bool inside = rh.ray.tfar <= this->Limits[k];
-    if (!inside && inst.Impostors)
+    if (inst.Impostors)
     {
-      inside = this->Reland(k, inst);
+      inside = this->Reland(k, inst) || inside;
     }
+    const vtkShadowEmbreeScene::Instance& landed = this->Scene->GetInstance(rh.hit.instID[0]);
     const double org[3] = { rh.ray.org_x, rh.ray.org_y, rh.ray.org_z };
     const double t = rh.ray.tfar;
     const double ng[3] = { rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z };
@@ -557,8 +562,8 @@ void Worker::Land(int k)
     for (int r = 0; r < 3; ++r)
     {
       s.Point[r] = org[r] + t * dir[r];
-      n[r] = inst.Normal[3 * r] * ng[0] + inst.Normal[3 * r + 1] * ng[1] +
-        inst.Normal[3 * r + 2] * ng[2];
+      n[r] = landed.Normal[3 * r] * ng[0] + landed.Normal[3 * r + 1] * ng[1] +
+        landed.Normal[3 * r + 2] * ng[2];
       len2 += n[r] * n[r];
       side += n[r] * dir[r];
     }
@@ -575,7 +580,7 @@ void Worker::Land(int k)
     s.HasNormal = len2 > 0;
     const double magnitude =
       std::sqrt(s.Point[0] * s.Point[0] + s.Point[1] * s.Point[1] + s.Point[2] * s.Point[2]) +
-      inst.Radius;
+      landed.Radius;
     s.Offset = vsh_rt_offset_distance(magnitude);
     return;
   }
@@ -583,38 +588,66 @@ void Worker::Land(int k)
 }
 
 // A pixel on a sphere or tube (an impostor instance): VTK's impostor depth
-// is near the Embree solid, not on it (the mapper moves the sprite's depth
-// by the radius times the sprite's own normal), so the refinement ray,
-// which starts at the depth point, may start inside the solid and meet its
-// far side, or pass in front of it. Trace the impostor's own scene again
-// (an identity placement: the same frame) from twice its largest radius
-// before the depth point: a hit up to the interval's end is the pixel's
-// surface, with its normal. False (no change) when that misses.
+// is near the solids, not on them (the mapper moves the sprite's depth by
+// the radius times the sprite's own normal), so the refinement ray, which
+// starts at the depth point, may start inside a solid and meet its far
+// side, pass in front of it, or meet another solid inside it: a bond's
+// tube inside its atom's sphere, where a point is in the sphere's own
+// shadow. The surface is the front-most solid near the depth point: the
+// visible top level traced again from twice the largest impostor radius
+// before it (RelandFront). Where that first meets a mesh in front, the hit
+// instance's own scene again from twice its radius (RelandOwn). False (no
+// change) when both miss.
 bool Worker::Reland(int k, const vtkShadowEmbreeScene::Instance& inst)
 {
+  return this->RelandFront(k) || this->RelandOwn(k, inst);
+}
+
+// Refinement ray k's hit replaced by the first hit of `scene` on the same
+// line from `back` before its origin, up to `back` past the end of its
+// interval; `instance` names the placement when `scene` is one instance's
+// own (RTC_INVALID_GEOMETRY_ID: the hit's, `scene` is a top level). False
+// (no change) when it misses, or when `accept` refuses the hit's instance.
+bool Worker::RelandFrom(int k, RTCScene scene, double back, unsigned int instance,
+  bool (*accept)(const vtkShadowEmbreeScene::Instance&))
+{
   RTCRayHit& rh = this->Hits[k];
-  const float back = static_cast<float>(2 * inst.Slack);
+  const float b = static_cast<float>(back);
   RTCRayHit again = rh;
-  again.ray.org_x = rh.ray.org_x - back * rh.ray.dir_x;
-  again.ray.org_y = rh.ray.org_y - back * rh.ray.dir_y;
-  again.ray.org_z = rh.ray.org_z - back * rh.ray.dir_z;
+  again.ray.org_x = rh.ray.org_x - b * rh.ray.dir_x;
+  again.ray.org_y = rh.ray.org_y - b * rh.ray.dir_y;
+  again.ray.org_z = rh.ray.org_z - b * rh.ray.dir_z;
   again.ray.tnear = 0.0f;
-  again.ray.tfar = 2 * back + this->Limits[k];
+  again.ray.tfar = 2 * b + this->Limits[k];
   again.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   again.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  rtcIntersect1(inst.Impostors, &context, &again);
+  rtcIntersect1(scene, &context, &again);
   ++this->Count.PrimaryRays;
-  if (again.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+  const unsigned int id = instance != RTC_INVALID_GEOMETRY_ID ? instance : again.hit.instID[0];
+  if (again.hit.geomID == RTC_INVALID_GEOMETRY_ID || id == RTC_INVALID_GEOMETRY_ID ||
+    (accept && !accept(this->Scene->GetInstance(id))))
   {
     return false;
   }
-  const unsigned int instance = rh.hit.instID[0];
   rh.hit = again.hit;
-  rh.hit.instID[0] = instance;
-  rh.ray.tfar = again.ray.tfar - back; // from the refinement ray's origin
+  rh.hit.instID[0] = id;
+  rh.ray.tfar = again.ray.tfar - b; // from the refinement ray's origin
   return true;
+}
+
+bool Worker::RelandFront(int k)
+{
+  const double back = 2 * this->Scene->GetLargestImpostorSlack();
+  return back > 0 &&
+    this->RelandFrom(k, this->Scene->GetVisible(), back, RTC_INVALID_GEOMETRY_ID,
+      [](const vtkShadowEmbreeScene::Instance& i) { return i.Impostors != nullptr; });
+}
+
+bool Worker::RelandOwn(int k, const vtkShadowEmbreeScene::Instance& inst)
+{
+  return this->RelandFrom(k, inst.Impostors, 2 * inst.Slack, this->Hits[k].hit.instID[0], nullptr);
 }
 
 // No triangle at the pixel: the depth point pulled towards the camera by
