@@ -1065,14 +1065,14 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
 }
 
 //------------------------------------------------------------------------------
-void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* candidates,
-  const vsh_volume_ms_input& volume, int unsupported, int pick)
+std::string vtkAutoShadowPass::GeneralPickJSON(size_t l, const vsh_auto_candidate* candidates,
+  const vsh_volume_ms_input& volume, int unsupported, int pick) const
 {
-  Internals& impl = *this->Impl;
+  const Internals& impl = *this->Impl;
   static const char* const names[VSH_AUTO_GENERAL_COUNT] = { "csm", "volume", "raytrace" };
   std::ostringstream json;
   json.precision(4);
-  json << (impl.GeneralJSON.empty() ? "" : ", ") << "{\"light\": " << l << ", \"csm_error_pct\": "
+  json << "{\"light\": " << l << ", \"csm_error_pct\": "
        << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].predicted_error_pct)
        << ", \"csm_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_CSM].cost)
        << ", \"thin_point_outline_px\": " << JSONNumber(impl.ThinPoints[l])
@@ -1086,11 +1086,52 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
        << ", \"volume_fill_px\": " << volume.fill_px
        << ", \"volume_unsupported_casters\": " << unsupported << ", \"volume_available\": "
        << (candidates[VSH_AUTO_GENERAL_VOLUME].available ? "true" : "false")
+       << ", \"raytrace_error_pct\": "
+       << JSONNumber(candidates[VSH_AUTO_GENERAL_RAYTRACE].predicted_error_pct)
        << ", \"raytrace_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_RAYTRACE].cost)
-       << ", \"pick\": \"" << (pick >= 0 ? names[pick] : "csm") << "\"}";
-  impl.GeneralJSON += json.str();
+       << ", \"pick\": \"" << (pick >= 0 ? names[pick] : "csm") << "\"";
+  // Whether the pick is predicted to meet the target (met): where no
+  // candidate is, auto says so rather than promise it.
+  const double predicted = pick >= 0 ? candidates[pick].predicted_error_pct : -1.0;
+  json << ", \"predicted_error_pct\": " << JSONNumber(predicted)
+       << ", \"met\": " << (pick >= 0 && predicted <= this->MaxError ? "true" : "false") << "}";
+  return json.str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAutoShadowPass::UnmetNote(
+  size_t l, const char* name, const vsh_auto_candidate& pick) const
+{
+  if (pick.predicted_error_pct <= this->MaxError)
+  {
+    return "";
+  }
+  std::ostringstream unmet;
+  unmet.precision(3);
+  unmet << "; none is predicted to meet max_error " << this->MaxError << "%: the lowest is " << name
+        << "'s " << pick.predicted_error_pct << "%";
+  const double floor = this->Impl->ThinFloorPct[l];
+  if (floor > this->MaxError)
+  {
+    unmet << ", " << floor
+          << "% of it the floor of points and lines drawn as spheres or tubes (VTK's"
+             " screen-space impostors are not the solids they cast as)";
+  }
+  return unmet.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* candidates,
+  const vsh_volume_ms_input& volume, int unsupported, int pick)
+{
+  Internals& impl = *this->Impl;
+  static const char* const names[VSH_AUTO_GENERAL_COUNT] = { "csm", "volume", "raytrace" };
+  impl.GeneralJSON += (impl.GeneralJSON.empty() ? "" : ", ") +
+    this->GeneralPickJSON(l, candidates, volume, unsupported, pick);
+  const std::string unmet = pick >= 0 ? this->UnmetNote(l, names[pick], candidates[pick]) : "";
   if (pick != VSH_AUTO_GENERAL_RAYTRACE && pick != VSH_AUTO_GENERAL_VOLUME)
   {
+    this->LightReasons[l] += unmet;
     return;
   }
   const vsh_auto_candidate& map = candidates[VSH_AUTO_GENERAL_CSM];
@@ -1140,9 +1181,10 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
   else
   {
     impl.LightChoices[l] = vtkshadow::TechniqueSet::RayTraced;
-    why << "ray tracing is exact (predicted " << candidates[pick].cost << " ms)";
+    why << "ray tracing is exact" << (impl.ThinFloorPct[l] > 0 ? " on meshes" : "")
+        << " (predicted " << candidates[pick].cost << " ms)";
   }
-  this->LightReasons[l] += "; " + why.str();
+  this->LightReasons[l] += "; " + why.str() + unmet;
 }
 
 //------------------------------------------------------------------------------

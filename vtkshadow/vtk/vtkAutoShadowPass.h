@@ -270,6 +270,13 @@ private:
   // an exact technique won, the light's new choice and why.
   void ApplyGeneralPick(size_t l, const vsh_auto_candidate* candidates,
     const vsh_volume_ms_input& volume, int unsupported, int pick);
+  // Light l's entry of the stats' "general" list, with the pick's
+  // predicted error and whether it meets MaxError ("met").
+  std::string GeneralPickJSON(size_t l, const vsh_auto_candidate* candidates,
+    const vsh_volume_ms_input& volume, int unsupported, int pick) const;
+  // "; none is predicted to meet ..." when `pick` (named `name`) misses
+  // MaxError, else empty.
+  std::string UnmetNote(size_t l, const char* name, const vsh_auto_candidate& pick) const;
   double PixelWorldSize(vtkRenderer* renderer, const double center[3]) const;
   void DescribeChoice();
   // Pixels of shadow outline the casters in view throw under light number
