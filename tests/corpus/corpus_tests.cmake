@@ -43,12 +43,15 @@ vtkshadow_corpus_negative(bound advanced.interpolateScalar3 bound --techniques r
 vtkshadow_corpus_negative(shadow basic.legendbox shadow
                           --techniques raytrace,none,csm --as csm=none)
 
-# raytrace's classifier changes no pixel of third-party programs: four vedo
+# raytrace's classifier changes no pixel of third-party programs: seven vedo
 # examples (curvature-coloured mesh, boolean, extrusion, tubes of varying
-# radius) under raytrace and raytrace:classify=0, equal in every pixel, the
-# classifier's maps built in at least one. Budget: 30 s.
+# radius; and three that draw points as spheres or lines as tubes among
+# meshes: warp1, connVtx, silhouette1) under raytrace and
+# raytrace:classify=0, equal in every pixel, the classifier's maps built in
+# every one. Budget: 30 s.
 add_test(NAME corpus.classify_identical
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/test_classify_identical.py
           --python ${VTKSHADOW_BIN}/vtkshadow-python --out ${VTKSHADOW_CORPUS_OUT}/classify
-          advanced/measure_curvature basic/boolean basic/extrude basic/tube_radii)
+          advanced/measure_curvature basic/boolean basic/extrude basic/tube_radii
+          advanced/warp1 basic/connVtx basic/silhouette1)
 set_tests_properties(corpus.classify_identical PROPERTIES LABELS "corpus;render" TIMEOUT 300)

@@ -4,8 +4,10 @@ by default) changes no pixel.
 Each EXAMPLE (a vedo example, run unmodified by compare/corpus/run_example.py
 with enable_shadows injected) is captured under `raytrace` and under
 `raytrace:classify=0` (every pixel traced); the two frames must be equal in
-every pixel, and the classifier must have run in at least one example (a
-classifier that never runs would pass the comparison trivially).
+every pixel, and the classifier must have built its maps in every example
+(a classifier that stands aside would pass the comparison trivially: it
+did in programs drawing points as spheres or lines as tubes before its
+maps took those as occluders).
 
   test_classify_identical.py --python PY --out DIR EXAMPLE...
 """
@@ -51,8 +53,8 @@ def main():
               (example, differ, traced.shape[0] * traced.shape[1], ran))
         if differ:
             failures.append("%s: %d pixels differ from every pixel traced" % (example, differ))
-    if not classified:
-        failures.append("the classifier built no map in any example")
+        if not ran:
+            failures.append("%s: the classifier built no map" % example)
     for f in failures:
         print("FAIL: " + f)
     return 1 if failures else 0

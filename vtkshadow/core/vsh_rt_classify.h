@@ -194,6 +194,50 @@ typedef struct vsh_rt_classify_region {
 /* The region's class: every pixel of the block has it. */
 int vsh_rt_classify_block(const vsh_rt_classify_map *map, const vsh_rt_classify_region *region);
 
+/* Spheres, tubes and flat quads (VTK's impostors) are not in the maps:
+ * VTK sizes them for the camera, so they change whenever it moves, while
+ * the maps are kept. OCCLUDERS stand in for them, built each frame from
+ * conservative bounds: per face of a map and per 8 x 8 block of its
+ * texels, the smallest key of any impostor whose projection may overlap
+ * the block. Each impostor is given as a CAPSULE, the convex hull of two
+ * balls (8 doubles, anchor-relative: a[3], ra, b[3], rb): a sphere (a = b),
+ * a tube segment (its round cone lies in the hull of its end balls), a
+ * quad (its bounding ball).
+ *
+ * With occluders, a LIT class stands only where every block the footprint
+ * touches keeps its impostors farther than the whole tube (or hull): then
+ * no impostor is between any origin and the light, and the pixel's surface
+ * is not on one (an impostor under the tube has a key at most the tube's),
+ * so the triangle rules' reasoning holds with every surface. SHADOWED
+ * needs nothing (an opaque triangle is across every origin's ray). */
+typedef struct vsh_rt_classify_occluder_face {
+  int blocks;       /* blocks a side: the map face's n / 8 */
+  float *keys;      /* blocks x blocks row-major, +inf where no impostor */
+  float outside;    /* the smallest key of any impostor projecting beyond the face */
+  float everywhere; /* the smallest key of a ball reaching a perspective face's plane */
+} vsh_rt_classify_occluder_face;
+
+typedef struct vsh_rt_classify_occluders {
+  int faces; /* as the map's */
+  vsh_rt_classify_occluder_face face[6];
+  size_t count; /* capsules */
+} vsh_rt_classify_occluders;
+
+/* Build `out` for `map` over `count` capsules (8 doubles each). Non-zero on
+ * bad input or out of memory (then every LIT class is undecided). */
+int vsh_rt_classify_occluders_build(vsh_rt_classify_occluders *out,
+                                    const vsh_rt_classify_map *map, const double *capsules,
+                                    size_t count);
+void vsh_rt_classify_occluders_free(vsh_rt_classify_occluders *occluders);
+
+/* vsh_rt_classify_pixel and _block among occluders (NULL: none). */
+int vsh_rt_classify_pixel_among(const vsh_rt_classify_map *map,
+                                const vsh_rt_classify_occluders *occluders,
+                                const vsh_rt_classify_tube *tube);
+int vsh_rt_classify_block_among(const vsh_rt_classify_map *map,
+                                const vsh_rt_classify_occluders *occluders,
+                                const vsh_rt_classify_region *region);
+
 #ifdef __cplusplus
 }
 #endif

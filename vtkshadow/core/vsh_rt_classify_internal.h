@@ -98,6 +98,11 @@ int vsh_rtc_texel_range(const vsh_rt_classify_face *face, double umin, double um
                         double vmax, double m, int range[4]);
 
 float vsh_rtc_round_down(double x);
+/* Whether face f's occluders keep every impostor over the footprint
+ * [umin, umax] x [vmin, vmax] farther than key_hi (1), or may not (0). */
+int vsh_rtc_occluders_clear(const vsh_rt_classify_occluders *occluders,
+                            const vsh_rt_classify_face *face, int f, double umin, double umax,
+                            double vmin, double vmax, float key_hi);
 float vsh_rtc_round_up(double x);
 
 /* Triangle `tri` (9 doubles; a segment as (a, b, b)) clipped to the

@@ -267,7 +267,35 @@ static int scan(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face
   return VSH_RT_CLASSIFY_UNDECIDED;
 }
 
-static int classify_hull(const vsh_rt_classify_map *map, const hull *h, int max_texels)
+/* The triangles' class of the hull's footprint in face `face`. */
+static int classify_footprint(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
+                              const hull *h, const footprint *fp, int max_texels)
+{
+  const int i0 = (int)floor((fp->umin - face->u0) / face->texel);
+  const int i1 = (int)floor((fp->umax - face->u0) / face->texel);
+  const int j0 = (int)floor((fp->vmin - face->v0) / face->texel);
+  const int j1 = (int)floor((fp->vmax - face->v0) / face->texel);
+  if (i1 < i0 || j1 < j0 || (double)(i1 - i0 + 1) * (j1 - j0 + 1) > max_texels) {
+    return VSH_RT_CLASSIFY_UNDECIDED;
+  }
+  /* Rounded outwards, every comparison stays on the safe side. */
+  const float key_lo = vsh_rtc_round_down(fp->key_lo), key_hi = vsh_rtc_round_up(fp->key_hi);
+  const int range[4] = { i0, i1, j0, j1 };
+  const int texels = (i1 - i0 + 1) * (j1 - j0 + 1);
+  if (texels > 64) {
+    /* A large footprint: the blocks' summaries first, and only them when
+     * reading every texel would cost more than tracing. */
+    const int blocks[4] = { i0 >> 3, i1 >> 3, j0 >> 3, j1 >> 3 };
+    const int c = scan(map, face, h, fp, blocks, 1, key_lo, key_hi);
+    if (c != VSH_RT_CLASSIFY_UNDECIDED || texels > VSH_RT_CLASSIFY_MAX_FINE_TEXELS) {
+      return c;
+    }
+  }
+  return scan(map, face, h, fp, range, 0, key_lo, key_hi);
+}
+
+static int classify_hull(const vsh_rt_classify_map *map, const vsh_rt_classify_occluders *occluders,
+                         const hull *h, int max_texels)
 {
   if (!map || map->unusable) {
     return VSH_RT_CLASSIFY_UNDECIDED;
@@ -278,38 +306,35 @@ static int classify_hull(const vsh_rt_classify_map *map, const hull *h, int max_
       return outside > 0 ? VSH_RT_CLASSIFY_OUTSIDE_CONE : VSH_RT_CLASSIFY_UNDECIDED;
     }
   }
+  const int impostors = occluders && occluders->count > 0;
   if (map->count == 0) {
-    return VSH_RT_CLASSIFY_LIT; /* nothing anywhere casts */
+    /* Nothing in the map casts; impostors may, and the map has no faces
+     * to place them in. */
+    return impostors ? VSH_RT_CLASSIFY_UNDECIDED : VSH_RT_CLASSIFY_LIT;
   }
-  const vsh_rt_classify_face *face = &map->face[choose_face(map, h)];
+  const int f = choose_face(map, h);
+  const vsh_rt_classify_face *face = &map->face[f];
   footprint fp;
   if (!locate(map, face, h, &fp)) {
     return VSH_RT_CLASSIFY_UNDECIDED;
   }
-  const int i0 = (int)floor((fp.umin - face->u0) / face->texel);
-  const int i1 = (int)floor((fp.umax - face->u0) / face->texel);
-  const int j0 = (int)floor((fp.vmin - face->v0) / face->texel);
-  const int j1 = (int)floor((fp.vmax - face->v0) / face->texel);
-  if (i1 < i0 || j1 < j0 || (double)(i1 - i0 + 1) * (j1 - j0 + 1) > max_texels) {
-    return VSH_RT_CLASSIFY_UNDECIDED;
+  const int c = classify_footprint(map, face, h, &fp, max_texels);
+  if (c == VSH_RT_CLASSIFY_LIT && impostors &&
+      !vsh_rtc_occluders_clear(occluders, face, f, fp.umin, fp.umax, fp.vmin, fp.vmax,
+                               vsh_rtc_round_up(fp.key_hi))) {
+    return VSH_RT_CLASSIFY_UNDECIDED; /* an impostor may be across the ray, or under it */
   }
-  /* Rounded outwards, every comparison stays on the safe side. */
-  const float key_lo = vsh_rtc_round_down(fp.key_lo), key_hi = vsh_rtc_round_up(fp.key_hi);
-  const int range[4] = { i0, i1, j0, j1 };
-  const int texels = (i1 - i0 + 1) * (j1 - j0 + 1);
-  if (texels > 64) {
-    /* A large footprint: the blocks' summaries first, and only them when
-     * reading every texel would cost more than tracing. */
-    const int blocks[4] = { i0 >> 3, i1 >> 3, j0 >> 3, j1 >> 3 };
-    const int c = scan(map, face, h, &fp, blocks, 1, key_lo, key_hi);
-    if (c != VSH_RT_CLASSIFY_UNDECIDED || texels > VSH_RT_CLASSIFY_MAX_FINE_TEXELS) {
-      return c;
-    }
-  }
-  return scan(map, face, h, &fp, range, 0, key_lo, key_hi);
+  return c;
 }
 
 int vsh_rt_classify_pixel(const vsh_rt_classify_map *map, const vsh_rt_classify_tube *tube)
+{
+  return vsh_rt_classify_pixel_among(map, NULL, tube);
+}
+
+int vsh_rt_classify_pixel_among(const vsh_rt_classify_map *map,
+                                const vsh_rt_classify_occluders *occluders,
+                                const vsh_rt_classify_tube *tube)
 {
   if (!tube || !(tube->t1 >= tube->t0)) {
     return VSH_RT_CLASSIFY_UNDECIDED;
@@ -320,15 +345,22 @@ int vsh_rt_classify_pixel(const vsh_rt_classify_map *map, const vsh_rt_classify_
     ends[1][r] = tube->origin[r] + tube->t1 * tube->dir[r];
   }
   const hull h = { (const double(*)[3])ends, 2, (const double(*)[3])tube->dir, 1, tube->radius };
-  return classify_hull(map, &h, VSH_RT_CLASSIFY_MAX_TEXELS);
+  return classify_hull(map, occluders, &h, VSH_RT_CLASSIFY_MAX_TEXELS);
 }
 
 int vsh_rt_classify_block(const vsh_rt_classify_map *map, const vsh_rt_classify_region *region)
+{
+  return vsh_rt_classify_block_among(map, NULL, region);
+}
+
+int vsh_rt_classify_block_among(const vsh_rt_classify_map *map,
+                                const vsh_rt_classify_occluders *occluders,
+                                const vsh_rt_classify_region *region)
 {
   if (!region) {
     return VSH_RT_CLASSIFY_UNDECIDED;
   }
   const hull h = { (const double(*)[3])region->corner, 8, (const double(*)[3])region->dir, 4,
                    region->radius };
-  return classify_hull(map, &h, VSH_RT_CLASSIFY_MAX_BLOCK_TEXELS);
+  return classify_hull(map, occluders, &h, VSH_RT_CLASSIFY_MAX_BLOCK_TEXELS);
 }

@@ -125,6 +125,17 @@ struct vtkRayTracedShadowPass::Internals
   std::vector<std::vector<float>> TranslucentVisibility;
   bool TracedTranslucent = false;
   bool ClassifierUsed = false;
+  // This frame's impostors for each light's map (vsh_rt_classify_occluders).
+  std::vector<vsh_rt_classify_occluders> Occluders;
+  ~Internals() { this->FreeOccluders(); }
+  void FreeOccluders()
+  {
+    for (vsh_rt_classify_occluders& o : this->Occluders)
+    {
+      vsh_rt_classify_occluders_free(&o);
+    }
+    this->Occluders.clear();
+  }
   bool Still = false;
   vtkShadowRayTracer::Counters Counters;
   vtkShadowRayTracer::Counters LastTraced; // the last frame that traced, for its rays per pixel
@@ -187,12 +198,13 @@ struct vtkRayTracedShadowPass::Internals
   }
 
   // The maps that decide pixels without rays (vtkShadowRayClassifier), for
-  // hard lights, when `classify` is on and every caster is a triangle.
+  // hard lights, when `classify` is on and no volume casts; with the
+  // frame's impostors as their occluders.
   void PrepareClassifier(vtkShadowRayTracer::Frame& rays, bool classify, int resolution)
   {
     this->ClassifierUsed = false;
-    if (!classify || !this->Volumes.IsEmpty() || this->Scene.HasImpostors() ||
-      this->Scene.IsEmpty())
+    this->FreeOccluders();
+    if (!classify || !this->Volumes.IsEmpty() || this->Scene.IsEmpty())
     {
       return;
     }
@@ -208,6 +220,40 @@ struct vtkRayTracedShadowPass::Internals
     std::copy_n(classifier.GetAnchor(), 3, rays.ClassifyAnchor);
     rays.InstanceRadius = this->Scene.GetLargestRadius();
     this->ClassifierUsed = !rays.Classify.empty();
+    if (this->ClassifierUsed && this->Scene.HasImpostors())
+    {
+      this->BuildOccluders(rays);
+    }
+  }
+
+  // Each map's occluders from the scene's impostor capsules, moved from
+  // the top levels' centre to the maps' anchor. A light whose occluders
+  // cannot be built loses its map this frame (every pixel traced).
+  void BuildOccluders(vtkShadowRayTracer::Frame& rays)
+  {
+    std::vector<double> capsules = this->Scene.GetImpostorCapsules();
+    const double* centre = this->Scene.GetCentre();
+    for (size_t k = 0; k < capsules.size(); ++k)
+    {
+      const size_t r = k % 4;
+      capsules[k] += r < 3 ? centre[r] - rays.ClassifyAnchor[r] : 0.0;
+    }
+    this->Occluders.assign(rays.Classify.size(), vsh_rt_classify_occluders());
+    rays.Occluders.assign(rays.Classify.size(), nullptr);
+    for (size_t l = 0; l < rays.Classify.size(); ++l)
+    {
+      if (!rays.Classify[l])
+      {
+        continue;
+      }
+      if (vsh_rt_classify_occluders_build(
+            &this->Occluders[l], rays.Classify[l], capsules.data(), capsules.size() / 8) != 0)
+      {
+        rays.Classify[l] = nullptr;
+        continue;
+      }
+      rays.Occluders[l] = &this->Occluders[l];
+    }
   }
 
   // Fold the last frame's traced fraction of hard lights into Traced.

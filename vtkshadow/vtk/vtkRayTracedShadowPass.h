@@ -83,8 +83,9 @@ public:
    * Decide without rays the pixels a light-space map proves lit or
    * shadowed (default 1, on): the image is the one every pixel's ray gives
    * (vsh_rt_classify.h says why), at the cost of the pixels the map leaves
-   * undecided. Hard lights only, and only when every caster is a triangle
-   * mesh (no spheres, tubes, flat quads or volumes). 0: every pixel traced.
+   * undecided. Hard lights only, and not while volumes cast; spheres,
+   * tubes and flat quads are the maps' per-frame occluders. 0: every
+   * pixel traced.
    * ClassifyResolution: texels a side of each light's map (64..4096,
    * default 1024; point lights and wide spots have six).
    */

@@ -293,7 +293,7 @@ bool vtkShadowEmbreeScene::GetTriangle(
 
 //------------------------------------------------------------------------------
 std::vector<double> vtkShadowEmbreeScene::PlacementKey(
-  const std::vector<Actor>& actors, const Camera& camera) const
+  const std::vector<Actor>& actors, const Camera& camera)
 {
   // What the top levels depend on: which meshes (and their versions), where,
   // and who casts; with points or lines, the camera their radii are for.
@@ -315,6 +315,7 @@ std::vector<double> vtkShadowEmbreeScene::PlacementKey(
     key.insert(key.end(), a.Matrix, a.Matrix + 16);
     impostors = impostors || !it->second->Drawn.Empty();
   }
+  this->WorldKeySize = key.size();
   if (impostors)
   {
     key.insert(key.end(), camera.Projection, camera.Projection + 16);
@@ -406,6 +407,23 @@ void vtkShadowEmbreeScene::AddMeshInstance(const Actor& a, const Mesh& mesh)
 }
 
 //------------------------------------------------------------------------------
+void vtkShadowEmbreeScene::AddCapsule(const float a[4], const float b[4])
+{
+  // Relative to the centre, the float radius rounded up by an ulp and a
+  // float ulp of the position's magnitude: what Embree holds, covered.
+  for (const float* ball : { a, b })
+  {
+    const double magnitude = std::fabs(ball[0]) + std::fabs(ball[1]) + std::fabs(ball[2]);
+    for (int r = 0; r < 3; ++r)
+    {
+      this->ImpostorCapsules.push_back(ball[r]);
+    }
+    this->ImpostorCapsules.push_back(
+      double(ball[3]) * (1.0 + 1e-6) + magnitude * double(std::numeric_limits<float>::epsilon()));
+  }
+}
+
+//------------------------------------------------------------------------------
 double vtkShadowEmbreeScene::AddSpheres(
   RTCScene scene, const Actor& a, const vtkshadow::Impostors& drawn, const Camera& camera)
 {
@@ -436,6 +454,11 @@ double vtkShadowEmbreeScene::AddSpheres(
       out[3] = static_cast<float>(drawn.SplatRadii[i]);
       largest = std::max(largest, drawn.SplatRadii[i]);
     }
+    for (size_t i = 0; i < points + splats; ++i)
+    {
+      const float* v = vertices + 4 * i;
+      this->AddCapsule(v, v);
+    }
   }
   CommitInto(scene, geometry);
   return largest;
@@ -463,6 +486,10 @@ double vtkShadowEmbreeScene::AddTubes(
     largest = FillImpostorVertices(drawn.LineVertices.data(), lineVertices, a.Matrix, this->Centre,
       camera, drawn.LineWidth, vertices);
     std::copy(drawn.Segments.begin(), drawn.Segments.end(), indices);
+    for (unsigned int first : drawn.Segments)
+    {
+      this->AddCapsule(vertices + 4 * size_t(first), vertices + 4 * (size_t(first) + 1));
+    }
   }
   CommitInto(scene, geometry);
   return largest;
@@ -497,6 +524,25 @@ size_t vtkShadowEmbreeScene::AddFlatQuads(
     for (size_t i = 0; i < 4 * quads; ++i)
     {
       indices[i] = static_cast<unsigned int>(i);
+    }
+    for (size_t q = 0; q < quads; ++q)
+    {
+      // The quad's bounding ball: its centre, to its farthest corner.
+      const float* v = vertices + 12 * q;
+      float ball[4] = { 0, 0, 0, 0 };
+      for (int c = 0; c < 4; ++c)
+      {
+        for (int r = 0; r < 3; ++r)
+        {
+          ball[r] += 0.25f * v[3 * c + r];
+        }
+      }
+      for (int c = 0; c < 4; ++c)
+      {
+        const float d[3] = { v[3 * c] - ball[0], v[3 * c + 1] - ball[1], v[3 * c + 2] - ball[2] };
+        ball[3] = std::max(ball[3], std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+      }
+      this->AddCapsule(ball, ball);
     }
   }
   CommitInto(scene, geometry);
@@ -567,6 +613,7 @@ bool vtkShadowEmbreeScene::BuildTopLevel(
   this->Parts.clear();
   this->ImpostorParts = 0;
   this->ImpostorSlack = 0;
+  this->ImpostorCapsules.clear();
   this->CasterOpacity.clear();
   this->CasterTransmit.clear();
   this->TranslucentCasters = false;
@@ -633,6 +680,13 @@ bool vtkShadowEmbreeScene::Update(
   std::vector<double> placement = this->PlacementKey(actors, camera);
   const double toEye[3] = { eye[0] - this->Centre[0], eye[1] - this->Centre[1],
     eye[2] - this->Centre[2] };
+  // Where things are in the world, whatever the camera sizes impostors at.
+  std::vector<double> world(placement.begin(), placement.begin() + this->WorldKeySize);
+  if (world != this->World)
+  {
+    this->World.swap(world);
+    ++this->WorldCommits;
+  }
   if (!this->Visible || placement != this->Placement || !vsh_rt_frame_usable(toEye, nearDistance))
   {
     this->Placement.swap(placement);

@@ -114,6 +114,16 @@ public:
   // without any): how far in front of a depth point on one of them the
   // front-most solid's surface can be.
   double GetLargestImpostorSlack() const { return this->ImpostorSlack; }
+  // Every sphere, tube segment and flat quad of the top levels as a
+  // capsule, the hull of two balls (8 doubles: a[3], ra, b[3], rb),
+  // relative to the centre and covering Embree's float copy: what the
+  // classifier's occluders are built from (vsh_rt_classify.h).
+  const std::vector<double>& GetImpostorCapsules() const { return this->ImpostorCapsules; }
+  // Changes of where things are in the world (actors, meshes, matrices,
+  // who casts), not counting the camera's changes of impostor radii nor
+  // moves of the top levels' origin: impostor-free parts stay where they
+  // were between two equal counts.
+  int GetWorldCommits() const { return this->WorldCommits; }
   // The largest Instance::Radius (the tracer's offset grows with it).
   double GetLargestRadius() const;
 
@@ -177,7 +187,11 @@ private:
     RTCScene scene, const Actor& a, const vtkshadow::Impostors& drawn, const Camera& camera);
   void Attach(const Actor& a, bool casts, RTCScene scene, const float transform[12],
     const Instance& instance);
-  std::vector<double> PlacementKey(const std::vector<Actor>& actors, const Camera& camera) const;
+  // Also notes how much of it is the world's part (WorldKeySize).
+  std::vector<double> PlacementKey(const std::vector<Actor>& actors, const Camera& camera);
+  // Appends the capsule of balls a and b (x, y, z, radius in float,
+  // relative to the centre) to ImpostorCapsules.
+  void AddCapsule(const float a[4], const float b[4]);
 
   RTCDevice Device = nullptr;
   RTCScene Visible = nullptr;
@@ -195,6 +209,10 @@ private:
   std::vector<Part> Parts;
   int ImpostorParts = 0;
   double ImpostorSlack = 0;
+  std::vector<double> ImpostorCapsules;
+  std::vector<double> World; // the placement key without the camera
+  size_t WorldKeySize = 0;
+  int WorldCommits = 0;
   std::vector<RTCScene> ImpostorScenes; // this top level's, released with it
   long long ImpostorCount = 0;
   std::vector<float> CasterOpacity;

@@ -33,8 +33,13 @@ void vtkShadowRayClassifier::Update(const vtkShadowEmbreeScene& scene,
   int resolution)
 {
   // What the maps depend on: the casters (the scene's rebuild counters) and
-  // each light in world space; not the camera.
-  std::vector<double> key = { double(resolution), double(scene.GetTopLevelCommits()),
+  // each light in world space; not the camera. With impostors the top
+  // levels are rebuilt whenever the camera changes their radii, so the
+  // maps (triangles only) follow the world's placements instead; the
+  // impostors are the tracer's per-frame occluders.
+  const bool impostors = scene.HasImpostors();
+  std::vector<double> key = { double(resolution), double(impostors),
+    double(impostors ? scene.GetWorldCommits() : scene.GetTopLevelCommits()),
     double(scene.GetMeshBuilds()) };
   for (size_t l = 0; l < lights.size(); ++l)
   {

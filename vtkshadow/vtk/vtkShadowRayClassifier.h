@@ -10,8 +10,11 @@
 // then only once the new state has held for a few frames (Wait: longer
 // while maps keep being dropped soon after their build, as in a scene
 // edited every few frames, where tracing every pixel is cheaper).
-// Spheres, tubes and flat quads (no triangles) and volumes are not in the
-// maps, so a scene with them gets no maps and every pixel is traced.
+// Spheres, tubes and flat quads (no triangles) are not in the maps: the
+// tracer asks the maps among per-frame occluders built from their bounds
+// (vsh_rt_classify_occluders), and the maps follow the world's placements,
+// not the camera that sizes them. Volumes are not in them either: a scene
+// with volumes gets no maps and every pixel is traced.
 #ifndef vtkShadowRayClassifier_h
 #define vtkShadowRayClassifier_h
 

@@ -144,12 +144,19 @@ struct Worker
     return this->Tolerances[(y - this->ToleranceY0) * Block + (x - this->ToleranceX0)];
   }
   bool ClassifyBlock(int x0, int y0, int x1, int y1, bool whole);
+  void DecideBlock(int x0, int y0, int x1, int y1);
   bool Classify(const vsh_rt_pixel_ray& ray, Surface& s);
   // Light l's map (null: not classified, or beyond Surface::MaxDecided).
   const vsh_rt_classify_map* MapOf(size_t l) const
   {
     const vtkShadowRayTracer::Frame& f = *this->Frame;
     return l < f.Classify.size() && l < size_t(Surface::MaxDecided) ? f.Classify[l] : nullptr;
+  }
+  // Light l's impostors the map does not hold (null: none).
+  const vsh_rt_classify_occluders* OccludersOf(size_t l) const
+  {
+    const std::vector<const vsh_rt_classify_occluders*>& o = this->Frame->Occluders;
+    return l < o.size() ? o[l] : nullptr;
   }
   // Whether the policy lets light l be asked (an empty policy: every light).
   static bool Allowed(const std::vector<bool>& policy, size_t l)
@@ -311,9 +318,15 @@ void Worker::Intersect()
 {
   if (!this->Hits.empty())
   {
+    // Incoherent: with RTC_INTERSECT_CONTEXT_FLAG_COHERENT, Embree 3.13's
+    // packets of a partly filled stream (a tile whose other pixels the
+    // classifier decided) missed a floor a ray through a sphere cloud meets
+    // when traced alone (particle-cloud, 800x600): the landing then fell
+    // back to the depth point and its shadow differed. Incoherent streams
+    // give the single ray's hit; the trace stage costs the same within
+    // the noise.
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     rtcIntersect1M(this->Scene->GetVisible(), &context, this->Hits.data(),
       static_cast<unsigned int>(this->Hits.size()), sizeof(RTCRayHit));
     this->Count.PrimaryRays += static_cast<long long>(this->Hits.size());
@@ -403,7 +416,8 @@ bool Worker::ClassifyBlock(int x0, int y0, int x1, int y1, bool whole)
   {
     const vsh_rt_classify_map* map = this->MapOf(l);
     const bool blocks = Allowed(f.ClassifyBlocks, l);
-    const int c = map && blocks ? vsh_rt_classify_block(map, &region) : VSH_RT_CLASSIFY_UNDECIDED;
+    const int c = map && blocks ? vsh_rt_classify_block_among(map, this->OccludersOf(l), &region)
+                                : VSH_RT_CLASSIFY_UNDECIDED;
     if (map && blocks && l < this->Count.BlockAsked.size())
     {
       // Yield: the drawn pixels of whole blocks asked, those any block
@@ -423,6 +437,16 @@ bool Worker::ClassifyBlock(int x0, int y0, int x1, int y1, bool whole)
   {
     return false;
   }
+  this->DecideBlock(x0, y0, x1, y1);
+  return true;
+}
+
+// Every drawn pixel of a block whose lights are all decided (BlockDecided):
+// its visibilities and counts.
+void Worker::DecideBlock(int x0, int y0, int x1, int y1)
+{
+  const vtkShadowRayTracer::Frame& f = *this->Frame;
+  const int width = f.View.width;
   Surface s;
   std::copy_n(this->BlockDecided, Surface::MaxDecided, s.Decided);
   for (int y = y0; y <= y1; ++y)
@@ -446,7 +470,6 @@ bool Worker::ClassifyBlock(int x0, int y0, int x1, int y1, bool whole)
       ++this->Count.BlockPixels;
     }
   }
-  return true;
 }
 
 // What the lights' maps decide for the pixel of `ray` (s.Decided); true
@@ -508,7 +531,7 @@ bool Worker::Classify(const vsh_rt_pixel_ray& ray, Surface& s)
     int c = this->BlockDecided[l];
     if (c == VSH_RT_CLASSIFY_UNDECIDED)
     {
-      c = vsh_rt_classify_pixel(map, &tube);
+      c = vsh_rt_classify_pixel_among(map, this->OccludersOf(l), &tube);
       ++this->Count.PixelAsked[l];
       this->Count.PixelDecided[l] += c != VSH_RT_CLASSIFY_UNDECIDED;
     }

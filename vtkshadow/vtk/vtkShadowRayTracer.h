@@ -60,6 +60,10 @@ public:
     // both); off where that seldom decides (vtkShadowRayClassifier).
     std::vector<bool> ClassifyBlocks, ClassifyPixels;
     double ClassifyAnchor[3] = { 0, 0, 0 };
+    // Per light of Classify, this frame's spheres, tubes and flat quads the
+    // map does not hold (null or empty: none): a LIT class stands only
+    // where they are all farther from the light than the pixel.
+    std::vector<const vsh_rt_classify_occluders*> Occluders;
     // The largest radius of the scene's instances: the tracer's offset
     // grows with it (the classifier's tube covers that).
     double InstanceRadius = 0;
