@@ -47,4 +47,6 @@ sh tests/gl-run.sh build/bin/vtkshadow-python bench/bench_soft.py \
 /usr/bin/python3 bench/make_results.py --bench "$OUT/bench" --growth "$OUT/growth" \
   --soft "$OUT/soft" --command "sh scripts/results.sh" --output docs/results.md
 sh tests/gl-run.sh /usr/bin/python3 bench/bench_classify.py --bin build/bin --out "$OUT/classify" \
-  --results docs/results.md scenes/scivis/*.json scenes/cad/*.json > "$OUT/classify.txt"
+  --results docs/results.md scenes/scivis/*.json scenes/cad/*.json \
+  scenes/primitives/molecule-spheres.json scenes/primitives/streamlines-tubes.json \
+  scenes/primitives/particle-cloud.json > "$OUT/classify.txt"
