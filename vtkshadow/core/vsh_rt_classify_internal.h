@@ -53,6 +53,22 @@ static inline double vsh_rtc_unit_normal(const vsh_rt_classify_map *map, size_t 
   return vsh_vec3_normalize(out, out);
 }
 
+/* Point p (anchor-relative) in face coordinates (x, y, z): x, y along the
+ * image plane's axes, z along the face's axis (from the light for a
+ * perspective face). */
+static inline void vsh_rtc_face_point(const vsh_rt_classify_map *map,
+                                      const vsh_rt_classify_face *face, const double p[3],
+                                      double out[3])
+{
+  double q[3];
+  for (int r = 0; r < 3; ++r) {
+    q[r] = p[r] - (face->perspective ? map->light.position[r] : 0.0);
+  }
+  out[0] = vsh_vec3_dot(q, face->e1);
+  out[1] = vsh_vec3_dot(q, face->e2);
+  out[2] = vsh_vec3_dot(q, face->axis);
+}
+
 /* The key of depth z along a face's axis: nearer the light is smaller. */
 static inline double vsh_rt_classify_key(const vsh_rt_classify_face *face, double z)
 {

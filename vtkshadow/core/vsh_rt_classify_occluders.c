@@ -13,12 +13,9 @@
 static int ball_box(const vsh_rt_classify_map *map, const vsh_rt_classify_face *face,
                     const double c[3], double r, double box[4], double *key)
 {
-  double p[3];
-  for (int k = 0; k < 3; ++k) {
-    p[k] = c[k] - (face->perspective ? map->light.position[k] : 0.0);
-  }
-  const double x = vsh_vec3_dot(p, face->e1), y = vsh_vec3_dot(p, face->e2);
-  const double z = vsh_vec3_dot(p, face->axis);
+  double f[3];
+  vsh_rtc_face_point(map, face, c, f);
+  const double x = f[0], y = f[1], z = f[2];
   if (!isfinite(x + y + z + r)) {
     return 0;
   }

@@ -14,13 +14,7 @@ static void face_coordinates(const vsh_rt_classify_map *map, const vsh_rt_classi
                              const double *tri, double out[3][3])
 {
   for (int k = 0; k < 3; ++k) {
-    double p[3];
-    for (int r = 0; r < 3; ++r) {
-      p[r] = tri[3 * k + r] - (face->perspective ? map->light.position[r] : 0.0);
-    }
-    out[k][0] = vsh_vec3_dot(p, face->e1);
-    out[k][1] = vsh_vec3_dot(p, face->e2);
-    out[k][2] = vsh_vec3_dot(p, face->axis);
+    vsh_rtc_face_point(map, face, tri + 3 * k, out[k]);
   }
 }
 

@@ -102,12 +102,10 @@ static int locate(const vsh_rt_classify_map *map, const vsh_rt_classify_face *fa
   double zlo = HUGE_VAL, zhi = -HUGE_VAL, ulo = HUGE_VAL, uhi = -HUGE_VAL, vlo = HUGE_VAL,
          vhi = -HUGE_VAL, spread = 0;
   for (int k = 0; k < h->count; ++k) {
-    double p[3];
-    for (int r = 0; r < 3; ++r) {
-      p[r] = h->points[k][r] - (face->perspective ? map->light.position[r] : 0.0);
-    }
-    double x = vsh_vec3_dot(p, face->e1), y = vsh_vec3_dot(p, face->e2);
-    const double z = vsh_vec3_dot(p, face->axis);
+    double f[3];
+    vsh_rtc_face_point(map, face, h->points[k], f);
+    double x = f[0], y = f[1];
+    const double z = f[2];
     if (!isfinite(x + y + z)) {
       return 0; /* so that the plain comparisons below never meet a NaN */
     }

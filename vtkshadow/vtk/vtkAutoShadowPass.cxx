@@ -1065,11 +1065,17 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The general candidates' names, by VSH_AUTO_GENERAL_* index.
+const char* const GeneralNames[VSH_AUTO_GENERAL_COUNT] = { "csm", "volume", "raytrace" };
+}
+
+//------------------------------------------------------------------------------
 std::string vtkAutoShadowPass::GeneralPickJSON(size_t l, const vsh_auto_candidate* candidates,
   const vsh_volume_ms_input& volume, int unsupported, int pick) const
 {
   const Internals& impl = *this->Impl;
-  static const char* const names[VSH_AUTO_GENERAL_COUNT] = { "csm", "volume", "raytrace" };
   std::ostringstream json;
   json.precision(4);
   json << "{\"light\": " << l << ", \"csm_error_pct\": "
@@ -1089,7 +1095,7 @@ std::string vtkAutoShadowPass::GeneralPickJSON(size_t l, const vsh_auto_candidat
        << ", \"raytrace_error_pct\": "
        << JSONNumber(candidates[VSH_AUTO_GENERAL_RAYTRACE].predicted_error_pct)
        << ", \"raytrace_ms\": " << JSONNumber(candidates[VSH_AUTO_GENERAL_RAYTRACE].cost)
-       << ", \"pick\": \"" << (pick >= 0 ? names[pick] : "csm") << "\"";
+       << ", \"pick\": \"" << (pick >= 0 ? GeneralNames[pick] : "csm") << "\"";
   // Whether the pick is predicted to meet the target (met): where no
   // candidate is, auto says so rather than promise it.
   const double predicted = pick >= 0 ? candidates[pick].predicted_error_pct : -1.0;
@@ -1125,10 +1131,10 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
   const vsh_volume_ms_input& volume, int unsupported, int pick)
 {
   Internals& impl = *this->Impl;
-  static const char* const names[VSH_AUTO_GENERAL_COUNT] = { "csm", "volume", "raytrace" };
   impl.GeneralJSON += (impl.GeneralJSON.empty() ? "" : ", ") +
     this->GeneralPickJSON(l, candidates, volume, unsupported, pick);
-  const std::string unmet = pick >= 0 ? this->UnmetNote(l, names[pick], candidates[pick]) : "";
+  const std::string unmet =
+    pick >= 0 ? this->UnmetNote(l, GeneralNames[pick], candidates[pick]) : "";
   if (pick != VSH_AUTO_GENERAL_RAYTRACE && pick != VSH_AUTO_GENERAL_VOLUME)
   {
     this->LightReasons[l] += unmet;

@@ -409,8 +409,8 @@ void vtkShadowEmbreeScene::AddMeshInstance(const Actor& a, const Mesh& mesh)
 //------------------------------------------------------------------------------
 void vtkShadowEmbreeScene::AddCapsule(const float a[4], const float b[4])
 {
-  // Relative to the centre, the float radius rounded up by an ulp and a
-  // float ulp of the position's magnitude: what Embree holds, covered.
+  // Relative to the centre, the float radius grown by 1e-6 of itself and
+  // a float epsilon of the position's magnitude: what Embree holds, covered.
   for (const float* ball : { a, b })
   {
     const double magnitude = std::fabs(ball[0]) + std::fabs(ball[1]) + std::fabs(ball[2]);
