@@ -5,9 +5,9 @@ Each EXAMPLE (a vedo example, run unmodified by compare/corpus/run_example.py
 with enable_shadows injected) is captured under `raytrace` and under
 `raytrace:classify=0` (every pixel traced); the two frames must be equal in
 every pixel, and the classifier must have built its maps in every example
-(a classifier that stands aside would pass the comparison trivially: it
-did in programs drawing points as spheres or lines as tubes before its
-maps took those as occluders).
+(a classifier that stands aside would pass the comparison trivially, as
+it would in programs drawing points as spheres or lines as tubes were the
+maps not to take those as occluders).
 
   test_classify_identical.py --python PY --out DIR EXAMPLE...
 """
