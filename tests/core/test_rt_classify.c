@@ -3,7 +3,8 @@
  * every triangle) from the surface point the tube holds, for a directional,
  * a narrow spot and a point light (six faces) over a floor, a box, a
  * tilted plate, a sphere and a terrain; most tubes are decided; tubes on
- * a sharp valley's floor; and the degenerate
+ * a sharp valley's floor; folded, interpenetrating and open shapes; and
+ * the degenerate
  * cases (no casters, geometry at the light, a tube across many texels, a
  * tube behind the light, a non-caster floor, bad input). */
 #include "vsh_check.h"
@@ -19,7 +20,7 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-#define MAX_TRIANGLES 4096
+#define MAX_TRIANGLES 8192
 static double tris[MAX_TRIANGLES * 9];
 static unsigned char flags[MAX_TRIANGLES];
 static int placement[MAX_TRIANGLES]; /* one per shape, as an actor's */
@@ -316,6 +317,7 @@ static int check_blocks(const vsh_rt_light *light, int resolution, double *decid
       }
     }
     region.radius = 5 * vsh_rt_offset_distance(12.0);
+    region.reland = 0;
     const int cls = vsh_rt_classify_block(&map, &region);
     ++n;
     if (cls == VSH_RT_CLASSIFY_UNDECIDED) {
@@ -490,13 +492,98 @@ static void test_terrain_edges(void)
   vsh_rt_classify_free(&map);
 }
 
+/* A Z-folded sheet (three layers joined by two folds), two spheres that
+ * interpenetrate (one placement: each one's rim crosses the other's
+ * projection) and an open bowl (boundary edges), finely tessellated (few
+ * texels lie inside one triangle), over a floor. */
+static void make_folds(void)
+{
+  count = 0;
+  shape = 0;
+  const double f[4][3] = { { -3, -3, 0 }, { 3, -3, 0 }, { 3, 3, 0 }, { -3, 3, 0 } };
+  add_quad(f[0], f[1], f[2], f[3], VSH_RT_CLASSIFY_CASTS);
+  shape = 1;
+  /* Layers A (z 1, x -1..1), B (back to x -0.5, rising to 1.2) and C (on
+   * to x 1.5, rising to 1.4), each 16 x 24 cells. */
+  const double corner[4][2] = { { -1, 1.0 }, { 1, 1.0 }, { -0.5, 1.2 }, { 1.5, 1.4 } };
+  for (int layer = 0; layer < 3; ++layer) {
+    const double *a = corner[layer], *b = corner[layer + 1];
+    for (int i = 0; i < 16; ++i) {
+      for (int j = 0; j < 24; ++j) {
+        double p[4][3];
+        for (int k = 0; k < 4; ++k) {
+          const double w = (i + (k & 1)) / 16.0;
+          p[k][0] = a[0] + w * (b[0] - a[0]);
+          p[k][1] = -1.5 + 0.125 * (j + (k >> 1));
+          p[k][2] = a[1] + w * (b[1] - a[1]);
+        }
+        add_quad(p[0], p[1], p[3], p[2], VSH_RT_CLASSIFY_CASTS);
+      }
+    }
+  }
+  shape = 2;
+  const double c1[3] = { 1.6, -2.0, 1.2 }, c2[3] = { 2.2, -2.0, 1.3 };
+  add_sphere(c1, 0.5, 16, 24);
+  add_sphere(c2, 0.5, 16, 24);
+  shape = 3;
+  for (int i = 8; i < 16; ++i) { /* the lower half of a sphere */
+    for (int j = 0; j < 24; ++j) {
+      double p[4][3];
+      for (int k = 0; k < 4; ++k) {
+        const double th = M_PI * (i + (k >> 1)) / 16, ph = 2 * M_PI * (j + (k & 1)) / 24;
+        p[k][0] = -2.0 + 0.6 * sin(th) * cos(ph);
+        p[k][1] = 2.0 + 0.6 * sin(th) * sin(ph);
+        p[k][2] = 1.4 + 0.6 * cos(th);
+      }
+      add_quad(p[0], p[1], p[3], p[2], VSH_RT_CLASSIFY_CASTS);
+    }
+  }
+}
+
+/* The folds scene under a tilted directional and a point light: every
+ * tube decided agrees with the exact ray from its offset origin, on any
+ * surface and on the floor in the casters' shadows, where contour edges
+ * cross many texels (folds inside the projections, the spheres' rims over
+ * each other) and most tubes are still decided shadowed. */
+static void test_folds(void)
+{
+  for (int kind = 0; kind < 2; ++kind) {
+    vsh_rt_light light = make_light(kind ? VSH_RT_POINT : VSH_RT_DIRECTIONAL);
+    make_folds();
+    vsh_rt_classify_map map;
+    CHECK(vsh_rt_classify_build(&map, &light, tris, flags, placement, count, 512) == 0);
+    int wrong = 0, shadows = 0, decided = 0;
+    for (int k = 0; k < 8000; ++k) {
+      double s[3], eye[3];
+      size_t t = random_point(s, eye);
+      if (k % 2) { /* on the floor */
+        s[0] = vsh_test_rnd(-3, 3), s[1] = vsh_test_rnd(-3, 3), s[2] = 0;
+        t = s[0] - s[1] < 0 ? 1 : 0; /* the floor's triangle holding it */
+      }
+      int truth;
+      const int c = tube_class(&map, &light, s, t, eye, &truth);
+      wrong += c != VSH_RT_CLASSIFY_UNDECIDED && c != truth;
+      if (k % 2 && truth == VSH_RT_CLASSIFY_SHADOWED) {
+        ++shadows;
+        decided += c == VSH_RT_CLASSIFY_SHADOWED;
+      }
+    }
+    printf("folds, %s: floor in shadow decided %d of %d, wrong %d\n",
+           kind ? "point" : "directional", decided, shadows, wrong);
+    CHECK(wrong == 0);
+    CHECK(shadows > 200);
+    CHECK(decided > 0.9 * shadows);
+    vsh_rt_classify_free(&map);
+  }
+}
+
 static void test_degenerate(void)
 {
   vsh_rt_light light = make_light(VSH_RT_DIRECTIONAL);
   vsh_rt_classify_map map;
   /* Nothing casts: every tube lit. */
   CHECK(vsh_rt_classify_build(&map, &light, NULL, NULL, NULL, 0, 64) == 0);
-  vsh_rt_classify_tube tube = { { 0, 0, 5 }, { 0, 0, -1 }, 4.9, 5.1, 1e-6 };
+  vsh_rt_classify_tube tube = { { 0, 0, 5 }, { 0, 0, -1 }, 4.9, 5.1, 1e-6, 0 };
   CHECK(vsh_rt_classify_pixel(&map, &tube) == VSH_RT_CLASSIFY_LIT);
   vsh_rt_classify_free(&map);
   /* Bad input: refused, and the map decides nothing. */
@@ -513,13 +600,13 @@ static void test_degenerate(void)
   /* A tube across many texels (a depth interval a whole scene long). */
   CHECK(vsh_rt_classify_build(&map, &light, tris, flags, placement, count, 512) == 0);
   vsh_rt_classify_tube wide = { { -8, -8, 1 }, { 0.7071067811865476, 0.7071067811865476, 0 },
-                                0, 20, 1e-6 };
+                                0, 20, 1e-6, 0 };
   CHECK(vsh_rt_classify_pixel(&map, &wide) == VSH_RT_CLASSIFY_UNDECIDED);
   /* Under the box, far below the floor: the floor covers it. */
-  vsh_rt_classify_tube below = { { -1.5, -0.2, -3 }, { 0, 0, -1 }, 0, 1e-4, 1e-7 };
+  vsh_rt_classify_tube below = { { -1.5, -0.2, -3 }, { 0, 0, -1 }, 0, 1e-4, 1e-7, 0 };
   CHECK(vsh_rt_classify_pixel(&map, &below) == VSH_RT_CLASSIFY_SHADOWED);
   /* Above everything: lit. */
-  vsh_rt_classify_tube above = { { 0, 0, 9 }, { 0, 0, -1 }, 0, 1e-4, 1e-7 };
+  vsh_rt_classify_tube above = { { 0, 0, 9 }, { 0, 0, -1 }, 0, 1e-4, 1e-7, 0 };
   CHECK(vsh_rt_classify_pixel(&map, &above) == VSH_RT_CLASSIFY_LIT);
   /* An inverted interval. */
   vsh_rt_classify_tube inverted = above;
@@ -537,7 +624,7 @@ static void test_degenerate(void)
   /* A tube behind a point light's face (at the light): undecided. */
   vsh_rt_light point = make_light(VSH_RT_POINT);
   CHECK(vsh_rt_classify_build(&map, &point, tris, flags, placement, count, 64) == 0);
-  vsh_rt_classify_tube through = { { 0.5, 0.3, 3.4 }, { 0, 0, 1 }, 0, 0.2, 1e-7 };
+  vsh_rt_classify_tube through = { { 0.5, 0.3, 3.4 }, { 0, 0, 1 }, 0, 0.2, 1e-7, 0 };
   CHECK(vsh_rt_classify_pixel(&map, &through) == VSH_RT_CLASSIFY_UNDECIDED);
   CHECK(vsh_rt_classify_bytes(&map) > 6 * 64 * 64 * 16);
   vsh_rt_classify_free(&map);
@@ -549,6 +636,7 @@ int main(void)
   test_blocks_agree_with_rays();
   test_valley_floor();
   test_terrain_edges();
+  test_folds();
   test_degenerate();
   return vsh_check_report("rt_classify");
 }

@@ -93,3 +93,17 @@ add_test(NAME render.raytrace.classify
           --case scivis/elevation:0:0.3
           --case primitives/molecule-spheres:0:0.75 --case primitives/particle-cloud:0:0.5)
 set_tests_properties(render.raytrace.classify PROPERTIES LABELS "render" TIMEOUT 300)
+
+# The depth tolerance around each pixel's depth (64 depth steps plus half
+# the step to the nearest drawn neighbour) holds the exact hit with a
+# margin of two: at most 1e-4 of the landings (and 4 silhouette pixels)
+# beyond half of it, on the near/far 1e5 and 1e6 scenes, a grazing floor,
+# two library scenes and the floor 2e5 long (its error reaches a quarter
+# of the step), every pixel traced (with a quarter of the step as the
+# tolerance, the long floor has 51,772 landings beyond half). Budget: 20 s.
+add_test(NAME render.raytrace.depth_error
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_depth_error.py
+          --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/raytrace-depth-error
+          hard/near-far-1e5 hard/near-far-1e6 hard/grazing-89.9 scivis/isosurface
+          scivis/arrow-glyphs raytrace:thin-plate-long-floor)
+set_tests_properties(render.raytrace.depth_error PROPERTIES LABELS "render" TIMEOUT 120)

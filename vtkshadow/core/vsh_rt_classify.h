@@ -166,6 +166,11 @@ typedef struct vsh_rt_classify_tube {
   double dir[3]; /* unit */
   double t0, t1;
   double radius;
+  /* How far before t0 and past t1 a landing on an impostor may move the
+   * surface point along dir (the tracer re-traces a pixel that meets a
+   * sphere or tube from twice the largest impostor radius before it);
+   * 0 without impostors. vsh_rt_classify_tube_init sets 0. */
+  double reland;
 } vsh_rt_classify_tube;
 
 /* The tube of the pixel ray `ray` (vsh_rt_pixel_ray_init, camera-relative)
@@ -186,9 +191,10 @@ int vsh_rt_classify_pixel(const vsh_rt_classify_map *map, const vsh_rt_classify_
  * the unit view directions of its 4 corner pixels (a block whose class is
  * decided costs one call instead of one per pixel and light). */
 typedef struct vsh_rt_classify_region {
-  double corner[8][3];
+  double corner[8][3]; /* corner k (near) and k + 4 (far) on pixel ray k */
   double dir[4][3];
   double radius;
+  double reland; /* as the tube's, along each corner's ray */
 } vsh_rt_classify_region;
 
 /* The region's class: every pixel of the block has it. */
@@ -209,7 +215,11 @@ int vsh_rt_classify_block(const vsh_rt_classify_map *map, const vsh_rt_classify_
  * no impostor is between any origin and the light, and the pixel's surface
  * is not on one (an impostor under the tube has a key at most the tube's),
  * so the triangle rules' reasoning holds with every surface. SHADOWED
- * needs nothing (an opaque triangle is across every origin's ray). */
+ * needs nothing (an opaque triangle is across every origin's ray).
+ * Where an impostor may meet the tube grown by its reland distance (the
+ * occluders are not clear of it), a landing on that impostor may leave the
+ * tube: the grown tube is classified instead, which holds every landing
+ * (and is then never LIT). */
 typedef struct vsh_rt_classify_occluder_face {
   int blocks;       /* blocks a side: the map face's n / 8 */
   float *keys;      /* blocks x blocks row-major, +inf where no impostor */

@@ -25,6 +25,7 @@ void vsh_rt_classify_tube_init(const vsh_rt_pixel_ray *ray, const double eye_to_
   /* The origin's offset off the surface, and four more for the float
    * rounding of the ray's origin and of Embree's triangles. */
   out->radius = 5.0 * vsh_rt_offset_distance(magnitude);
+  out->reland = 0;
 }
 
 /* What is classified: the hull of `count` points grown by `radius`, seen
@@ -35,6 +36,7 @@ typedef struct hull {
   const double (*dirs)[3];
   int views;
   double radius;
+  double reland; /* a landing may move this far along the views (vsh_rt_classify_tube) */
 } hull;
 
 /* Whether a spot light's cone holds none of the hull (1), all of it (0),
@@ -292,9 +294,51 @@ static int classify_footprint(const vsh_rt_classify_map *map, const vsh_rt_class
   return scan(map, face, h, fp, range, 0, key_lo, key_hi);
 }
 
-static int classify_hull(const vsh_rt_classify_map *map, const vsh_rt_classify_occluders *occluders,
-                         const hull *h, int max_texels)
+/* The hull grown by its reland distance: the first half of its points (the
+ * near ends) moved back along their views, the rest forward (a tube's two
+ * ends on its one view; a block's corners k and k + 4 on view k). */
+static hull grown(const hull *h, double (*points)[3])
 {
+  for (int k = 0; k < h->count; ++k) {
+    const double *d = h->dirs[k % h->views];
+    const double s = k < h->count / 2 ? -h->reland : h->reland;
+    for (int r = 0; r < 3; ++r) {
+      points[k][r] = h->points[k][r] + s * d[r];
+    }
+  }
+  hull g = *h;
+  g.points = (const double(*)[3])points;
+  g.reland = 0;
+  return g;
+}
+
+/* Whether the occluders keep every impostor farther than the hull from the
+ * light, over its footprint (then no impostor meets it). */
+static int clear_of_impostors(const vsh_rt_classify_map *map,
+                              const vsh_rt_classify_occluders *occluders, const hull *h)
+{
+  const int f = choose_face(map, h);
+  footprint fp;
+  return locate(map, &map->face[f], h, &fp) &&
+         vsh_rtc_occluders_clear(occluders, &map->face[f], f, fp.umin, fp.umax, fp.vmin, fp.vmax,
+                                 vsh_rtc_round_up(fp.key_hi));
+}
+
+static int classify_hull(const vsh_rt_classify_map *map, const vsh_rt_classify_occluders *occluders,
+                         const hull *given, int max_texels)
+{
+  const hull *h = given;
+  double points[8][3];
+  hull wide;
+  if (map && !map->unusable && map->count > 0 && occluders && occluders->count > 0 &&
+      given->reland > 0 && given->count <= 8) {
+    /* An impostor may meet the tube grown by the reland distance: a
+     * landing on it may be anywhere there, so classify all of it. */
+    wide = grown(given, points);
+    if (!clear_of_impostors(map, occluders, &wide)) {
+      h = &wide;
+    }
+  }
   if (!map || map->unusable) {
     return VSH_RT_CLASSIFY_UNDECIDED;
   }
@@ -342,7 +386,8 @@ int vsh_rt_classify_pixel_among(const vsh_rt_classify_map *map,
     ends[0][r] = tube->origin[r] + tube->t0 * tube->dir[r];
     ends[1][r] = tube->origin[r] + tube->t1 * tube->dir[r];
   }
-  const hull h = { (const double(*)[3])ends, 2, (const double(*)[3])tube->dir, 1, tube->radius };
+  const hull h = { (const double(*)[3])ends, 2, (const double(*)[3])tube->dir, 1, tube->radius,
+                   tube->reland };
   return classify_hull(map, occluders, &h, VSH_RT_CLASSIFY_MAX_TEXELS);
 }
 
@@ -359,6 +404,6 @@ int vsh_rt_classify_block_among(const vsh_rt_classify_map *map,
     return VSH_RT_CLASSIFY_UNDECIDED;
   }
   const hull h = { (const double(*)[3])region->corner, 8, (const double(*)[3])region->dir, 4,
-                   region->radius };
+                   region->radius, region->reland };
   return classify_hull(map, occluders, &h, VSH_RT_CLASSIFY_MAX_BLOCK_TEXELS);
 }

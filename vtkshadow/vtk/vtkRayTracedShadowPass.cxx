@@ -219,6 +219,7 @@ struct vtkRayTracedShadowPass::Internals
     classifier.Policy(rays.ClassifyBlocks, rays.ClassifyPixels);
     std::copy_n(classifier.GetAnchor(), 3, rays.ClassifyAnchor);
     rays.InstanceRadius = this->Scene.GetLargestRadius();
+    rays.ImpostorReland = 2 * this->Scene.GetLargestImpostorSlack();
     this->ClassifierUsed = !rays.Classify.empty();
     if (this->ClassifierUsed && this->Scene.HasImpostors())
     {
@@ -813,7 +814,9 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"skipped_background_px\": " << c.Background
       << ", \"traced_facing_away\": " << c.FacingAway
       << ", \"skipped_outside_cone\": " << c.OutsideCone
-      << ", \"refine_misses_px\": " << c.RefineMisses << ", \"trace_ms\": " << 1e3 * c.Seconds
+      << ", \"refine_misses_px\": " << c.RefineMisses << ", \"landed_px\": " << c.Landed
+      << ", \"landed_beyond_half_tolerance_px\": " << c.LandedBeyondHalfTolerance
+      << ", \"trace_ms\": " << 1e3 * c.Seconds
       << ", \"rays_per_second\": " << (c.Seconds > 0 ? rays / c.Seconds : 0.0)
       << ", \"rays_per_second_per_thread_model\": " << impl.Cost.rays_per_second_per_thread
       << ", \"threads\": " << c.Threads << ", \"shadow_stage_ms\": " << 1e3 * impl.FrameSeconds

@@ -172,6 +172,7 @@ struct Worker
   void RefinePixels(int x0, int y0, int x1, int y1);
   void Intersect();
   void Land(int k);
+  void CountLanding(int k, const Surface& s);
   bool Reland(int k, const vtkShadowEmbreeScene::Instance& inst);
   bool RelandFront(int k);
   bool RelandOwn(int k, const vtkShadowEmbreeScene::Instance& inst);
@@ -411,6 +412,7 @@ bool Worker::ClassifyBlock(int x0, int y0, int x1, int y1, bool whole)
   }
   region.radius =
     5.0 * vsh_rt_offset_distance(magnitude + span + f.InstanceRadius) + 2e-5 * distance;
+  region.reland = f.ImpostorReland;
   bool all = true;
   for (size_t l = 0; l < f.Lights.size(); ++l)
   {
@@ -511,6 +513,7 @@ bool Worker::Classify(const vsh_rt_pixel_ray& ray, Surface& s)
     std::fabs(ray.hi - ray.distance) + f.InstanceRadius;
   vsh_rt_classify_tube tube;
   vsh_rt_classify_tube_init(&ray, eyeToAnchor, magnitude, &tube);
+  tube.reland = f.ImpostorReland;
   bool all = true;
   const size_t lights = f.Lights.size();
   for (size_t l = 0; l < lights; ++l)
@@ -601,6 +604,10 @@ void Worker::Land(int k)
       s.Normal[r] = n[r] * scale;
     }
     s.HasNormal = len2 > 0;
+    if (!landed.Impostors)
+    {
+      this->CountLanding(k, s);
+    }
     const double magnitude =
       std::sqrt(s.Point[0] * s.Point[0] + s.Point[1] * s.Point[1] + s.Point[2] * s.Point[2]) +
       landed.Radius;
@@ -608,6 +615,20 @@ void Worker::Land(int k)
     return;
   }
   this->Miss(k);
+}
+
+// How far the exact surface point of refinement ray k lies from its depth
+// point, against the depth tolerance (the interval's half width).
+void Worker::CountLanding(int k, const Surface& s)
+{
+  const vsh_rt_pixel_ray& ray = this->Pixels[k];
+  double t = 0;
+  for (int r = 0; r < 3; ++r)
+  {
+    t += (s.Point[r] - ray.origin[r] - this->EyeToCentre[r]) * ray.direction[r];
+  }
+  ++this->Count.Landed;
+  this->Count.LandedBeyondHalfTolerance += std::fabs(t - ray.distance) > 0.25 * (ray.hi - ray.lo);
 }
 
 // A pixel on a sphere or tube (an impostor instance): VTK's impostor depth
@@ -662,7 +683,7 @@ bool Worker::RelandFrom(int k, RTCScene scene, double back, unsigned int instanc
 
 bool Worker::RelandFront(int k)
 {
-  const double back = 2 * this->Scene->GetLargestImpostorSlack();
+  const double back = 2 * this->Scene->GetLargestImpostorSlack(); // Frame::ImpostorReland
   return back > 0 &&
     this->RelandFrom(k, this->Scene->GetVisible(), back, RTC_INVALID_GEOMETRY_ID,
       [](const vtkShadowEmbreeScene::Instance& i) { return i.Impostors != nullptr; });
@@ -1066,6 +1087,8 @@ void vtkShadowRayTracer::Counters::Add(const Counters& o)
   this->Background += o.Background;
   this->PrimaryRays += o.PrimaryRays;
   this->RefineMisses += o.RefineMisses;
+  this->Landed += o.Landed;
+  this->LandedBeyondHalfTolerance += o.LandedBeyondHalfTolerance;
   this->FacingAway += o.FacingAway;
   this->OutsideCone += o.OutsideCone;
   this->ShadowRays += o.ShadowRays;

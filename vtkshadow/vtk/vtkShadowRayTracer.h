@@ -41,11 +41,15 @@ public:
     std::vector<std::vector<int>> Order;
     // The depth buffer's error around a pixel's depth: DepthTolerance plus
     // SlopeTolerance times the largest depth step to a drawn neighbour
-    // (llvmpipe interpolates depth in float across whole triangles: on large,
-    // steep triangles its error reaches hundreds of 24-bit steps, in
-    // proportion to the depth gradient).
+    // (llvmpipe interpolates depth in float across whole triangles: its
+    // error reaches hundreds of 24-bit steps, in proportion to the depth
+    // gradient: at most a 32nd of the step to a neighbour on the library
+    // and hard scenes, a quarter on a floor 2e5 long clipped at the camera;
+    // render.raytrace.depth_error). Half a step keeps a margin of two. The
+    // classifier's tubes are as long as this interval: the tighter, the
+    // more pixels it decides.
     double DepthTolerance = 64 * VSH_RT_DEPTH_QUANTUM;
-    double SlopeTolerance = 1.0;
+    double SlopeTolerance = 0.5;
     // The volumes that cast (placed in the scene's frame), or null: a ray
     // no opaque caster blocks keeps the fraction of its light they let
     // through (vtkShadowVolumeCasters).
@@ -67,6 +71,11 @@ public:
     // The largest radius of the scene's instances: the tracer's offset
     // grows with it (the classifier's tube covers that).
     double InstanceRadius = 0;
+    // How far a landing on an impostor may move a pixel's surface point
+    // along its ray (Worker::RelandFront: twice the largest impostor
+    // slack): the classifier's tubes reach that far where an impostor may
+    // be near them. 0 without impostors.
+    double ImpostorReland = 0;
   };
 
   struct Counters
@@ -75,8 +84,12 @@ public:
     long long Background = 0;   // nothing drawn
     long long PrimaryRays = 0;  // refinement rays
     long long RefineMisses = 0; // refinement found no triangle: the depth point is used
-    long long FacingAway = 0;   // (pixel, light) pairs traced whose facet faces away from the light
-    long long OutsideCone = 0;  // (pixel, light) pairs outside a spot cone
+    // Refinement hits landed on a mesh's triangle, and those farther from
+    // the depth point than half the depth tolerance (how near the depth
+    // buffer's error comes to the tolerance: render.raytrace.depth_error).
+    long long Landed = 0, LandedBeyondHalfTolerance = 0;
+    long long FacingAway = 0;  // (pixel, light) pairs traced whose facet faces away from the light
+    long long OutsideCone = 0; // (pixel, light) pairs outside a spot cone
     long long ShadowRays = 0;
     long long VolumeSamples = 0; // opacity samples the shadow rays took in volumes
     // Per light: (pixel, light) pairs traced, their shadow rays, and the
