@@ -132,6 +132,7 @@ static void check_floor(const vsh_rt_light *light, const vsh_rt_classify_map *ma
 {
   vsh_test_seed(7);
   int lit = 0, wrong = 0, shadowed_tubes = 0, forgotten = 0, clear = 0, clear_lit = 0;
+  int clear_lit_reland = 0;
   for (int n = 0; n < 6000; ++n) {
     const double p[3] = { vsh_test_rnd(-3.5, 3.5), vsh_test_rnd(-3.5, 3.5),
                           0.0 };
@@ -156,6 +157,10 @@ static void check_floor(const vsh_rt_light *light, const vsh_rt_classify_map *ma
     if (!near) {
       ++clear;
       clear_lit += c == VSH_RT_CLASSIFY_LIT;
+      /* The floor lies beyond every impostor's far side: a landing on one
+       * cannot happen there, and the tube keeps its class. */
+      tube.reland = 0.6;
+      clear_lit_reland += vsh_rt_classify_pixel_among(map, occ, &tube) == VSH_RT_CLASSIFY_LIT;
     }
   }
   CHECK_MSG(wrong == 0, "floor tubes LIT among occluders but blocked: %d", wrong);
@@ -166,6 +171,8 @@ static void check_floor(const vsh_rt_light *light, const vsh_rt_classify_map *ma
             forgotten, shadowed_tubes);
   CHECK_MSG(clear_lit > clear / 2, "tubes clear of the impostors decided LIT: %d of %d", clear_lit,
             clear);
+  CHECK_MSG(clear_lit_reland > 0.95 * clear_lit,
+            "with a reland distance of 0.6: %d of them still LIT", clear_lit_reland);
   (void)lit;
 }
 

@@ -216,14 +216,16 @@ int vsh_rt_classify_block(const vsh_rt_classify_map *map, const vsh_rt_classify_
  * is not on one (an impostor under the tube has a key at most the tube's),
  * so the triangle rules' reasoning holds with every surface. SHADOWED
  * needs nothing (an opaque triangle is across every origin's ray).
- * Where an impostor may meet the tube grown by its reland distance (the
- * occluders are not clear of it), a landing on that impostor may leave the
- * tube: the grown tube is classified instead, which holds every landing
- * (and is then never LIT). */
+ * Where an impostor may meet the tube grown by its reland distance (a
+ * block of its footprint holds impostors whose keys span part of its own),
+ * a landing on that impostor may leave the tube: the grown tube is
+ * classified instead, which holds every landing (and is then never LIT). */
 typedef struct vsh_rt_classify_occluder_face {
   int blocks;       /* blocks a side: the map face's n / 8 */
   float *keys;      /* blocks x blocks row-major, +inf where no impostor */
+  float *far_keys;  /* the largest key of those impostors, -inf where none */
   float outside;    /* the smallest key of any impostor projecting beyond the face */
+  float outside_far; /* and the largest */
   float everywhere; /* the smallest key of a ball reaching a perspective face's plane */
 } vsh_rt_classify_occluder_face;
 

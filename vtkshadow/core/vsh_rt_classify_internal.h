@@ -120,6 +120,11 @@ int vsh_rtc_occluders_clear(const vsh_rt_classify_occluders *occluders,
                             const vsh_rt_classify_face *face, int f, double umin, double umax,
                             double vmin, double vmax, float key_hi);
 float vsh_rtc_round_up(double x);
+/* Whether face f's occluders may hold an impostor with a key in [key_lo,
+ * key_hi] over the footprint (1), or surely not (0). */
+int vsh_rtc_occluders_reach(const vsh_rt_classify_occluders *occluders,
+                            const vsh_rt_classify_face *face, int f, double umin, double umax,
+                            double vmin, double vmax, float key_lo, float key_hi);
 
 /* Triangle `tri` (9 doubles; a segment as (a, b, b)) clipped to the
  * face's frustum and projected: 0 when nothing of it is in the face. */

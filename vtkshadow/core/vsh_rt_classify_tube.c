@@ -312,16 +312,16 @@ static hull grown(const hull *h, double (*points)[3])
   return g;
 }
 
-/* Whether the occluders keep every impostor farther than the hull from the
- * light, over its footprint (then no impostor meets it). */
-static int clear_of_impostors(const vsh_rt_classify_map *map,
+/* Whether an impostor may meet the hull: over its footprint, one whose keys
+ * reach into the hull's key range. */
+static int may_meet_impostors(const vsh_rt_classify_map *map,
                               const vsh_rt_classify_occluders *occluders, const hull *h)
 {
   const int f = choose_face(map, h);
   footprint fp;
-  return locate(map, &map->face[f], h, &fp) &&
-         vsh_rtc_occluders_clear(occluders, &map->face[f], f, fp.umin, fp.umax, fp.vmin, fp.vmax,
-                                 vsh_rtc_round_up(fp.key_hi));
+  return !locate(map, &map->face[f], h, &fp) ||
+         vsh_rtc_occluders_reach(occluders, &map->face[f], f, fp.umin, fp.umax, fp.vmin, fp.vmax,
+                                 vsh_rtc_round_down(fp.key_lo), vsh_rtc_round_up(fp.key_hi));
 }
 
 static int classify_hull(const vsh_rt_classify_map *map, const vsh_rt_classify_occluders *occluders,
@@ -335,7 +335,7 @@ static int classify_hull(const vsh_rt_classify_map *map, const vsh_rt_classify_o
     /* An impostor may meet the tube grown by the reland distance: a
      * landing on it may be anywhere there, so classify all of it. */
     wide = grown(given, points);
-    if (!clear_of_impostors(map, occluders, &wide)) {
+    if (may_meet_impostors(map, occluders, &wide)) {
       h = &wide;
     }
   }

@@ -794,12 +794,13 @@ void Worker::Queue(const Surface& s, int surface)
     // A facet whose geometric normal faces away from the light is still
     // traced: the mapper shades it with interpolated normals, which near a
     // curved surface's terminator still face the light, so VTK lights it
-    // where a ray from the facet meets the mesh itself (as POV-Ray's does on
-    // the same mesh) or another caster (a floor between it and the light).
-    // The origin stays on the camera's side of the facet; the ray crosses
-    // the facet or the mesh behind it, so a surface that truly faces away
-    // gets 0 and its lighting is 0 anyway. Skipping is exact only where the
-    // mapper's lighting is zero: outside a spot cone (below).
+    // unless a ray from the facet meets the mesh elsewhere or another
+    // caster (a floor between it and the light). The ray starts on the
+    // light's side of the facet (Push), so the facet itself never blocks
+    // it, as with POV-Ray's and Cycles' rays from the same point: a surface
+    // that truly faces away (a closed body's far side) still meets the body.
+    // Skipping is exact only where the mapper's lighting is zero: outside a
+    // spot cone (below).
     if (s.HasNormal &&
       s.Normal[0] * toLight[0] + s.Normal[1] * toLight[1] + s.Normal[2] * toLight[2] <= 0)
     {
@@ -815,6 +816,20 @@ void Worker::Queue(const Surface& s, int surface)
       { s, static_cast<int>(l), rotation, { 0.0, 0.0, 0, 0, 0, 0.0, { 0.0, 0.0, 0.0 } } });
     const int pair = static_cast<int>(this->Pairs.size()) - 1;
     this->Push(pair, 0, f.First.empty() ? f.Samples[l] : f.First[l]);
+  }
+}
+
+// A shadow ray's origin along `dir`: off the surface by its offset, on the
+// side the ray leaves by (the camera's side, unless the facet faces away
+// from the ray: then the facet is behind the origin, as for a ray tracer's
+// ray from the same point).
+void ShadowOrigin(const Surface& s, const double dir[3], double out[3])
+{
+  const double along = s.Normal[0] * dir[0] + s.Normal[1] * dir[1] + s.Normal[2] * dir[2];
+  const double side = s.HasNormal && along < 0 ? -s.Offset : s.Offset;
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = s.Point[k] + side * s.Normal[k];
   }
 }
 
@@ -840,10 +855,12 @@ void Worker::Push(int pair, int begin, int end)
     {
       continue;
     }
+    double origin[3];
+    ShadowOrigin(s, dir, origin);
     RTCRay ray;
-    ray.org_x = static_cast<float>(s.Point[0] + s.Offset * s.Normal[0]);
-    ray.org_y = static_cast<float>(s.Point[1] + s.Offset * s.Normal[1]);
-    ray.org_z = static_cast<float>(s.Point[2] + s.Offset * s.Normal[2]);
+    ray.org_x = static_cast<float>(origin[0]);
+    ray.org_y = static_cast<float>(origin[1]);
+    ray.org_z = static_cast<float>(origin[2]);
     ray.dir_x = static_cast<float>(dir[0]);
     ray.dir_y = static_cast<float>(dir[1]);
     ray.dir_z = static_cast<float>(dir[2]);
@@ -1000,9 +1017,9 @@ double Worker::ThroughVolumes(const Surface& s, const RTCRay& ray, double start)
   const double norm = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
   for (int k = 0; k < 3; ++k)
   {
-    origin[k] = s.Point[k] + s.Offset * s.Normal[k];
     dir[k] /= norm;
   }
+  ShadowOrigin(s, dir, origin);
   const double tmax =
     std::isfinite(ray.tfar) ? double(ray.tfar) * norm : std::numeric_limits<double>::infinity();
   return this->Volumes->Transmittance(origin, dir, tmax, start, this->Count.VolumeSamples);
