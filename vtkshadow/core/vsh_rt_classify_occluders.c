@@ -160,37 +160,6 @@ void vsh_rt_classify_occluders_free(vsh_rt_classify_occluders *occluders)
   *occluders = (vsh_rt_classify_occluders){ 0 };
 }
 
-int vsh_rtc_occluders_clear(const vsh_rt_classify_occluders *occluders,
-                            const vsh_rt_classify_face *face, int f, double umin, double umax,
-                            double vmin, double vmax, float key_hi)
-{
-  if (!occluders || occluders->count == 0) {
-    return 1;
-  }
-  if (f >= occluders->faces) {
-    return 0;
-  }
-  const vsh_rt_classify_occluder_face *o = &occluders->face[f];
-  if (!o->keys || o->everywhere <= key_hi) {
-    return 0;
-  }
-  long bu[2], bv[2];
-  block_range(face, face->u0, umin, umax, bu);
-  block_range(face, face->v0, vmin, vmax, bv);
-  const long n = o->blocks;
-  if ((bu[0] < 0 || bv[0] < 0 || bu[1] >= n || bv[1] >= n) && o->outside <= key_hi) {
-    return 0;
-  }
-  for (long j = bv[0] < 0 ? 0 : bv[0]; j <= bv[1] && j < n; ++j) {
-    for (long i = bu[0] < 0 ? 0 : bu[0]; i <= bu[1] && i < n; ++i) {
-      if (o->keys[j * n + i] <= key_hi) {
-        return 0;
-      }
-    }
-  }
-  return 1;
-}
-
 int vsh_rtc_occluders_reach(const vsh_rt_classify_occluders *occluders,
                             const vsh_rt_classify_face *face, int f, double umin, double umax,
                             double vmin, double vmax, float key_lo, float key_hi)
@@ -221,4 +190,14 @@ int vsh_rtc_occluders_reach(const vsh_rt_classify_occluders *occluders,
     }
   }
   return 0;
+}
+
+int vsh_rtc_occluders_clear(const vsh_rt_classify_occluders *occluders,
+                            const vsh_rt_classify_face *face, int f, double umin, double umax,
+                            double vmin, double vmax, float key_hi)
+{
+  /* No block holds an impostor with any key up to key_hi (an impostor's
+   * largest key is never below its smallest). */
+  return !vsh_rtc_occluders_reach(occluders, face, f, umin, umax, vmin, vmax, -HUGE_VALF,
+                                  key_hi);
 }

@@ -324,24 +324,30 @@ static int may_meet_impostors(const vsh_rt_classify_map *map,
                                  vsh_rtc_round_down(fp.key_lo), vsh_rtc_round_up(fp.key_hi));
 }
 
+/* The hull to classify: `given`, or, where an impostor may meet it grown
+ * by its reland distance, that grown hull (into `points` and `wide`): a
+ * landing on the impostor may be anywhere there. */
+static const hull *landing_hull(const vsh_rt_classify_map *map,
+                                const vsh_rt_classify_occluders *occluders, const hull *given,
+                                double (*points)[3], hull *wide)
+{
+  if (map->count == 0 || !occluders || occluders->count == 0 || !(given->reland > 0) ||
+      given->count > 8) {
+    return given;
+  }
+  *wide = grown(given, points);
+  return may_meet_impostors(map, occluders, wide) ? wide : given;
+}
+
 static int classify_hull(const vsh_rt_classify_map *map, const vsh_rt_classify_occluders *occluders,
                          const hull *given, int max_texels)
 {
-  const hull *h = given;
-  double points[8][3];
-  hull wide;
-  if (map && !map->unusable && map->count > 0 && occluders && occluders->count > 0 &&
-      given->reland > 0 && given->count <= 8) {
-    /* An impostor may meet the tube grown by the reland distance: a
-     * landing on it may be anywhere there, so classify all of it. */
-    wide = grown(given, points);
-    if (may_meet_impostors(map, occluders, &wide)) {
-      h = &wide;
-    }
-  }
   if (!map || map->unusable) {
     return VSH_RT_CLASSIFY_UNDECIDED;
   }
+  double points[8][3];
+  hull wide;
+  const hull *h = landing_hull(map, occluders, given, points, &wide);
   if (map->light.kind == VSH_RT_SPOT) {
     const int outside = outside_cone(&map->light, h);
     if (outside != 0) {

@@ -219,7 +219,6 @@ struct vtkRayTracedShadowPass::Internals
     classifier.Policy(rays.ClassifyBlocks, rays.ClassifyPixels);
     std::copy_n(classifier.GetAnchor(), 3, rays.ClassifyAnchor);
     rays.InstanceRadius = this->Scene.GetLargestRadius();
-    rays.ImpostorReland = 2 * this->Scene.GetLargestImpostorSlack();
     this->ClassifierUsed = !rays.Classify.empty();
     if (this->ClassifierUsed && this->Scene.HasImpostors())
     {
@@ -513,6 +512,7 @@ bool vtkRayTracedShadowPass::Trace(const vtkRenderState* s, Frame& frame)
   }
   rays.Lights = frame.Lights;
   rays.Samples = frame.Samples;
+  rays.ImpostorReland = 2 * impl.Scene.GetLargestImpostorSlack();
   impl.PrepareClassifier(rays, this->Classify != 0, this->ClassifyResolution);
   for (int samples : frame.Samples)
   {

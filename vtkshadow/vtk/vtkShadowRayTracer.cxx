@@ -683,7 +683,7 @@ bool Worker::RelandFrom(int k, RTCScene scene, double back, unsigned int instanc
 
 bool Worker::RelandFront(int k)
 {
-  const double back = 2 * this->Scene->GetLargestImpostorSlack(); // Frame::ImpostorReland
+  const double back = this->Frame->ImpostorReland;
   return back > 0 &&
     this->RelandFrom(k, this->Scene->GetVisible(), back, RTC_INVALID_GEOMETRY_ID,
       [](const vtkShadowEmbreeScene::Instance& i) { return i.Impostors != nullptr; });

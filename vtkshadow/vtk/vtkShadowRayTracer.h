@@ -72,9 +72,10 @@ public:
     // grows with it (the classifier's tube covers that).
     double InstanceRadius = 0;
     // How far a landing on an impostor may move a pixel's surface point
-    // along its ray (Worker::RelandFront: twice the largest impostor
-    // slack): the classifier's tubes reach that far where an impostor may
-    // be near them. 0 without impostors.
+    // along its ray: twice the largest impostor slack
+    // (vtkShadowEmbreeScene::GetLargestImpostorSlack), from where the
+    // tracer re-traces a pixel that meets one; the classifier's tubes reach
+    // that far where an impostor may be near them. 0 without impostors.
     double ImpostorReland = 0;
   };
 
