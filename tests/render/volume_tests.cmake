@@ -34,13 +34,21 @@ vtkshadow_exact_cases(volume all
 # answer ray casts them) though VTK's interpolated normals light them.
 # volume's facing test must darken them (with facing_test=0 the case must
 # fail: 273 of the 273 terminator pixels lit); raytrace's rays meet the mesh.
-foreach(spec "volume" "volume;--set;facing_test=0;--expect-fail" "raytrace")
-  list(GET spec 0 technique)
-  string(REPLACE ";" "" name "${spec}")
-  string(REPLACE "--setfacing_test=0--expect-fail" "-facing-off" name "${name}")
-  add_test(NAME render.terminator.${name}
-    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_terminator.py
-            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/terminator --technique ${spec})
-  set_tests_properties(render.terminator.${name} PROPERTIES LABELS "render" TIMEOUT 300
-    FIXTURES_REQUIRED xvfb)
+# Case grazing-facet: cad/table-parts' tall cylinder, one facet facing away
+# from light 0 by 5.4e-4, which a facing tolerance of 1e-3 left lit (35 of
+# its 47 pixels wrong, wrong_pct 0.063).
+foreach(case "sphere" "grazing-facet")
+  foreach(spec "volume" "volume;--set;facing_test=0;--expect-fail" "raytrace")
+    string(REPLACE ";" "" name "${spec}")
+    string(REPLACE "--setfacing_test=0--expect-fail" "-facing-off" name "${name}")
+    set(test render.terminator.${name})
+    if(NOT case STREQUAL "sphere")
+      set(test render.terminator.${case}.${name})
+    endif()
+    add_test(NAME ${test}
+      COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_terminator.py
+              --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/terminator --case ${case}
+              --technique ${spec})
+    set_tests_properties(${test} PROPERTIES LABELS "render" TIMEOUT 300 FIXTURES_REQUIRED xvfb)
+  endforeach()
 endforeach()

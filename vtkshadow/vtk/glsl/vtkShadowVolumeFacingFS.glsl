@@ -52,9 +52,12 @@ float vshFacingLit(int light, vec3 positionVC)
       return 0.5 + (t * sqrt(1.0 - t * t) + asin(t)) / 3.14159265358979;
     }
   }
-  // A facet within 1e-3 (0.06 degrees) of edge-on keeps the volume's
-  // answer: the plane from float derivatives is not better than that.
-  float tolerance = 1e-3 * length(vshFacetNormalVC) * length(toLight);
+  // A facet within 1e-4 (0.006 degrees) of edge-on keeps the volume's
+  // answer: the plane from float derivatives of view-space positions is
+  // good to a few 1e-5 (their rounding over a pixel's step). A wider margin
+  // leaves whole facets wrong: cad/table-parts' tall cylinder has one that
+  // faces away from light 0 by 5.4e-4.
+  float tolerance = 1e-4 * length(vshFacetNormalVC) * length(toLight);
   return dot(vshFacetNormalVC, toLight) < -tolerance ? 0.0 : 1.0;
 }
 
