@@ -148,11 +148,11 @@ def general_case(c, args, name, builder, want, extra=()):
     c.check(ts.get("light_choices") == [want] and g.get("pick") == want,
             f"{name}: choice {ts.get('light_choices')}, general pick {g.get('pick')} (want "
             f"{want}); reason: {ts.get('reason')}")
-    # Exact but for its outline floor (vsh_auto_volume_outline_error), which
+    # Exact but for its floor (vsh_auto_volume_floor_error), which
     # these scenes keep below the 0.5 target.
     c.check(0 < g.get("volume_error_pct", -1) < 0.5 and g.get("volume_unsupported_casters") == 0 and
             g.get("volume_silhouette_edges", 0) > 0 and g.get("volume_fill_px", 0) > 0,
-            f"{name}: volume predicted {g.get('volume_error_pct')}% (its outline floor), "
+            f"{name}: volume predicted {g.get('volume_error_pct')}% (its floor), "
             f"{g.get('volume_silhouette_edges')} silhouette edges, {g.get('volume_fill_px')} px "
             f"of fill")
     # The inputs auto predicted are what the volume pass then draws (its own

@@ -372,10 +372,17 @@ double vsh_auto_map_outline_error(double outline_px, double stretch, double pixe
   return 100.0 * VSH_AUTO_MAP_OUTLINE_FLOOR * outline_px * stretch / pixels;
 }
 
-double vsh_auto_volume_outline_error(double outline_px, double pixels)
+double vsh_auto_volume_floor_error(double outline_px, double open_folds, double pixels)
 {
-  return vsh_auto_map_outline_error(outline_px, 1.0, pixels) * VSH_AUTO_VOLUME_OUTLINE_FLOOR /
-         VSH_AUTO_MAP_OUTLINE_FLOOR;
+  double wrong_px;
+  if (!(outline_px >= 0.0) || !(open_folds >= 0.0) || !(pixels > 0.0) || !isfinite(pixels))
+    return INFINITY;
+  if (outline_px == 0.0 && open_folds == 0.0)
+    return 0.0;
+  wrong_px = VSH_AUTO_VOLUME_FLOOR_PX + VSH_AUTO_VOLUME_OUTLINE_FLOOR * outline_px +
+             VSH_AUTO_VOLUME_OPEN_TERMINATOR * open_folds *
+               sqrt(pixels / VSH_AUTO_VOLUME_REFERENCE_PIXELS);
+  return 100.0 * wrong_px / pixels;
 }
 
 /* ---- thin impostor casters ---------------------------------------------- */

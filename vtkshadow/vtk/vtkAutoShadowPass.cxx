@@ -61,9 +61,9 @@ struct vtkAutoShadowPass::Internals
     // Silhouette length (data units) per light, with the light (data
     // coordinates) it was computed for.
     std::map<int, std::pair<std::vector<double>, double>> Silhouette;
-    // Shadow-volume side quads per light, with the light (shifted data
-    // coordinates) they were counted for.
-    std::map<int, std::pair<std::vector<double>, double>> VolumeEdges;
+    // Shadow-volume side quads and open folds per light, with the light
+    // (shifted data coordinates) they were counted for.
+    std::map<int, std::pair<std::vector<double>, vtkAutoShadowPass::VolumeSilhouette>> VolumeEdges;
     // What it draws as points and lines (spheres, tubes, splats, squares,
     // bands), extracted again when ImpostorTime changes.
     vtkshadow::Impostors Drawn;
@@ -88,6 +88,8 @@ struct vtkAutoShadowPass::Internals
   std::vector<double> ThinFloorPct, ThinMapPct;
   // Per light: the map's outline floor (vsh_auto_map_outline_error).
   std::vector<double> OutlinePct;
+  // Per light, volume's open folds (VolumeSilhouette), for the stats.
+  std::vector<double> VolumeOpenFolds;
   std::vector<bool> SoftLights; // per switched-on light: has a radius or angle
   std::string SoftJSON;         // per light with a size: the soft candidates
   int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
@@ -265,6 +267,7 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
   impl.ThinFloorPct.assign(impl.LightChoices.size(), 0.0);
   impl.ThinMapPct.assign(impl.LightChoices.size(), 0.0);
   impl.OutlinePct.assign(impl.LightChoices.size(), 0.0);
+  impl.VolumeOpenFolds.assign(impl.LightChoices.size(), 0.0);
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
     if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
@@ -1039,9 +1042,11 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
     w.candidates[VSH_AUTO_GENERAL_CSM] = { 1,
       (thin > 0.0 ? thin : 0.0) + map + floor + (std::isfinite(outline) ? outline : 0.0),
       MapLookupMsPerPixel * pixels };
+    double openFolds = 0.0;
     const int notDrawn = this->VolumeInputs(
-      renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume);
-    const double stencil = vsh_auto_volume_outline_error(edgeLengths[l], pixels);
+      renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume, &openFolds);
+    impl.VolumeOpenFolds[l] = openFolds;
+    const double stencil = vsh_auto_volume_floor_error(edgeLengths[l], openFolds, pixels);
     w.candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
       vsh_volume_predicted_error(notDrawn, impl.SoftLights[l] ? 1 : 0) + floor +
         (std::isfinite(stencil) ? stencil : 0.0),
@@ -1090,6 +1095,7 @@ std::string vtkAutoShadowPass::GeneralPickJSON(size_t l, const vsh_auto_candidat
        << ", \"volume_scene_triangles\": " << volume.scene_triangles
        << ", \"volume_silhouette_edges\": " << volume.silhouette_edges
        << ", \"volume_fill_px\": " << volume.fill_px
+       << ", \"volume_open_folds\": " << impl.VolumeOpenFolds[l]
        << ", \"volume_unsupported_casters\": " << unsupported << ", \"volume_available\": "
        << (candidates[VSH_AUTO_GENERAL_VOLUME].available ? "true" : "false")
        << ", \"raytrace_error_pct\": "
@@ -1194,8 +1200,8 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
 }
 
 //------------------------------------------------------------------------------
-int vtkAutoShadowPass::VolumeInputs(
-  vtkRenderer* renderer, const double light[4], int index, vsh_volume_ms_input& input)
+int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4], int index,
+  vsh_volume_ms_input& input, double* openFolds)
 {
   // What the volume pass would draw for this light: every caster's volume
   // scissored to its projected bounds (vsh_volume_screen_rect, the pass's
@@ -1221,6 +1227,7 @@ int vtkAutoShadowPass::VolumeInputs(
     relative[k] -= light[3] * eye[k];
   }
   int unsupported = this->TranslucentCasters(renderer);
+  double folds = 0.0;
   for (size_t i = 0; i < impl.Objects.size(); ++i)
   {
     // The depth pre-pass draws every opaque actor, casting or not.
@@ -1230,7 +1237,8 @@ int vtkAutoShadowPass::VolumeInputs(
     {
       continue;
     }
-    const double edges = this->VolumeEdges(i, light, index);
+    const VolumeSilhouette silhouette = this->VolumeEdges(i, light, index);
+    const double edges = silhouette.Quads;
     if (edges < 0.0 || !vtkShadowVolumePass::CastsExactly(impl.Actors[i].Actor))
     {
       ++unsupported; // no triangles to extrude, or not drawn as volumes need
@@ -1248,7 +1256,12 @@ int vtkAutoShadowPass::VolumeInputs(
     {
       input.silhouette_edges += edges;
       input.fill_px += static_cast<double>(rect[2]) * rect[3];
+      folds += silhouette.OpenFolds;
     }
+  }
+  if (openFolds)
+  {
+    *openFolds = folds;
   }
   return unsupported;
 }
@@ -1281,7 +1294,8 @@ int vtkAutoShadowPass::TranslucentCasters(vtkRenderer* renderer) const
 }
 
 //------------------------------------------------------------------------------
-double vtkAutoShadowPass::VolumeEdges(size_t object, const double light[4], int index)
+vtkAutoShadowPass::VolumeSilhouette vtkAutoShadowPass::VolumeEdges(
+  size_t object, const double light[4], int index)
 {
   const vtkshadow::ShadowActor& actor = this->Impl->Actors[object];
   Internals::Caster& caster = this->Impl->For(actor.Actor);
@@ -1291,7 +1305,7 @@ double vtkAutoShadowPass::VolumeEdges(size_t object, const double light[4], int 
   double inverse[16], inData[4], stored[4];
   if (!topology || !vsh_mat4_inverse(actor.Matrix, inverse))
   {
-    return -1.0;
+    return VolumeSilhouette{};
   }
   vsh_mat4_transform_point4(inverse, light, inData);
   geometry.ShiftLight(inData, stored);
@@ -1306,7 +1320,18 @@ double vtkAutoShadowPass::VolumeEdges(size_t object, const double light[4], int 
                       topology->closed ? VSH_SILHOUETTE_LIT_FACES : VSH_SILHOUETTE_BOTH_SIDES,
                       &silhouette) == VSH_MESH_OK;
     cached.first = key;
-    cached.second = ok ? static_cast<double>(silhouette.total_multiplicity) : -1.0;
+    cached.second = VolumeSilhouette{};
+    if (ok)
+    {
+      cached.second.Quads = static_cast<double>(silhouette.total_multiplicity);
+      // Folds of a caster that is not closed: edges both sides' volumes
+      // share, where the facing test does not darken the far facets.
+      cached.second.OpenFolds = 0.0;
+      for (size_t e = 0; !topology->closed && e < silhouette.count; ++e)
+      {
+        cached.second.OpenFolds += silhouette.edges[e].multiplicity >= 2 ? 1.0 : 0.0;
+      }
+    }
     vsh_silhouette_free(&silhouette);
   }
   return cached.second;

@@ -258,13 +258,22 @@ private:
   // the cost model's inputs (silhouette edges, scissored fill) and how many
   // casters volumes cannot draw exactly (no triangles, translucent, not
   // vtkShadowVolumePass::CastsExactly).
-  int VolumeInputs(
-    vtkRenderer* renderer, const double light[4], int index, vsh_volume_ms_input& input);
-  // The volume silhouette's quads (sum of multiplicities) of one caster (an
-  // index into the frame's objects) for
-  // light number `index`, cached per light while light and mesh stay put;
-  // -1 when the caster has no mesh to extrude.
-  double VolumeEdges(size_t object, const double light[4], int index);
+  // `openFolds` (may be null) gets the casters' open folds (VolumeSilhouette).
+  int VolumeInputs(vtkRenderer* renderer, const double light[4], int index,
+    vsh_volume_ms_input& input, double* openFolds = nullptr);
+  // The volume silhouette of one caster for one light: its quads (sum of
+  // multiplicities; -1 when the caster has no mesh to extrude) and, for a
+  // caster that is not closed, its folds (edges of multiplicity 2 or more:
+  // a locally closed surface turning from the light, which volume's error
+  // model charges, vsh_auto_volume_floor_error).
+  struct VolumeSilhouette
+  {
+    double Quads = -1.0;
+    double OpenFolds = 0.0;
+  };
+  // VolumeSilhouette of caster `object` (an index into the frame's objects)
+  // for light number `index`, cached per light while light and mesh stay put.
+  VolumeSilhouette VolumeEdges(size_t object, const double light[4], int index);
   int TranslucentCasters(vtkRenderer* renderer) const;
   // Records the weighed candidates of map light `l` in the stats and, when
   // an exact technique won, the light's new choice and why.
