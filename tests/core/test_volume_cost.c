@@ -37,6 +37,14 @@ static void test_terms(void)
              1e-12);
   CHECK(cost4(0.0, -1.0, 0.0, 0.0) == INFINITY && cost4(0.0, NAN, 0.0, 0.0) == INFINITY);
   CHECK(cost4(0.0, INFINITY, 0.0, 0.0) == INFINITY);
+  /* Caps of volumes counted z-fail: drawn like the pre-pass's triangles. */
+  {
+    const vsh_volume_ms_input capped = {0.0, 0.0, 0.0, 0.0, 28322.0};
+    const vsh_volume_ms_input bad = {0.0, 0.0, 0.0, 0.0, -1.0};
+    const vsh_volume_ms_input nan_caps = {0.0, 0.0, 0.0, 0.0, NAN};
+    CHECK_NEAR(vsh_volume_cost_ms(&capped), VSH_VOLUME_MS_PER_TRIANGLE * 28322.0, 1e-12);
+    CHECK(vsh_volume_cost_ms(&bad) == INFINITY && vsh_volume_cost_ms(&nan_caps) == INFINITY);
+  }
   /* Nothing at all costs nothing; 0 edges and 0 fill leave the screen term. */
   CHECK(cost(0.0, 0.0, 0.0) == 0.0);
   CHECK(cost(100.0, 0.0, 0.0) > 0.0);

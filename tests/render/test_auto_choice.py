@@ -159,6 +159,9 @@ def general_case(c, args, name, builder, want, extra=()):
     # --stats for the same frame): the same silhouettes and scissor rules.
     ts_volume, _ = stats(args.bin, args.out, name + "-volume", builder(), technique="volume")
     drawn = ts_volume.get("lights", [{}])[0]
+    c.check(drawn.get("cap_triangles") == g.get("volume_cap_triangles"),
+            f"{name}: volume pass drew {drawn.get('cap_triangles')} cap triangles (auto "
+            f"predicted {g.get('volume_cap_triangles')}: z-fail caps of casters not closed)")
     c.check(drawn.get("volume_quads") == g.get("volume_silhouette_edges") and
             abs(drawn.get("fill_px", 0) - g.get("volume_fill_px", 0)) <=
             0.01 * g.get("volume_fill_px", 0),

@@ -37,10 +37,10 @@ static int usable(double x)
 double vsh_volume_cost_ms(const vsh_volume_ms_input *in)
 {
   if (!in || !usable(in->pixels) || !usable(in->scene_triangles) ||
-      !usable(in->silhouette_edges) || !usable(in->fill_px))
+      !usable(in->silhouette_edges) || !usable(in->fill_px) || !usable(in->cap_triangles))
     return INFINITY;
   const double ms = VSH_VOLUME_MS_PER_PIXEL * in->pixels +
-                    VSH_VOLUME_MS_PER_TRIANGLE * in->scene_triangles +
+                    VSH_VOLUME_MS_PER_TRIANGLE * (in->scene_triangles + in->cap_triangles) +
                     VSH_VOLUME_MS_PER_EDGE * in->silhouette_edges +
                     VSH_VOLUME_MS_PER_FILL_PX * in->fill_px;
   return isfinite(ms) ? ms : INFINITY;

@@ -61,7 +61,7 @@ struct vtkAutoShadowPass::Internals
     // Silhouette length (data units) per light, with the light (data
     // coordinates) it was computed for.
     std::map<int, std::pair<std::vector<double>, double>> Silhouette;
-    // Shadow-volume side quads and open folds per light, with the light
+    // Shadow-volume side quads (all, and an open caster's) per light, with the light
     // (shifted data coordinates) they were counted for.
     std::map<int, std::pair<std::vector<double>, vtkAutoShadowPass::VolumeSilhouette>> VolumeEdges;
     // What it draws as points and lines (spheres, tubes, splats, squares,
@@ -88,8 +88,8 @@ struct vtkAutoShadowPass::Internals
   std::vector<double> ThinFloorPct, ThinMapPct;
   // Per light: the map's outline floor (vsh_auto_map_outline_error).
   std::vector<double> OutlinePct;
-  // Per light, volume's open folds (VolumeSilhouette), for the stats.
-  std::vector<double> VolumeOpenFolds;
+  // Per light, volume's open quads (VolumeSilhouette), for the stats.
+  std::vector<double> VolumeOpenQuads;
   std::vector<bool> SoftLights; // per switched-on light: has a radius or angle
   std::string SoftJSON;         // per light with a size: the soft candidates
   int PlanarSamples = 0; // the frame's soft_samples for planar's lights with a size (0: none)
@@ -267,7 +267,7 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
   impl.ThinFloorPct.assign(impl.LightChoices.size(), 0.0);
   impl.ThinMapPct.assign(impl.LightChoices.size(), 0.0);
   impl.OutlinePct.assign(impl.LightChoices.size(), 0.0);
-  impl.VolumeOpenFolds.assign(impl.LightChoices.size(), 0.0);
+  impl.VolumeOpenQuads.assign(impl.LightChoices.size(), 0.0);
   for (size_t l = 0; l < impl.LightChoices.size(); ++l)
   {
     if (impl.LightChoices[l] != vtkshadow::TechniqueSet::Cascaded)
@@ -1042,11 +1042,11 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
     w.candidates[VSH_AUTO_GENERAL_CSM] = { 1,
       (thin > 0.0 ? thin : 0.0) + map + floor + (std::isfinite(outline) ? outline : 0.0),
       MapLookupMsPerPixel * pixels };
-    double openFolds = 0.0;
+    double openQuads = 0.0;
     const int notDrawn = this->VolumeInputs(
-      renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume, &openFolds);
-    impl.VolumeOpenFolds[l] = openFolds;
-    const double stencil = vsh_auto_volume_floor_error(edgeLengths[l], openFolds, pixels);
+      renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume, &openQuads);
+    impl.VolumeOpenQuads[l] = openQuads;
+    const double stencil = vsh_auto_volume_floor_error(edgeLengths[l], openQuads, pixels);
     w.candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
       vsh_volume_predicted_error(notDrawn, impl.SoftLights[l] ? 1 : 0) + floor +
         (std::isfinite(stencil) ? stencil : 0.0),
@@ -1095,7 +1095,8 @@ std::string vtkAutoShadowPass::GeneralPickJSON(size_t l, const vsh_auto_candidat
        << ", \"volume_scene_triangles\": " << volume.scene_triangles
        << ", \"volume_silhouette_edges\": " << volume.silhouette_edges
        << ", \"volume_fill_px\": " << volume.fill_px
-       << ", \"volume_open_folds\": " << impl.VolumeOpenFolds[l]
+       << ", \"volume_cap_triangles\": " << volume.cap_triangles
+       << ", \"volume_open_quads\": " << impl.VolumeOpenQuads[l]
        << ", \"volume_unsupported_casters\": " << unsupported << ", \"volume_available\": "
        << (candidates[VSH_AUTO_GENERAL_VOLUME].available ? "true" : "false")
        << ", \"raytrace_error_pct\": "
@@ -1201,7 +1202,7 @@ void vtkAutoShadowPass::ApplyGeneralPick(size_t l, const vsh_auto_candidate* can
 
 //------------------------------------------------------------------------------
 int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4], int index,
-  vsh_volume_ms_input& input, double* openFolds)
+  vsh_volume_ms_input& input, double* openQuads)
 {
   // What the volume pass would draw for this light: every caster's volume
   // scissored to its projected bounds (vsh_volume_screen_rect, the pass's
@@ -1213,6 +1214,7 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
   input.scene_triangles = 0.0;
   input.silhouette_edges = 0.0;
   input.fill_px = 0.0;
+  input.cap_triangles = 0.0;
   vtkCamera* camera = renderer->GetActiveCamera();
   double eye[3], view[16], projection[16], clip[16];
   camera->GetPosition(eye);
@@ -1227,7 +1229,7 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
     relative[k] -= light[3] * eye[k];
   }
   int unsupported = this->TranslucentCasters(renderer);
-  double folds = 0.0;
+  double open = 0.0;
   for (size_t i = 0; i < impl.Objects.size(); ++i)
   {
     // The depth pre-pass draws every opaque actor, casting or not.
@@ -1256,12 +1258,16 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
     {
       input.silhouette_edges += edges;
       input.fill_px += static_cast<double>(rect[2]) * rect[3];
-      folds += silhouette.OpenFolds;
+      open += silhouette.OpenQuads;
+      // The volume pass counts a caster that is not closed z-fail: caps.
+      input.cap_triangles += silhouette.OpenQuads > 0.0
+        ? static_cast<double>(impl.For(impl.Actors[i].Actor).Geometry.GetNumberOfTriangles())
+        : 0.0;
     }
   }
-  if (openFolds)
+  if (openQuads)
   {
-    *openFolds = folds;
+    *openQuads = open;
   }
   return unsupported;
 }
@@ -1324,13 +1330,9 @@ vtkAutoShadowPass::VolumeSilhouette vtkAutoShadowPass::VolumeEdges(
     if (ok)
     {
       cached.second.Quads = static_cast<double>(silhouette.total_multiplicity);
-      // Folds of a caster that is not closed: edges both sides' volumes
-      // share, where the facing test does not darken the far facets.
-      cached.second.OpenFolds = 0.0;
-      for (size_t e = 0; !topology->closed && e < silhouette.count; ++e)
-      {
-        cached.second.OpenFolds += silhouette.edges[e].multiplicity >= 2 ? 1.0 : 0.0;
-      }
+      // A caster that is not closed: its quads are where the volumes meet
+      // its own surface without the facing test (folds, border edges).
+      cached.second.OpenQuads = topology->closed ? 0.0 : cached.second.Quads;
     }
     vsh_silhouette_free(&silhouette);
   }

@@ -258,18 +258,17 @@ private:
   // the cost model's inputs (silhouette edges, scissored fill) and how many
   // casters volumes cannot draw exactly (no triangles, translucent, not
   // vtkShadowVolumePass::CastsExactly).
-  // `openFolds` (may be null) gets the casters' open folds (VolumeSilhouette).
+  // `openQuads` (may be null) gets the open casters' quads (VolumeSilhouette).
   int VolumeInputs(vtkRenderer* renderer, const double light[4], int index,
-    vsh_volume_ms_input& input, double* openFolds = nullptr);
+    vsh_volume_ms_input& input, double* openQuads = nullptr);
   // The volume silhouette of one caster for one light: its quads (sum of
-  // multiplicities; -1 when the caster has no mesh to extrude) and, for a
-  // caster that is not closed, its folds (edges of multiplicity 2 or more:
-  // a locally closed surface turning from the light, which volume's error
-  // model charges, vsh_auto_volume_floor_error).
+  // multiplicities; -1 when the caster has no mesh to extrude) and the
+  // same count again for a caster that is not closed (0 for a closed one),
+  // which volume's error model charges (vsh_auto_volume_floor_error).
   struct VolumeSilhouette
   {
     double Quads = -1.0;
-    double OpenFolds = 0.0;
+    double OpenQuads = 0.0;
   };
   // VolumeSilhouette of caster `object` (an index into the frame's objects)
   // for light number `index`, cached per light while light and mesh stay put.

@@ -810,8 +810,14 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
   const bool drawn = std::binary_search(frame.Drawn.begin(), frame.Drawn.end(), caster.Root) &&
     SurfaceInDepth(caster.Actor) && !caster.Proxy;
   // A translucent caster's crossings are always counted z-fail: it is not in
-  // the depth pre-pass.
-  const bool zpass = !this->ForceZFail && drawn && !crossings &&
+  // the depth pre-pass. So is a caster that is not closed (both sides'
+  // volumes): where the camera sees its side that faces away from the
+  // light, the prisms of its faces reach towards the eye and z-pass counts
+  // their far faces against the surface's own depth; z-fail counts only
+  // what lies behind it. Measured against POV-Ray at 320x240: an open
+  // bowl's rim 0.059 -> 0.002 wrong_pct, scivis/isosurface 0.089 -> 0.028,
+  // elevation 0.007 -> 0.006; closed casters are unchanged.
+  const bool zpass = !this->ForceZFail && drawn && !crossings && volume->DarkCaps &&
     vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
   // Model (shifted) -> world -> relative to the eye -> clip, in double.
   double modelRelative[16], mcdc[16], transposed[16];
