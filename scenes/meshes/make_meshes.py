@@ -16,7 +16,11 @@ from vtkmodules.vtkFiltersCore import (vtkContourFilter, vtkTriangleFilter, vtkG
 from vtkmodules.vtkFiltersFlowPaths import vtkStreamTracer
 from vtkmodules.vtkFiltersGeneral import vtkWarpScalar
 from vtkmodules.vtkFiltersSources import (vtkArrowSource, vtkConeSource, vtkPlaneSource, vtkPointSource,
-                                          vtkLineSource)
+                                          vtkLineSource, vtkSphereSource)
+from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkCommonDataModel import vtkImplicitBoolean, vtkSphere
+from vtkmodules.vtkImagingHybrid import vtkSampleFunction
 from vtkmodules.vtkFiltersCore import vtkTubeFilter
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkIOPLY import vtkPLYWriter
@@ -194,3 +198,45 @@ tube.SetNumberOfSides(20)
 tube.CappingOn()
 tube.Update()
 write("helix-tube.ply", tube.GetOutput())
+
+# 7. Open casters: a bowl (a sphere cut 20 degrees above its equator, tilted)
+# and blobs (an isosurface of four spheres' union cut by the sampling box at
+# the bottom). The camera sees into the bowl: faces seen from the side
+# turned away from the light (docs/shadow-volumes.md, z-fail for casters
+# that are not closed).
+bowl_src = vtkSphereSource()
+bowl_src.SetThetaResolution(40)
+bowl_src.SetPhiResolution(40)
+bowl_src.SetStartPhi(70)
+bowl_src.SetEndPhi(180)
+bowl_src.SetRadius(0.9)
+bowl_move = vtkTransform()
+bowl_move.Translate(-0.6, 0.3, 1.1)
+bowl_move.RotateX(25)
+bowl_tf = vtkTransformPolyDataFilter()
+bowl_tf.SetTransform(bowl_move)
+bowl_tf.SetInputConnection(bowl_src.GetOutputPort())
+bowl_tf.Update()
+write("open-bowl.ply", bowl_tf.GetOutput())
+
+union = vtkImplicitBoolean()
+union.SetOperationTypeToUnion()
+for centre in ((0, 0, 0), (0.7, 0.2, 0.3), (-0.5, 0.6, -0.2), (0.2, -0.7, 0.4)):
+    ball = vtkSphere()
+    ball.SetCenter(*centre)
+    ball.SetRadius(0.55)
+    union.AddFunction(ball)
+field = vtkSampleFunction()
+field.SetImplicitFunction(union)
+field.SetModelBounds(-1.2, 1.2, -1.2, 1.2, -0.4, 1.2)
+field.SetSampleDimensions(48, 48, 40)
+blobs = vtkContourFilter()
+blobs.SetInputConnection(field.GetOutputPort())
+blobs.SetValue(0, 0.0)
+blobs_move = vtkTransform()
+blobs_move.Translate(0.9, -0.3, 1.0)
+blobs_tf = vtkTransformPolyDataFilter()
+blobs_tf.SetTransform(blobs_move)
+blobs_tf.SetInputConnection(blobs.GetOutputPort())
+blobs_tf.Update()
+write("open-blobs.ply", blobs_tf.GetOutput())
