@@ -353,8 +353,34 @@ static void test_cost(void) {
   CHECK(vsh_volume_cost(NULL) == 0.0);
 }
 
+/* The near-plane rectangle of a perspective matrix (gluPerspective-like,
+ * row-major, camera at the origin looking down -z): its corners at z = -n,
+ * half-sizes n tan(fov/2) x aspect and n tan(fov/2); a singular matrix
+ * gives 0 and zeros. */
+static void test_near_corners(void) {
+  const double n = 0.25, f = 40.0, t = tan(0.5 * 30.0 * 3.14159265358979323846 / 180.0);
+  const double aspect = 4.0 / 3.0;
+  const double m[16] = {1.0 / (aspect * t), 0, 0, 0, 0, 1.0 / t, 0, 0,
+                        0, 0, -(f + n) / (f - n), -2.0 * f * n / (f - n), 0, 0, -1, 0};
+  const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+  double c[12], zero[16] = {0}, z[12];
+  int k;
+  CHECK(vsh_volume_near_corners(m, c) == 1);
+  for (k = 0; k < 4; ++k) {
+    CHECK_NEAR(c[3 * k + 0], sx[k] * n * t * aspect, 1e-12);
+    CHECK_NEAR(c[3 * k + 1], sy[k] * n * t, 1e-12);
+    CHECK_NEAR(c[3 * k + 2], -n, 1e-12);
+  }
+  for (k = 0; k < 12; ++k)
+    z[k] = 1.0;
+  CHECK(vsh_volume_near_corners(zero, z) == 0);
+  for (k = 0; k < 12; ++k)
+    CHECK(z[k] == 0.0);
+}
+
 int main(void) {
   vsh_test_seed(12);
+  test_near_corners();
   test_counts();
   test_structure();
   test_zpass();

@@ -2,6 +2,8 @@
  * and cost (vsh_volume.h). */
 #include "vsh_volume.h"
 
+#include "vsh_mat4.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -301,4 +303,22 @@ double vsh_volume_cost(const vsh_volume_cost_input *in) {
   double triangles = 2.0 * (double)in->silhouette_quads;
   if (in->zfail) triangles += (double)in->cap_triangles;
   return fill * layers + VSH_VOLUME_PX_PER_TRIANGLE * triangles;
+}
+
+int vsh_volume_near_corners(const double clip_from_eye[16], double out[12])
+{
+  static const double corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  double inverse[16];
+  int c, k;
+  memset(out, 0, 12 * sizeof(double));
+  if (!vsh_mat4_inverse(clip_from_eye, inverse))
+    return 0;
+  for (c = 0; c < 4; ++c) {
+    const double ndc[4] = {corners[c][0], corners[c][1], -1.0, 1.0};
+    double p[4];
+    vsh_mat4_transform_point4(inverse, ndc, p);
+    for (k = 0; k < 3; ++k)
+      out[3 * c + k] = p[3] != 0.0 ? p[k] / p[3] : 0.0;
+  }
+  return 1;
 }

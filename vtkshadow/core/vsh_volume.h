@@ -94,6 +94,13 @@ void vsh_volume_free(vsh_volume *volume);
 int vsh_volume_zpass_safe(const double eye[3], const double near_corners[12],
                           const double bounds[6], const double light[4], double margin);
 
+/* The near-plane rectangle of `clip_from_eye` (row-major 4x4, eye-relative
+ * world -> clip): the clip-space corners (-1,-1), (1,-1), (1,1), (-1,1) at
+ * z = -1 back in eye-relative coordinates, 12 doubles in that order, the
+ * input of vsh_volume_zpass_safe. Returns 1, or 0 with `out` zeroed when the
+ * matrix is singular. */
+int vsh_volume_near_corners(const double clip_from_eye[16], double out[12]);
+
 /* Window rectangle (pixels) that the volume of a caster in box `bounds` can
  * cover, for a `width` x `height` viewport and `clip_from_world` (row-major
  * 4x4, world -> clip coordinates of the same frame as bounds and light).

@@ -1230,6 +1230,9 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
   }
   int unsupported = this->TranslucentCasters(renderer);
   double open = 0.0;
+  double nearCorners[12];
+  vsh_volume_near_corners(clip, nearCorners);
+  const double origin[3] = { 0.0, 0.0, 0.0 };
   for (size_t i = 0; i < impl.Objects.size(); ++i)
   {
     // The depth pre-pass draws every opaque actor, casting or not.
@@ -1259,10 +1262,16 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
       input.silhouette_edges += edges;
       input.fill_px += static_cast<double>(rect[2]) * rect[3];
       open += silhouette.OpenQuads;
-      // The volume pass counts a caster that is not closed z-fail: caps.
-      input.cap_triangles += silhouette.OpenQuads > 0.0
-        ? static_cast<double>(impl.For(impl.Actors[i].Actor).Geometry.GetNumberOfTriangles())
-        : 0.0;
+      // The volume pass's rule: z-fail (caps) for a caster that is not
+      // closed, and wherever z-pass is not safe for this camera.
+      double size = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        size = std::max(size, bounds[2 * k + 1] - bounds[2 * k]);
+      }
+      const bool zfail = silhouette.OpenQuads > 0.0 ||
+        vsh_volume_zpass_safe(origin, nearCorners, bounds, relative, 1e-3 * size) != 1;
+      input.cap_triangles += zfail ? silhouette.CapTriangles : 0.0;
     }
   }
   if (openQuads)
@@ -1333,6 +1342,16 @@ vtkAutoShadowPass::VolumeSilhouette vtkAutoShadowPass::VolumeEdges(
       // A caster that is not closed: its quads are where the volumes meet
       // its own surface without the facing test (folds, border edges).
       cached.second.OpenQuads = topology->closed ? 0.0 : cached.second.Quads;
+      // Its caps when counted z-fail (vsh_volume_build): the faces turned
+      // from the light (closed) or every face (open), near and far for a
+      // positional light.
+      double faces = static_cast<double>(topology->triangle_count);
+      std::vector<unsigned char> facing(topology->triangle_count);
+      if (topology->closed && vsh_silhouette_facing(topology, stored, facing.data()) == VSH_MESH_OK)
+      {
+        faces -= static_cast<double>(std::count(facing.begin(), facing.end(), 1));
+      }
+      cached.second.CapTriangles = faces * (stored[3] != 0.0 ? 2.0 : 1.0);
     }
     vsh_silhouette_free(&silhouette);
   }

@@ -265,10 +265,12 @@ private:
   // multiplicities; -1 when the caster has no mesh to extrude) and the
   // same count again for a caster that is not closed (0 for a closed one),
   // which volume's error model charges (vsh_auto_volume_floor_error).
+  // CapTriangles: its caps, drawn when the pass counts it z-fail.
   struct VolumeSilhouette
   {
     double Quads = -1.0;
     double OpenQuads = 0.0;
+    double CapTriangles = 0.0;
   };
   // VolumeSilhouette of caster `object` (an index into the frame's objects)
   // for light number `index`, cached per light while light and mesh stay put.

@@ -258,24 +258,7 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
   const vtkshadow::ShadowFrame& shared = frame.Shared;
   frame.Size[0] = std::max(shared.Size[0], 1);
   frame.Size[1] = std::max(shared.Size[1], 1);
-  double inverse[16];
-  // The near-plane rectangle: the clip-space corners (+-1, +-1, -1) back to
-  // eye-relative world coordinates.
-  std::fill(frame.NearCorners, frame.NearCorners + 12, 0.0);
-  if (vsh_mat4_inverse(shared.CameraRelative, inverse))
-  {
-    const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
-    for (int c = 0; c < 4; ++c)
-    {
-      const double ndc[4] = { corners[c][0], corners[c][1], -1.0, 1.0 };
-      double p[4];
-      vsh_mat4_transform_point4(inverse, ndc, p);
-      for (int k = 0; k < 3; ++k)
-      {
-        frame.NearCorners[3 * c + k] = p[3] != 0.0 ? p[k] / p[3] : 0.0;
-      }
-    }
-  }
+  vsh_volume_near_corners(shared.CameraRelative, frame.NearCorners);
   for (const vtkshadow::ShadowFrameLight& light : shared.Lights)
   {
     frame.LightSize.push_back(this->SoftSamples <= 1 ? 0.0 : light.Size);
