@@ -727,6 +727,42 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowVolumePass::CountsZPass(const Frame& frame, const vtkshadow::ShadowActor& caster,
+  const Volume& volume, const double bounds[6], const double lightRelative[4], bool crossings) const
+{
+  double size = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    size = std::max(size, bounds[2 * k + 1] - bounds[2 * k]);
+  }
+  const double eye[3] = { 0, 0, 0 };
+  // Z-pass counts no caps: a ray from the eye enters a volume through its
+  // sides or through the caster itself, which then hides what lies behind.
+  // A caster the state does not draw (the mirror in the mirrored world of
+  // vtkPlanarReflectionPass: it casts there, as it does in the real world,
+  // but is not drawn) lets the ray in through its cap uncounted, so its
+  // volume is counted z-fail (a wall mirror's shadow on the reflected floor
+  // was inverted: reflection_mae 0.16 against POV-Ray). So does a caster
+  // drawn as lines or points, or with culled faces: its surface has holes
+  // in the depth (an open caster with culled back faces, seen from behind:
+  // 15.6 % of the pixels off in z-pass, 0.07 % in z-fail).
+  // A proxy of spheres or tubes is not what the depth holds (VTK's
+  // impostors are): z-fail.
+  const bool drawn = std::binary_search(frame.Drawn.begin(), frame.Drawn.end(), caster.Root) &&
+    SurfaceInDepth(caster.Actor) && !caster.Proxy;
+  // A translucent caster's crossings are always counted z-fail: it is not in
+  // the depth pre-pass. So is a caster that is not closed (both sides'
+  // volumes): where the camera sees its side that faces away from the
+  // light, the prisms of its faces reach towards the eye and z-pass counts
+  // their far faces against the surface's own depth; z-fail counts only
+  // what lies behind it. Measured against POV-Ray at 320x240: an open
+  // bowl's rim 0.059 -> 0.002 wrong_pct, scivis/isosurface 0.089 -> 0.028,
+  // elevation 0.007 -> 0.006; closed casters are unchanged.
+  return !this->ForceZFail && drawn && !crossings && volume.DarkCaps &&
+    vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& frame, int light,
   int sample, const vtkshadow::ShadowActor& caster, bool crossings)
 {
@@ -772,36 +808,7 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
     ++stats.Culled;
     return;
   }
-  double size = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    size = std::max(size, bounds[2 * k + 1] - bounds[2 * k]);
-  }
-  const double eye[3] = { 0, 0, 0 };
-  // Z-pass counts no caps: a ray from the eye enters a volume through its
-  // sides or through the caster itself, which then hides what lies behind.
-  // A caster the state does not draw (the mirror in the mirrored world of
-  // vtkPlanarReflectionPass: it casts there, as it does in the real world,
-  // but is not drawn) lets the ray in through its cap uncounted, so its
-  // volume is counted z-fail (a wall mirror's shadow on the reflected floor
-  // was inverted: reflection_mae 0.16 against POV-Ray). So does a caster
-  // drawn as lines or points, or with culled faces: its surface has holes
-  // in the depth (an open caster with culled back faces, seen from behind:
-  // 15.6 % of the pixels off in z-pass, 0.07 % in z-fail).
-  // A proxy of spheres or tubes is not what the depth holds (VTK's
-  // impostors are): z-fail.
-  const bool drawn = std::binary_search(frame.Drawn.begin(), frame.Drawn.end(), caster.Root) &&
-    SurfaceInDepth(caster.Actor) && !caster.Proxy;
-  // A translucent caster's crossings are always counted z-fail: it is not in
-  // the depth pre-pass. So is a caster that is not closed (both sides'
-  // volumes): where the camera sees its side that faces away from the
-  // light, the prisms of its faces reach towards the eye and z-pass counts
-  // their far faces against the surface's own depth; z-fail counts only
-  // what lies behind it. Measured against POV-Ray at 320x240: an open
-  // bowl's rim 0.059 -> 0.002 wrong_pct, scivis/isosurface 0.089 -> 0.028,
-  // elevation 0.007 -> 0.006; closed casters are unchanged.
-  const bool zpass = !this->ForceZFail && drawn && !crossings && volume->DarkCaps &&
-    vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
+  const bool zpass = this->CountsZPass(frame, caster, *volume, bounds, lightRelative, crossings);
   // Model (shifted) -> world -> relative to the eye -> clip, in double.
   double modelRelative[16], mcdc[16], transposed[16];
   impl.GeometryOf(caster).GetModelRelativeMatrix(caster.Matrix, frame.Shared.Eye, modelRelative);

@@ -185,6 +185,10 @@ private:
   const std::vector<int>& SampleOrder(int samples, int batch);
 #ifndef __VTK_WRAP__
   // `crossings`: the volume of every face (a translucent caster), z-fail.
+  // Whether a caster's volume for one light is counted z-pass (no caps)
+  // rather than z-fail: bounds and light camera-relative.
+  bool CountsZPass(const Frame& frame, const vtkshadow::ShadowActor& caster, const Volume& volume,
+    const double bounds[6], const double lightRelative[4], bool crossings) const;
   void DrawCaster(vtkShaderProgram* program, const Frame& frame, int light, int sample,
     const vtkshadow::ShadowActor& caster, bool crossings = false);
   Volume* UpdateVolume(const vtkshadow::ShadowActor& caster, int light, int sample,
