@@ -381,8 +381,10 @@ static void test_map_outline_floor(void)
   CHECK(vsh_auto_volume_floor_error(1117.0, 0.0, pixels) > 0.0071);  /* table-parts 1 */
   CHECK(vsh_auto_volume_floor_error(2733.0, 0.0, pixels) > 0.0247);  /* needles 1 */
   CHECK(vsh_auto_volume_floor_error(379.0, 0.0, pixels) > 0.0078);   /* grazing-89.9 */
-  CHECK(vsh_auto_volume_floor_error(784.0, 7478.0, pixels) > 0.0275); /* isosurface 0 */
-  CHECK(vsh_auto_volume_floor_error(1960.0, 7478.0, hd) > 0.0200);    /* isosurface 0 */
+  CHECK(vsh_auto_volume_floor_error(784.0, 7478.0, pixels) > 0.089); /* isosurface 0 */
+  CHECK(vsh_auto_volume_floor_error(1960.0, 7478.0, hd) > 0.0698);   /* isosurface 0 */
+  CHECK(vsh_auto_volume_floor_error(1382.0, 1168.0, pixels) > 0.0594); /* open-casters 0 */
+  CHECK(vsh_auto_volume_floor_error(3455.0, 1168.0, hd) > 0.0613);     /* open-casters 0 */
   /* ... and below 0.05 on closed casters with long outlines at 800x600,
    * where the volumes measured 0.004-0.006 (helix-tube, cone-glyphs). */
   CHECK(vsh_auto_volume_floor_error(5975.0, 0.0, hd) < 0.05);
@@ -392,7 +394,7 @@ static void test_map_outline_floor(void)
              100.0 * (VSH_AUTO_VOLUME_FLOOR_PX + VSH_AUTO_VOLUME_OUTLINE_FLOOR * 1000.0) /
                pixels) < 1e-12);
   CHECK(fabs(vsh_auto_volume_floor_error(0.0, 10.0, 4.0 * pixels) -
-             100.0 * (VSH_AUTO_VOLUME_FLOOR_PX + 2.0 * VSH_AUTO_VOLUME_OPEN_QUAD * 10.0) /
+             100.0 * (VSH_AUTO_VOLUME_FLOOR_PX + 4.0 * VSH_AUTO_VOLUME_OPEN_QUAD * 10.0) /
                (4.0 * pixels)) < 1e-12);
   CHECK(vsh_auto_volume_floor_error(0.0, 0.0, pixels) == 0.0);
   CHECK(isinf(vsh_auto_volume_floor_error(-1.0, 0.0, pixels)));

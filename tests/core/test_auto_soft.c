@@ -252,7 +252,7 @@ static void test_volume_model(void)
 
 static void test_volume_cost(void)
 {
-  vsh_volume_ms_input v = {160.0 * 120.0, 1000.0, 100.0, 4000.0};
+  vsh_volume_ms_input v = {160.0 * 120.0, 1000.0, 100.0, 4000.0, 0.0};
   /* N = 1 (and N < 1) is the hard model. */
   CHECK_NEAR(vsh_auto_soft_volume_ms(&v, 1), vsh_volume_cost_ms(&v), 1e-12);
   CHECK(vsh_auto_soft_volume_ms(&v, 0) == vsh_auto_soft_volume_ms(&v, 1));
@@ -278,7 +278,7 @@ static void test_volume_cost(void)
   bad.silhouette_edges = 1e308;
   CHECK(isinf(vsh_auto_soft_volume_ms(&bad, 255)));
   /* No edges, no fill: the screen and pre-pass terms alone, still linear. */
-  vsh_volume_ms_input empty = {1000.0, 0.0, 0.0, 0.0};
+  vsh_volume_ms_input empty = {1000.0, 0.0, 0.0, 0.0, 0.0};
   CHECK_NEAR(vsh_auto_soft_volume_ms(&empty, 10), 10.0 * VSH_VOLUME_MS_PER_PIXEL * 1000.0, 1e-12);
 }
 

@@ -9,13 +9,13 @@
 
 static double cost4(double pixels, double triangles, double edges, double fill)
 {
-  const vsh_volume_ms_input in = {pixels, triangles, edges, fill};
+  const vsh_volume_ms_input in = {pixels, triangles, edges, fill, 0.0};
   return vsh_volume_cost_ms(&in);
 }
 
 static double cost(double pixels, double edges, double fill)
 {
-  const vsh_volume_ms_input in = {pixels, 0.0, edges, fill};
+  const vsh_volume_ms_input in = {pixels, 0.0, edges, fill, 0.0};
   return vsh_volume_cost_ms(&in);
 }
 

@@ -219,9 +219,9 @@ add_test(NAME harness.exact_cache
           --out ${VTKSHADOW_TEST_OUT}/harness/exact_cache)
 set_tests_properties(harness.exact_cache PROPERTIES TIMEOUT 300 LABELS "harness")
 
-# volume counts casters that are not closed z-fail: an open bowl seen from
-# its side turned away from the light, against the shipped POV-Ray reference
-# (z-pass measured 0.059 wrong_pct, z-fail 0.002).
+# volume's open_zfail (casters that are not closed counted z-fail): an open
+# bowl seen from its side turned away from the light, against the shipped
+# POV-Ray reference (z-pass, the default, 0.059 wrong_pct; z-fail 0.002).
 add_test(NAME harness.open_casters
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_open_casters.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/open_casters)

@@ -380,8 +380,7 @@ double vsh_auto_volume_floor_error(double outline_px, double open_quads, double 
   if (outline_px == 0.0 && open_quads == 0.0)
     return 0.0;
   wrong_px = VSH_AUTO_VOLUME_FLOOR_PX + VSH_AUTO_VOLUME_OUTLINE_FLOOR * outline_px +
-             VSH_AUTO_VOLUME_OPEN_QUAD * open_quads *
-               sqrt(pixels / VSH_AUTO_VOLUME_REFERENCE_PIXELS);
+             VSH_AUTO_VOLUME_OPEN_QUAD * open_quads * (pixels / VSH_AUTO_VOLUME_REFERENCE_PIXELS);
   return 100.0 * wrong_px / pixels;
 }
 

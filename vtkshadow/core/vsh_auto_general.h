@@ -150,22 +150,23 @@ double vsh_auto_map_outline_error(double outline_px, double stretch, double pixe
  * few pixels per frame where the stencil's depth meets contact shadows and
  * sub-pixel shadows (VSH_AUTO_VOLUME_FLOOR_PX), a little along the casters'
  * outline seen from the light (VSH_AUTO_VOLUME_OUTLINE_FLOOR per outline
- * pixel, not stretched: grazing light did not grow it), and where their
- * side quads meet the surface of a caster that is not closed (no facing
- * test there, docs/shadow-volumes.md "The terminator": its folds and its
- * border edges): VSH_AUTO_VOLUME_OPEN_QUAD wrong pixels per side quad of
- * such casters, times the frame's linear size over 320x240's, since an
- * edge's length on screen grows with it. Fitted on the library against
+ * pixel, not stretched: grazing light did not grow it), and on casters
+ * that are not closed (no facing test, and z-pass leaves false shadows
+ * where the camera sees their side turned away from the light,
+ * docs/shadow-volumes.md): VSH_AUTO_VOLUME_OPEN_QUAD wrong pixels per side
+ * quad of such casters, times the frame's pixels over 320x240's (an open
+ * bowl's false shadows grew with the area: 46 px at 320x240, 294 at
+ * 800x600). Fitted on the library against
  * POV-Ray at 320x240 and 800x600 (docs/auto.md, "Shadow volumes' floor"),
  * 1.25 times the upper envelope of the measurements. */
 #define VSH_AUTO_VOLUME_FLOOR_PX 7.5
 #define VSH_AUTO_VOLUME_OUTLINE_FLOOR 0.0072
-#define VSH_AUTO_VOLUME_OPEN_QUAD 0.005
+#define VSH_AUTO_VOLUME_OPEN_QUAD 0.045
 #define VSH_AUTO_VOLUME_REFERENCE_PIXELS (320.0 * 240.0)
 
 /* volume's predicted wrong_pct: (VSH_AUTO_VOLUME_FLOOR_PX +
  * VSH_AUTO_VOLUME_OUTLINE_FLOOR x outline_px + VSH_AUTO_VOLUME_OPEN_QUAD x
- * open_quads x sqrt(pixels / VSH_AUTO_VOLUME_REFERENCE_PIXELS)) over
+ * open_quads x pixels / VSH_AUTO_VOLUME_REFERENCE_PIXELS) over
  * `pixels`. 0 when there is neither outline nor open quad (nothing casts in
  * view); +inf for bad input (NaN, pixels <= 0, a negative count). */
 double vsh_auto_volume_floor_error(double outline_px, double open_quads, double pixels);

@@ -1262,14 +1262,15 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
       input.silhouette_edges += edges;
       input.fill_px += static_cast<double>(rect[2]) * rect[3];
       open += silhouette.OpenQuads;
-      // The volume pass's rule: z-fail (caps) for a caster that is not
-      // closed, and wherever z-pass is not safe for this camera.
+      // The volume pass's rule: z-fail (caps) wherever z-pass is not safe
+      // for this camera, and for a caster that is not closed when the pass
+      // counts those z-fail (open_zfail).
       double size = 0.0;
       for (int k = 0; k < 3; ++k)
       {
         size = std::max(size, bounds[2 * k + 1] - bounds[2 * k]);
       }
-      const bool zfail = silhouette.OpenQuads > 0.0 ||
+      const bool zfail = (silhouette.OpenQuads > 0.0 && this->VolumePass->GetOpenZFail()) ||
         vsh_volume_zpass_safe(origin, nearCorners, bounds, relative, 1e-3 * size) != 1;
       input.cap_triangles += zfail ? silhouette.CapTriangles : 0.0;
     }

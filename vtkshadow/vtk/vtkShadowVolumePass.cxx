@@ -751,14 +751,11 @@ bool vtkShadowVolumePass::CountsZPass(const Frame& frame, const vtkshadow::Shado
   const bool drawn = std::binary_search(frame.Drawn.begin(), frame.Drawn.end(), caster.Root) &&
     SurfaceInDepth(caster.Actor) && !caster.Proxy;
   // A translucent caster's crossings are always counted z-fail: it is not in
-  // the depth pre-pass. So is a caster that is not closed (both sides'
-  // volumes): where the camera sees its side that faces away from the
-  // light, the prisms of its faces reach towards the eye and z-pass counts
-  // their far faces against the surface's own depth; z-fail counts only
-  // what lies behind it. Measured against POV-Ray at 320x240: an open
-  // bowl's rim 0.059 -> 0.002 wrong_pct, scivis/isosurface 0.089 -> 0.028,
-  // elevation 0.007 -> 0.006; closed casters are unchanged.
-  return !this->ForceZFail && drawn && !crossings && volume.DarkCaps &&
+  // the depth pre-pass. With OpenZFail, so is a caster that is not closed
+  // (both sides' volumes): where the camera sees its side that faces away
+  // from the light, the prisms of its faces reach towards the eye and
+  // z-pass counts their far faces against the surface's own depth.
+  return !this->ForceZFail && drawn && !crossings && (volume.DarkCaps || !this->OpenZFail) &&
     vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
 }
 
@@ -1007,6 +1004,8 @@ const vtkshadow::Settings& vtkShadowVolumePass::SettingsTable()
         "fraction of the depth's slope per pixel added to depth_bias"),
       Row("force_zfail", vtkshadow::Flag(), &P::SetForceZFail, &P::GetForceZFail,
         "count every volume with z-fail, never z-pass"),
+      Row("open_zfail", vtkshadow::Flag(), &P::SetOpenZFail, &P::GetOpenZFail,
+        "count the volumes of casters that are not closed with z-fail"),
       Row("facing_test", vtkshadow::Flag(), &P::SetFacingTest, &P::GetFacingTest,
         "darken the facets of closed casters that face away from a light"),
       Row("soft_samples", vtkshadow::Integers(1, 255), &P::SetSoftSamples, &P::GetSoftSamples,
