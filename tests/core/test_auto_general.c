@@ -378,31 +378,45 @@ static void test_map_outline_floor(void)
    * the library (docs/auto.md, "Shadow volumes' floor"), at 320x240 and at
    * 800x600, with the outline and open casters' quads auto counted there. */
   const double hd = 800.0 * 600.0;
-  CHECK(vsh_auto_volume_floor_error(1117.0, 0.0, pixels) > 0.0071);  /* table-parts 1 */
-  CHECK(vsh_auto_volume_floor_error(2733.0, 0.0, pixels) > 0.0247);  /* needles 1 */
-  CHECK(vsh_auto_volume_floor_error(379.0, 0.0, pixels) > 0.0078);   /* grazing-89.9 */
-  CHECK(vsh_auto_volume_floor_error(784.0, 7478.0, pixels) > 0.089); /* isosurface 0 */
-  CHECK(vsh_auto_volume_floor_error(1960.0, 7478.0, hd) > 0.0698);   /* isosurface 0 */
-  CHECK(vsh_auto_volume_floor_error(1382.0, 1168.0, pixels) > 0.0594); /* open-casters 0 */
-  CHECK(vsh_auto_volume_floor_error(3455.0, 1168.0, hd) > 0.0613);     /* open-casters 0 */
+  CHECK(vsh_auto_volume_floor_error(1117.0, 0.0, 0.0, pixels) > 0.0071);  /* table-parts 1 */
+  CHECK(vsh_auto_volume_floor_error(2733.0, 0.0, 0.0, pixels) > 0.0247);  /* needles 1 */
+  CHECK(vsh_auto_volume_floor_error(379.0, 0.0, 0.0, pixels) > 0.0078);   /* grazing-89.9 */
+  /* Open casters counted z-pass (open_zfail off) ... */
+  CHECK(vsh_auto_volume_floor_error(784.0, 7478.0, 0.0, pixels) > 0.089);   /* isosurface 0 */
+  CHECK(vsh_auto_volume_floor_error(1960.0, 7478.0, 0.0, hd) > 0.0698);     /* isosurface 0 */
+  CHECK(vsh_auto_volume_floor_error(1382.0, 1168.0, 0.0, pixels) > 0.0594); /* open-casters 0 */
+  CHECK(vsh_auto_volume_floor_error(3455.0, 1168.0, 0.0, hd) > 0.0613);     /* open-casters 0 */
+  /* ... and z-fail (the default). */
+  CHECK(vsh_auto_volume_floor_error(784.0, 0.0, 7478.0, pixels) > 0.0275); /* isosurface 0 */
+  CHECK(vsh_auto_volume_floor_error(1960.0, 0.0, 7478.0, hd) > 0.0200);    /* isosurface 0 */
+  CHECK(vsh_auto_volume_floor_error(784.0, 0.0, 8190.0, pixels) > 0.0237); /* isosurface 1 */
+  CHECK(vsh_auto_volume_floor_error(1382.0, 0.0, 1080.0, pixels) > 0.0039); /* open-casters 1 */
+  CHECK(vsh_auto_volume_floor_error(3455.0, 0.0, 1080.0, hd) > 0.0040);     /* open-casters 1 */
+  CHECK(vsh_auto_volume_floor_error(1432.0, 0.0, 848.0, pixels) > 0.0056);  /* elevation */
   /* ... and below 0.05 on closed casters with long outlines at 800x600,
-   * where the volumes measured 0.004-0.006 (helix-tube, cone-glyphs). */
-  CHECK(vsh_auto_volume_floor_error(5975.0, 0.0, hd) < 0.05);
-  CHECK(vsh_auto_volume_floor_error(7572.0, 0.0, hd) < 0.05);
+   * where the volumes measured 0.004-0.006 (helix-tube, cone-glyphs), and
+   * on elevation counted z-fail there (0.0024). */
+  CHECK(vsh_auto_volume_floor_error(5975.0, 0.0, 0.0, hd) < 0.05);
+  CHECK(vsh_auto_volume_floor_error(7572.0, 0.0, 0.0, hd) < 0.05);
+  CHECK(vsh_auto_volume_floor_error(3579.0, 0.0, 848.0, hd) < 0.05);
   /* The formula, its growth with the frame, and the degenerate inputs. */
-  CHECK(fabs(vsh_auto_volume_floor_error(1000.0, 0.0, pixels) -
+  CHECK(fabs(vsh_auto_volume_floor_error(1000.0, 0.0, 0.0, pixels) -
              100.0 * (VSH_AUTO_VOLUME_FLOOR_PX + VSH_AUTO_VOLUME_OUTLINE_FLOOR * 1000.0) /
                pixels) < 1e-12);
-  CHECK(fabs(vsh_auto_volume_floor_error(0.0, 10.0, 4.0 * pixels) -
-             100.0 * (VSH_AUTO_VOLUME_FLOOR_PX + 4.0 * VSH_AUTO_VOLUME_OPEN_QUAD * 10.0) /
+  CHECK(fabs(vsh_auto_volume_floor_error(0.0, 10.0, 20.0, 4.0 * pixels) -
+             100.0 *
+               (VSH_AUTO_VOLUME_FLOOR_PX + 4.0 * (VSH_AUTO_VOLUME_OPEN_QUAD * 10.0 +
+                                                  VSH_AUTO_VOLUME_OPEN_QUAD_ZFAIL * 20.0)) /
                (4.0 * pixels)) < 1e-12);
-  CHECK(vsh_auto_volume_floor_error(0.0, 0.0, pixels) == 0.0);
-  CHECK(isinf(vsh_auto_volume_floor_error(-1.0, 0.0, pixels)));
-  CHECK(isinf(vsh_auto_volume_floor_error(1.0, -1.0, pixels)));
-  CHECK(isinf(vsh_auto_volume_floor_error(NAN, 0.0, pixels)));
-  CHECK(isinf(vsh_auto_volume_floor_error(1.0, NAN, pixels)));
-  CHECK(isinf(vsh_auto_volume_floor_error(1.0, 0.0, 0.0)));
-  CHECK(isinf(vsh_auto_volume_floor_error(1.0, 0.0, INFINITY)));
+  CHECK(vsh_auto_volume_floor_error(0.0, 0.0, 0.0, pixels) == 0.0);
+  CHECK(isinf(vsh_auto_volume_floor_error(-1.0, 0.0, 0.0, pixels)));
+  CHECK(isinf(vsh_auto_volume_floor_error(1.0, -1.0, 0.0, pixels)));
+  CHECK(isinf(vsh_auto_volume_floor_error(1.0, 0.0, -1.0, pixels)));
+  CHECK(isinf(vsh_auto_volume_floor_error(NAN, 0.0, 0.0, pixels)));
+  CHECK(isinf(vsh_auto_volume_floor_error(1.0, NAN, 0.0, pixels)));
+  CHECK(isinf(vsh_auto_volume_floor_error(1.0, 0.0, NAN, pixels)));
+  CHECK(isinf(vsh_auto_volume_floor_error(1.0, 0.0, 0.0, 0.0)));
+  CHECK(isinf(vsh_auto_volume_floor_error(1.0, 0.0, 0.0, INFINITY)));
 }
 
 int main(void)

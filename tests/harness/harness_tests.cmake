@@ -221,7 +221,8 @@ set_tests_properties(harness.exact_cache PROPERTIES TIMEOUT 300 LABELS "harness"
 
 # volume's open_zfail (casters that are not closed counted z-fail): an open
 # bowl seen from its side turned away from the light, against the shipped
-# POV-Ray reference (z-pass, the default, 0.059 wrong_pct; z-fail 0.002).
+# POV-Ray reference (z-fail, the default, 0.002 wrong_pct; z-pass,
+# open_zfail=0, 0.059: --spec volume:open_zfail=0 fails).
 add_test(NAME harness.open_casters
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${_harness_src}/test_open_casters.py --bin ${VTKSHADOW_BIN}
           --out ${VTKSHADOW_TEST_OUT}/harness/open_casters)

@@ -372,15 +372,19 @@ double vsh_auto_map_outline_error(double outline_px, double stretch, double pixe
   return 100.0 * VSH_AUTO_MAP_OUTLINE_FLOOR * outline_px * stretch / pixels;
 }
 
-double vsh_auto_volume_floor_error(double outline_px, double open_quads, double pixels)
+double vsh_auto_volume_floor_error(double outline_px, double zpass_open_quads,
+                                   double zfail_open_quads, double pixels)
 {
   double wrong_px;
-  if (!(outline_px >= 0.0) || !(open_quads >= 0.0) || !(pixels > 0.0) || !isfinite(pixels))
+  if (!(outline_px >= 0.0) || !(zpass_open_quads >= 0.0) || !(zfail_open_quads >= 0.0) ||
+      !(pixels > 0.0) || !isfinite(pixels))
     return INFINITY;
-  if (outline_px == 0.0 && open_quads == 0.0)
+  if (outline_px == 0.0 && zpass_open_quads == 0.0 && zfail_open_quads == 0.0)
     return 0.0;
   wrong_px = VSH_AUTO_VOLUME_FLOOR_PX + VSH_AUTO_VOLUME_OUTLINE_FLOOR * outline_px +
-             VSH_AUTO_VOLUME_OPEN_QUAD * open_quads * (pixels / VSH_AUTO_VOLUME_REFERENCE_PIXELS);
+             (VSH_AUTO_VOLUME_OPEN_QUAD * zpass_open_quads +
+              VSH_AUTO_VOLUME_OPEN_QUAD_ZFAIL * zfail_open_quads) *
+               (pixels / VSH_AUTO_VOLUME_REFERENCE_PIXELS);
   return 100.0 * wrong_px / pixels;
 }
 

@@ -151,25 +151,30 @@ double vsh_auto_map_outline_error(double outline_px, double stretch, double pixe
  * sub-pixel shadows (VSH_AUTO_VOLUME_FLOOR_PX), a little along the casters'
  * outline seen from the light (VSH_AUTO_VOLUME_OUTLINE_FLOOR per outline
  * pixel, not stretched: grazing light did not grow it), and on casters
- * that are not closed (no facing test, and z-pass leaves false shadows
- * where the camera sees their side turned away from the light,
- * docs/shadow-volumes.md): VSH_AUTO_VOLUME_OPEN_QUAD wrong pixels per side
- * quad of such casters, times the frame's pixels over 320x240's (an open
- * bowl's false shadows grew with the area: 46 px at 320x240, 294 at
- * 800x600). Fitted on the library against
- * POV-Ray at 320x240 and 800x600 (docs/auto.md, "Shadow volumes' floor"),
- * 1.25 times the upper envelope of the measurements. */
+ * that are not closed (no facing test; docs/shadow-volumes.md), per side
+ * quad of such casters times the frame's pixels over 320x240's (an open
+ * bowl's errors grew with the area): VSH_AUTO_VOLUME_OPEN_QUAD where they
+ * are counted z-pass (the volume pass's open_zfail off: false shadows
+ * where the camera sees their side turned away from the light, 46 px at
+ * 320x240, 294 at 800x600 on the bowl), VSH_AUTO_VOLUME_OPEN_QUAD_ZFAIL
+ * where they are counted z-fail (the default; isosurface's 7,478 open quads:
+ * 96 px at 800x600). Fitted on the library against POV-Ray at 320x240 and
+ * 800x600 (docs/auto.md, "Shadow volumes' floor"), 1.25 times the upper
+ * envelope of the measurements. */
 #define VSH_AUTO_VOLUME_FLOOR_PX 7.5
 #define VSH_AUTO_VOLUME_OUTLINE_FLOOR 0.0072
 #define VSH_AUTO_VOLUME_OPEN_QUAD 0.045
+#define VSH_AUTO_VOLUME_OPEN_QUAD_ZFAIL 0.002
 #define VSH_AUTO_VOLUME_REFERENCE_PIXELS (320.0 * 240.0)
 
 /* volume's predicted wrong_pct: (VSH_AUTO_VOLUME_FLOOR_PX +
- * VSH_AUTO_VOLUME_OUTLINE_FLOOR x outline_px + VSH_AUTO_VOLUME_OPEN_QUAD x
- * open_quads x pixels / VSH_AUTO_VOLUME_REFERENCE_PIXELS) over
- * `pixels`. 0 when there is neither outline nor open quad (nothing casts in
- * view); +inf for bad input (NaN, pixels <= 0, a negative count). */
-double vsh_auto_volume_floor_error(double outline_px, double open_quads, double pixels);
+ * VSH_AUTO_VOLUME_OUTLINE_FLOOR x outline_px + (VSH_AUTO_VOLUME_OPEN_QUAD x
+ * zpass_open_quads + VSH_AUTO_VOLUME_OPEN_QUAD_ZFAIL x zfail_open_quads) x
+ * pixels / VSH_AUTO_VOLUME_REFERENCE_PIXELS) over `pixels`. 0 when there is
+ * neither outline nor open quad (nothing casts in view); +inf for bad
+ * input (NaN, pixels <= 0, a negative count). */
+double vsh_auto_volume_floor_error(double outline_px, double zpass_open_quads,
+                                   double zfail_open_quads, double pixels);
 
 /* The wrong_pct every technique makes on impostor casters: the floors of
  * their outlines over `pixels`. 0 for no outline; +inf for bad input (NaN,

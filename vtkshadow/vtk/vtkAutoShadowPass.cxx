@@ -1042,11 +1042,12 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
     w.candidates[VSH_AUTO_GENERAL_CSM] = { 1,
       (thin > 0.0 ? thin : 0.0) + map + floor + (std::isfinite(outline) ? outline : 0.0),
       MapLookupMsPerPixel * pixels };
-    double openQuads = 0.0;
+    double openQuads[2] = { 0.0, 0.0 };
     const int notDrawn = this->VolumeInputs(
-      renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume, &openQuads);
-    impl.VolumeOpenQuads[l] = openQuads;
-    const double stencil = vsh_auto_volume_floor_error(edgeLengths[l], openQuads, pixels);
+      renderer, this->GetFrame().Lights[l].Homogeneous, static_cast<int>(l), volume, openQuads);
+    impl.VolumeOpenQuads[l] = openQuads[0] + openQuads[1];
+    const double stencil =
+      vsh_auto_volume_floor_error(edgeLengths[l], openQuads[0], openQuads[1], pixels);
     w.candidates[VSH_AUTO_GENERAL_VOLUME] = { 1,
       vsh_volume_predicted_error(notDrawn, impl.SoftLights[l] ? 1 : 0) + floor +
         (std::isfinite(stencil) ? stencil : 0.0),
@@ -1229,7 +1230,7 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
     relative[k] -= light[3] * eye[k];
   }
   int unsupported = this->TranslucentCasters(renderer);
-  double open = 0.0;
+  double open[2] = { 0.0, 0.0 };
   double nearCorners[12];
   vsh_volume_near_corners(clip, nearCorners);
   const double origin[3] = { 0.0, 0.0, 0.0 };
@@ -1261,7 +1262,6 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
     {
       input.silhouette_edges += edges;
       input.fill_px += static_cast<double>(rect[2]) * rect[3];
-      open += silhouette.OpenQuads;
       // The volume pass's rule: z-fail (caps) wherever z-pass is not safe
       // for this camera, and for a caster that is not closed when the pass
       // counts those z-fail (open_zfail).
@@ -1273,11 +1273,14 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
       const bool zfail = (silhouette.OpenQuads > 0.0 && this->VolumePass->GetOpenZFail()) ||
         vsh_volume_zpass_safe(origin, nearCorners, bounds, relative, 1e-3 * size) != 1;
       input.cap_triangles += zfail ? silhouette.CapTriangles : 0.0;
+      // The floor charges open casters by how they are counted.
+      open[zfail ? 1 : 0] += silhouette.OpenQuads;
     }
   }
   if (openQuads)
   {
-    *openQuads = open;
+    openQuads[0] = open[0];
+    openQuads[1] = open[1];
   }
   return unsupported;
 }

@@ -258,7 +258,8 @@ private:
   // the cost model's inputs (silhouette edges, scissored fill) and how many
   // casters volumes cannot draw exactly (no triangles, translucent, not
   // vtkShadowVolumePass::CastsExactly).
-  // `openQuads` (may be null) gets the open casters' quads (VolumeSilhouette).
+  // `openQuads` (may be null) gets the open casters' quads
+  // (VolumeSilhouette): [0] of those counted z-pass, [1] z-fail.
   int VolumeInputs(vtkRenderer* renderer, const double light[4], int index,
     vsh_volume_ms_input& input, double* openQuads = nullptr);
   // The volume silhouette of one caster for one light: its quads (sum of

@@ -66,12 +66,11 @@ public:
 
   /**
    * Count the volumes of casters that are not closed (open, non-manifold)
-   * with z-fail (default off: z-pass where safe, as for closed casters).
-   * On an open surface seen from its side turned away from the light,
-   * z-pass leaves false shadows (an open bowl: 0.059 wrong_pct against
-   * POV-Ray, 0.002 with this on); on some real programs z-fail is worse
-   * (vedo's interpolateScalar3: 1.27 % of the pixels off raytrace's), so it
-   * is a setting (docs/shadow-volumes.md).
+   * with z-fail (default on; off: z-pass where safe, as for closed
+   * casters). On an open surface seen from its side turned away from the
+   * light, z-pass leaves false shadows (an open bowl: 0.059 wrong_pct
+   * against POV-Ray, 0.002 z-fail); z-fail draws a cap per face
+   * (docs/shadow-volumes.md).
    */
   vtkSetMacro(OpenZFail, bool);
   vtkGetMacro(OpenZFail, bool);
@@ -158,7 +157,7 @@ protected:
   double DepthBias = 2.0;
   double SlopeBias = 0.001;
   bool ForceZFail = false;
-  bool OpenZFail = false;
+  bool OpenZFail = true;
   bool FacingTest = true;
   int SoftSamples = 16;
   bool Adaptive = false;

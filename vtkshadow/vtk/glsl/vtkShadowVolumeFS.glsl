@@ -7,7 +7,12 @@
 // and this shader compute the surface's depth with different vertex code,
 // so the bias (window depth units: a constant plus a fraction of the
 // depth's slope per pixel, the slope part capped) covers their difference.
+// The caps add their caster's coincident-topology offset as its mapper
+// computes it (capFactor x the depth's slope + capUnits, vtkShadowVolumePass's
+// CoincidentOffset): they lie on the caster's faces themselves.
 uniform float depthBias;
+uniform float capFactor;
+uniform float capUnits;
 uniform float slopeBias;
 uniform float maxSlopeBias;
 out vec4 unused;
@@ -15,6 +20,7 @@ void main()
 {
   float slope = max(abs(dFdx(gl_FragCoord.z)), abs(dFdy(gl_FragCoord.z)));
   float bias = depthBias + min(slopeBias * slope, maxSlopeBias);
+  bias += capFactor * length(vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z))) + capUnits;
   gl_FragDepth = gl_FragCoord.z + (gl_FrontFacing ? bias : -bias);
   unused = vec4(0.0);
 }
