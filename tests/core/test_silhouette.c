@@ -42,6 +42,14 @@ static int balanced(const vsh_mesh_topology *t, const vsh_silhouette *s) {
   return ok;
 }
 
+/* The unit square in z = 0, facing +z. */
+static void unit_quad(void) {
+  mesh.nv = mesh.nt = 0;
+  const uint32_t q0 = tm_vertex(&mesh, 0, 0, 0), q1 = tm_vertex(&mesh, 1, 0, 0);
+  const uint32_t q2 = tm_vertex(&mesh, 1, 1, 0), q3 = tm_vertex(&mesh, 0, 1, 0);
+  tm_quad(&mesh, q0, q1, q2, q3);
+}
+
 static void unit_box(void) {
   const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   mesh.nv = mesh.nt = 0;
@@ -110,10 +118,7 @@ static void test_box_known_lights(void) {
 static void test_open_meshes(void) {
   /* A single quad facing +z, lit from below: the lit faces have no
    * silhouette, both sides gives its border reversed. */
-  mesh.nv = mesh.nt = 0;
-  const uint32_t q0 = tm_vertex(&mesh, 0, 0, 0), q1 = tm_vertex(&mesh, 1, 0, 0);
-  const uint32_t q2 = tm_vertex(&mesh, 1, 1, 0), q3 = tm_vertex(&mesh, 0, 1, 0);
-  tm_quad(&mesh, q0, q1, q2, q3);
+  unit_quad();
   vsh_mesh_topology t = build();
   const double below[4] = {0.2, 0.3, -1, 0}, above[4] = {0.2, 0.3, 1, 0};
   vsh_silhouette s = silhouette(&t, below, VSH_SILHOUETTE_LIT_FACES);
@@ -461,9 +466,59 @@ static void test_bad_input(void) {
   vsh_mesh_topology_free(&t);
 }
 
+static void test_seen_unlit(void) {
+  /* A floor quad facing +z: lit from above and seen from above, or both
+   * from below, every face is seen from its lit side; a camera below a
+   * light above (or the other way) sees its unlit side. */
+  unit_quad();
+  vsh_mesh_topology t = build();
+  const double sun[4] = {0.2, 0.3, 1, 0}, lamp[4] = {0.5, 0.5, 2, 1}, under[4] = {0, 0, -1, 0};
+  const double above[4] = {3, -2, 5, 1}, below[4] = {0.5, 0.5, -4, 1};
+  const double parallel_above[4] = {0, 0, 1, 0}, parallel_below[4] = {0, 0, -1, 0};
+  CHECK(vsh_silhouette_seen_unlit(&t, sun, above) == 0);
+  CHECK(vsh_silhouette_seen_unlit(&t, lamp, above) == 0);
+  CHECK(vsh_silhouette_seen_unlit(&t, sun, parallel_above) == 0);
+  CHECK(vsh_silhouette_seen_unlit(&t, under, below) == 0);
+  CHECK(vsh_silhouette_seen_unlit(&t, sun, below) == 1);
+  CHECK(vsh_silhouette_seen_unlit(&t, lamp, parallel_below) == 1);
+  CHECK(vsh_silhouette_seen_unlit(&t, under, above) == 1);
+  /* Homogeneous scale and sign do not matter. */
+  const double lamp_scaled[4] = {-1, -1, -4, -2}, above_scaled[4] = {6, -4, 10, 2};
+  CHECK(vsh_silhouette_seen_unlit(&t, lamp_scaled, above_scaled) == 0);
+  /* Eye or light in the plane (edge-on): no side is seen. */
+  const double level[4] = {5, 5, 0, 1};
+  CHECK(vsh_silhouette_seen_unlit(&t, sun, level) == 0);
+  CHECK(vsh_silhouette_seen_unlit(&t, level, below) == 0);
+  /* Unknown answers are the safe one. */
+  const double zero[4] = {0, 0, 0, 0}, bad[4] = {NAN, 0, 1, 0};
+  CHECK(vsh_silhouette_seen_unlit(NULL, sun, above) == 1);
+  CHECK(vsh_silhouette_seen_unlit(&t, zero, above) == 1);
+  CHECK(vsh_silhouette_seen_unlit(&t, sun, bad) == 1);
+  vsh_mesh_topology_free(&t);
+  /* An open cylinder (a pipe) lit from the side and seen from the side:
+   * the camera sees the inside of the far wall, turned away from the light
+   * where the light is on the camera's side. */
+  mesh.nv = mesh.nt = 0;
+  tm_cylinder(&mesh, 1.0, 0.0, 2.0, 16, 0);
+  t = build();
+  const double side[4] = {1, 0.1, 0, 0}, eye_side[4] = {6, 0.5, 1, 1};
+  const double eye_axis[4] = {0, 0, 8, 1};
+  CHECK(vsh_silhouette_seen_unlit(&t, side, eye_side) == 1);
+  CHECK(vsh_silhouette_seen_unlit(&t, side, eye_axis) == 1);
+  vsh_mesh_topology_free(&t);
+  /* Any mesh is answered: a closed box seen from where the light is shows
+   * only lit faces. */
+  unit_box();
+  t = build();
+  const double corner[4] = {3, 3, 3, 1};
+  CHECK(vsh_silhouette_seen_unlit(&t, corner, corner) == 0);
+  vsh_mesh_topology_free(&t);
+}
+
 int main(void) {
   test_box_known_lights();
   test_open_meshes();
+  test_seen_unlit();
   test_non_manifold_fin();
   test_random_against_brute_force();
   test_fans_winding();

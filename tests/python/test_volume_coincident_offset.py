@@ -2,7 +2,7 @@
 
 vedo turns vtkMapper's ResolveCoincidentTopology to PolygonOffset for every
 mesh (factor 0.1, units 0.1): the mappers push each surface's depth back by
-factor x its slope + units / 65000. An open caster's volume is counted
+factor x its slope + units x 1.6e-5. An open caster's volume is counted
 z-fail (open_zfail, the default), so the caps of its faces are drawn on the
 surface itself; without the same offset they win the depth test against
 their own pushed-back face and that face is shadowed whole (vedo's

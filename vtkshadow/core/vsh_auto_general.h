@@ -154,11 +154,11 @@ double vsh_auto_map_outline_error(double outline_px, double stretch, double pixe
  * that are not closed (no facing test; docs/shadow-volumes.md), per side
  * quad of such casters times the frame's pixels over 320x240's (an open
  * bowl's errors grew with the area): VSH_AUTO_VOLUME_OPEN_QUAD where they
- * are counted z-pass (the volume pass's open_zfail off: false shadows
- * where the camera sees their side turned away from the light, 46 px at
- * 320x240, 294 at 800x600 on the bowl), VSH_AUTO_VOLUME_OPEN_QUAD_ZFAIL
- * where they are counted z-fail (the default; isosurface's 7,478 open quads:
- * 96 px at 800x600). Fitted on the library against POV-Ray at 320x240 and
+ * are counted z-pass while the camera sees a face's side turned away from
+ * the light (the volume pass's open_zfail off: false shadows there, 46 px
+ * at 320x240, 294 at 800x600 on the bowl), VSH_AUTO_VOLUME_OPEN_QUAD_ZFAIL
+ * otherwise (counted z-fail, the default there, or only their lit side in
+ * view; isosurface's 7,478 open quads, z-fail: 96 px at 800x600). Fitted on the library against POV-Ray at 320x240 and
  * 800x600 (docs/auto.md, "Shadow volumes' floor"), 1.25 times the upper
  * envelope of the measurements. */
 #define VSH_AUTO_VOLUME_FLOOR_PX 7.5

@@ -20,15 +20,23 @@ static int usable_light(const double light[4], double out[4]) {
   return nonzero;
 }
 
-int vsh_triangle_faces_light(const double *p, const uint32_t v[3], const double light[4]) {
-  double a[3], e1[3], e2[3];
+/* Triangle v's first vertex `a` and its (unnormalized) normal
+ * (b - a) x (c - a). */
+static void face_plane(const double *p, const uint32_t v[3], double a[3], double n[3]) {
+  double e1[3], e2[3];
   for (int k = 0; k < 3; ++k) {
     a[k] = p[3 * (size_t)v[0] + k];
     e1[k] = p[3 * (size_t)v[1] + k] - a[k];
     e2[k] = p[3 * (size_t)v[2] + k] - a[k];
   }
-  const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                       e1[0] * e2[1] - e1[1] * e2[0]};
+  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
+int vsh_triangle_faces_light(const double *p, const uint32_t v[3], const double light[4]) {
+  double a[3], n[3];
+  face_plane(p, v, a, n);
   const double to[3] = {light[0] - light[3] * a[0], light[1] - light[3] * a[1],
                         light[2] - light[3] * a[2]};
   return (n[0] * to[0] + n[1] * to[1] + n[2] * to[2]) > 0.0;
@@ -142,4 +150,24 @@ vsh_mesh_status vsh_silhouette_fans(const vsh_mesh_topology *t, const vsh_silhou
   }
   free(centre_of);
   return VSH_MESH_OK;
+}
+
+int vsh_silhouette_seen_unlit(const vsh_mesh_topology *t, const double light[4],
+                              const double eye[4]) {
+  double l[4], e[4];
+  if (!t || !usable_light(light, l) || !usable_light(eye, e)) return 1;
+  const double *p = t->positions;
+  for (size_t f = 0; f < t->triangle_count; ++f) {
+    const uint32_t *v = t->triangles + 3 * f;
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) continue;
+    double a[3], n[3];
+    face_plane(p, v, a, n);
+    double to_light = 0.0, to_eye = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      to_light += n[k] * (l[k] - l[3] * a[k]);
+      to_eye += n[k] * (e[k] - e[3] * a[k]);
+    }
+    if ((to_light > 0.0 && to_eye < 0.0) || (to_light < 0.0 && to_eye > 0.0)) return 1;
+  }
+  return 0;
 }

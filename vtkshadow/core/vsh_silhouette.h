@@ -76,6 +76,17 @@ vsh_mesh_status vsh_silhouette_facing(const vsh_mesh_topology *topology, const d
 vsh_mesh_status vsh_silhouette_build(const vsh_mesh_topology *topology, const double light[4],
                                      vsh_silhouette_mode mode, vsh_silhouette *out);
 
+/* 1 when a camera at `eye` (homogeneous like the light: (E, 1), or
+ * (towards the camera, 0) for a parallel projection) sees some triangle
+ * from the side that does not face the light: the triangle's plane
+ * separates eye and light strictly. A volume of a mesh that is not closed
+ * needs z-fail exactly then (vtkShadowVolumePass's open_zfail): there the
+ * prisms of the faces reach from the surface towards the eye. 0 when no
+ * triangle is (degenerate and edge-on ones are skipped); 1, the safe
+ * answer, for NULL or an unusable light or eye. */
+int vsh_silhouette_seen_unlit(const vsh_mesh_topology *topology, const double light[4],
+                              const double eye[4]);
+
 /* Frees the edges and zeroes *silhouette. NULL and zeroed are fine. */
 void vsh_silhouette_free(vsh_silhouette *silhouette);
 

@@ -1263,18 +1263,19 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
       input.silhouette_edges += edges;
       input.fill_px += static_cast<double>(rect[2]) * rect[3];
       // The volume pass's rule: z-fail (caps) wherever z-pass is not safe
-      // for this camera, and for a caster that is not closed when the pass
-      // counts those z-fail (open_zfail).
+      // for this camera, and for a caster that is not closed whose unlit
+      // side is in view when the pass counts those z-fail (open_zfail).
       double size = 0.0;
       for (int k = 0; k < 3; ++k)
       {
         size = std::max(size, bounds[2 * k + 1] - bounds[2 * k]);
       }
-      const bool zfail = (silhouette.OpenQuads > 0.0 && this->VolumePass->GetOpenZFail()) ||
+      const bool zfail = (silhouette.SeenUnlit && this->VolumePass->GetOpenZFail()) ||
         vsh_volume_zpass_safe(origin, nearCorners, bounds, relative, 1e-3 * size) != 1;
       input.cap_triangles += zfail ? silhouette.CapTriangles : 0.0;
-      // The floor charges open casters by how they are counted.
-      open[zfail ? 1 : 0] += silhouette.OpenQuads;
+      // The floor charges open casters by how they are counted: z-pass's
+      // false shadows only where their unlit side is in view.
+      open[zfail || !silhouette.SeenUnlit ? 1 : 0] += silhouette.OpenQuads;
     }
   }
   if (openQuads)
@@ -1359,7 +1360,26 @@ vtkAutoShadowPass::VolumeSilhouette vtkAutoShadowPass::VolumeEdges(
     }
     vsh_silhouette_free(&silhouette);
   }
-  return cached.second;
+  VolumeSilhouette out = cached.second;
+  if (!topology->closed)
+  {
+    // The camera as the volume pass places it (vtkShadowVolumePass::SeenUnlit).
+    const vtkshadow::ShadowFrame& frame = this->GetFrame();
+    double eye[4] = { frame.Eye[0], frame.Eye[1], frame.Eye[2], 1.0 };
+    if (frame.Projection[14] == 0.0)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        eye[k] = frame.Eye[k] - frame.FocalPoint[k];
+      }
+      eye[3] = 0.0;
+    }
+    double eyeData[4], eyeStored[4];
+    vsh_mat4_transform_point4(inverse, eye, eyeData);
+    geometry.ShiftLight(eyeData, eyeStored);
+    out.SeenUnlit = vsh_silhouette_seen_unlit(topology, stored, eyeStored) != 0;
+  }
+  return out;
 }
 
 //------------------------------------------------------------------------------

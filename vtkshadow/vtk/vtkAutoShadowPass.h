@@ -272,6 +272,9 @@ private:
     double Quads = -1.0;
     double OpenQuads = 0.0;
     double CapTriangles = 0.0;
+    // Not closed, and the camera sees one of its faces from the side turned
+    // from the light (vsh_silhouette_seen_unlit): the pass counts it z-fail.
+    bool SeenUnlit = false;
   };
   // VolumeSilhouette of caster `object` (an index into the frame's objects)
   // for light number `index`, cached per light while light and mesh stay put.

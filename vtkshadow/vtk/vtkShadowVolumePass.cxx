@@ -30,6 +30,7 @@
 
 #include "vsh_mat4.h"
 #include "vsh_rt_adaptive.h"
+#include "vsh_silhouette.h"
 #include "vsh_soft.h"
 #include "vsh_soft_adaptive.h"
 #include "vsh_transmit.h"
@@ -81,7 +82,8 @@ bool SurfaceInDepth(vtkActor* actor)
 // The caps lie on the caster's own faces, which its mapper may have drawn
 // pushed back by VTK's coincident-topology offset (vtkMapper's
 // ResolveCoincidentTopology; vedo turns it on for every mesh): depth +
-// factor x |d depth / d pixel| + units / 65000 in its fragment shader. The
+// factor x |d depth / d pixel| + units x 1.6e-5 in its fragment shader
+// (VTK 9.1's constant; later versions divide by 65000, a little less). The
 // caps take the same offset on top of the sides' bias (its size: a cap
 // pulled towards the camera must still pass a surface pushed either way),
 // or a face whose cap does not lose the depth test to its own surface is
@@ -95,7 +97,7 @@ void CoincidentOffset(vtkActor* actor, float& factor, float& units)
     double f = 0.0, u = 0.0;
     mapper->GetCoincidentTopologyPolygonOffsetParameters(f, u);
     factor = static_cast<float>(std::abs(f));
-    units = static_cast<float>(std::abs(u) / 65000.0);
+    units = static_cast<float>(std::abs(u) * 1.6e-5);
   }
 }
 
@@ -775,11 +777,44 @@ bool vtkShadowVolumePass::CountsZPass(const Frame& frame, const vtkshadow::Shado
     SurfaceInDepth(caster.Actor) && !caster.Proxy;
   // A translucent caster's crossings are always counted z-fail: it is not in
   // the depth pre-pass. With OpenZFail, so is a caster that is not closed
-  // (both sides' volumes): where the camera sees its side that faces away
-  // from the light, the prisms of its faces reach towards the eye and
-  // z-pass counts their far faces against the surface's own depth.
-  return !this->ForceZFail && drawn && !crossings && (volume.DarkCaps || !this->OpenZFail) &&
+  // (both sides' volumes) when the camera sees one of its faces from the
+  // side that faces away from the light: there the prisms of its faces
+  // reach towards the eye and z-pass counts their far faces against the
+  // surface's own depth. A floor seen from above under a light above stays
+  // z-pass, without caps to draw.
+  const bool openZFail =
+    !volume.DarkCaps && this->OpenZFail && this->SeenUnlit(frame, caster, volume);
+  return !this->ForceZFail && drawn && !crossings && !openZFail &&
     vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkShadowVolumePass::SeenUnlit(
+  const Frame& frame, const vtkshadow::ShadowActor& caster, const Volume& volume) const
+{
+  // The eye in the volume's own (shifted model) coordinates, as the light
+  // it was built for: (E, 1), or towards the camera (w = 0) for a parallel
+  // projection.
+  const vtkshadow::ShadowFrame& shared = frame.Shared;
+  const bool parallel = shared.Projection[14] == 0.0;
+  double eyeWorld[4] = { shared.Eye[0], shared.Eye[1], shared.Eye[2], 1.0 };
+  if (parallel)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      eyeWorld[k] = shared.Eye[k] - shared.FocalPoint[k];
+    }
+    eyeWorld[3] = 0.0;
+  }
+  vtkShadowCasterGeometry& geometry = this->Impl->GeometryOf(caster);
+  double inverse[16], eyeData[4], eyeStored[4];
+  if (!geometry.GetTopology() || !vsh_mat4_inverse(caster.Matrix, inverse))
+  {
+    return true;
+  }
+  vsh_mat4_transform_point4(inverse, eyeWorld, eyeData);
+  geometry.ShiftLight(eyeData, eyeStored);
+  return vsh_silhouette_seen_unlit(geometry.GetTopology(), volume.Light, eyeStored) != 0;
 }
 
 //------------------------------------------------------------------------------
@@ -1040,7 +1075,7 @@ const vtkshadow::Settings& vtkShadowVolumePass::SettingsTable()
       Row("force_zfail", vtkshadow::Flag(), &P::SetForceZFail, &P::GetForceZFail,
         "count every volume with z-fail, never z-pass"),
       Row("open_zfail", vtkshadow::Flag(), &P::SetOpenZFail, &P::GetOpenZFail,
-        "count the volumes of casters that are not closed with z-fail"),
+        "count the volumes of casters that are not closed z-fail where their unlit side is seen"),
       Row("facing_test", vtkshadow::Flag(), &P::SetFacingTest, &P::GetFacingTest,
         "darken the facets of closed casters that face away from a light"),
       Row("soft_samples", vtkshadow::Integers(1, 255), &P::SetSoftSamples, &P::GetSoftSamples,

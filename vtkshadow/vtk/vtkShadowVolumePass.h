@@ -66,10 +66,10 @@ public:
 
   /**
    * Count the volumes of casters that are not closed (open, non-manifold)
-   * with z-fail (default on; off: z-pass where safe, as for closed
-   * casters). On an open surface seen from its side turned away from the
-   * light, z-pass leaves false shadows (an open bowl: 0.059 wrong_pct
-   * against POV-Ray, 0.002 z-fail); z-fail draws a cap per face
+   * with z-fail where the camera sees one of their faces from the side
+   * turned away from the light (default on; off: z-pass where safe, as for
+   * closed casters). There z-pass leaves false shadows (an open bowl: 0.059
+   * wrong_pct against POV-Ray, 0.002 z-fail); z-fail draws a cap per face
    * (docs/shadow-volumes.md).
    */
   vtkSetMacro(OpenZFail, bool);
@@ -201,6 +201,10 @@ private:
   // rather than z-fail: bounds and light camera-relative.
   bool CountsZPass(const Frame& frame, const vtkshadow::ShadowActor& caster, const Volume& volume,
     const double bounds[6], const double lightRelative[4], bool crossings) const;
+  // Whether the camera sees a face of the caster's mesh from the side that
+  // faces away from the volume's light (vsh_silhouette_seen_unlit).
+  bool SeenUnlit(
+    const Frame& frame, const vtkshadow::ShadowActor& caster, const Volume& volume) const;
   void DrawCaster(vtkShaderProgram* program, const Frame& frame, int light, int sample,
     const vtkshadow::ShadowActor& caster, bool crossings = false);
   Volume* UpdateVolume(const vtkshadow::ShadowActor& caster, int light, int sample,
