@@ -1364,17 +1364,8 @@ vtkAutoShadowPass::VolumeSilhouette vtkAutoShadowPass::VolumeEdges(
   if (!topology->closed)
   {
     // The camera as the volume pass places it (vtkShadowVolumePass::SeenUnlit).
-    const vtkshadow::ShadowFrame& frame = this->GetFrame();
-    double eye[4] = { frame.Eye[0], frame.Eye[1], frame.Eye[2], 1.0 };
-    if (frame.Projection[14] == 0.0)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        eye[k] = frame.Eye[k] - frame.FocalPoint[k];
-      }
-      eye[3] = 0.0;
-    }
-    double eyeData[4], eyeStored[4];
+    double eye[4], eyeData[4], eyeStored[4];
+    vtkshadow::EyeHomogeneous(this->GetFrame(), eye);
     vsh_mat4_transform_point4(inverse, eye, eyeData);
     geometry.ShiftLight(eyeData, eyeStored);
     out.SeenUnlit = vsh_silhouette_seen_unlit(topology, stored, eyeStored) != 0;

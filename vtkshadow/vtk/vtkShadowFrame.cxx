@@ -75,6 +75,18 @@ void GatherShadowFrame(const vtkRenderState* s, bool actors, ShadowFrame& frame)
 }
 
 //------------------------------------------------------------------------------
+void EyeHomogeneous(const ShadowFrame& frame, double out[4])
+{
+  // A parallel projection's bottom row is (0, 0, 0, 1).
+  const bool parallel = frame.Projection[14] == 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = parallel ? frame.Eye[k] - frame.FocalPoint[k] : frame.Eye[k];
+  }
+  out[3] = parallel ? 0.0 : 1.0;
+}
+
+//------------------------------------------------------------------------------
 void GatherShadowFrameActors(const vtkRenderState* s, ShadowFrame& frame)
 {
   frame.Drawn = ShadowActors(s);

@@ -96,6 +96,12 @@ void GatherShadowFrame(const vtkRenderState* s, bool actors, ShadowFrame& frame)
  * them out).
  */
 void GatherShadowFrameActors(const vtkRenderState* s, ShadowFrame& frame);
+
+/**
+ * The frame's camera as a homogeneous point, as lights are given (world):
+ * (eye, 1), or (towards the camera, 0) for a parallel projection.
+ */
+void EyeHomogeneous(const ShadowFrame& frame, double out[4]);
 }
 
 #endif

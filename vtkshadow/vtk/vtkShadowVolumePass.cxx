@@ -782,10 +782,13 @@ bool vtkShadowVolumePass::CountsZPass(const Frame& frame, const vtkshadow::Shado
   // reach towards the eye and z-pass counts their far faces against the
   // surface's own depth. A floor seen from above under a light above stays
   // z-pass, without caps to draw.
-  const bool openZFail =
-    !volume.DarkCaps && this->OpenZFail && this->SeenUnlit(frame, caster, volume);
-  return !this->ForceZFail && drawn && !crossings && !openZFail &&
-    vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) == 1;
+  // The per-face test last, only when nothing cheaper has decided.
+  if (this->ForceZFail || !drawn || crossings ||
+    vsh_volume_zpass_safe(eye, frame.NearCorners, bounds, lightRelative, 1e-3 * size) != 1)
+  {
+    return false;
+  }
+  return volume.DarkCaps || !this->OpenZFail || !this->SeenUnlit(frame, caster, volume);
 }
 
 //------------------------------------------------------------------------------
@@ -793,19 +796,9 @@ bool vtkShadowVolumePass::SeenUnlit(
   const Frame& frame, const vtkshadow::ShadowActor& caster, const Volume& volume) const
 {
   // The eye in the volume's own (shifted model) coordinates, as the light
-  // it was built for: (E, 1), or towards the camera (w = 0) for a parallel
-  // projection.
-  const vtkshadow::ShadowFrame& shared = frame.Shared;
-  const bool parallel = shared.Projection[14] == 0.0;
-  double eyeWorld[4] = { shared.Eye[0], shared.Eye[1], shared.Eye[2], 1.0 };
-  if (parallel)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      eyeWorld[k] = shared.Eye[k] - shared.FocalPoint[k];
-    }
-    eyeWorld[3] = 0.0;
-  }
+  // it was built for.
+  double eyeWorld[4];
+  vtkshadow::EyeHomogeneous(frame.Shared, eyeWorld);
   vtkShadowCasterGeometry& geometry = this->Impl->GeometryOf(caster);
   double inverse[16], eyeData[4], eyeStored[4];
   if (!geometry.GetTopology() || !vsh_mat4_inverse(caster.Matrix, inverse))

@@ -18,9 +18,10 @@ uniform float maxSlopeBias;
 out vec4 unused;
 void main()
 {
-  float slope = max(abs(dFdx(gl_FragCoord.z)), abs(dFdy(gl_FragCoord.z)));
+  vec2 dz = vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
+  float slope = max(abs(dz.x), abs(dz.y));
   float bias = depthBias + min(slopeBias * slope, maxSlopeBias);
-  bias += capFactor * length(vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z))) + capUnits;
+  bias += capFactor * length(dz) + capUnits;
   gl_FragDepth = gl_FragCoord.z + (gl_FrontFacing ? bias : -bias);
   unused = vec4(0.0);
 }
