@@ -237,8 +237,10 @@ def trace_scene(scene, light_index, width, height, shadows="all"):
     """Everything the exact renderer knows, as a dict of (H, W) arrays, row 0
     at the top: "visibility", "valid", "object" (index, -1 background),
     "face" (box face 0..5, 0 otherwise), "distance" (eye to hit along the
-    ray), "depth" (along the view direction), "receiver" (pixel on a receiver)
-    and "blocked" (the shadow ray hits a caster, under the chosen model)."""
+    ray), "depth" (along the view direction), "receiver" (pixel on a receiver),
+    "blocked" (the shadow ray hits a caster, under the chosen model) and
+    "light_cos" (the exact surface's normal, turned to the camera, dotted with
+    the direction to the light; 0 off the objects)."""
     if shadows not in ("all", "planar", "none"):
         raise ValueError(f"shadows must be all, planar or none (got {shadows!r})")
     cam = scene["camera"]
@@ -275,7 +277,8 @@ def trace_scene(scene, light_index, width, height, shadows="all"):
         light_dist = np.linalg.norm(d, axis=-1)
         with np.errstate(divide="ignore", invalid="ignore"):
             to_light = d / light_dist[..., None]
-    valid = hitmask & (np.einsum("...k,...k", normal, to_light) > 1e-6)
+    light_cos = np.where(hitmask, np.einsum("...k,...k", normal, to_light), 0.0)
+    valid = hitmask & (light_cos > 1e-6)
     if light["type"] == "spot":
         axis = normalize(np.asarray(light["focal_point"], np.float64)
                          - np.asarray(light["position"], np.float64))
@@ -304,7 +307,7 @@ def trace_scene(scene, light_index, width, height, shadows="all"):
         "visibility": visibility, "valid": valid, "object": obj, "face": face,
         "distance": np.where(hitmask, tb * np.linalg.norm(dirs, axis=-1), np.inf),
         "depth": np.where(hitmask, np.einsum("...k,k", p, view), np.inf),
-        "receiver": receiver, "blocked": blocked & valid,
+        "receiver": receiver, "blocked": blocked & valid, "light_cos": light_cos,
     }
 
 

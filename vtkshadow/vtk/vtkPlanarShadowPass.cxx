@@ -57,6 +57,9 @@ using vtkshadow::planar::MaxSoftPairs;
 
 namespace
 {
+// The facing test's names in the mappers' shaders (vtkShadowFacingTest.h):
+// apart from the volume pass's, which may share a shader in auto's chain.
+constexpr const char* FacingPrefix = "vshPlanarFacing";
 // Row vector (plane) times matrix: a plane acting on the matrix's input space.
 void PlaneTimesMatrix(const double plane[4], const double m[16], double out[4])
 {
@@ -100,6 +103,7 @@ vtkPlanarShadowPass::vtkPlanarShadowPass()
   , SoftSamples(16)
   , NumberOfSoftPairs(0)
   , Adaptive(false)
+  , FacingTest(true)
   , NumberOfRefinedPixels(-1)
   , Impl(new Internals)
 {
@@ -253,6 +257,7 @@ void vtkPlanarShadowPass::Render(const vtkRenderState* s)
   // Casters from the renderer's props, not the frustum-culled list: a
   // caster behind the camera still shadows a receiver in view.
   this->GatherCasters(frame.Shared.Actors, frame);
+  this->NoteClosedCasters(renderer, frame);
   this->GatherTranslucentCasters(frame);
   this->SetUpPlanes(frame);
   // Which (receiver, light) pairs cast, with their matrices: plain planning.
@@ -459,6 +464,38 @@ void vtkPlanarShadowPass::GatherCasters(
   // Points drawn as spheres and lines drawn as tubes: their closed proxies,
   // drawn as silhouette fans like any closed caster.
   this->Impl->Proxies.Append(frame.Shared, actors, frame.Casters);
+}
+
+//------------------------------------------------------------------------------
+void vtkPlanarShadowPass::NoteClosedCasters(vtkRenderer* renderer, const Frame& frame)
+{
+  // A facet of a closed opaque caster facing away from a light this pass
+  // casts is in the caster's own shadow. Receivers do not need it (they are
+  // flat, so open), nor do the impostors' proxies (VTK lights the spheres
+  // and tubes it draws by their exact normals).
+  Internals& impl = *this->Impl;
+  impl.FacingBits.clear();
+  int casting = 0;
+  std::vector<double> sizes;
+  for (size_t light = 0; light < frame.Shared.Lights.size(); ++light)
+  {
+    const vtkshadow::ShadowFrameLight& l = frame.Shared.Lights[light];
+    casting |= l.Casts && light < vtkshadow::FacingLights::MaxLights ? 1 << light : 0;
+    sizes.push_back(this->SoftSamples > 1 ? l.Size : 0.0);
+  }
+  if (!this->FacingTest || casting == 0)
+  {
+    return;
+  }
+  impl.Facing = vtkshadow::FacingLightsOf(renderer, frame.Shared, sizes.data());
+  for (const vtkshadow::ShadowActor& caster : frame.Casters)
+  {
+    if (!caster.Proxy && !impl.ReceiverIndex.count(caster.Actor) &&
+      this->CasterGeometry(caster.Actor)->IsClosed())
+    {
+      impl.FacingBits[caster.Actor] = casting;
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -854,22 +891,24 @@ void vtkPlanarShadowPass::ForgetRemovedCasters(vtkOpenGLRenderWindow* window)
 bool vtkPlanarShadowPass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
-  if (!this->Impl->CanReceive(prop))
-  {
-    return true; // casters and translucent actors keep VTK's own shader
-  }
   // Our declarations ride along with VTK's lighting declarations.
-  if (fragmentShader.find("//VTK::Light::Dec") != std::string::npos)
+  if (fragmentShader.find("//VTK::Light::Dec") == std::string::npos)
+  {
+    return true;
+  }
+  // Every lit shader may draw a closed caster: the facing test's code, its
+  // lights chosen per draw by a uniform (0 for every other actor).
+  std::string declarations = vtkshadow::FacingShaderCode(FacingPrefix);
+  if (this->Impl->CanReceive(prop))
   {
     // The soft lookup only in frames with soft pairs: hard frames keep the
     // hard shader, byte for byte.
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
-      std::string("//VTK::Light::Dec\n") +
-        (this->Impl->SoftShader ? "#define VSH_PLANAR_SOFT 1\n" : "") +
-        (this->Impl->TransmitShader ? "#define VSH_PLANAR_TRANSMIT 1\n" : "") +
-        vtkPlanarShadowLightFS,
-      false);
+    declarations = std::string(this->Impl->SoftShader ? "#define VSH_PLANAR_SOFT 1\n" : "") +
+      (this->Impl->TransmitShader ? "#define VSH_PLANAR_TRANSMIT 1\n" : "") +
+      vtkPlanarShadowLightFS + declarations;
   }
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + declarations, false);
   return true;
 }
 
@@ -877,13 +916,21 @@ bool vtkPlanarShadowPass::PreReplaceShaderValues(
 bool vtkPlanarShadowPass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  if (fragmentShader.find("vshPlanarLit") == std::string::npos)
+  const std::string facing = std::string(FacingPrefix) + "Lit(%d, vertexVC.xyz)";
+  const std::string facingPrepare = std::string(FacingPrefix) + "Prepare(vertexVC.xyz);";
+  if (fragmentShader.find(std::string(FacingPrefix) + "Prepare") == std::string::npos)
   {
     return true;
   }
-  // Each light's diffuse and specular terms times its mask bit; the mask is
-  // read once per fragment.
-  this->InjectLightFactors(fragmentShader, "vshPlanarLit(%d)", "vshPlanarPrepare(vertexVC.xyz);");
+  // Each light's diffuse and specular terms times its factor: a receiver's
+  // mask bit (read once per fragment), and the facing test.
+  if (fragmentShader.find("vshPlanarLit") == std::string::npos)
+  {
+    this->InjectLightFactors(fragmentShader, facing, facingPrepare);
+    return true;
+  }
+  this->InjectLightFactors(fragmentShader, "vshPlanarLit(%d) * " + facing,
+    "vshPlanarPrepare(vertexVC.xyz); " + facingPrepare);
   return true;
 }
 
@@ -892,6 +939,9 @@ bool vtkPlanarShadowPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   Internals& impl = *this->Impl;
+  const auto closed = impl.FacingBits.find(impl.Outer(prop));
+  vtkshadow::SetFacingUniforms(
+    program, FacingPrefix, closed == impl.FacingBits.end() ? 0 : closed->second, impl.Facing);
   if (!program->IsUniformUsed("vshPlanarMask") || !impl.Mask)
   {
     return true;
@@ -996,6 +1046,8 @@ const vtkshadow::Settings& vtkPlanarShadowPass::SettingsTable()
         "samples of a light with a size (docs/soft-shadows.md)"),
       Row("adaptive", vtkshadow::Flag(), &P::SetAdaptive, &P::GetAdaptive,
         "soft_samples > 8: the samples beyond a batch of 8 only where the batch disagrees"),
+      Row("facing_test", vtkshadow::Flag(), &P::SetFacingTest, &P::GetFacingTest,
+        "darken the facets of closed casters that face away from a light"),
     });
   return table;
 }

@@ -133,6 +133,18 @@ public:
   vtkBooleanMacro(Adaptive, bool);
 
   /**
+   * Darken the facets of closed casters that face away from a light
+   * (default on). Planar shadows only receivers and leaves a caster's own
+   * dark side to the lighting, whose interpolated normals still light
+   * facets facing away from the light along the terminator; a ray tracer
+   * given the same triangles does not (docs/planar-shadows.md, "The
+   * casters' own dark side").
+   */
+  vtkSetMacro(FacingTest, bool);
+  vtkGetMacro(FacingTest, bool);
+  vtkBooleanMacro(FacingTest, bool);
+
+  /**
    * Pixels that got all N samples in the last frame, summed over its soft
    * pairs (-1 when no soft pair was adaptive).
    */
@@ -207,6 +219,7 @@ protected:
   int SoftSamples;
   int NumberOfSoftPairs;
   bool Adaptive;
+  bool FacingTest;
   vtkIdType NumberOfRefinedPixels;
 
 private:
@@ -229,6 +242,8 @@ private:
   bool PartCanShowShadow(const double plane[4], const Frame& frame) const;
   void GatherCasters(const std::vector<vtkshadow::ShadowActor>& actors, Frame& frame);
 #endif
+  // Which lights' facing test each closed caster gets this frame.
+  void NoteClosedCasters(vtkRenderer* renderer, const Frame& frame);
   // The explicit planes in view coordinates, for the receivers' shaders.
   void SetUpPlanes(const Frame& frame);
   void DrawMask(vtkOpenGLRenderWindow* window, const Frame& frame,

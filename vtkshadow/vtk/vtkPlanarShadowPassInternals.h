@@ -11,6 +11,7 @@
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
 #include "vtkShadowClipSpaceQuad.h"
+#include "vtkShadowFacingTest.h"
 #include "vtkShadowFrame.h"
 #include "vtkShadowImpostorProxies.h"
 #include "vtkShadowReceiverPlane.h"
@@ -124,6 +125,10 @@ struct vtkPlanarShadowPass::Internals
 
   // Per-frame values for SetShaderParameters.
   std::map<vtkProp*, int> ReceiverIndex;
+  // The facing test: per closed opaque caster the bits of the lights it
+  // gets the test for (those this pass casts), and the lights' inputs.
+  std::map<vtkProp*, int> FacingBits;
+  vtkshadow::FacingLights Facing;
   int LightCount = 0;
   int PlaneCount = 0;
   float PlaneVC[4 * vtkshadow::planar::MaxExplicitPlanes] = {};

@@ -20,6 +20,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkShadowActorFlags.h"
 #include "vtkShadowCasterGeometry.h"
+#include "vtkShadowFacingTest.h"
 #include "vtkShadowFrame.h"
 #include "vtkShadowImpostorProxies.h"
 #include "vtkShadowLightingHook.h"
@@ -37,7 +38,6 @@
 #include "vsh_volume.h"
 
 #include "vtkShadowVolumeFS.h"
-#include "vtkShadowVolumeFacingFS.h"
 #include "vtkShadowVolumeVS.h"
 
 #include <algorithm>
@@ -229,10 +229,9 @@ struct vtkShadowVolumePass::Internals
   std::vector<int> Order;
   int OrderSamples = 0, OrderBatch = 0;
   int LightCount = 0;
-  float LightVC[MaxLights][4] = {}; // each light in view coordinates, this frame
-  // Each light's size for the facing test: radius (view units, the view
-  // transform is rigid) or tan(angle / 2); 0 for a light counted hard.
-  float LightSizeVC[MaxLights] = {};
+  // The facing test's lights this frame: in view coordinates, with their
+  // sizes where sampled.
+  vtkshadow::FacingLights Facing;
   int Samples[MaxLights] = {}; // samples counted this frame per light (0: not counted)
   long long VolumeBuilds = 0;
   long long Instances = 0;
@@ -307,24 +306,7 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
 //------------------------------------------------------------------------------
 void vtkShadowVolumePass::LightsInViewCoordinates(vtkRenderer* renderer, const Frame& frame)
 {
-  Internals& impl = *this->Impl;
-  // The mapper's view coordinates (its MCVCMatrix): the camera's model-view
-  // transform, in double; a direction (w = 0) loses the translation.
-  double view[16];
-  vtkMatrix4x4::DeepCopy(view, renderer->GetActiveCamera()->GetModelViewTransformMatrix());
-  for (int light = 0; light < impl.LightCount; ++light)
-  {
-    double vc[4];
-    const double* world = frame.Shared.Lights[light].Homogeneous;
-    vsh_mat4_transform_point4(view, world, vc);
-    for (int k = 0; k < 4; ++k)
-    {
-      impl.LightVC[light][k] = static_cast<float>(vc[k]);
-    }
-    const double size = frame.LightSize[light];
-    impl.LightSizeVC[light] = static_cast<float>(
-      world[3] != 0.0 ? size : std::tan(0.5 * size * 3.14159265358979323846 / 180.0));
-  }
+  this->Impl->Facing = vtkshadow::FacingLightsOf(renderer, frame.Shared, frame.LightSize.data());
 }
 
 //------------------------------------------------------------------------------
@@ -927,7 +909,7 @@ bool vtkShadowVolumePass::PreReplaceShaderValues(
   if (fragmentShader.find("vshScreenPrepare") != std::string::npos)
   {
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
-      std::string("//VTK::Light::Dec\n") + vtkShadowVolumeFacingFS, false);
+      std::string("//VTK::Light::Dec\n") + vtkshadow::FacingShaderCode("vshFacing"), false);
   }
   return ok;
 }
@@ -956,9 +938,7 @@ bool vtkShadowVolumePass::SetShaderParameters(
   impl.For(prop).SetShaderParameters(program);
   if (program->IsUniformUsed("vshFacingLights"))
   {
-    program->SetUniformi("vshFacingLights", this->ClosedCasterLights(prop));
-    program->SetUniform4fv("vshFacingLightVC", MaxLights, impl.LightVC);
-    program->SetUniform1fv("vshFacingLightSize", MaxLights, impl.LightSizeVC);
+    vtkshadow::SetFacingUniforms(program, "vshFacing", this->ClosedCasterLights(prop), impl.Facing);
   }
   return true;
 }
