@@ -916,7 +916,10 @@ bool vtkPlanarShadowPass::PreReplaceShaderValues(
 bool vtkPlanarShadowPass::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  const std::string facing = std::string(FacingPrefix) + "Lit(%d, vertexVC.xyz)";
+  // A light with a size: 0 where the facet sees none of it, else 1 (the
+  // mask is 1 on a caster; the N.L-weighted visibility Cycles and raytrace
+  // give a convex caster's terminator, vshFacingCombine).
+  const std::string facing = std::string(FacingPrefix) + "Combine(%d, vertexVC.xyz, 1.0)";
   const std::string facingPrepare = std::string(FacingPrefix) + "Prepare(vertexVC.xyz);";
   if (fragmentShader.find(std::string(FacingPrefix) + "Prepare") == std::string::npos)
   {
