@@ -1322,13 +1322,11 @@ vtkAutoShadowPass::VolumeSilhouette vtkAutoShadowPass::VolumeEdges(
   vtkShadowCasterGeometry& geometry = caster.Geometry;
   const vsh_mesh_topology* topology =
     geometry.GetNumberOfTriangles() > 0 ? geometry.GetTopology() : nullptr;
-  double inverse[16], inData[4], stored[4];
-  if (!topology || !vsh_mat4_inverse(actor.Matrix, inverse))
+  double stored[4];
+  if (!topology || !geometry.WorldToStored(actor.Matrix, light, stored))
   {
     return VolumeSilhouette{};
   }
-  vsh_mat4_transform_point4(inverse, light, inData);
-  geometry.ShiftLight(inData, stored);
   auto& cached = caster.VolumeEdges[index];
   const std::vector<double> key(stored, stored + 4);
   if (cached.first != key)
@@ -1364,10 +1362,9 @@ vtkAutoShadowPass::VolumeSilhouette vtkAutoShadowPass::VolumeEdges(
   if (!topology->closed)
   {
     // The camera as the volume pass places it (vtkShadowVolumePass::SeenUnlit).
-    double eye[4], eyeData[4], eyeStored[4];
+    double eye[4], eyeStored[4];
     vtkshadow::EyeHomogeneous(this->GetFrame(), eye);
-    vsh_mat4_transform_point4(inverse, eye, eyeData);
-    geometry.ShiftLight(eyeData, eyeStored);
+    geometry.WorldToStored(actor.Matrix, eye, eyeStored);
     out.SeenUnlit = vsh_silhouette_seen_unlit(topology, stored, eyeStored) != 0;
   }
   return out;

@@ -258,6 +258,20 @@ void vtkShadowCasterGeometry::ShiftLight(const double lightInData[4], double lig
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowCasterGeometry::WorldToStored(
+  const double model[16], const double world[4], double stored[4]) const
+{
+  double inverse[16], inData[4];
+  if (!vsh_mat4_inverse(model, inverse))
+  {
+    return false;
+  }
+  vsh_mat4_transform_point4(inverse, world, inData);
+  this->ShiftLight(inData, stored);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 double vtkShadowCasterGeometry::GetSilhouetteLength(const double lightInData[4])
 {
   if (!this->IsClosed())

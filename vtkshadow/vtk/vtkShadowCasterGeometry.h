@@ -126,6 +126,11 @@ public:
   // The light relative to the stored positions (which are data - Shift):
   // `lightInData` homogeneous in the data's own coordinates.
   void ShiftLight(const double lightInData[4], double light[4]) const;
+  // A homogeneous world point (a light, the eye) relative to the stored
+  // positions of a caster drawn with `model` (data -> world, row major):
+  // through the inverse of `model`, then ShiftLight. False (out untouched)
+  // when `model` is singular.
+  bool WorldToStored(const double model[16], const double world[4], double stored[4]) const;
   // Glyph instances baked into the copy (vtkGlyph3DMapper: one per input
   // point, each its own connected component), 1 for other mappers.
   vtkIdType GetNumberOfInstances() const { return this->Instances; }

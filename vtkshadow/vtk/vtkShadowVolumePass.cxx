@@ -669,13 +669,11 @@ vtkShadowVolumePass::Volume* vtkShadowVolumePass::UpdateVolume(
     impl.Instances += geometry.GetNumberOfInstances();
   }
   const vsh_mesh_topology* topology = geometry.GetTopology();
-  double inverse[16], lightData[4], lightStored[4];
-  if (!topology || !vsh_mat4_inverse(shadowActor.Matrix, inverse))
+  double lightStored[4];
+  if (!topology || !geometry.WorldToStored(shadowActor.Matrix, lightWorld, lightStored))
   {
     return nullptr;
   }
-  vsh_mat4_transform_point4(inverse, lightWorld, lightData);
-  geometry.ShiftLight(lightData, lightStored);
   std::vector<Volume>& soft = caster->SoftVolumes[light];
   if (sample >= 0 && soft.size() != static_cast<size_t>(this->SoftSamples))
   {
@@ -782,13 +780,11 @@ bool vtkShadowVolumePass::SeenUnlit(
   double eyeWorld[4];
   vtkshadow::EyeHomogeneous(frame.Shared, eyeWorld);
   vtkShadowCasterGeometry& geometry = this->Impl->GeometryOf(caster);
-  double inverse[16], eyeData[4], eyeStored[4];
-  if (!geometry.GetTopology() || !vsh_mat4_inverse(caster.Matrix, inverse))
+  double eyeStored[4];
+  if (!geometry.GetTopology() || !geometry.WorldToStored(caster.Matrix, eyeWorld, eyeStored))
   {
     return true;
   }
-  vsh_mat4_transform_point4(inverse, eyeWorld, eyeData);
-  geometry.ShiftLight(eyeData, eyeStored);
   return vsh_silhouette_seen_unlit(geometry.GetTopology(), volume.Light, eyeStored) != 0;
 }
 
