@@ -476,18 +476,16 @@ void vtkPlanarShadowPass::NoteClosedCasters(vtkRenderer* renderer, const Frame& 
   Internals& impl = *this->Impl;
   impl.FacingBits.clear();
   int casting = 0;
-  std::vector<double> sizes;
   for (size_t light = 0; light < frame.Shared.Lights.size(); ++light)
   {
-    const vtkshadow::ShadowFrameLight& l = frame.Shared.Lights[light];
-    casting |= l.Casts && light < vtkshadow::FacingLights::MaxLights ? 1 << light : 0;
-    sizes.push_back(this->SoftSamples > 1 ? l.Size : 0.0);
+    const bool casts = frame.Shared.Lights[light].Casts;
+    casting |= casts && light < vtkshadow::FacingLights::MaxLights ? 1 << light : 0;
   }
   if (!this->FacingTest || casting == 0)
   {
     return;
   }
-  impl.Facing = vtkshadow::FacingLightsOf(renderer, frame.Shared, sizes.data());
+  impl.Facing = vtkshadow::FacingLightsOf(renderer, frame.Shared, this->SoftSamples > 1);
   for (const vtkshadow::ShadowActor& caster : frame.Casters)
   {
     if (!caster.Proxy && !impl.ReceiverIndex.count(caster.Actor) &&
@@ -942,7 +940,8 @@ bool vtkPlanarShadowPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   Internals& impl = *this->Impl;
-  const auto closed = impl.FacingBits.find(impl.Outer(prop));
+  vtkProp* outer = impl.Outer(prop);
+  const auto closed = impl.FacingBits.find(outer);
   vtkshadow::SetFacingUniforms(
     program, FacingPrefix, closed == impl.FacingBits.end() ? 0 : closed->second, impl.Facing);
   if (!program->IsUniformUsed("vshPlanarMask") || !impl.Mask)
@@ -951,7 +950,7 @@ bool vtkPlanarShadowPass::SetShaderParameters(
   }
   program->SetUniformi("vshPlanarMask", impl.Mask->GetTextureUnit());
   program->SetUniform2i("vshPlanarMaskOrigin", impl.MaskOrigin);
-  auto it = impl.ReceiverIndex.find(impl.Outer(prop));
+  auto it = impl.ReceiverIndex.find(outer);
   program->SetUniformi("vshPlanarReceiver", it == impl.ReceiverIndex.end() ? -1 : it->second);
   program->SetUniformi("vshPlanarLightCount", std::max(impl.LightCount, 1));
   program->SetUniformi("vshPlanarPlaneCount", impl.PlaneCount);

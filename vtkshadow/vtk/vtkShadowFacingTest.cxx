@@ -15,7 +15,7 @@
 
 namespace vtkshadow
 {
-FacingLights FacingLightsOf(vtkRenderer* renderer, const ShadowFrame& frame, const double* sizes)
+FacingLights FacingLightsOf(vtkRenderer* renderer, const ShadowFrame& frame, bool sampled)
 {
   FacingLights out;
   // The mapper's view coordinates (its MCVCMatrix): the camera's model-view
@@ -33,7 +33,7 @@ FacingLights FacingLightsOf(vtkRenderer* renderer, const ShadowFrame& frame, con
       out.LightVC[light][k] = static_cast<float>(vc[k]);
     }
     // The view transform is rigid: a radius keeps its length.
-    const double size = sizes ? sizes[light] : 0.0;
+    const double size = sampled ? frame.Lights[light].Size : 0.0;
     out.SizeVC[light] = static_cast<float>(
       world[3] != 0.0 ? size : std::tan(0.5 * size * 3.14159265358979323846 / 180.0));
   }

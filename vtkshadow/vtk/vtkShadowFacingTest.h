@@ -29,11 +29,11 @@ struct FacingLights
 
 /**
  * The frame's lights in the view coordinates of the renderer's camera (its
- * model-view matrix, in double, so camera-relative); `sizes[I]` (may be
- * null: every light hard) is light I's radius or angular diameter in degrees
- * where the pass samples it, else 0.
+ * model-view matrix, in double, so camera-relative), with their sizes
+ * (ShadowFrameLight::Size) when the pass samples lights with a size
+ * (`sampled`), else every light counted hard.
  */
-FacingLights FacingLightsOf(vtkRenderer* renderer, const ShadowFrame& frame, const double* sizes);
+FacingLights FacingLightsOf(vtkRenderer* renderer, const ShadowFrame& frame, bool sampled);
 
 /**
  * The test's GLSL (declarations and functions, to go after VTK's lighting

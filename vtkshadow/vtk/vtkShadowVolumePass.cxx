@@ -306,7 +306,7 @@ void vtkShadowVolumePass::SetUpFrame(const vtkRenderState* s, Frame& frame)
 //------------------------------------------------------------------------------
 void vtkShadowVolumePass::LightsInViewCoordinates(vtkRenderer* renderer, const Frame& frame)
 {
-  this->Impl->Facing = vtkshadow::FacingLightsOf(renderer, frame.Shared, frame.LightSize.data());
+  this->Impl->Facing = vtkshadow::FacingLightsOf(renderer, frame.Shared, this->SoftSamples > 1);
 }
 
 //------------------------------------------------------------------------------

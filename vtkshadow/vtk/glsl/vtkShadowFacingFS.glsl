@@ -66,11 +66,11 @@ float vshFacingLit(int light, vec3 positionVC)
   return dot(vshFacingNormalVC, toLight) < -tolerance ? 0.0 : 1.0;
 }
 
-// vtkShadowVolumePass: light I's factor from the mask's value: times the
-// facing test for a light counted hard (0 or 1). For a sampled light, the visibility is that of the
-// part of the light the facet can see: samples behind the facet's plane send
-// it no light, lit or not (Cycles weights each sample by its N.L, and
-// raytrace does too), while the samples' volumes count them as blocked (the
+// Light I's factor from the mask's value (planar passes 1: its mask is not
+// on casters): times the facing test for a light counted hard (0 or 1). For
+// a sampled light, the visibility is that of the part of the light the facet
+// can see: samples behind the facet's plane send it no light, lit or not
+// (Cycles weights each sample by its N.L, and raytrace does too), while the samples' volumes count them as blocked (the
 // caster shadows its own back: measured on sphere-disk, the mask alone 0.53
 // on the terminator where the facing fraction is about as much). So the
 // mask is divided by the facing fraction: about 1 on a convex caster's
