@@ -54,3 +54,23 @@ foreach(case "sphere" "grazing-facet")
     set_tests_properties(${test} PROPERTIES LABELS "render" TIMEOUT 300 FIXTURES_REQUIRED xvfb)
   endforeach()
 endforeach()
+
+# The sides' (and plain caps') bias as a clamped polygon offset
+# (vtkShadowVolumeSides) against the shader's biased depth (offset_sides=0):
+# the same visibility, at the default bias and amplified
+# (test_volume_offset.py says what a wrong offset measured).
+foreach(scene scivis/elevation hard/camera-inside-cluster scivis/molecule hard/grazing-89.9)
+  get_filename_component(short ${scene} NAME)
+  foreach(bias "default" "amplified")
+    set(extra)
+    if(bias STREQUAL "amplified")
+      set(extra --set depth_bias=20000 --set slope_bias=4)
+    endif()
+    add_test(NAME render.volume.offset_sides.${short}.${bias}
+      COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_volume_offset.py
+              --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/volume_offset
+              --scene ${PROJECT_SOURCE_DIR}/scenes/${scene}.json --size 400x300 ${extra})
+    set_tests_properties(render.volume.offset_sides.${short}.${bias}
+      PROPERTIES LABELS "render" TIMEOUT 300 FIXTURES_REQUIRED xvfb)
+  endforeach()
+endforeach()

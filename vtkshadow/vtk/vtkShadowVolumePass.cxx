@@ -26,6 +26,7 @@
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowScreenMask.h"
 #include "vtkShadowVolumeOpacityMap.h"
+#include "vtkShadowVolumeSides.h"
 #include "vtkSmartPointer.h"
 #include "vtk_glew.h"
 
@@ -212,6 +213,8 @@ struct vtkShadowVolumePass::Internals
   // The volumes' opacity shadow maps, multiplied into each layer's mask
   // after the stencil counts.
   vtkShadowVolumeOpacityMap VolumeMaps;
+  // The sides drawn with their bias as a polygon offset (OffsetSides).
+  vtkShadowVolumeSides Sides;
   static std::pair<vtkActor*, int> Key(const vtkshadow::ShadowActor& a)
   {
     return { a.Actor, a.Proxy ? -1 - a.Instance : a.Instance };
@@ -349,6 +352,10 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   }
   this->ReleaseUnusedVolumes(window);
   vtkshadow::MarkStage("volume.stencil");
+  if (impl.Opaque.SelectShaderCode() | impl.Translucent.SelectShaderCode())
+  {
+    this->BumpShaderTime();
+  }
   impl.Opaque.Activate();
   impl.Translucent.Activate();
   this->RenderDelegateWithShaderHooks(s);
@@ -376,6 +383,7 @@ bool vtkShadowVolumePass::CountLayer(const vtkRenderState* s, vtkOpenGLRenderWin
   vtkShaderProgram* program = depthOk
     ? window->GetShaderCache()->ReadyShaderProgram(vtkShadowVolumeVS, vtkShadowVolumeFS, "")
     : nullptr;
+  impl.Sides.Ready(window, program, this->OffsetSides);
   impl.Instances = 0;
   std::fill(impl.Samples, impl.Samples + MaxLights, 0);
   for (int light = 0; light < impl.LightCount && program; ++light)
@@ -870,17 +878,30 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
     volume->Program = program;
   }
   volume->VAO->Bind();
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * volume->SideTriangles));
-  if (!zpass && volume->CapTriangles > 0)
+  // The caps carry the caster's coincident-topology offset (CoincidentOffset)
+  // on top of the bias: the biased shader's terms, which a polygon offset
+  // cannot add (it clamps its whole sum). Without one, their bias is the
+  // sides'.
+  const int sides = static_cast<int>(3 * volume->SideTriangles);
+  const int caps = zpass ? 0 : static_cast<int>(3 * volume->CapTriangles);
+  float capFactor = 0.0f, capUnits = 0.0f;
+  CoincidentOffset(caster.Actor, capFactor, capUnits);
+  const bool offsetCaps = capFactor == 0.0f && capUnits == 0.0f;
+  if (impl.Sides.Program())
   {
-    // The caps, with the caster's coincident-topology offset
-    // (CoincidentOffset).
-    float factor = 0.0f, units = 0.0f;
-    CoincidentOffset(caster.Actor, factor, units);
-    program->SetUniformf("capFactor", factor);
-    program->SetUniformf("capUnits", units);
-    glDrawArrays(GL_TRIANGLES, static_cast<GLint>(3 * volume->SideTriangles),
-      static_cast<GLsizei>(3 * volume->CapTriangles));
+    impl.Sides.Draw(
+      impl.Window, mcdcF, 0, sides + (offsetCaps ? caps : 0), this->DepthBias, this->SlopeBias);
+    impl.Window->GetShaderCache()->ReadyShaderProgram(program);
+  }
+  else
+  {
+    glDrawArrays(GL_TRIANGLES, 0, sides + (offsetCaps ? caps : 0));
+  }
+  if (caps > 0 && !offsetCaps)
+  {
+    program->SetUniformf("capFactor", capFactor);
+    program->SetUniformf("capUnits", capUnits);
+    glDrawArrays(GL_TRIANGLES, sides, caps);
     program->SetUniformf("capFactor", 0.0f);
     program->SetUniformf("capUnits", 0.0f);
   }
@@ -1010,6 +1031,7 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
   std::ostringstream out;
   out << "\"volume_builds\": " << impl.VolumeBuilds << ", \"caster_instances\": " << impl.Instances
       << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", "
+      << "\"sides_offset\": " << (impl.Sides.Program() ? "true" : "false") << ", "
       << impl.Proxies.StatsJSON() << ", " << impl.VolumeMaps.StatsJSON() << ", "
       << this->VolumeReceiverStatsJSON() << ", \"lights\": [";
   for (int light = 0; light < impl.LightCount; ++light)
@@ -1047,6 +1069,9 @@ const vtkshadow::Settings& vtkShadowVolumePass::SettingsTable()
         "count the volumes of casters that are not closed z-fail where their unlit side is seen"),
       Row("facing_test", vtkshadow::Flag(), &P::SetFacingTest, &P::GetFacingTest,
         "darken the facets of closed casters that face away from a light"),
+      Row("offset_sides", vtkshadow::Flag(), &P::SetOffsetSides, &P::GetOffsetSides,
+        "bias the volumes' sides by a clamped polygon offset (depth and stencil tested before "
+        "shading) instead of a depth the fragment shader writes"),
       Row("soft_samples", vtkshadow::Integers(1, 255), &P::SetSoftSamples, &P::GetSoftSamples,
         "samples of a light with a size (docs/soft-shadows.md)"),
       Row("adaptive", vtkshadow::Flag(), &P::SetAdaptive, &P::GetAdaptive,

@@ -85,6 +85,16 @@ public:
   vtkBooleanMacro(FacingTest, bool);
 
   /**
+   * Bias the volumes' sides by a clamped polygon offset, the same bias as
+   * the fragment shader's, so that depth and stencil are tested before
+   * shading (vtkShadowVolumeSides; default on). Off, or where the context
+   * lacks GL_EXT_polygon_offset_clamp, the shader writes the biased depth.
+   */
+  vtkSetMacro(OffsetSides, bool);
+  vtkGetMacro(OffsetSides, bool);
+  vtkBooleanMacro(OffsetSides, bool);
+
+  /**
    * The sampled area light (docs/soft-shadows.md): a light with a size
    * (radius or angle) is counted from SoftSamples points (directions) on it,
    * each adding its share of lit into the light's channel of the screen
@@ -159,6 +169,7 @@ protected:
   bool ForceZFail = false;
   bool OpenZFail = true;
   bool FacingTest = true;
+  bool OffsetSides = true;
   int SoftSamples = 16;
   bool Adaptive = false;
 
