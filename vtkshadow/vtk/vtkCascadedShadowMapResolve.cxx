@@ -299,10 +299,6 @@ void vtkCascadedShadowMapPass::RenderScreenResolved(
     impl.ScreenFailed = true;
   }
   this->BeginVolumeReceiver(s);
-  if (mask.SelectShaderCode())
-  {
-    this->BumpShaderTime();
-  }
   mask.Activate();
   this->RenderDelegate(s);
   mask.Deactivate();

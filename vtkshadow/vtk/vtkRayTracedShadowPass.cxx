@@ -393,10 +393,6 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
     this->RenderDelegate(s); // no shadows rather than garbage
     return;
   }
-  if (impl.W->Mask.SelectShaderCode() | impl.W->Translucent.SelectShaderCode())
-  {
-    this->BumpShaderTime();
-  }
   impl.W->Mask.Activate();
   impl.W->Translucent.Activate();
   this->RenderDelegateWithShaderHooks(s);

@@ -689,24 +689,10 @@ bool vtkShadowScreenMask::PreReplaceShaderValues(std::string& fragmentShader, vt
   }
   if (fragmentShader.find("//VTK::Light::Dec") != std::string::npos)
   {
-    const std::string variant = std::string("#define vshScreenTwoLayers ") +
-      (this->CodeTwoLayers ? "1" : "0") + "\n#define vshScreenTintCode " +
-      (this->CodeTinted ? "1" : "0") + "\n";
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
-      "//VTK::Light::Dec\n" + variant + vtkShadowScreenLightFS, false);
+      std::string("//VTK::Light::Dec\n") + vtkShadowScreenLightFS, false);
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkShadowScreenMask::SelectShaderCode()
-{
-  const bool twoLayers = this->LightCount > 4;
-  const bool tinted = this->Impl->Tinted;
-  const bool changed = twoLayers != this->CodeTwoLayers || tinted != this->CodeTinted;
-  this->CodeTwoLayers = twoLayers;
-  this->CodeTinted = tinted;
-  return changed;
 }
 
 //------------------------------------------------------------------------------
@@ -739,14 +725,11 @@ void vtkShadowScreenMask::SetShaderParameters(vtkShaderProgram* program)
     return;
   }
   program->SetUniformi("vshScreenMask0", impl.Layers[0]->GetTextureUnit());
-  if (program->IsUniformUsed("vshScreenMask1"))
-  {
-    program->SetUniformi(
-      "vshScreenMask1", impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
-  }
+  program->SetUniformi(
+    "vshScreenMask1", impl.Layers[this->LightCount > 4 ? 1 : 0]->GetTextureUnit());
   program->SetUniform2i("vshScreenMaskOrigin", this->Origin);
   program->SetUniformi("vshScreenMaskLights", this->LightCount);
-  if (impl.Tint->GetTextureUnit() >= 0 && program->IsUniformUsed("vshScreenTint"))
+  if (impl.Tint->GetTextureUnit() >= 0)
   {
     program->SetUniformi("vshScreenTint", impl.Tint->GetTextureUnit());
     program->SetUniformi("vshScreenTinted", impl.Tinted ? 1 : 0);

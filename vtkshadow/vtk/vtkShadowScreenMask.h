@@ -207,17 +207,6 @@ public:
   void SetShaderParameters(vtkShaderProgram* program);
 
   /**
-   * Chooses the mask's shader code for this frame's state, to be called
-   * before the main pass: the second texture is read only with more than four
-   * lights and the tint only where a light is tinted (llvmpipe runs both
-   * sides of a branch, so code left in behind a uniform still costs every
-   * fragment its fetches). True when the code changed: the owner then bumps
-   * its shader time (vtkShadowPassBase::BumpShaderTime) so the mappers take
-   * the new code. The depth pre-pass keeps the last choice.
-   */
-  bool SelectShaderCode();
-
-  /**
    * Textures bound to texture units for the main pass (around the delegate).
    */
   void Activate();
@@ -255,9 +244,6 @@ private:
   int Origin[2] = { 0, 0 };
   int LightCount = 0;
   bool TranslucentSurfaces = false;
-  // The shader code's variant (SelectShaderCode).
-  bool CodeTwoLayers = false;
-  bool CodeTinted = false;
   vtkIdType HookedShaders = 0;
   std::string Error;
 };

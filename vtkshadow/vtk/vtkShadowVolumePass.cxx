@@ -352,10 +352,6 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   }
   this->ReleaseUnusedVolumes(window);
   vtkshadow::MarkStage("volume.stencil");
-  if (impl.Opaque.SelectShaderCode() | impl.Translucent.SelectShaderCode())
-  {
-    this->BumpShaderTime();
-  }
   impl.Opaque.Activate();
   impl.Translucent.Activate();
   this->RenderDelegateWithShaderHooks(s);

@@ -5,21 +5,13 @@
 // Where translucent casters filter a light's colour, its tint (RGB, 1 where
 // nothing filters) is in the tint texture, light I's rows starting at
 // I x the mask's height; vshScreenTinted is 0 when no light is tinted.
-// vshScreenTwoLayers and vshScreenTintCode (defined before this code,
-// vtkShadowScreenMask::SelectShaderCode) leave out the second texture and
-// the tint where the frame has neither: llvmpipe would fetch them for every
-// fragment behind a uniform branch too.
 uniform sampler2D vshScreenMask0;
-#if vshScreenTwoLayers
 uniform sampler2D vshScreenMask1;
-#endif
 uniform ivec2 vshScreenMaskOrigin;
 uniform int vshScreenMaskLights;
-#if vshScreenTintCode
 uniform sampler2D vshScreenTint;
 uniform int vshScreenTinted;
 uniform int vshScreenMaskHeight;
-#endif
 vec4 vshScreenTexel0 = vec4(1.0);
 vec4 vshScreenTexel1 = vec4(1.0);
 ivec2 vshScreenPixel = ivec2(0);
@@ -28,12 +20,10 @@ void vshScreenPrepare()
   ivec2 pixel = ivec2(gl_FragCoord.xy) - vshScreenMaskOrigin;
   vshScreenPixel = pixel;
   vshScreenTexel0 = texelFetch(vshScreenMask0, pixel, 0);
-#if vshScreenTwoLayers
   if (vshScreenMaskLights > 4)
   {
     vshScreenTexel1 = texelFetch(vshScreenMask1, pixel, 0);
   }
-#endif
 }
 float vshScreenLit(int light)
 {
@@ -46,12 +36,10 @@ float vshScreenLit(int light)
 vec3 vshScreenLight(int light)
 {
   float lit = vshScreenLit(light);
-#if vshScreenTintCode
-  if (vshScreenTinted != 0 && light < vshScreenMaskLights)
+  if (vshScreenTinted == 0 || light >= vshScreenMaskLights)
   {
-    return lit *
-      texelFetch(vshScreenTint, vshScreenPixel + ivec2(0, light * vshScreenMaskHeight), 0).rgb;
+    return vec3(lit);
   }
-#endif
-  return vec3(lit);
+  return lit *
+    texelFetch(vshScreenTint, vshScreenPixel + ivec2(0, light * vshScreenMaskHeight), 0).rgb;
 }
