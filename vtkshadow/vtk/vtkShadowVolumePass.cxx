@@ -93,12 +93,30 @@ void CoincidentOffset(vtkActor* actor, float& factor, float& units)
 {
   factor = units = 0.0f;
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
-  if (mapper && vtkMapper::GetResolveCoincidentTopology() == VTK_RESOLVE_POLYGON_OFFSET)
+  vtkProperty* property = actor ? actor->GetProperty() : nullptr;
+  if (!mapper || !property)
   {
-    double f = 0.0, u = 0.0;
+    return;
+  }
+  // VTK 9.1's rule (vtkOpenGLPolyDataMapper::GetCoincidentParameters): the
+  // triangles take the polygon offset in the global polygon-offset mode or
+  // when the surface is drawn with its edges (vtkProperty::EdgeVisibility,
+  // vedo's linewidth()); the edges are then drawn over every triangle again
+  // with the line offset (units -4 by default, towards the camera). The
+  // depth holds the nearer of the two, and the caps must reach past either.
+  const bool edges = property->GetEdgeVisibility() && property->GetRepresentation() == VTK_SURFACE;
+  double f = 0.0, u = 0.0;
+  if (vtkMapper::GetResolveCoincidentTopology() == VTK_RESOLVE_POLYGON_OFFSET || edges)
+  {
     mapper->GetCoincidentTopologyPolygonOffsetParameters(f, u);
     factor = static_cast<float>(std::abs(f));
     units = static_cast<float>(std::abs(u) * 1.6e-5);
+  }
+  if (edges)
+  {
+    mapper->GetCoincidentTopologyLineOffsetParameters(f, u);
+    factor = std::max(factor, static_cast<float>(std::abs(f)));
+    units = std::max(units, static_cast<float>(std::abs(u) * 1.6e-5));
   }
 }
 
