@@ -899,7 +899,10 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
   const int sides = static_cast<int>(3 * volume->SideTriangles);
   const int caps = zpass ? 0 : static_cast<int>(3 * volume->CapTriangles);
   float capFactor = 0.0f, capUnits = 0.0f;
-  CoincidentOffset(caster.Actor, capFactor, capUnits);
+  if (caps > 0)
+  {
+    CoincidentOffset(caster.Actor, capFactor, capUnits);
+  }
   const bool offsetCaps = capFactor == 0.0f && capUnits == 0.0f;
   if (impl.Sides.Program())
   {

@@ -12,13 +12,13 @@
 #include <cmath>
 
 //------------------------------------------------------------------------------
-vtkShaderProgram* vtkShadowVolumeSides::Ready(
+void vtkShadowVolumeSides::Ready(
   vtkOpenGLRenderWindow* window, vtkShaderProgram* biased, bool enabled)
 {
   this->Sides = nullptr;
   if (!enabled || !window || !biased || !GLEW_EXT_polygon_offset_clamp || !glPolygonOffsetClampEXT)
   {
-    return nullptr;
+    return;
   }
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
   vtkShaderProgram* sides =
@@ -28,7 +28,6 @@ vtkShaderProgram* vtkShadowVolumeSides::Ready(
       glGetAttribLocation(static_cast<GLuint>(biased->GetHandle()), "vertexMC");
   cache->ReadyShaderProgram(biased);
   this->Sides = sameLocation ? sides : nullptr;
-  return this->Sides;
 }
 
 //------------------------------------------------------------------------------

@@ -18,10 +18,10 @@ public:
    * vertex shader) where `enabled`, the context has polygon offset clamp
    * (GL_EXT_polygon_offset_clamp) and the program reads its vertices from the
    * attribute location `biased` does, so that one vertex array serves both;
-   * nullptr otherwise, and the caller draws the sides with `biased`. Leaves
-   * `biased` bound.
+   * nullptr otherwise (Program()), and the caller draws the sides with
+   * `biased`. Leaves `biased` bound.
    */
-  vtkShaderProgram* Ready(vtkOpenGLRenderWindow* window, vtkShaderProgram* biased, bool enabled);
+  void Ready(vtkOpenGLRenderWindow* window, vtkShaderProgram* biased, bool enabled);
 
   /**
    * Draws vertices [first, first + count) of the bound vertex array as the
