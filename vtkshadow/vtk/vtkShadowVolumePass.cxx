@@ -899,10 +899,7 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
   const int sides = static_cast<int>(3 * volume->SideTriangles);
   const int caps = zpass ? 0 : static_cast<int>(3 * volume->CapTriangles);
   float capFactor = 0.0f, capUnits = 0.0f;
-  if (caps > 0)
-  {
-    CoincidentOffset(caster.Actor, capFactor, capUnits);
-  }
+  CoincidentOffset(caps > 0 ? caster.Actor : nullptr, capFactor, capUnits);
   const bool offsetCaps = capFactor == 0.0f && capUnits == 0.0f;
   if (impl.Sides.Program())
   {
