@@ -198,6 +198,9 @@ set_tests_properties(python.volume_coincident_offset PROPERTIES LABELS "render" 
 add_test(NAME python.volume_edges_offset
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_volume_coincident_offset.py --edges)
 set_tests_properties(python.volume_edges_offset PROPERTIES LABELS "render" TIMEOUT 120)
+add_test(NAME python.volume_edges_tilt
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_volume_coincident_offset.py --edges --tetra)
+set_tests_properties(python.volume_edges_tilt PROPERTIES LABELS "render" TIMEOUT 120)
 
 # C API from a .c file.
 add_executable(test_capi capi/test_capi.c)

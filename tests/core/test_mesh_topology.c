@@ -195,8 +195,10 @@ static void test_degenerate_triangles(void) {
   vsh_mesh_topology t = build(0.0);
   CHECK(t.degenerate_count == 2);
   CHECK(t.edge_count == 18); /* degenerate faces add no edges */
-  CHECK(t.closed == 0);      /* and are not trusted */
+  CHECK(t.closed == 1);      /* and no area: the box still bounds a solid */
   CHECK(t.component_count == 1);
+  int convex = 0; /* Euler's count leaves them out too */
+  CHECK(vsh_mesh_is_convex(&t, 1e-9, &convex) == VSH_MESH_OK && convex == 1);
   check_edge_table(&t);
   vsh_mesh_topology_free(&t);
   /* Only degenerate triangles: no edges, not closed, still OK. */

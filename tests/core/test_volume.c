@@ -158,6 +158,19 @@ static void test_counts(void) {
   tm_box(&mesh, lo, hi);
   counts_for_all_lights("box", 1.5);
 
+  /* A box among glyphs scaled to nothing (vtkGlyph3D keeps their collapsed
+   * triangles): still closed, with dark caps, and counted as the box. */
+  mesh.nv = mesh.nt = 0;
+  tm_box(&mesh, lo, hi);
+  const double at[3] = {0.7, 0.6, 0.5};
+  tm_box(&mesh, at, at);
+  vsh_mesh_topology collapsed;
+  CHECK(vsh_mesh_topology_build(mesh.p, mesh.nv, mesh.t, mesh.nt, 0.0, &collapsed) ==
+        VSH_MESH_OK);
+  CHECK(collapsed.closed == 1 && collapsed.degenerate_count == 12);
+  vsh_mesh_topology_free(&collapsed);
+  counts_for_all_lights("box with a collapsed box", 1.5);
+
   mesh.nv = mesh.nt = 0;
   tm_sphere(&mesh, 9, 14, bumpy, NULL); /* closed and concave: shadows itself */
   counts_for_all_lights("bumpy sphere", 1.5);

@@ -59,7 +59,8 @@ vsh_mesh_status vsh_mesh_is_convex(const vsh_mesh_topology *t, double tolerance,
    * convex body even when every edge is convex. */
   size_t used = 0;
   for (size_t v = 0; v < t->vertex_count; ++v) used += t->component[v] != VSH_MESH_NONE;
-  if (used + t->triangle_count != t->edge_count + 2) return VSH_MESH_OK;
+  const size_t faces = t->triangle_count - t->degenerate_count; /* three distinct vertices */
+  if (used + faces != t->edge_count + 2) return VSH_MESH_OK;
   /* An inside-out mesh (negative volume) would make every edge of a convex
    * body look reflex: judge it with its faces turned over. */
   const double outwards = vsh_mesh_signed_volume6(t) < 0.0 ? -1.0 : 1.0;

@@ -212,7 +212,10 @@ vsh_mesh_status vsh_mesh_topology_build(const double *positions, size_t vertex_c
     vsh_mesh_topology_free(out);
     return s;
   }
-  out->closed = triangle_count > 0 && out->degenerate_count == 0 && out->border_edges == 0 &&
+  /* A degenerate triangle has no area: it bounds nothing and crosses no
+   * segment, so it does not change whether the others close a solid (a
+   * glyph field with zero-scaled glyphs keeps their collapsed triangles). */
+  out->closed = triangle_count > out->degenerate_count && out->border_edges == 0 &&
                 out->non_manifold_edges == 0 && out->misoriented_edges == 0;
   return VSH_MESH_OK;
 }

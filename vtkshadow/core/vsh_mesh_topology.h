@@ -85,7 +85,8 @@ typedef struct vsh_mesh_topology {
   size_t triangle_count;
   uint32_t *triangles;
   /* Triangles with two equal welded vertices: they have no edges of their
-   * own in the table (they bound nothing) and make the mesh not closed. */
+   * own in the table (they bound nothing and have no area) and do not count
+   * for `closed`. */
   size_t degenerate_count;
   /* The edges, sorted by (a, b), and their face uses. */
   size_t edge_count;
@@ -97,7 +98,7 @@ typedef struct vsh_mesh_topology {
    * component[v] = VSH_MESH_NONE for a vertex no face uses. */
   uint32_t *component;
   size_t component_count;
-  /* 1 when the mesh is non-empty, has no degenerate triangle, and every
+  /* 1 when the mesh has a non-degenerate triangle and every
    * edge has forward = backward = 1: a closed, consistently oriented
    * 2-manifold (possibly several components, possibly inside-out). */
   int closed;

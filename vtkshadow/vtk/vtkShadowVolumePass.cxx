@@ -80,6 +80,21 @@ bool SurfaceInDepth(vtkActor* actor)
     !property->GetFrontfaceCulling();
 }
 
+// VTK 9.1 draws a surface with its edges through a geometry shader
+// (vtkPolyDataEdgesGS.glsl) that moves each vertex 0.5 x LineWidth pixels
+// outwards in x and y but keeps its depth, so that the edge lines fit inside
+// the triangle. The drawn depth is then another plane: the difference is an
+// affine function whose size at each moved vertex is the true plane's depth
+// gradient times that move, so anywhere on the triangle it is at most
+// 0.5 x LineWidth x |gradient|, a slope factor. A steep face drawn this way
+// was shadowed on up to half its pixels by its own caps. The extra quarter
+// pixel covers the rounding of the moved vertices.
+float EdgesDepthTilt(double lineWidth)
+{
+  constexpr double roundingMargin = 0.25;
+  return static_cast<float>(0.5 * std::max(lineWidth, 1.0) + roundingMargin);
+}
+
 // The caps lie on the caster's own faces, which its mapper may have drawn
 // pushed back by VTK's coincident-topology offset (vtkMapper's
 // ResolveCoincidentTopology; vedo turns it on for every mesh): depth +
@@ -117,6 +132,7 @@ void CoincidentOffset(vtkActor* actor, float& factor, float& units)
     mapper->GetCoincidentTopologyLineOffsetParameters(f, u);
     factor = std::max(factor, static_cast<float>(std::abs(f)));
     units = std::max(units, static_cast<float>(std::abs(u) * 1.6e-5));
+    factor += EdgesDepthTilt(property->GetLineWidth());
   }
 }
 
