@@ -1264,18 +1264,24 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
       input.fill_px += static_cast<double>(rect[2]) * rect[3];
       // The volume pass's rule: z-fail (caps) wherever z-pass is not safe
       // for this camera, and for a caster that is not closed whose unlit
-      // side is in view when the pass counts those z-fail (open_zfail).
+      // side is in view when the pass counts those z-fail (open_zfail
+      // without unlit_caps). With unlit_caps such a caster is z-pass with
+      // its caps culled to the faces seen from their unlit side: little
+      // fill, not charged.
       double size = 0.0;
       for (int k = 0; k < 3; ++k)
       {
         size = std::max(size, bounds[2 * k + 1] - bounds[2 * k]);
       }
-      const bool zfail = (silhouette.SeenUnlit && this->VolumePass->GetOpenZFail()) ||
+      const bool unlitCaps = this->VolumePass->GetUnlitCaps();
+      const bool zfail =
+        (silhouette.SeenUnlit && this->VolumePass->GetOpenZFail() && !unlitCaps) ||
         vsh_volume_zpass_safe(origin, nearCorners, bounds, relative, 1e-3 * size) != 1;
       input.cap_triangles += zfail ? silhouette.CapTriangles : 0.0;
       // The floor charges open casters by how they are counted: z-pass's
-      // false shadows only where their unlit side is in view.
-      open[zfail || !silhouette.SeenUnlit ? 1 : 0] += silhouette.OpenQuads;
+      // false shadows only where their unlit side is in view and no caps
+      // are drawn there.
+      open[zfail || unlitCaps || !silhouette.SeenUnlit ? 1 : 0] += silhouette.OpenQuads;
     }
   }
   if (openQuads)

@@ -273,7 +273,8 @@ private:
     double OpenQuads = 0.0;
     double CapTriangles = 0.0;
     // Not closed, and the camera sees one of its faces from the side turned
-    // from the light (vsh_silhouette_seen_unlit): the pass counts it z-fail.
+    // from the light (vsh_silhouette_seen_unlit): without unlit_caps the
+    // pass counts it z-fail.
     bool SeenUnlit = false;
   };
   // VolumeSilhouette of caster `object` (an index into the frame's objects)

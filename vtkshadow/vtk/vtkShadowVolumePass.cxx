@@ -806,7 +806,8 @@ bool vtkShadowVolumePass::CountsZPass(const Frame& frame, const vtkshadow::Shado
   {
     return false;
   }
-  return volume.DarkCaps || !this->OpenZFail || !this->SeenUnlit(frame, caster, volume);
+  return volume.DarkCaps || this->UnlitCaps || !this->OpenZFail ||
+    !this->SeenUnlit(frame, caster, volume);
 }
 
 //------------------------------------------------------------------------------
@@ -908,44 +909,74 @@ void vtkShadowVolumePass::DrawCaster(vtkShaderProgram* program, const Frame& fra
     volume->Program = program;
   }
   volume->VAO->Bind();
-  // The caps carry the caster's coincident-topology offset (CoincidentOffset)
-  // on top of the bias: the biased shader's terms, which a polygon offset
-  // cannot add (it clamps its whole sum). Without one, their bias is the
-  // sides'.
-  const int sides = static_cast<int>(3 * volume->SideTriangles);
-  const int caps = zpass ? 0 : static_cast<int>(3 * volume->CapTriangles);
-  float capFactor = 0.0f, capUnits = 0.0f;
-  CoincidentOffset(caps > 0 ? caster.Actor : nullptr, capFactor, capUnits);
-  const bool offsetCaps = capFactor == 0.0f && capUnits == 0.0f;
-  if (impl.Sides.Program())
-  {
-    impl.Sides.Draw(
-      impl.Window, mcdcF, 0, sides + (offsetCaps ? caps : 0), this->DepthBias, this->SlopeBias);
-    impl.Window->GetShaderCache()->ReadyShaderProgram(program);
-  }
-  else
-  {
-    glDrawArrays(GL_TRIANGLES, 0, sides + (offsetCaps ? caps : 0));
-  }
-  if (caps > 0 && !offsetCaps)
-  {
-    program->SetUniformf("capFactor", capFactor);
-    program->SetUniformf("capUnits", capUnits);
-    glDrawArrays(GL_TRIANGLES, sides, caps);
-    program->SetUniformf("capFactor", 0.0f);
-    program->SetUniformf("capUnits", 0.0f);
-  }
+  // z-fail counts every cap. z-pass needs none of a closed caster's; of an
+  // open caster's (with UnlitCaps) only those of the faces seen from their
+  // unlit side: the leaving ones (DrawFaces).
+  const bool leavingCaps = zpass && !volume->DarkCaps && this->UnlitCaps;
+  const int caps = zpass && !leavingCaps ? 0 : static_cast<int>(3 * volume->CapTriangles);
+  this->DrawFaces(program, mcdcF, static_cast<int>(3 * volume->SideTriangles), caps, leavingCaps,
+    caster.Actor);
   volume->VAO->Release();
 
   (zpass ? stats.ZPass : stats.ZFail) += 1;
   stats.SilhouetteEdges += static_cast<long long>(volume->SilhouetteEdges);
   stats.Quads += static_cast<long long>(volume->Quads);
-  stats.CapTriangles += zpass ? 0 : static_cast<long long>(volume->CapTriangles);
+  stats.CapTriangles += zpass && !leavingCaps ? 0 : static_cast<long long>(volume->CapTriangles);
   const double fill = static_cast<double>(rect[2]) * rect[3];
   stats.FillPx += fill;
   const vsh_volume_cost_input cost = { volume->Quads, volume->CapTriangles, zpass ? 0 : 1, fill,
     2.0 };
   stats.Cost += vsh_volume_cost(&cost);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowVolumePass::DrawFaces(vtkShaderProgram* program, const float volumeMCDC[16],
+  int sides, int caps, bool leavingCaps, vtkActor* actor)
+{
+  Internals& impl = *this->Impl;
+  // The caps carry the caster's coincident-topology offset (CoincidentOffset)
+  // on top of the bias: the biased shader's terms, which a polygon offset
+  // cannot add (it clamps its whole sum). Without one, their bias is the
+  // sides'.
+  float capFactor = 0.0f, capUnits = 0.0f;
+  CoincidentOffset(caps > 0 ? actor : nullptr, capFactor, capUnits);
+  const bool offsetCaps = capFactor == 0.0f && capUnits == 0.0f;
+  // Caps drawn in one range with the sides: both faces' halves.
+  const int withSides = offsetCaps && !leavingCaps ? caps : 0;
+  if (impl.Sides.Program())
+  {
+    impl.Sides.Draw(impl.Window, volumeMCDC, 0, sides + withSides, this->DepthBias, this->SlopeBias);
+    if (offsetCaps && leavingCaps && caps > 0)
+    {
+      impl.Sides.Draw(
+        impl.Window, volumeMCDC, sides, caps, this->DepthBias, this->SlopeBias, true);
+    }
+    impl.Window->GetShaderCache()->ReadyShaderProgram(program);
+  }
+  else
+  {
+    glDrawArrays(GL_TRIANGLES, 0, sides + withSides);
+  }
+  if (caps == 0 || withSides > 0 || (offsetCaps && leavingCaps && impl.Sides.Program()))
+  {
+    return;
+  }
+  // The caps in the biased shader, the leaving ones alone when asked.
+  if (leavingCaps)
+  {
+    impl.State->vtkglEnable(GL_CULL_FACE);
+    impl.State->vtkglCullFace(GL_FRONT);
+  }
+  program->SetUniformf("capFactor", capFactor);
+  program->SetUniformf("capUnits", capUnits);
+  glDrawArrays(GL_TRIANGLES, sides, caps);
+  program->SetUniformf("capFactor", 0.0f);
+  program->SetUniformf("capUnits", 0.0f);
+  if (leavingCaps)
+  {
+    impl.State->vtkglCullFace(GL_BACK);
+    impl.State->vtkglDisable(GL_CULL_FACE);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1096,7 +1127,11 @@ const vtkshadow::Settings& vtkShadowVolumePass::SettingsTable()
       Row("force_zfail", vtkshadow::Flag(), &P::SetForceZFail, &P::GetForceZFail,
         "count every volume with z-fail, never z-pass"),
       Row("open_zfail", vtkshadow::Flag(), &P::SetOpenZFail, &P::GetOpenZFail,
-        "count the volumes of casters that are not closed z-fail where their unlit side is seen"),
+        "without unlit_caps: count the volumes of casters that are not closed z-fail where their "
+        "unlit side is seen"),
+      Row("unlit_caps", vtkshadow::Flag(), &P::SetUnlitCaps, &P::GetUnlitCaps,
+        "count casters that are not closed z-pass, with the caps of the faces seen from their "
+        "unlit side (open_zfail then does not apply)"),
       Row("facing_test", vtkshadow::Flag(), &P::SetFacingTest, &P::GetFacingTest,
         "darken the facets of closed casters that face away from a light"),
       Row("offset_sides", vtkshadow::Flag(), &P::SetOffsetSides, &P::GetOffsetSides,

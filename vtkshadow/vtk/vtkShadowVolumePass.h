@@ -70,10 +70,21 @@ public:
    * turned away from the light (default on; off: z-pass where safe, as for
    * closed casters). There z-pass leaves false shadows (an open bowl: 0.059
    * wrong_pct against POV-Ray, 0.002 z-fail); z-fail draws a cap per face
-   * (docs/shadow-volumes.md).
+   * (docs/shadow-volumes.md). Applies only with UnlitCaps off.
    */
   vtkSetMacro(OpenZFail, bool);
   vtkGetMacro(OpenZFail, bool);
+
+  /**
+   * Count the volumes of casters that are not closed z-pass (where z-pass
+   * is safe) with the caps of the faces the camera sees from their unlit
+   * side: those caps lie on the visible surface and leave the volume there,
+   * which is what z-pass missed (default on). The caps are drawn with the
+   * front faces culled, so the lit side's caps cost no fill
+   * (docs/shadow-volumes.md).
+   */
+  vtkSetMacro(UnlitCaps, bool);
+  vtkGetMacro(UnlitCaps, bool);
 
   /**
    * Darken the facets of closed casters that face away from a light
@@ -168,6 +179,7 @@ protected:
   double SlopeBias = 0.001;
   bool ForceZFail = false;
   bool OpenZFail = true;
+  bool UnlitCaps = true;
   bool FacingTest = true;
   bool OffsetSides = true;
   int SoftSamples = 16;
@@ -218,6 +230,11 @@ private:
     const Frame& frame, const vtkshadow::ShadowActor& caster, const Volume& volume) const;
   void DrawCaster(vtkShaderProgram* program, const Frame& frame, int light, int sample,
     const vtkshadow::ShadowActor& caster, bool crossings = false);
+  // The bound volume's `sides` vertices, then its `caps` vertices (all of
+  // them, or with `leavingCaps` only those leaving the volume: the back
+  // faces), each with its bias.
+  void DrawFaces(vtkShaderProgram* program, const float volumeMCDC[16], int sides, int caps,
+    bool leavingCaps, vtkActor* actor);
   Volume* UpdateVolume(const vtkshadow::ShadowActor& caster, int light, int sample,
     const double lightWorld[4], bool crossings);
 #endif

@@ -32,7 +32,7 @@ void vtkShadowVolumeSides::Ready(
 
 //------------------------------------------------------------------------------
 void vtkShadowVolumeSides::Draw(vtkOpenGLRenderWindow* window, const float volumeMCDC[16],
-  int first, int count, double depthBias, double slopeBias)
+  int first, int count, double depthBias, double slopeBias, bool leavingOnly)
 {
   vtkOpenGLState* state = window->GetState();
   window->GetShaderCache()->ReadyShaderProgram(this->Sides);
@@ -46,9 +46,12 @@ void vtkShadowVolumeSides::Draw(vtkOpenGLRenderWindow* window, const float volum
   const float clamp = static_cast<float>(depthBias * std::ldexp(1.0, -24) + std::ldexp(1.0, -12));
   glEnable(GL_POLYGON_OFFSET_FILL);
   state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(GL_BACK);
-  glPolygonOffsetClampEXT(factor, units, clamp);
-  glDrawArrays(GL_TRIANGLES, first, count);
+  if (!leavingOnly)
+  {
+    state->vtkglCullFace(GL_BACK);
+    glPolygonOffsetClampEXT(factor, units, clamp);
+    glDrawArrays(GL_TRIANGLES, first, count);
+  }
   state->vtkglCullFace(GL_FRONT);
   glPolygonOffsetClampEXT(-factor, -units, -clamp);
   glDrawArrays(GL_TRIANGLES, first, count);

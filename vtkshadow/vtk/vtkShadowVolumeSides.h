@@ -29,13 +29,14 @@ public:
    * depthBias x 2^-24 + min(slopeBias x slope, 2^-12), leaving (back) faces
    * towards it by as much, slope the larger of the window depth's
    * derivatives per pixel (vtkShadowVolumeFS's terms without the caps').
-   * Two draws, each culling the other faces; the stencil operations are the
-   * caller's. `volumeMCDC` is the volume's model-to-clip matrix (transposed,
-   * as the biased program takes it). Leaves the sides' program bound, face
-   * culling off, polygon offset off.
+   * Two draws, each culling the other faces, or with `leavingOnly` the
+   * leaving faces' draw alone; the stencil operations are the caller's.
+   * `volumeMCDC` is the volume's model-to-clip matrix (transposed, as the
+   * biased program takes it). Leaves the sides' program bound, face culling
+   * off, polygon offset off.
    */
   void Draw(vtkOpenGLRenderWindow* window, const float volumeMCDC[16], int first, int count,
-    double depthBias, double slopeBias);
+    double depthBias, double slopeBias, bool leavingOnly = false);
 
   vtkShaderProgram* Program() const { return this->Sides; }
 
