@@ -1274,8 +1274,7 @@ int vtkAutoShadowPass::VolumeInputs(vtkRenderer* renderer, const double light[4]
         size = std::max(size, bounds[2 * k + 1] - bounds[2 * k]);
       }
       const bool unlitCaps = this->VolumePass->GetUnlitCaps();
-      const bool zfail =
-        (silhouette.SeenUnlit && this->VolumePass->GetOpenZFail() && !unlitCaps) ||
+      const bool zfail = (silhouette.SeenUnlit && this->VolumePass->GetOpenZFail() && !unlitCaps) ||
         vsh_volume_zpass_safe(origin, nearCorners, bounds, relative, 1e-3 * size) != 1;
       input.cap_triangles += zfail ? silhouette.CapTriangles : 0.0;
       // The floor charges open casters by how they are counted: z-pass's

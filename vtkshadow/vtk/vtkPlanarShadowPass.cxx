@@ -481,18 +481,31 @@ void vtkPlanarShadowPass::NoteClosedCasters(vtkRenderer* renderer, const Frame& 
     const bool casts = frame.Shared.Lights[light].Casts;
     casting |= casts && light < vtkshadow::FacingLights::MaxLights ? 1 << light : 0;
   }
-  if (!this->FacingTest || casting == 0)
+  if (this->FacingTest && casting != 0)
   {
-    return;
-  }
-  impl.Facing = vtkshadow::FacingLightsOf(renderer, frame.Shared, this->SoftSamples > 1);
-  for (const vtkshadow::ShadowActor& caster : frame.Casters)
-  {
-    if (!caster.Proxy && !impl.ReceiverIndex.count(caster.Actor) &&
-      this->CasterGeometry(caster.Actor)->IsClosed())
+    impl.Facing = vtkshadow::FacingLightsOf(renderer, frame.Shared, this->SoftSamples > 1);
+    for (const vtkshadow::ShadowActor& caster : frame.Casters)
     {
-      impl.FacingBits[caster.Actor] = casting;
+      if (!caster.Proxy && !impl.ReceiverIndex.count(caster.Actor) &&
+        this->CasterGeometry(caster.Actor)->IsClosed())
+      {
+        impl.FacingBits[caster.Actor] = casting;
+      }
     }
+  }
+  // Only these actors' shaders carry the facing test: in any other
+  // fragment it multiplies every light by 1 and still costs its derivatives
+  // and per-light tests (llvmpipe runs a branch on a uniform both ways).
+  // A change of the set rebuilds the shaders.
+  std::vector<vtkProp*> facing;
+  for (const auto& entry : impl.FacingBits)
+  {
+    facing.push_back(entry.first);
+  }
+  if (facing != impl.FacingShaderProps)
+  {
+    impl.FacingShaderProps.swap(facing);
+    this->BumpShaderTime();
   }
 }
 
@@ -894,9 +907,13 @@ bool vtkPlanarShadowPass::PreReplaceShaderValues(
   {
     return true;
   }
-  // Every lit shader may draw a closed caster: the facing test's code, its
-  // lights chosen per draw by a uniform (0 for every other actor).
-  std::string declarations = vtkshadow::FacingShaderCode(FacingPrefix);
+  // The facing test's code for the closed casters (NoteClosedCasters), its
+  // lights chosen per draw by a uniform.
+  const std::vector<vtkProp*>& facing = this->Impl->FacingShaderProps;
+  std::string declarations =
+    std::binary_search(facing.begin(), facing.end(), this->Impl->Outer(prop))
+    ? vtkshadow::FacingShaderCode(FacingPrefix)
+    : std::string();
   if (this->Impl->CanReceive(prop))
   {
     // The soft lookup only in frames with soft pairs: hard frames keep the
@@ -919,19 +936,20 @@ bool vtkPlanarShadowPass::PostReplaceShaderValues(
   // give a convex caster's terminator, vshFacingCombine).
   const std::string facing = std::string(FacingPrefix) + "Combine(%d, vertexVC.xyz, 1.0)";
   const std::string facingPrepare = std::string(FacingPrefix) + "Prepare(vertexVC.xyz);";
-  if (fragmentShader.find(std::string(FacingPrefix) + "Prepare") == std::string::npos)
-  {
-    return true;
-  }
+  const bool faces =
+    fragmentShader.find(std::string(FacingPrefix) + "Prepare") != std::string::npos;
+  const bool receives = fragmentShader.find("vshPlanarLit") != std::string::npos;
   // Each light's diffuse and specular terms times its factor: a receiver's
   // mask bit (read once per fragment), and the facing test.
-  if (fragmentShader.find("vshPlanarLit") == std::string::npos)
+  if (faces && !receives)
   {
     this->InjectLightFactors(fragmentShader, facing, facingPrepare);
-    return true;
   }
-  this->InjectLightFactors(fragmentShader, "vshPlanarLit(%d) * " + facing,
-    "vshPlanarPrepare(vertexVC.xyz); " + facingPrepare);
+  else if (receives)
+  {
+    this->InjectLightFactors(fragmentShader, "vshPlanarLit(%d)" + (faces ? " * " + facing : ""),
+      "vshPlanarPrepare(vertexVC.xyz);" + (faces ? " " + facingPrepare : ""));
+  }
   return true;
 }
 

@@ -228,6 +228,9 @@ private:
   // faces away from the volume's light (vsh_silhouette_seen_unlit).
   bool SeenUnlit(
     const Frame& frame, const vtkshadow::ShadowActor& caster, const Volume& volume) const;
+  // Rebuild the shaders when the set of actors that need the facing test
+  // (closed casters of some light this frame) changed.
+  void UpdateFacingShaders();
   void DrawCaster(vtkShaderProgram* program, const Frame& frame, int light, int sample,
     const vtkshadow::ShadowActor& caster, bool crossings = false);
   // The bound volume's `sides` vertices, then its `caps` vertices (all of
