@@ -447,13 +447,20 @@ void vtkShadowVolumePass::UpdateFacingShaders()
   // 800x600). When the set changes the mappers rebuild their shaders; the
   // depth pre-pass before the volumes keeps the previous set's, which draws
   // the same depth.
+  // The entries' actors are not touched: an entry can outlive its actor
+  // until the cache drops it, but only this frame's casters are closed this
+  // frame.
   Internals& impl = *this->Impl;
   std::vector<vtkProp*> facing;
   for (const auto& entry : impl.Casters)
   {
-    if (this->ClosedCasterLights(entry.first.first) != 0)
+    for (int light = 0; this->FacingTest && light < impl.LightCount; ++light)
     {
-      facing.push_back(entry.first.first);
+      if (entry.second->ClosedFrame[light] == impl.FrameNumber)
+      {
+        facing.push_back(entry.first.first);
+        break;
+      }
     }
   }
   std::sort(facing.begin(), facing.end());
