@@ -74,3 +74,32 @@ foreach(scene scivis/elevation hard/camera-inside-cluster scivis/molecule hard/g
       PROPERTIES LABELS "render" TIMEOUT 300 FIXTURES_REQUIRED xvfb)
   endforeach()
 endforeach()
+
+# The lit draw started from the depth pre-pass's depth (early_depth,
+# vtkShadowDepthSeed): every pixel the same as without, for each technique
+# that has the pre-pass (and auto through them), and the policy seeding
+# isosurface (0.53 hidden fragments a pixel) but not elevation (0).
+foreach(spec "volume;scivis/isosurface" "volume;cad/table-parts" "raytrace;scivis/molecule"
+    "csm;scivis/arrow-glyphs;--set;resolve=1" "auto;scivis/isosurface"
+    "volume;translucent/nested-shells")
+  list(POP_FRONT spec technique scene)
+  set(extra ${spec})
+  get_filename_component(short ${scene} NAME)
+  set(test render.depth_seed.${technique}.${short})
+  add_test(NAME ${test}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_depth_seed.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/depth_seed
+            --scene ${PROJECT_SOURCE_DIR}/scenes/${scene}.json --technique ${technique} ${extra})
+  set_tests_properties(${test} PROPERTIES LABELS "render" TIMEOUT 300 FIXTURES_REQUIRED xvfb)
+endforeach()
+foreach(spec "isosurface;seeded" "elevation;unseeded")
+  list(GET spec 0 scene)
+  list(GET spec 1 policy)
+  set(test render.depth_seed.policy.${scene})
+  add_test(NAME ${test}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_depth_seed.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/depth_seed
+            --scene ${PROJECT_SOURCE_DIR}/scenes/scivis/${scene}.json --technique volume
+            --policy ${policy})
+  set_tests_properties(${test} PROPERTIES LABELS "render" TIMEOUT 300 FIXTURES_REQUIRED xvfb)
+endforeach()

@@ -1397,13 +1397,34 @@ const char* vtkAutoShadowPass::GetLightReason(int light) const
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The passes auto chooses between, for the settings every one gets.
+std::array<vtkShadowPassBase*, 4> CandidatePasses(vtkAutoShadowPass& pass)
+{
+  return { pass.GetPlanarPass(), pass.GetCascadedPass(), pass.GetRayTracedPass(),
+    pass.GetVolumePass() };
+}
+}
+
+//------------------------------------------------------------------------------
 void vtkAutoShadowPass::SetResidualLight(double residual)
 {
   this->Superclass::SetResidualLight(residual);
-  this->PlanarPass->SetResidualLight(this->ResidualLight);
-  this->CascadedPass->SetResidualLight(this->ResidualLight);
-  this->RayTracedPass->SetResidualLight(this->ResidualLight);
-  this->VolumePass->SetResidualLight(this->ResidualLight);
+  for (vtkShadowPassBase* candidate : CandidatePasses(*this))
+  {
+    candidate->SetResidualLight(this->ResidualLight);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::SetEarlyDepth(int mode)
+{
+  this->Superclass::SetEarlyDepth(mode);
+  for (vtkShadowPassBase* candidate : CandidatePasses(*this))
+  {
+    candidate->SetEarlyDepth(this->EarlyDepth);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1490,8 +1511,8 @@ void vtkAutoShadowPass::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 // The settings (vtkShadowSettings.h): auto's own, the base's residual_light
-// (SetResidualLight hands it to every candidate), then every other key of
-// its candidates.
+// and early_depth (their setters hand them to every candidate), then every
+// other key of its candidates.
 namespace
 {
 using P = vtkAutoShadowPass;
@@ -1580,6 +1601,7 @@ std::vector<vtkshadow::Setting> AutoRows()
     Row("penumbra_target", vtkshadow::OpenAbove(0, 1), &P::SetPenumbraTarget, &P::GetPenumbraTarget,
       "pen_mae target for lights with a size (docs/auto.md)"),
     *vtkShadowPassBase::SettingsTable().Find("residual_light"),
+    *vtkShadowPassBase::SettingsTable().Find("early_depth"),
   };
   const size_t own = rows.size();
   for (const Candidate& c : Candidates)

@@ -151,9 +151,10 @@ public:
   vtkActor* GetDetectedReceiver(int index) const override;
 
   /**
-   * Also given to both passes it chooses between.
+   * Also given to every pass it chooses between.
    */
   void SetResidualLight(double residual) override;
+  void SetEarlyDepth(int mode) override;
 
   /**
    * GL memory of the passes in use, as of the last frame.

@@ -1318,7 +1318,7 @@ std::string vtkCascadedShadowMapPass::GetStatsJSON(vtkRenderer* renderer) const
       << ", \"pcss_filter_taps\": " << (this->UsedPCSS ? this->PCSSFilterTaps : 0)
       << ", \"pcss_max_texels\": " << this->PCSSMaxTexels << ", " << this->Impl->Proxies.StatsJSON()
       << ", " << this->Impl->VolumeMaps.StatsJSON() << ", " << this->VolumeReceiverStatsJSON()
-      << ", \"lights\": [";
+      << ", " << this->DepthSeedStatsJSON() << ", \"lights\": [";
   const int lights = renderer ? renderer->GetLights()->GetNumberOfItems() : 0;
   for (int l = 0; l < lights; ++l)
   {

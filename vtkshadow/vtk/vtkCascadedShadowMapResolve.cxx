@@ -300,7 +300,7 @@ void vtkCascadedShadowMapPass::RenderScreenResolved(
   }
   this->BeginVolumeReceiver(s);
   mask.Activate();
-  this->RenderDelegate(s);
+  this->RenderDelegate(s, ok ? &mask : nullptr);
   mask.Deactivate();
   this->PostRender(s);
   this->EndVolumeReceiver();

@@ -493,18 +493,14 @@ void vtkPlanarShadowPass::NoteClosedCasters(vtkRenderer* renderer, const Frame& 
       }
     }
   }
-  // Only these actors' shaders carry the facing test: in any other
-  // fragment it multiplies every light by 1 and still costs its derivatives
-  // and per-light tests (llvmpipe runs a branch on a uniform both ways).
-  // A change of the set rebuilds the shaders.
-  std::vector<vtkProp*> facing;
+  // Only these actors' shaders carry the facing test.
+  impl.FacingShaders.Begin();
   for (const auto& entry : impl.FacingBits)
   {
-    facing.push_back(entry.first);
+    impl.FacingShaders.Add(entry.first);
   }
-  if (facing != impl.FacingShaderProps)
+  if (impl.FacingShaders.Commit())
   {
-    impl.FacingShaderProps.swap(facing);
     this->BumpShaderTime();
   }
 }
@@ -909,9 +905,7 @@ bool vtkPlanarShadowPass::PreReplaceShaderValues(
   }
   // The facing test's code for the closed casters (NoteClosedCasters), its
   // lights chosen per draw by a uniform.
-  const std::vector<vtkProp*>& facing = this->Impl->FacingShaderProps;
-  std::string declarations =
-    std::binary_search(facing.begin(), facing.end(), this->Impl->Outer(prop))
+  std::string declarations = this->Impl->FacingShaders.Has(this->Impl->Outer(prop))
     ? vtkshadow::FacingShaderCode(FacingPrefix)
     : std::string();
   if (this->Impl->CanReceive(prop))

@@ -128,9 +128,9 @@ struct vtkPlanarShadowPass::Internals
   // The facing test: per closed opaque caster the bits of the lights it
   // gets the test for (those this pass casts), and the lights' inputs.
   std::map<vtkProp*, int> FacingBits;
-  // FacingBits' actors when the shaders were last built: only theirs carry
-  // the facing test's code (NoteClosedCasters).
-  std::vector<vtkProp*> FacingShaderProps;
+  // FacingBits' actors: only their shaders carry the facing test's code
+  // (NoteClosedCasters).
+  vtkshadow::FacingShaderSet FacingShaders;
   vtkshadow::FacingLights Facing;
   int LightCount = 0;
   int PlaneCount = 0;

@@ -395,7 +395,9 @@ void vtkRayTracedShadowPass::Render(const vtkRenderState* s)
   }
   impl.W->Mask.Activate();
   impl.W->Translucent.Activate();
-  this->RenderDelegateWithShaderHooks(s);
+  // A still frame reuses the mask without a new pre-pass: its depth is then
+  // not this frame's, and the lit draw starts from a cleared depth buffer.
+  this->RenderDelegateWithShaderHooks(s, impl.Still ? nullptr : &impl.W->Mask);
   impl.W->Translucent.Deactivate();
   impl.W->Mask.Deactivate();
 }
@@ -827,7 +829,7 @@ std::string vtkRayTracedShadowPass::GetStatsJSON(vtkRenderer*) const
       << ", \"meshes\": " << impl.Scene.GetNumberOfMeshes()
       << ", \"triangles\": " << impl.Scene.GetNumberOfTriangles()
       << ", \"impostors\": " << impl.Scene.GetNumberOfImpostors() << VolumesJSON(impl.Volumes, c)
-      << ", " << this->VolumeReceiverStatsJSON()
+      << ", " << this->VolumeReceiverStatsJSON() << ", " << this->DepthSeedStatsJSON()
       << ClassifyJSON(impl.ClassifierUsed, impl.W->Classifier, c)
       << ", \"mesh_builds\": " << impl.Scene.GetMeshBuilds()
       << ", \"mesh_build_ms\": " << 1e3 * impl.Scene.GetMeshBuildSeconds()

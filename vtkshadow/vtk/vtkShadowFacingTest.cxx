@@ -68,4 +68,21 @@ void SetFacingUniforms(vtkShaderProgram* program, const std::string& prefix, int
   program->SetUniform4fv((prefix + "LightVC").c_str(), FacingLights::MaxLights, lights.LightVC);
   program->SetUniform1fv((prefix + "LightSize").c_str(), FacingLights::MaxLights, lights.SizeVC);
 }
+
+bool FacingShaderSet::Commit()
+{
+  std::sort(this->Next.begin(), this->Next.end());
+  this->Next.erase(std::unique(this->Next.begin(), this->Next.end()), this->Next.end());
+  if (this->Next == this->Props)
+  {
+    return false;
+  }
+  this->Props.swap(this->Next);
+  return true;
+}
+
+bool FacingShaderSet::Has(vtkProp* prop) const
+{
+  return std::binary_search(this->Props.begin(), this->Props.end(), prop);
+}
 }

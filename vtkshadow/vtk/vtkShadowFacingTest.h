@@ -6,7 +6,9 @@
 #define vtkShadowFacingTest_h
 
 #include <string>
+#include <vector>
 
+class vtkProp;
 class vtkRenderer;
 class vtkShaderProgram;
 
@@ -52,6 +54,28 @@ std::string FacingShaderCode(const std::string& prefix);
  */
 void SetFacingUniforms(vtkShaderProgram* program, const std::string& prefix, int closedLights,
   const FacingLights& lights);
+
+/**
+ * The actors whose shaders carry the test's code. Only a closed caster's
+ * fragments need it: in any other fragment it multiplies every light by 1
+ * and still costs its derivatives and per-light tests, as llvmpipe runs a
+ * branch on a uniform both ways. A pass lists this frame's set between
+ * Begin() and Commit(); Commit() says whether it changed, and then the pass
+ * bumps its shader time so that the mappers rebuild their shaders. Has()
+ * answers for the set last committed, in the pass's shader replacements.
+ */
+class FacingShaderSet
+{
+public:
+  void Begin() { this->Next.clear(); }
+  void Add(vtkProp* prop) { this->Next.push_back(prop); }
+  bool Commit();
+  bool Has(vtkProp* prop) const;
+
+private:
+  std::vector<vtkProp*> Props; // sorted, unique
+  std::vector<vtkProp*> Next;  // kept to reuse its storage frame to frame
+};
 }
 
 #endif

@@ -15,6 +15,7 @@
 #include "vtkShadowFrame.h"
 #include "vtkShadowLightingHook.h"
 #include "vtkShadowRendererSteps.h"
+#include "vtkShadowScreenMask.h"
 #include "vtkShadowSettings.h"
 #include "vtkShadowVolumeOpacityMap.h"
 #include "vtkShadowVolumeReceiver.h"
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <sstream>
 
 vtkInformationKeyMacro(vtkShadowPassBase, RECEIVER, Integer);
 vtkInformationKeyMacro(vtkShadowPassBase, NO_CAST, Integer);
@@ -237,6 +239,11 @@ const vtkshadow::Settings& vtkShadowPassBase::SettingsTable()
         &P::GetCastHeadlightShadows, "the headlight casts shadows too (they hide behind casters)"),
       vtkshadow::Row("residual_light", vtkshadow::Closed(0, 1), &P::SetResidualLight,
         &P::GetResidualLight, "how much of a light remains in its shadow (1 = no shadow)"),
+      vtkshadow::Row("early_depth", vtkshadow::Integers(P::EARLY_DEPTH_OFF, P::EARLY_DEPTH_ALWAYS),
+        &P::SetEarlyDepth, &P::GetEarlyDepth,
+        "volume, raytrace, csm's screen resolve: the lit draw starts from the depth pre-pass's "
+        "depth, so hidden fragments are not shaded (same image); 0 never, 1 where measured to "
+        "pay, 2 every frame"),
     });
   return table;
 }
@@ -292,18 +299,53 @@ vtkRenderPass* vtkShadowPassBase::EnsureDelegatePass()
 //------------------------------------------------------------------------------
 void vtkShadowPassBase::RenderDelegate(const vtkRenderState* s)
 {
+  this->RenderDelegate(s, nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::RenderDelegate(const vtkRenderState* s, vtkShadowScreenMask* seed)
+{
   vtkRenderPass* delegate = this->EnsureDelegatePass();
+  // Only the opaque mask's depth is the opaque scene's (the translucent
+  // layer's holds the nearest translucent surface).
+  vtkTextureObject* depth =
+    this->EarlyDepth != EARLY_DEPTH_OFF && seed && !seed->GetTranslucentSurfaces()
+    ? seed->GetDepthTexture()
+    : nullptr;
+  const bool ours =
+    vtkshadow::SetSeedDepth(delegate, depth, this->EarlyDepth == EARLY_DEPTH_ALWAYS);
   delegate->Render(s);
+  vtkshadow::GetDepthSeedState(delegate, this->DepthSeeded, this->DepthSeedHiddenPerPixel);
+  if (ours)
+  {
+    vtkshadow::SetSeedDepth(delegate, nullptr);
+  }
   vtkshadow::MarkStage("scene");
   this->NumberOfRenderedProps += delegate->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
+std::string vtkShadowPassBase::DepthSeedStatsJSON() const
+{
+  std::ostringstream out;
+  out << "\"depth_seeded\": " << (this->DepthSeeded ? "true" : "false")
+      << ", \"depth_seed_hidden_per_px\": " << this->DepthSeedHiddenPerPixel;
+  return out.str();
+}
+
+//------------------------------------------------------------------------------
 void vtkShadowPassBase::RenderDelegateWithShaderHooks(const vtkRenderState* s)
+{
+  this->RenderDelegateWithShaderHooks(s, nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkShadowPassBase::RenderDelegateWithShaderHooks(
+  const vtkRenderState* s, vtkShadowScreenMask* seed)
 {
   this->BeginVolumeReceiver(s);
   this->PreRender(s);
-  this->RenderDelegate(s);
+  this->RenderDelegate(s, seed);
   this->PostRender(s);
   this->EndVolumeReceiver();
 }

@@ -59,6 +59,7 @@ struct ShadowFrame;
 class vtkInformationIntegerKey;
 class vtkLight;
 class vtkRenderer;
+class vtkShadowScreenMask;
 class vtkShadowVolumeOpacityMap;
 class vtkShadowVolumeReceiver;
 class vtkShaderProgram;
@@ -145,6 +146,27 @@ public:
   vtkSetMacro(CastHeadlightShadows, bool);
   vtkGetMacro(CastHeadlightShadows, bool);
   vtkBooleanMacro(CastHeadlightShadows, bool);
+
+  /**
+   * Whether the techniques with a depth pre-pass (volume, raytrace, csm's
+   * screen resolve) write its depth into the main pass's depth buffer before
+   * the lit draw, so that hidden fragments are rejected before shading
+   * (vtkShadowDepthSeed; option early_depth). The image is the same either
+   * way. EARLY_DEPTH_OFF: never; EARLY_DEPTH_WHERE_IT_PAYS (default): where
+   * the fragments it saves, counted now and then, outweigh its own draw
+   * (vsh_depth_seed.h); EARLY_DEPTH_ALWAYS: every frame. It applies only
+   * with the pass's own delegate and a single-sampled framebuffer;
+   * GetDepthSeeded() says whether the last frame's lit draw was seeded.
+   */
+  enum EarlyDepthModes
+  {
+    EARLY_DEPTH_OFF = 0,
+    EARLY_DEPTH_WHERE_IT_PAYS = 1,
+    EARLY_DEPTH_ALWAYS = 2
+  };
+  vtkSetClampMacro(EarlyDepth, int, EARLY_DEPTH_OFF, EARLY_DEPTH_ALWAYS);
+  vtkGetMacro(EarlyDepth, int);
+  bool GetDepthSeeded() const { return this->DepthSeeded; }
 
   /**
    * Lights this pass leaves unshadowed, as bits: bit i for light i in the
@@ -272,6 +294,10 @@ protected:
    */
   void RenderDelegate(const vtkRenderState* s);
   void RenderDelegateWithShaderHooks(const vtkRenderState* s);
+  // With the opaque depth of `seed` (this frame's RenderDepth of the same
+  // view) written first when EarlyDepth allows it.
+  void RenderDelegate(const vtkRenderState* s, vtkShadowScreenMask* seed);
+  void RenderDelegateWithShaderHooks(const vtkRenderState* s, vtkShadowScreenMask* seed);
 
   /**
    * Mark the generated shader code as changed (mappers rebuild).
@@ -339,12 +365,20 @@ protected:
   void ReceiveVolumeShadows(std::string& fragmentShader, vtkProp* prop);
   void SetVolumeShadowParameters(vtkShaderProgram* program);
   std::string VolumeReceiverStatsJSON() const;
+  // "depth_seeded": whether the last lit draw started from the pre-pass's
+  // depth (EarlyDepth), and "depth_seed_hidden_per_px": the fragments per
+  // pixel that saves by the last measurement (-1 before one), for the
+  // screen-space passes' GetStatsJSON.
+  std::string DepthSeedStatsJSON() const;
   long long GetVolumeReceiverMemoryBytes() const;
   bool VolumesReceive = false;
 
   vtkRenderPass* DelegatePass;
   bool DelegateIsApplicationScene = false;
   bool CastHeadlightShadows;
+  int EarlyDepth = EARLY_DEPTH_WHERE_IT_PAYS;
+  bool DepthSeeded = false;
+  double DepthSeedHiddenPerPixel = -1.0;
   double ResidualLight;
   unsigned int SkippedLights;
   vtkMTimeType ShaderTime;

@@ -4,13 +4,16 @@
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpaquePass.h"
 #include "vtkOpenGLFXAAFilter.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkSequencePass.h"
+#include "vtkShadowDepthSeed.h"
 #include "vtkSmartPointer.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVolumetricPass.h"
@@ -122,12 +125,42 @@ private:
   vtkSmartPointer<vtkOpenGLFXAAFilter> Filter;
 };
 vtkStandardNewMacro(FXAAAsRenderer);
+
+// The opaque step, after the owner's depth pre-pass is written into the
+// depth buffer where that pays (vtkShadowDepthSeed), when the owner gave one
+// for this frame.
+class SeededOpaquePass : public vtkOpaquePass
+{
+public:
+  static SeededOpaquePass* New();
+  vtkTypeMacro(SeededOpaquePass, vtkOpaquePass);
+
+  void Render(const vtkRenderState* s) override
+  {
+    this->Seed.BeginOpaque(
+      vtkOpenGLRenderWindow::SafeDownCast(s->GetRenderer()->GetRenderWindow()), this->Source);
+    this->Superclass::Render(s);
+    this->Seed.EndOpaque();
+  }
+
+  void ReleaseGraphicsResources(vtkWindow* w) override
+  {
+    this->Seed.ReleaseGraphicsResources();
+    this->Superclass::ReleaseGraphicsResources(w);
+  }
+
+  vtkTextureObject* Source = nullptr;
+  vtkShadowDepthSeed Seed;
+};
+vtkStandardNewMacro(SeededOpaquePass);
 }
 
 //------------------------------------------------------------------------------
 vtkRenderStepsPass* vtkshadow::NewRendererSteps()
 {
   vtkRenderStepsPass* steps = vtkRenderStepsPass::New();
+  vtkNew<SeededOpaquePass> opaque;
+  steps->SetOpaquePass(opaque);
   vtkNew<TranslucentAsRenderer> translucent;
   steps->SetTranslucentPass(translucent);
   // The volumetric step's slot runs right after translucent geometry: FXAA
@@ -141,4 +174,30 @@ vtkRenderStepsPass* vtkshadow::NewRendererSteps()
   fxaaThenVolumes->SetPasses(sequence);
   steps->SetVolumetricPass(fxaaThenVolumes);
   return steps;
+}
+
+//------------------------------------------------------------------------------
+bool vtkshadow::SetSeedDepth(vtkRenderPass* steps, vtkTextureObject* depth, bool always)
+{
+  auto* renderSteps = vtkRenderStepsPass::SafeDownCast(steps);
+  auto* opaque =
+    renderSteps ? SeededOpaquePass::SafeDownCast(renderSteps->GetOpaquePass()) : nullptr;
+  if (!opaque)
+  {
+    return false;
+  }
+  opaque->Source = depth;
+  opaque->Seed.SetAlways(always);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkshadow::GetDepthSeedState(vtkRenderPass* steps, bool& seeded, double& hiddenPerPixel)
+{
+  auto* renderSteps = vtkRenderStepsPass::SafeDownCast(steps);
+  auto* opaque =
+    renderSteps ? SeededOpaquePass::SafeDownCast(renderSteps->GetOpaquePass()) : nullptr;
+  seeded = opaque && opaque->Seed.GetSeeded();
+  hiddenPerPixel = opaque ? opaque->Seed.GetHiddenPerPixel() : -1.0;
+  return opaque != nullptr;
 }

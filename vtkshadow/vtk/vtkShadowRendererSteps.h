@@ -14,12 +14,24 @@
 #ifndef vtkShadowRendererSteps_h
 #define vtkShadowRendererSteps_h
 
+class vtkRenderPass;
 class vtkRenderStepsPass;
+class vtkTextureObject;
 
 namespace vtkshadow
 {
 // A new vtkRenderStepsPass (reference count 1) with those steps.
 vtkRenderStepsPass* NewRendererSteps();
+
+// Have steps made by NewRendererSteps write `depth` into the depth buffer
+// before their opaque step where that pays (vtkShadowDepthSeed; with
+// `always`, every frame), or nothing with nullptr.
+// Returns false, doing nothing, for any other pass (an application's own
+// delegate). GetDepthSeedState: whether their last opaque step was seeded
+// and the last measurement's saved fragments per pixel (-1 before one);
+// false for any other pass.
+bool SetSeedDepth(vtkRenderPass* steps, vtkTextureObject* depth, bool always = false);
+bool GetDepthSeedState(vtkRenderPass* steps, bool& seeded, double& hiddenPerPixel);
 }
 
 #endif

@@ -243,9 +243,8 @@ struct vtkShadowVolumePass::Internals
   // (actor, -1 - instance), out of the facing test's reach (its lookup
   // starts at instance 0: VTK's impostors are not the proxy's facets).
   std::map<std::pair<vtkActor*, int>, std::unique_ptr<Caster>> Casters;
-  // The actors whose shaders carry the facing test (UpdateFacingShaders),
-  // sorted.
-  std::vector<vtkProp*> FacingProps;
+  // The actors whose shaders carry the facing test (UpdateFacingShaders).
+  vtkshadow::FacingShaderSet FacingShaders;
   vtkshadow::ImpostorProxies Proxies;
   // The volumes' opacity shadow maps, multiplied into each layer's mask
   // after the stencil counts.
@@ -391,7 +390,7 @@ void vtkShadowVolumePass::Render(const vtkRenderState* s)
   vtkshadow::MarkStage("volume.stencil");
   impl.Opaque.Activate();
   impl.Translucent.Activate();
-  this->RenderDelegateWithShaderHooks(s);
+  this->RenderDelegateWithShaderHooks(s, &impl.Opaque);
   impl.Translucent.Deactivate();
   impl.Opaque.Deactivate();
 }
@@ -440,34 +439,28 @@ bool vtkShadowVolumePass::CountLayer(const vtkRenderState* s, vtkOpenGLRenderWin
 void vtkShadowVolumePass::UpdateFacingShaders()
 {
   // The facing test's code goes only into the shaders of the actors that
-  // are a closed caster of some light this frame: in any other fragment it
-  // multiplies every light by 1 and still costs its derivatives and
-  // per-light tests, as llvmpipe runs a branch on a uniform both ways
-  // (scivis/elevation, an open caster: 1.9 ms of a 23.7 ms frame at
-  // 800x600). When the set changes the mappers rebuild their shaders; the
-  // depth pre-pass before the volumes keeps the previous set's, which draws
-  // the same depth.
+  // are a closed caster of some light this frame (scivis/elevation, an open
+  // caster, spent 1.9 ms of a 23.7 ms frame at 800x600 on the test in every
+  // shader). The depth pre-pass before the volumes keeps the previous set's
+  // shaders, which draw the same depth.
   // The entries' actors are not touched: an entry can outlive its actor
   // until the cache drops it, but only this frame's casters are closed this
   // frame.
   Internals& impl = *this->Impl;
-  std::vector<vtkProp*> facing;
+  impl.FacingShaders.Begin();
   for (const auto& entry : impl.Casters)
   {
     for (int light = 0; this->FacingTest && light < impl.LightCount; ++light)
     {
       if (entry.second->ClosedFrame[light] == impl.FrameNumber)
       {
-        facing.push_back(entry.first.first);
+        impl.FacingShaders.Add(entry.first.first);
         break;
       }
     }
   }
-  std::sort(facing.begin(), facing.end());
-  facing.erase(std::unique(facing.begin(), facing.end()), facing.end());
-  if (facing != impl.FacingProps)
+  if (impl.FacingShaders.Commit())
   {
-    impl.FacingProps.swap(facing);
     this->BumpShaderTime();
   }
 }
@@ -980,14 +973,17 @@ void vtkShadowVolumePass::DrawFaces(vtkShaderProgram* program, const float volum
   // sides'.
   float capFactor = 0.0f, capUnits = 0.0f;
   CoincidentOffset(caps > 0 ? actor : nullptr, capFactor, capUnits);
-  const bool offsetCaps = capFactor == 0.0f && capUnits == 0.0f;
-  // Caps drawn in one range with the sides: both faces' halves.
-  const int withSides = offsetCaps && !leavingCaps ? caps : 0;
+  const bool sidesBias = caps > 0 && capFactor == 0.0f && capUnits == 0.0f;
+  // Caps with the sides' bias go with the sides: in their range when both
+  // faces count, else (the leaving ones) in a second draw of the sides'
+  // program, culled. All others go through the biased shader below.
+  const bool capsInSidesRange = sidesBias && !leavingCaps;
+  const bool capsAfterSides = sidesBias && leavingCaps && impl.Sides.Program();
+  const int range = sides + (capsInSidesRange ? caps : 0);
   if (impl.Sides.Program())
   {
-    impl.Sides.Draw(
-      impl.Window, volumeMCDC, 0, sides + withSides, this->DepthBias, this->SlopeBias);
-    if (offsetCaps && leavingCaps && caps > 0)
+    impl.Sides.Draw(impl.Window, volumeMCDC, 0, range, this->DepthBias, this->SlopeBias);
+    if (capsAfterSides)
     {
       impl.Sides.Draw(impl.Window, volumeMCDC, sides, caps, this->DepthBias, this->SlopeBias, true);
     }
@@ -995,9 +991,9 @@ void vtkShadowVolumePass::DrawFaces(vtkShaderProgram* program, const float volum
   }
   else
   {
-    glDrawArrays(GL_TRIANGLES, 0, sides + withSides);
+    glDrawArrays(GL_TRIANGLES, 0, range);
   }
-  if (caps == 0 || withSides > 0 || (offsetCaps && leavingCaps && impl.Sides.Program()))
+  if (caps == 0 || capsInSidesRange || capsAfterSides)
   {
     return;
   }
@@ -1024,9 +1020,8 @@ bool vtkShadowVolumePass::PreReplaceShaderValues(
   std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
   const bool ok = this->Impl->For(prop).PreReplaceShaderValues(fragmentShader, prop);
-  const std::vector<vtkProp*>& facing = this->Impl->FacingProps;
   if (fragmentShader.find("vshScreenPrepare") != std::string::npos &&
-    std::binary_search(facing.begin(), facing.end(), prop))
+    this->Impl->FacingShaders.Has(prop))
   {
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec",
       std::string("//VTK::Light::Dec\n") + vtkshadow::FacingShaderCode("vshFacing"), false);
@@ -1136,7 +1131,7 @@ std::string vtkShadowVolumePass::GetStatsJSON(vtkRenderer*) const
       << ", \"instancing\": \"per instance\", \"fill\": \"scissor area\", "
       << "\"sides_offset\": " << (impl.Sides.Program() ? "true" : "false") << ", "
       << impl.Proxies.StatsJSON() << ", " << impl.VolumeMaps.StatsJSON() << ", "
-      << this->VolumeReceiverStatsJSON() << ", \"lights\": [";
+      << this->VolumeReceiverStatsJSON() << ", " << this->DepthSeedStatsJSON() << ", \"lights\": [";
   for (int light = 0; light < impl.LightCount; ++light)
   {
     const LightStats& s = impl.Stats[light];
