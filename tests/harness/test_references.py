@@ -69,27 +69,10 @@ def soft_lights(scene_result):
     return {r["light"] for r in scene_result["results"] if (r.get("pen_pixels") or 0) > 0}
 
 
-def difference(a, b):
-    """(mean |a - b|, % of pixels with |a - b| > JITTER_OVER) of two 16-bit
-    visibility PNGs (VTK's reader: the test's Python has no PIL)."""
-    import vtk  # the test runs under vtkshadow-python
-    from vtk.util.numpy_support import vtk_to_numpy
-    images = []
-    for path in (a, b):
-        r = vtk.vtkPNGReader()
-        r.SetFileName(path)
-        r.Update()
-        images.append(vtk_to_numpy(r.GetOutput().GetPointData().GetScalars()).astype(float)
-                      / 65535.0)
-    if images[0].shape != images[1].shape:
-        return float("inf"), float("inf")
-    d = abs(images[0] - images[1])
-    return float(d.mean()), 100.0 * float((d > JITTER_OVER).mean())
-
-
-def cross_cpu_difference(a, b):
-    """(% of pixels that differ, largest difference in [0, 1]) of two PNGs of
-    one kind (16-bit visibility or 8-bit mask)."""
+def read_normalized(a, b):
+    """Two PNGs of one kind as arrays in [0, 1] (16-bit visibility or 8-bit
+    mask; VTK's reader: the test's Python has no PIL), or None when their
+    sizes differ."""
     import vtk  # the test runs under vtkshadow-python
     from vtk.util.numpy_support import vtk_to_numpy
     images = []
@@ -100,7 +83,24 @@ def cross_cpu_difference(a, b):
         scalars = r.GetOutput().GetPointData().GetScalars()
         top = 65535.0 if scalars.GetDataTypeSize() == 2 else 255.0
         images.append(vtk_to_numpy(scalars).astype(float) / top)
-    if images[0].shape != images[1].shape:
+    return images if images[0].shape == images[1].shape else None
+
+
+def difference(a, b):
+    """(mean |a - b|, % of pixels with |a - b| > JITTER_OVER) of two 16-bit
+    visibility PNGs."""
+    images = read_normalized(a, b)
+    if images is None:
+        return float("inf"), float("inf")
+    d = abs(images[0] - images[1])
+    return float(d.mean()), 100.0 * float((d > JITTER_OVER).mean())
+
+
+def cross_cpu_difference(a, b):
+    """(% of pixels that differ, largest difference in [0, 1]) of two PNGs of
+    one kind (16-bit visibility or 8-bit mask)."""
+    images = read_normalized(a, b)
+    if images is None:
         return float("inf"), float("inf")
     d = abs(images[0] - images[1])
     return 100.0 * float((d > 0).mean()), float(d.max())

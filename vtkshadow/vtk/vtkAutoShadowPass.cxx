@@ -1397,37 +1397,6 @@ const char* vtkAutoShadowPass::GetLightReason(int light) const
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
-// The passes auto chooses between, for the settings every one gets.
-std::array<vtkShadowPassBase*, 4> CandidatePasses(vtkAutoShadowPass& pass)
-{
-  return { pass.GetPlanarPass(), pass.GetCascadedPass(), pass.GetRayTracedPass(),
-    pass.GetVolumePass() };
-}
-}
-
-//------------------------------------------------------------------------------
-void vtkAutoShadowPass::SetResidualLight(double residual)
-{
-  this->Superclass::SetResidualLight(residual);
-  for (vtkShadowPassBase* candidate : CandidatePasses(*this))
-  {
-    candidate->SetResidualLight(this->ResidualLight);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkAutoShadowPass::SetEarlyDepth(int mode)
-{
-  this->Superclass::SetEarlyDepth(mode);
-  for (vtkShadowPassBase* candidate : CandidatePasses(*this))
-  {
-    candidate->SetEarlyDepth(this->EarlyDepth);
-  }
-}
-
-//------------------------------------------------------------------------------
 int vtkAutoShadowPass::GetNumberOfDetectedReceivers() const
 {
   return static_cast<int>(this->Impl->Detected.size());
@@ -1628,6 +1597,26 @@ const vtkshadow::Settings& vtkAutoShadowPass::SettingsTable()
 {
   static const vtkshadow::Settings table(nullptr, AutoRows());
   return table;
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::SetResidualLight(double residual)
+{
+  this->Superclass::SetResidualLight(residual);
+  for (const Candidate& c : Candidates)
+  {
+    c.Pass(*this)->SetResidualLight(this->ResidualLight);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::SetEarlyDepth(int mode)
+{
+  this->Superclass::SetEarlyDepth(mode);
+  for (const Candidate& c : Candidates)
+  {
+    c.Pass(*this)->SetEarlyDepth(this->EarlyDepth);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -33,27 +33,24 @@ void vtkShadowDepthSeed::BeginOpaque(vtkOpenGLRenderWindow* window, vtkTextureOb
     this->Next = Phase::MeasureUnseeded;
   }
   const Phase phase = this->Next;
-  bool seed = this->Pays;
-  if (phase == Phase::Decided)
+  const bool measuring = phase != Phase::Decided;
+  const bool seed = measuring ? phase == Phase::MeasureSeeded : this->Pays;
+  if (!measuring)
   {
     ++this->FramesDecided;
   }
-  else
-  {
-    seed = phase == Phase::MeasureSeeded;
-    if (!this->Query)
-    {
-      glGenQueries(1, &this->Query);
-    }
-    this->Counting = this->Query != 0;
-  }
   this->Seeded = seed && this->Draw(window, depth, viewport);
-  if (this->Counting && seed && !this->Seeded)
+  if (!measuring || this->Seeded != seed)
   {
-    this->Counting = false; // the seeded count needs a seeded frame
+    return; // a measuring frame counts only as what its phase asks for
   }
-  if (this->Counting)
+  if (!this->Query)
   {
+    glGenQueries(1, &this->Query);
+  }
+  if (this->Query)
+  {
+    this->Counting = true;
     this->Pixels = static_cast<double>(viewport[2]) * viewport[3];
     this->PendingPhase = phase;
     glBeginQuery(GL_SAMPLES_PASSED, this->Query);

@@ -312,24 +312,31 @@ void vtkShadowPassBase::RenderDelegate(const vtkRenderState* s, vtkShadowScreenM
     this->EarlyDepth != EARLY_DEPTH_OFF && seed && !seed->GetTranslucentSurfaces()
     ? seed->GetDepthTexture()
     : nullptr;
-  const bool ours =
-    vtkshadow::SetSeedDepth(delegate, depth, this->EarlyDepth == EARLY_DEPTH_ALWAYS);
+  vtkshadow::SetSeedDepth(delegate, depth, this->EarlyDepth == EARLY_DEPTH_ALWAYS);
   delegate->Render(s);
-  vtkshadow::GetDepthSeedState(delegate, this->DepthSeeded, this->DepthSeedHiddenPerPixel);
-  if (ours)
-  {
-    vtkshadow::SetSeedDepth(delegate, nullptr);
-  }
+  vtkshadow::SetSeedDepth(delegate, nullptr); // the mask's texture is not kept
   vtkshadow::MarkStage("scene");
   this->NumberOfRenderedProps += delegate->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
+bool vtkShadowPassBase::GetDepthSeeded() const
+{
+  bool seeded = false;
+  double hiddenPerPixel = -1.0;
+  vtkshadow::GetDepthSeedState(this->DelegatePass, seeded, hiddenPerPixel);
+  return seeded;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkShadowPassBase::DepthSeedStatsJSON() const
 {
+  bool seeded = false;
+  double hiddenPerPixel = -1.0;
+  vtkshadow::GetDepthSeedState(this->DelegatePass, seeded, hiddenPerPixel);
   std::ostringstream out;
-  out << "\"depth_seeded\": " << (this->DepthSeeded ? "true" : "false")
-      << ", \"depth_seed_hidden_per_px\": " << this->DepthSeedHiddenPerPixel;
+  out << "\"depth_seeded\": " << (seeded ? "true" : "false")
+      << ", \"depth_seed_hidden_per_px\": " << hiddenPerPixel;
   return out.str();
 }
 

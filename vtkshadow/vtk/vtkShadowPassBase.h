@@ -166,7 +166,7 @@ public:
   };
   vtkSetClampMacro(EarlyDepth, int, EARLY_DEPTH_OFF, EARLY_DEPTH_ALWAYS);
   vtkGetMacro(EarlyDepth, int);
-  bool GetDepthSeeded() const { return this->DepthSeeded; }
+  bool GetDepthSeeded() const;
 
   /**
    * Lights this pass leaves unshadowed, as bits: bit i for light i in the
@@ -377,8 +377,6 @@ protected:
   bool DelegateIsApplicationScene = false;
   bool CastHeadlightShadows;
   int EarlyDepth = EARLY_DEPTH_WHERE_IT_PAYS;
-  bool DepthSeeded = false;
-  double DepthSeedHiddenPerPixel = -1.0;
   double ResidualLight;
   unsigned int SkippedLights;
   vtkMTimeType ShaderTime;

@@ -153,6 +153,13 @@ public:
   vtkShadowDepthSeed Seed;
 };
 vtkStandardNewMacro(SeededOpaquePass);
+
+// The seeded opaque step of steps made by NewRendererSteps, else null.
+SeededOpaquePass* SeededOpaque(vtkRenderPass* steps)
+{
+  auto* renderSteps = vtkRenderStepsPass::SafeDownCast(steps);
+  return renderSteps ? SeededOpaquePass::SafeDownCast(renderSteps->GetOpaquePass()) : nullptr;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -179,9 +186,7 @@ vtkRenderStepsPass* vtkshadow::NewRendererSteps()
 //------------------------------------------------------------------------------
 bool vtkshadow::SetSeedDepth(vtkRenderPass* steps, vtkTextureObject* depth, bool always)
 {
-  auto* renderSteps = vtkRenderStepsPass::SafeDownCast(steps);
-  auto* opaque =
-    renderSteps ? SeededOpaquePass::SafeDownCast(renderSteps->GetOpaquePass()) : nullptr;
+  SeededOpaquePass* opaque = SeededOpaque(steps);
   if (!opaque)
   {
     return false;
@@ -194,9 +199,7 @@ bool vtkshadow::SetSeedDepth(vtkRenderPass* steps, vtkTextureObject* depth, bool
 //------------------------------------------------------------------------------
 bool vtkshadow::GetDepthSeedState(vtkRenderPass* steps, bool& seeded, double& hiddenPerPixel)
 {
-  auto* renderSteps = vtkRenderStepsPass::SafeDownCast(steps);
-  auto* opaque =
-    renderSteps ? SeededOpaquePass::SafeDownCast(renderSteps->GetOpaquePass()) : nullptr;
+  const SeededOpaquePass* opaque = SeededOpaque(steps);
   seeded = opaque && opaque->Seed.GetSeeded();
   hiddenPerPixel = opaque ? opaque->Seed.GetHiddenPerPixel() : -1.0;
   return opaque != nullptr;
