@@ -103,3 +103,19 @@ foreach(spec "isosurface;seeded" "elevation;unseeded")
             --policy ${policy})
   set_tests_properties(${test} PROPERTIES LABELS "render" TIMEOUT 300 FIXTURES_REQUIRED xvfb)
 endforeach()
+
+# auto's timed choice between the exact techniques (time_exact,
+# vsh_auto_trial.h): where volumes and rays both meet the target, auto times
+# them and draws the one its timings say, on isosurface (both tried) and
+# cone-glyphs (rays predicted over 4x dearer: not tried). Run alone: the
+# timings are checked against the harness's frames of the same passes, and
+# a neighbouring test's load on one technique's few frames would show.
+foreach(scene isosurface cone-glyphs)
+  set(test render.exact_trial.${scene})
+  add_test(NAME ${test}
+    COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/render/test_exact_trial.py
+            --bin ${VTKSHADOW_BIN} --out ${VTKSHADOW_TEST_OUT}/exact_trial/${scene}
+            --scene ${PROJECT_SOURCE_DIR}/scenes/scivis/${scene}.json)
+  set_tests_properties(${test} PROPERTIES LABELS "render" TIMEOUT 300 FIXTURES_REQUIRED xvfb
+    RUN_SERIAL TRUE)
+endforeach()

@@ -32,11 +32,13 @@
 #include "vtkShadowTechniqueSet.h"
 #include "vtkShadowVolumePass.h"
 #include "vtkWeakPointer.h"
+#include "vtk_glew.h"
 
 #include "vsh_auto.h"
 #include "vsh_auto_general.h"
 #include "vsh_auto_plan.h"
 #include "vsh_auto_soft.h"
+#include "vsh_auto_trial.h"
 #include "vsh_mat4.h"
 #include "vsh_silhouette.h"
 #include "vsh_volume.h"
@@ -44,6 +46,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -109,6 +112,17 @@ struct vtkAutoShadowPass::Internals
   // What was chosen: for the frame and per switched-on light.
   vtkshadow::TechniqueSet Choice = vtkshadow::TechniqueSet::None;
   std::vector<vtkshadow::TechniqueSet> LightChoices;
+
+  // The timed choice between the exact techniques (vsh_auto_trial.h): its
+  // state across frames, and this frame's lights, models' pick and
+  // predictions, the technique drawn and whether the frame is timed.
+  vsh_auto_trial Trial;
+  unsigned int TrialLights = 0;
+  int TrialModel = -1;
+  double TrialPredicted[VSH_AUTO_TRIAL_COUNT] = { 0.0, 0.0 };
+  vsh_auto_trial_step TrialStep = { -1, 0 };
+
+  Internals() { vsh_auto_trial_reset(&this->Trial); }
 
   // The caster's mesh analysis, redone only when the mesh changes: its
   // convexity and silhouettes survive every affine placement, so the
@@ -545,12 +559,39 @@ void vtkAutoShadowPass::Render(const vtkRenderState* s)
       next = candidates[i];
     }
   }
-  next->Render(s);
+  this->RenderTimed(next, s);
   for (vtkShadowPassBase* candidate : candidates)
   {
     candidate->SetGivenFrame(nullptr);
   }
   this->NumberOfRenderedProps = next->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::RenderTimed(vtkRenderPass* chain, const vtkRenderState* s)
+{
+  // A timed frame of the exact trial: the GL work before it finished first
+  // and its own waited for, so the clock sees this frame's shadow work and
+  // scene only. Other frames are not synchronised.
+  Internals& impl = *this->Impl;
+  if (!impl.TrialStep.time_frame)
+  {
+    chain->Render(s);
+    return;
+  }
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
+  chain->Render(s);
+  glFinish();
+  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+  // A still frame of the ray tracer traces nothing (it keeps the last
+  // mask): no measure of what tracing costs.
+  if (impl.TrialStep.technique == VSH_AUTO_TRIAL_RAYTRACE &&
+    this->RayTracedPass->GetNumberOfRaysTraced() == 0)
+  {
+    return;
+  }
+  vsh_auto_trial_record(&impl.Trial, impl.TrialStep.technique, took.count());
 }
 
 //------------------------------------------------------------------------------
@@ -1061,13 +1102,110 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
   }
   // Lights with a size were weighed by the penumbra target (ChooseSoft);
   // what they took constrains these.
+  // The trial weighs the candidates as offered: the plan's rule against
+  // mixing volumes and rays in a frame makes a light's volume unavailable
+  // when the models' picks would mix, which the trial never does.
+  std::vector<vsh_auto_general_light> offered = weighed;
   vsh_auto_plan_general(weighed.data(), static_cast<int>(weighed.size()), this->MaxError,
     impl.VolumeSamples > 0, impl.RaySamples > 0);
   for (size_t i = 0; i < weighed.size(); ++i)
   {
+    offered[i].pick = weighed[i].pick;
+    offered[i].met = weighed[i].met;
+  }
+  const std::vector<int> index(lightOf.begin(), lightOf.end());
+  this->TimeExactLights(offered.data(), index.data(), static_cast<int>(offered.size()));
+  for (size_t i = 0; i < weighed.size(); ++i)
+  {
+    weighed[i].pick = offered[i].pick;
+  }
+  for (size_t i = 0; i < weighed.size(); ++i)
+  {
     this->ApplyGeneralPick(
       lightOf[i], weighed[i].candidates, volumes[i], unsupported[i], weighed[i].pick);
+    if (impl.TrialLights >> lightOf[i] & 1u)
+    {
+      this->LightReasons[lightOf[i]] += this->TrialNote();
+    }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkAutoShadowPass::TimeExactLights(vsh_auto_general_light* lights, const int* index, int count)
+{
+  // Lights with a size constrain which exact technique may draw (one screen
+  // mask a frame, vsh_auto_plan_general): with any of them sampled by
+  // volumes or rays, the models' picks stand.
+  Internals& impl = *this->Impl;
+  impl.TrialModel = -1;
+  impl.TrialLights = this->TimeExact && impl.VolumeSamples == 0 && impl.RaySamples == 0
+    ? vsh_auto_trial_lights(
+        lights, index, count, this->MaxError, &impl.TrialModel, impl.TrialPredicted)
+    : 0u;
+  impl.TrialStep = vsh_auto_trial_next(&impl.Trial, impl.TrialLights,
+    impl.TrialLights ? impl.TrialModel : VSH_AUTO_TRIAL_VOLUME, impl.TrialPredicted);
+  if (impl.TrialLights)
+  {
+    vsh_auto_trial_apply(lights, index, count, impl.TrialLights, impl.TrialStep.technique);
+  }
+  else
+  {
+    impl.TrialStep.time_frame = 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+const char* const TrialNames[VSH_AUTO_TRIAL_COUNT] = { "volume", "raytrace" };
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAutoShadowPass::TrialNote() const
+{
+  const Internals& impl = *this->Impl;
+  std::ostringstream note;
+  note.precision(3);
+  note << "; volumes and rays both exact here, timed on this machine:";
+  for (int t = 0; t < VSH_AUTO_TRIAL_COUNT; ++t)
+  {
+    note << (t ? "," : "") << " " << TrialNames[t] << " ";
+    if (vsh_auto_trial_timed(&impl.Trial, t))
+    {
+      note << impl.Trial.ms[t] << " ms a frame";
+    }
+    else
+    {
+      note << "not timed yet";
+    }
+  }
+  note << " (the models picked " << TrialNames[impl.TrialModel] << ")";
+  return note.str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAutoShadowPass::TrialJSON() const
+{
+  const Internals& impl = *this->Impl;
+  std::ostringstream json;
+  json.precision(6);
+  json << "{\"lights\": " << impl.TrialLights
+       << ", \"enabled\": " << (this->TimeExact ? "true" : "false");
+  if (impl.TrialLights)
+  {
+    json << ", \"model\": \"" << TrialNames[impl.TrialModel] << "\", \"drawn\": \""
+         << TrialNames[impl.TrialStep.technique] << "\", \"incumbent\": \""
+         << TrialNames[impl.Trial.incumbent >= 0 ? impl.Trial.incumbent : impl.TrialModel] << "\"";
+    for (int t = 0; t < VSH_AUTO_TRIAL_COUNT; ++t)
+    {
+      json << ", \"" << TrialNames[t] << "_predicted_ms\": " << JSONNumber(impl.TrialPredicted[t])
+           << ", \"" << TrialNames[t] << "_timed_ms\": "
+           << JSONNumber(vsh_auto_trial_timed(&impl.Trial, t) ? impl.Trial.ms[t] : std::nan(""));
+    }
+    json << ", \"timed_frame\": " << (impl.TrialStep.time_frame ? "true" : "false");
+  }
+  json << "}";
+  return json.str();
 }
 
 //------------------------------------------------------------------------------
@@ -1569,6 +1707,8 @@ std::vector<vtkshadow::Setting> AutoRows()
       "map candidates: at most this many pixels per texel (0 = off)"),
     Row("penumbra_target", vtkshadow::OpenAbove(0, 1), &P::SetPenumbraTarget, &P::GetPenumbraTarget,
       "pen_mae target for lights with a size (docs/auto.md)"),
+    Row("time_exact", vtkshadow::Integers(0, 1), &P::SetTimeExact, &P::GetTimeExact,
+      "1: volumes or rays, where both are exact, by frames timed here; 0: by the cost models"),
     *vtkShadowPassBase::SettingsTable().Find("residual_light"),
     *vtkShadowPassBase::SettingsTable().Find("early_depth"),
   };
@@ -1655,7 +1795,8 @@ std::string vtkAutoShadowPass::GetStatsJSON(vtkRenderer* renderer) const
   }
   out << ", \"thinnest_caster_px\": " << JSONNumber(this->UsedThinnestPixels)
       << ", \"taper_error_pct\": " << JSONNumber(this->UsedTaperErrorPct) << ", \"general\": ["
-      << this->Impl->GeneralJSON << "]";
+      << this->Impl->GeneralJSON << "]"
+      << ", \"exact_trial\": " << this->TrialJSON();
   out << ", \"penumbra_target\": " << this->PenumbraTarget << ", \"soft\": ["
       << this->Impl->SoftJSON << "]";
   if (vtkshadow::Has(this->Impl->Choice, TechniqueSet::RayTraced))

@@ -52,6 +52,7 @@ class vtkRayTracedShadowPass;
 class vtkShadowVolumePass;
 class vtkProp;
 struct vsh_volume_ms_input;
+struct vsh_auto_general_light;
 namespace vtkshadow
 {
 struct ShadowFrame;
@@ -99,6 +100,16 @@ public:
    */
   vtkSetClampMacro(PenumbraTarget, double, 0.0, 1.0);
   vtkGetMacro(PenumbraTarget, double);
+
+  /**
+   * Where every light given an exact technique could take either shadow
+   * volumes or ray tracing within the target (the two draw the same
+   * image), 1 (default): auto times a few frames of each on this machine
+   * and keeps the faster (vsh_auto_trial.h; timed again every 300 frames);
+   * 0: the cost models alone decide. The option is `time_exact`.
+   */
+  vtkSetClampMacro(TimeExact, int, 0, 1);
+  vtkGetMacro(TimeExact, int);
 
   /**
    * "none", "planar", "csm", "volume", "raytrace" or a combination such
@@ -203,6 +214,7 @@ protected:
   double UsedEdgeLength;
   double UsedThinnestPixels = 0.0;
   double PenumbraTarget = 0.03;
+  int TimeExact = 1;
   double UsedTaperErrorPct = 0.0;
   // The choices (typed: vtkShadowTechniqueSet.h), the frame's objects and
   // the casters' meshes (convexity, silhouettes), kept between frames.
@@ -251,6 +263,15 @@ private:
   // For the lights given maps: keep the map when its predicted error meets
   // the target and it is the cheapest such candidate, else an exact one.
   void ChooseGeneral(vtkRenderer* renderer, const std::vector<double>& edgeLengths);
+  // The exact lights of `lights` (light numbers `index`) to the exact
+  // technique timed faster on this machine (vsh_auto_trial), when they can
+  // all take either; sets whether this frame is timed.
+  void TimeExactLights(vsh_auto_general_light* lights, const int* index, int count);
+  // What the trial timed, for the lights' reasons and the stats.
+  std::string TrialNote() const;
+  std::string TrialJSON() const;
+  // Renders `chain`, timed when the trial asks for this frame.
+  void RenderTimed(vtkRenderPass* chain, const vtkRenderState* s);
   double ThinnestCasterPixels(vtkRenderer* renderer);
   // What the casters in view lose on tapered parts under the frame's texel
   // target (wrong_pct over `pixels`).
