@@ -121,6 +121,8 @@ struct vtkAutoShadowPass::Internals
   int TrialModel = -1;
   double TrialPredicted[VSH_AUTO_TRIAL_COUNT] = { 0.0, 0.0 };
   vsh_auto_trial_step TrialStep = { -1, 0 };
+  // Why every casting light goes to raytrace this frame (empty: no reason).
+  std::string RaytraceOnlyWhy;
 
   Internals() { vsh_auto_trial_reset(&this->Trial); }
 
@@ -297,11 +299,26 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
         impl.Objects.data(), static_cast<int>(impl.Objects.size()), frame.Lights[l].Homogeneous));
   }
   this->ChooseTexelTarget(renderer, edgeLength, stretch);
+  impl.RaytraceOnlyWhy = this->RaytraceOnlyReason(frame);
   this->ChooseGeneral(renderer, edgeLengths);
   this->ChooseRaytraceOnly(frame);
   this->ApplySoftSamples();
   this->ApplyLightMasks();
   this->DescribeChoice();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkAutoShadowPass::RaytraceOnlyReason(const vtkshadow::ShadowFrame& frame) const
+{
+  if (vtkshadow::HasTintingCaster(frame.Translucent, NO_CAST()))
+  {
+    return "a translucent caster's filter tints the shadow, which only raytrace draws in colour";
+  }
+  if (frame.ShowsVolumes)
+  {
+    return "a volume (vtkVolume) casts, which only raytrace draws";
+  }
+  return "";
 }
 
 //------------------------------------------------------------------------------
@@ -314,16 +331,8 @@ void vtkAutoShadowPass::ChooseRaytraceOnly(const vtkshadow::ShadowFrame& frame)
   // raytrace, also one whose casters were all volumes ("nothing casts" is
   // never the answer for a visible volume); one pass for them all keeps
   // the volume/raytrace mask clash away.
-  std::string why;
-  if (vtkshadow::HasTintingCaster(frame.Translucent, NO_CAST()))
-  {
-    why = "a translucent caster's filter tints the shadow, which only raytrace draws in colour";
-  }
-  else if (frame.ShowsVolumes)
-  {
-    why = "a volume (vtkVolume) casts, which only raytrace draws";
-  }
   Internals& impl = *this->Impl;
+  const std::string& why = impl.RaytraceOnlyWhy;
   for (size_t l = 0; !why.empty() && l < impl.LightChoices.size(); ++l)
   {
     vtkshadow::TechniqueSet& choice = impl.LightChoices[l];
@@ -585,9 +594,14 @@ void vtkAutoShadowPass::RenderTimed(vtkRenderPass* chain, const vtkRenderState* 
   glFinish();
   const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
   // A still frame of the ray tracer traces nothing (it keeps the last
-  // mask): no measure of what tracing costs.
-  if (impl.TrialStep.technique == VSH_AUTO_TRIAL_RAYTRACE &&
-    this->RayTracedPass->GetNumberOfRaysTraced() == 0)
+  // mask): no measure of what tracing costs. A frame that drew other than
+  // the trial's technique is no measure of it either.
+  using vtkshadow::TechniqueSet;
+  const bool rays = impl.TrialStep.technique == VSH_AUTO_TRIAL_RAYTRACE;
+  const TechniqueSet drawn = rays ? TechniqueSet::RayTraced : TechniqueSet::Volume;
+  const TechniqueSet other = rays ? TechniqueSet::Volume : TechniqueSet::RayTraced;
+  if ((rays && this->RayTracedPass->GetNumberOfRaysTraced() == 0) ||
+    !vtkshadow::Has(impl.Choice, drawn) || vtkshadow::Has(impl.Choice, other))
   {
     return;
   }
@@ -1135,10 +1149,12 @@ void vtkAutoShadowPass::TimeExactLights(vsh_auto_general_light* lights, const in
 {
   // Lights with a size constrain which exact technique may draw (one screen
   // mask a frame, vsh_auto_plan_general): with any of them sampled by
-  // volumes or rays, the models' picks stand.
+  // volumes or rays, the models' picks stand; so do they when a caster only
+  // rays draw sends every light to raytrace (ChooseRaytraceOnly).
   Internals& impl = *this->Impl;
   impl.TrialModel = -1;
-  impl.TrialLights = this->TimeExact && impl.VolumeSamples == 0 && impl.RaySamples == 0
+  impl.TrialLights = this->TimeExact && impl.VolumeSamples == 0 && impl.RaySamples == 0 &&
+      impl.RaytraceOnlyWhy.empty()
     ? vsh_auto_trial_lights(
         lights, index, count, this->MaxError, &impl.TrialModel, impl.TrialPredicted)
     : 0u;

@@ -232,8 +232,10 @@ private:
 #ifndef __VTK_WRAP__
   void Decide(const vtkshadow::ShadowFrame& frame);
   void GatherObjects(const vtkshadow::ShadowFrame& frame);
-  // Lights with a tinting translucent caster or a volume go to raytrace.
+  // Lights with a tinting translucent caster or a volume go to raytrace;
+  // the reason (empty when neither is in the frame).
   void ChooseRaytraceOnly(const vtkshadow::ShadowFrame& frame);
+  std::string RaytraceOnlyReason(const vtkshadow::ShadowFrame& frame) const;
 #endif
   int FindConcaveCaster();
   std::string LightReasonText(int reason, int a, int b) const;
