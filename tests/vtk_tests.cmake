@@ -190,6 +190,13 @@ add_test(NAME python.volume_live_pipeline
   COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_volume_live_pipeline.py)
 set_tests_properties(python.volume_live_pipeline PROPERTIES LABELS "render" TIMEOUT 120)
 
+# auto's timed exact choice in a live pipeline through enable_shadows: it
+# settles while the camera orbits, times again SETTLE still frames after an
+# edit of the surface, and not while the surface changes every frame.
+add_test(NAME python.auto_trial_edit
+  COMMAND ${VTKSHADOW_GL} ${VTKSHADOW_PY} ${CMAKE_CURRENT_SOURCE_DIR}/python/test_auto_trial_edit.py)
+set_tests_properties(python.auto_trial_edit PROPERTIES LABELS "render" TIMEOUT 200)
+
 # The caps of an open caster counted z-fail take its mapper's
 # coincident-topology offset (vedo's): red without it, 100 % of the pixels.
 add_test(NAME python.volume_coincident_offset

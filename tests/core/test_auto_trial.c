@@ -13,7 +13,7 @@ enum { V = VSH_AUTO_TRIAL_VOLUME, R = VSH_AUTO_TRIAL_RAYTRACE };
 static vsh_auto_trial_step frame(vsh_auto_trial *t, unsigned int lights, int model,
                                  const double *predicted, const double *ms)
 {
-  const vsh_auto_trial_step s = vsh_auto_trial_next(t, lights, model, predicted);
+  const vsh_auto_trial_step s = vsh_auto_trial_next(t, lights, 7u, model, predicted);
   if (s.time_frame) vsh_auto_trial_record(t, s.technique, ms[s.technique]);
   return s;
 }
@@ -71,10 +71,10 @@ static void test_median_and_hysteresis(void)
   vsh_auto_trial_reset(&t);
   const double predicted[2] = {10.0, 10.0};
   for (int f = 0; f < VSH_AUTO_TRIAL_WARMUP; ++f)
-    CHECK(vsh_auto_trial_next(&t, 1u, V, predicted).time_frame == 0);
+    CHECK(vsh_auto_trial_next(&t, 1u, 7u, V, predicted).time_frame == 0);
   const double volume[3] = {100.0, 61.0, 5.0};
   for (int i = 0; i < 3; ++i) {
-    CHECK(vsh_auto_trial_next(&t, 1u, V, predicted).time_frame == 1);
+    CHECK(vsh_auto_trial_next(&t, 1u, 7u, V, predicted).time_frame == 1);
     vsh_auto_trial_record(&t, V, volume[i]);
     CHECK(vsh_auto_trial_timed(&t, V) == (i == 2));
   }
@@ -149,6 +149,48 @@ static void test_expiry(void)
   CHECK(timed == 2 * VSH_AUTO_TRIAL_SAMPLES);
 }
 
+/* An edit (a new scene key) drops the timings once the scene has held
+ * still for SETTLE frames after it; a scene edited every frame keeps them
+ * until they expire. */
+static void test_scene_edits(void)
+{
+  const double predicted[2] = {10.0, 10.0}, before[2] = {20.0, 40.0}, after[2] = {80.0, 40.0};
+  vsh_auto_trial t;
+  vsh_auto_trial_reset(&t);
+  int last = -1;
+  for (int f = 0; f < 20; ++f) {
+    const vsh_auto_trial_step s = vsh_auto_trial_next(&t, 1u, 5u, V, predicted);
+    if (s.time_frame) vsh_auto_trial_record(&t, s.technique, before[s.technique]);
+    last = s.technique;
+  }
+  CHECK(last == V && vsh_auto_trial_timed(&t, R));
+  /* The edit, then the scene still: timed again after SETTLE frames. */
+  int timed = 0, settled_at = -1;
+  for (int f = 0; f < VSH_AUTO_TRIAL_SETTLE + 20; ++f) {
+    const vsh_auto_trial_step s = vsh_auto_trial_next(&t, 1u, 6u, V, predicted);
+    if (s.time_frame) {
+      if (settled_at < 0) settled_at = f;
+      vsh_auto_trial_record(&t, s.technique, after[s.technique]);
+      ++timed;
+    }
+    last = s.technique;
+  }
+  CHECK(settled_at == VSH_AUTO_TRIAL_SETTLE);
+  CHECK(timed == 2 * VSH_AUTO_TRIAL_SAMPLES);
+  CHECK(last == R);
+  /* Edited every frame: nothing timed again before the timings expire. */
+  vsh_auto_trial u;
+  vsh_auto_trial_reset(&u);
+  for (int f = 0; f < 20; ++f) {
+    const vsh_auto_trial_step s = vsh_auto_trial_next(&u, 1u, 5u, V, predicted);
+    if (s.time_frame) vsh_auto_trial_record(&u, s.technique, before[s.technique]);
+  }
+  timed = 0;
+  for (int f = 20; f < VSH_AUTO_TRIAL_MAX_AGE; ++f)
+    timed += vsh_auto_trial_next(&u, 1u, 100u + (unsigned long long)f, V, predicted).time_frame;
+  CHECK(timed == 0);
+}
+
 /* Another set of exact lights drops the timings; no exact light hands the
  * frame to the models, untimed. */
 static void test_lights_change(void)
@@ -161,7 +203,7 @@ static void test_lights_change(void)
   vsh_auto_trial_step s = frame(&t, 3u, V, predicted, ms);
   CHECK(!vsh_auto_trial_timed(&t, V) && !vsh_auto_trial_timed(&t, R));
   CHECK(s.technique == V && s.time_frame == 1); /* volume was drawn already: no warm-up */
-  s = vsh_auto_trial_next(&t, 0u, R, predicted);
+  s = vsh_auto_trial_next(&t, 0u, 7u, R, predicted);
   CHECK(s.technique == R && s.time_frame == 0);
   CHECK(!vsh_auto_trial_timed(&t, V));
 }
@@ -171,13 +213,13 @@ static void test_degenerate(void)
   const double predicted[2] = {1.0, 1.0};
   vsh_auto_trial t;
   vsh_auto_trial_reset(&t);
-  vsh_auto_trial_step s = vsh_auto_trial_next(NULL, 1u, V, predicted);
+  vsh_auto_trial_step s = vsh_auto_trial_next(NULL, 1u, 7u, V, predicted);
   CHECK(s.technique == V && s.time_frame == 0);
-  s = vsh_auto_trial_next(&t, 1u, V, NULL);
+  s = vsh_auto_trial_next(&t, 1u, 7u, V, NULL);
   CHECK(s.technique == V && s.time_frame == 0);
-  s = vsh_auto_trial_next(&t, 1u, 2, predicted);
+  s = vsh_auto_trial_next(&t, 1u, 7u, 2, predicted);
   CHECK(s.technique == 2 && s.time_frame == 0);
-  s = vsh_auto_trial_next(&t, 1u, -1, predicted);
+  s = vsh_auto_trial_next(&t, 1u, 7u, -1, predicted);
   CHECK(s.technique == -1 && s.time_frame == 0);
   vsh_auto_trial_reset(NULL);
   /* Times that are no measurement are ignored. */
@@ -256,6 +298,7 @@ int main(void)
   test_not_worth_trying();
   test_expiry();
   test_lights_change();
+  test_scene_edits();
   test_degenerate();
   test_lights();
   return vsh_check_report("core.auto_trial");

@@ -31,6 +31,8 @@ void vsh_auto_trial_reset(vsh_auto_trial *trial)
   trial->lights = 0;
   trial->drawn = -1;
   trial->run = 0;
+  trial->scene = 0;
+  trial->changed = 0;
   drop_timings(trial);
 }
 
@@ -73,13 +75,27 @@ static int choose(vsh_auto_trial *t, int current, const double *predicted)
                                                                                 : t->incumbent;
 }
 
-vsh_auto_trial_step vsh_auto_trial_next(vsh_auto_trial *trial, unsigned int lights, int model,
+/* Timings too old, or taken before an edit the scene has since held
+ * still after. */
+static int stale(const vsh_auto_trial *t)
+{
+  if (t->started < 0) return 0;
+  return t->frame - t->started > VSH_AUTO_TRIAL_MAX_AGE ||
+         (t->changed > t->started && t->frame - t->changed >= VSH_AUTO_TRIAL_SETTLE);
+}
+
+vsh_auto_trial_step vsh_auto_trial_next(vsh_auto_trial *trial, unsigned int lights,
+                                        unsigned long long scene, int model,
                                         const double predicted[VSH_AUTO_TRIAL_COUNT])
 {
   vsh_auto_trial_step step = {model, 0};
   if (!trial || !predicted || model < 0 || model >= VSH_AUTO_TRIAL_COUNT) return step;
   vsh_auto_trial *t = trial;
   ++t->frame;
+  if (scene != t->scene) {
+    t->scene = scene;
+    t->changed = t->frame;
+  }
   if (lights == 0 || lights != t->lights) {
     drop_timings(t);
     t->lights = lights;
@@ -89,7 +105,7 @@ vsh_auto_trial_step vsh_auto_trial_next(vsh_auto_trial *trial, unsigned int ligh
     t->drawn = model;
     return step;
   }
-  if (t->started >= 0 && t->frame - t->started > VSH_AUTO_TRIAL_MAX_AGE) drop_timings(t);
+  if (stale(t)) drop_timings(t);
   const int current = t->drawn >= 0 ? t->drawn : model;
   step.technique = choose(t, current, predicted);
   if (step.technique != current) {

@@ -25,8 +25,12 @@
  *      incumbent) gives way only to one under VSH_AUTO_TRIAL_SWITCH_RATIO
  *      of its time (noise does not flip it);
  *   4. timings are per set of exact lights and expire together after
- *      VSH_AUTO_TRIAL_MAX_AGE frames (the camera moves, the cost with it):
- *      then the trial runs again.
+ *      VSH_AUTO_TRIAL_MAX_AGE frames (the camera moves, the cost with it),
+ *      or once the scene (a key of the casters' meshes and placements and
+ *      the lights) has changed since they were taken and then held still
+ *      for VSH_AUTO_TRIAL_SETTLE frames: then the trial runs again. A scene
+ *      edited every frame (an animation) keeps its timings until they
+ *      expire rather than timing again on every edit.
  * A timing is the median of its frames: one frame slowed by load on a
  * shared machine, or sped up by work it skipped, does not decide. */
 #ifndef VSH_AUTO_TRIAL_H
@@ -44,6 +48,7 @@ enum { VSH_AUTO_TRIAL_VOLUME = 0, VSH_AUTO_TRIAL_RAYTRACE = 1, VSH_AUTO_TRIAL_CO
 #define VSH_AUTO_TRIAL_WARMUP 3   /* untimed frames after a switch */
 #define VSH_AUTO_TRIAL_SAMPLES 3  /* timed frames per technique */
 #define VSH_AUTO_TRIAL_MAX_AGE 300 /* frames a pair of timings stays valid */
+#define VSH_AUTO_TRIAL_SETTLE 30   /* still frames after an edit before timing again */
 
 /* The other technique is left untried when predicted dearer than this
  * times the drawn one's prediction. */
@@ -63,6 +68,8 @@ typedef struct vsh_auto_trial {
   long long started;               /* frame of the pair's first timing */
   int tried_other;                 /* 1 once the current pair's second technique was weighed */
   int incumbent;                   /* the technique drawn when the pair's timing began, -1 none */
+  unsigned long long scene;        /* the last step's scene key */
+  long long changed;               /* frame the scene key last changed */
 } vsh_auto_trial;
 
 /* One frame's decision: the technique that draws the exact lights, and
@@ -78,11 +85,14 @@ void vsh_auto_trial_reset(vsh_auto_trial *trial);
 /* The frame's step. `lights`: the exact lights that could take either
  * technique (0 when some exact light can take only one, or there is none:
  * then the models decide, `model` is returned untimed, and the timings are
- * dropped). `model`: the models' pick (VSH_AUTO_TRIAL_*); `predicted`: the
- * models' ms for both over those lights. A NULL trial or predicted, or a
- * model outside the two, gives {model, 0}. NaN or negative predictions
- * count as +inf (never tried unless drawn). */
-vsh_auto_trial_step vsh_auto_trial_next(vsh_auto_trial *trial, unsigned int lights, int model,
+ * dropped). `scene`: a key of what the cost depends on besides the camera
+ * (any value; a new one is an edit). `model`: the models' pick
+ * (VSH_AUTO_TRIAL_*); `predicted`: the models' ms for both over those
+ * lights. A NULL trial or predicted, or a model outside the two, gives
+ * {model, 0}. NaN or negative predictions count as +inf (never tried
+ * unless drawn). */
+vsh_auto_trial_step vsh_auto_trial_next(vsh_auto_trial *trial, unsigned int lights,
+                                        unsigned long long scene, int model,
                                         const double predicted[VSH_AUTO_TRIAL_COUNT]);
 
 /* The time of a frame the last step asked to time, drawn with `technique`.

@@ -123,6 +123,7 @@ struct vtkAutoShadowPass::Internals
   vsh_auto_trial_step TrialStep = { -1, 0 };
   // Why every casting light goes to raytrace this frame (empty: no reason).
   std::string RaytraceOnlyWhy;
+  unsigned long long SceneKey = 0; // the frame's casters and lights (SceneKey())
 
   Internals() { vsh_auto_trial_reset(&this->Trial); }
 
@@ -172,6 +173,45 @@ double ImpostorPixels(vtkActor* actor, double pixel)
     thinnest = std::min(thinnest, 2.0 * radii[0] / pixel);
   }
   return thinnest;
+}
+}
+
+namespace
+{
+// FNV-1a over a value's bytes, folded into `key`.
+template <typename T>
+void Fold(unsigned long long& key, const T& value)
+{
+  const unsigned char* bytes = reinterpret_cast<const unsigned char*>(&value);
+  for (size_t i = 0; i < sizeof(T); ++i)
+  {
+    key = (key ^ bytes[i]) * 1099511628211ull;
+  }
+}
+
+// What the exact techniques' cost depends on besides the camera: each
+// actor's mesh and placement, and each light (vsh_auto_trial: an edit).
+unsigned long long SceneKey(
+  const std::vector<vtkshadow::ShadowActor>& actors, const vtkshadow::ShadowFrame& frame)
+{
+  unsigned long long key = 14695981039346656037ull;
+  for (const vtkshadow::ShadowActor& a : actors)
+  {
+    Fold(key, vtkshadow::MeshTime(a.Actor));
+    for (double m : a.Matrix)
+    {
+      Fold(key, m);
+    }
+  }
+  for (const vtkshadow::ShadowFrameLight& light : frame.Lights)
+  {
+    Fold(key, light.Casts);
+    for (double h : light.Homogeneous)
+    {
+      Fold(key, h);
+    }
+  }
+  return key;
 }
 }
 
@@ -300,6 +340,7 @@ void vtkAutoShadowPass::Decide(const vtkshadow::ShadowFrame& frame)
   }
   this->ChooseTexelTarget(renderer, edgeLength, stretch);
   impl.RaytraceOnlyWhy = this->RaytraceOnlyReason(frame);
+  impl.SceneKey = SceneKey(impl.Actors, frame);
   this->ChooseGeneral(renderer, edgeLengths);
   this->ChooseRaytraceOnly(frame);
   this->ApplySoftSamples();
@@ -1158,7 +1199,7 @@ void vtkAutoShadowPass::TimeExactLights(vsh_auto_general_light* lights, const in
     ? vsh_auto_trial_lights(
         lights, index, count, this->MaxError, &impl.TrialModel, impl.TrialPredicted)
     : 0u;
-  impl.TrialStep = vsh_auto_trial_next(&impl.Trial, impl.TrialLights,
+  impl.TrialStep = vsh_auto_trial_next(&impl.Trial, impl.TrialLights, impl.SceneKey,
     impl.TrialLights ? impl.TrialModel : VSH_AUTO_TRIAL_VOLUME, impl.TrialPredicted);
   if (impl.TrialLights)
   {
