@@ -8,9 +8,9 @@
  * their cost tells them apart. The cost models (vsh_volume_cost.h,
  * vsh_raytrace.h) are fitted on one machine and a set of scenes; on
  * another machine or scene they can rank the two wrongly (scivis/isosurface
- * on a 2.4x slower CPU: volume predicted 208 ms against raytrace's 111, and
- * measured 290 against 195). So auto times each for a few frames and keeps
- * the faster:
+ * at 800x600 on a 2.4x slower CPU: volumes predicted at 208 ms a frame for
+ * both lights against rays' 221-266, and measured at 254-307 against
+ * 184-196). So auto times each for a few frames and keeps the faster:
  *
  *   1. the technique drawn (the models' pick at first) is timed on
  *      VSH_AUTO_TRIAL_SAMPLES frames, after VSH_AUTO_TRIAL_WARMUP untimed
@@ -53,8 +53,8 @@ enum { VSH_AUTO_TRIAL_VOLUME = 0, VSH_AUTO_TRIAL_RAYTRACE = 1, VSH_AUTO_TRIAL_CO
 /* The other technique is left untried when predicted dearer than this
  * times the drawn one's prediction. */
 extern const double VSH_AUTO_TRIAL_MAX_PREDICTED_RATIO;
-/* The drawn technique gives way only to one timed under this times its
- * own timing. */
+/* The incumbent gives way only to one timed under this times its own
+ * timing. */
 extern const double VSH_AUTO_TRIAL_SWITCH_RATIO;
 
 typedef struct vsh_auto_trial {
