@@ -56,17 +56,22 @@ vtkStandardNewMacro(vtkAutoShadowPass);
 
 struct vtkAutoShadowPass::Internals
 {
+  using WorldLight = std::pair<int, int>; // (world key, light number)
   struct Caster
   {
     vtkShadowCasterGeometry Geometry;
     vtkMTimeType MeshTime = 0;
     bool Convex = false;
-    // Silhouette length (data units) per light, with the light (data
-    // coordinates) it was computed for.
-    std::map<int, std::pair<std::vector<double>, double>> Silhouette;
+    // Silhouette length (data units) per (world, light), with the light
+    // (data coordinates) it was computed for. Per world: a mirror's world
+    // places the actor elsewhere, and one cache for both was recomputed
+    // twice a frame (auto.decide 17.7 ms against 0.4 on
+    // mirror/ball-stick-mirror-floor).
+    std::map<WorldLight, std::pair<std::vector<double>, double>> Silhouette;
     // Shadow-volume side quads (all, and an open caster's) per light, with the light
     // (shifted data coordinates) they were counted for.
-    std::map<int, std::pair<std::vector<double>, vtkAutoShadowPass::VolumeSilhouette>> VolumeEdges;
+    std::map<WorldLight, std::pair<std::vector<double>, vtkAutoShadowPass::VolumeSilhouette>>
+      VolumeEdges;
     // What it draws as points and lines (spheres, tubes, splats, squares,
     // bands), extracted again when ImpostorTime changes.
     vtkshadow::Impostors Drawn;
@@ -74,7 +79,7 @@ struct vtkAutoShadowPass::Internals
     // Their outlines (points, lines) per light, with what they were
     // measured for: the light, the actor's matrix, the camera, the viewport
     // and DrawnTime.
-    std::map<int, std::pair<std::vector<double>, std::array<double, 2>>> DrawnOutline;
+    std::map<WorldLight, std::pair<std::vector<double>, std::array<double, 2>>> DrawnOutline;
   };
   std::map<vtkProp*, std::unique_ptr<Caster>> Casters;
 
@@ -116,7 +121,10 @@ struct vtkAutoShadowPass::Internals
   // The timed choice between the exact techniques (vsh_auto_trial.h): its
   // state across frames, and this frame's lights, models' pick and
   // predictions, the technique drawn and whether the frame is timed.
-  vsh_auto_trial Trial;
+  // One trial per world (vtkShadowPassBase::SetWorldKey): a mirror's world
+  // is another scene with its own costs. Trial is the frame's world's.
+  std::map<int, vsh_auto_trial> Trials;
+  vsh_auto_trial* Trial = nullptr;
   unsigned int TrialLights = 0;
   int TrialModel = -1;
   double TrialPredicted[VSH_AUTO_TRIAL_COUNT] = { 0.0, 0.0 };
@@ -125,7 +133,16 @@ struct vtkAutoShadowPass::Internals
   std::string RaytraceOnlyWhy;
   unsigned long long SceneKey = 0; // the frame's casters and lights (SceneKey())
 
-  Internals() { vsh_auto_trial_reset(&this->Trial); }
+  vsh_auto_trial& TrialOf(int world)
+  {
+    auto found = this->Trials.find(world);
+    if (found == this->Trials.end())
+    {
+      found = this->Trials.emplace(world, vsh_auto_trial{}).first;
+      vsh_auto_trial_reset(&found->second);
+    }
+    return found->second;
+  }
 
   // The caster's mesh analysis, redone only when the mesh changes: its
   // convexity and silhouettes survive every affine placement, so the
@@ -646,7 +663,7 @@ void vtkAutoShadowPass::RenderTimed(vtkRenderPass* chain, const vtkRenderState* 
   {
     return;
   }
-  vsh_auto_trial_record(&impl.Trial, impl.TrialStep.technique, took.count());
+  vsh_auto_trial_record(impl.Trial, impl.TrialStep.technique, took.count());
 }
 
 //------------------------------------------------------------------------------
@@ -701,7 +718,7 @@ void vtkAutoShadowPass::CachedImpostorOutline(
   key.push_back(camera->GetClippingRange()[0]);
   key.push_back(renderer->GetSize()[1]);
   key.push_back(static_cast<double>(vtkshadow::ImpostorTime(actor.Actor)));
-  auto& cached = caster.DrawnOutline[index];
+  auto& cached = caster.DrawnOutline[{ this->WorldKey, index }];
   if (cached.first != key || key.back() == 0.0)
   {
     this->ImpostorOutlinePixels(object, light, renderer, outline);
@@ -799,7 +816,7 @@ double vtkAutoShadowPass::OutlinePixels(
     return world / pixel;
   }
   vsh_mat4_transform_point4(inverse, light, inData);
-  auto& cached = caster.Silhouette[index];
+  auto& cached = caster.Silhouette[{ this->WorldKey, index }];
   const std::vector<double> key(inData, inData + 4);
   if (cached.first != key)
   {
@@ -1199,7 +1216,8 @@ void vtkAutoShadowPass::TimeExactLights(vsh_auto_general_light* lights, const in
     ? vsh_auto_trial_lights(
         lights, index, count, this->MaxError, &impl.TrialModel, impl.TrialPredicted)
     : 0u;
-  impl.TrialStep = vsh_auto_trial_next(&impl.Trial, impl.TrialLights, impl.SceneKey,
+  impl.Trial = &impl.TrialOf(this->WorldKey);
+  impl.TrialStep = vsh_auto_trial_next(impl.Trial, impl.TrialLights, impl.SceneKey,
     impl.TrialLights ? impl.TrialModel : VSH_AUTO_TRIAL_VOLUME, impl.TrialPredicted);
   if (impl.TrialLights)
   {
@@ -1227,9 +1245,9 @@ std::string vtkAutoShadowPass::TrialNote() const
   for (int t = 0; t < VSH_AUTO_TRIAL_COUNT; ++t)
   {
     note << (t ? "," : "") << " " << TrialNames[t] << " ";
-    if (vsh_auto_trial_timed(&impl.Trial, t))
+    if (vsh_auto_trial_timed(impl.Trial, t))
     {
-      note << impl.Trial.ms[t] << " ms a frame";
+      note << impl.Trial->ms[t] << " ms a frame";
     }
     else
     {
@@ -1248,16 +1266,17 @@ std::string vtkAutoShadowPass::TrialJSON() const
   json.precision(6);
   json << "{\"lights\": " << impl.TrialLights
        << ", \"enabled\": " << (this->TimeExact ? "true" : "false");
-  if (impl.TrialLights)
+  if (impl.TrialLights && impl.Trial)
   {
     json << ", \"model\": \"" << TrialNames[impl.TrialModel] << "\", \"drawn\": \""
          << TrialNames[impl.TrialStep.technique] << "\", \"incumbent\": \""
-         << TrialNames[impl.Trial.incumbent >= 0 ? impl.Trial.incumbent : impl.TrialModel] << "\"";
+         << TrialNames[impl.Trial->incumbent >= 0 ? impl.Trial->incumbent : impl.TrialModel]
+         << "\"";
     for (int t = 0; t < VSH_AUTO_TRIAL_COUNT; ++t)
     {
       json << ", \"" << TrialNames[t] << "_predicted_ms\": " << JSONNumber(impl.TrialPredicted[t])
            << ", \"" << TrialNames[t] << "_timed_ms\": "
-           << JSONNumber(vsh_auto_trial_timed(&impl.Trial, t) ? impl.Trial.ms[t] : std::nan(""));
+           << JSONNumber(vsh_auto_trial_timed(impl.Trial, t) ? impl.Trial->ms[t] : std::nan(""));
     }
     json << ", \"timed_frame\": " << (impl.TrialStep.time_frame ? "true" : "false");
   }
@@ -1527,7 +1546,7 @@ vtkAutoShadowPass::VolumeSilhouette vtkAutoShadowPass::VolumeEdges(
   {
     return VolumeSilhouette{};
   }
-  auto& cached = caster.VolumeEdges[index];
+  auto& cached = caster.VolumeEdges[{ this->WorldKey, index }];
   const std::vector<double> key(stored, stored + 4);
   if (cached.first != key)
   {
