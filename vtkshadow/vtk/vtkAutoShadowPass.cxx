@@ -1183,18 +1183,13 @@ void vtkAutoShadowPass::ChooseGeneral(vtkRenderer* renderer, const std::vector<d
   for (size_t i = 0; i < weighed.size(); ++i)
   {
     offered[i].pick = weighed[i].pick;
-    offered[i].met = weighed[i].met;
   }
   const std::vector<int> index(lightOf.begin(), lightOf.end());
   this->TimeExactLights(offered.data(), index.data(), static_cast<int>(offered.size()));
   for (size_t i = 0; i < weighed.size(); ++i)
   {
-    weighed[i].pick = offered[i].pick;
-  }
-  for (size_t i = 0; i < weighed.size(); ++i)
-  {
     this->ApplyGeneralPick(
-      lightOf[i], weighed[i].candidates, volumes[i], unsupported[i], weighed[i].pick);
+      lightOf[i], weighed[i].candidates, volumes[i], unsupported[i], offered[i].pick);
     if (impl.TrialLights >> lightOf[i] & 1u)
     {
       this->LightReasons[lightOf[i]] += this->TrialNote();
@@ -1219,14 +1214,9 @@ void vtkAutoShadowPass::TimeExactLights(vsh_auto_general_light* lights, const in
   impl.Trial = &impl.TrialOf(this->WorldKey);
   impl.TrialStep = vsh_auto_trial_next(impl.Trial, impl.TrialLights, impl.SceneKey,
     impl.TrialLights ? impl.TrialModel : VSH_AUTO_TRIAL_VOLUME, impl.TrialPredicted);
-  if (impl.TrialLights)
-  {
-    vsh_auto_trial_apply(lights, index, count, impl.TrialLights, impl.TrialStep.technique);
-  }
-  else
-  {
-    impl.TrialStep.time_frame = 0;
-  }
+  // With no lights in the trial the step is the models' pick, untimed, and
+  // applying it changes nothing.
+  vsh_auto_trial_apply(lights, index, count, impl.TrialLights, impl.TrialStep.technique);
 }
 
 //------------------------------------------------------------------------------
